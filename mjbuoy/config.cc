@@ -1,0 +1,327 @@
+// parse and validate the "mjbuoy.*" <custom> entries (schema: docs/mjcf.md)
+#include "config.h"
+
+#include <fnmatch.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <sstream>
+
+namespace mjb {
+
+static const char kPre[] = "mjbuoy.";
+
+// one numeric field: name, value count, accepted range, unit, example
+struct Field {
+  const char* name;
+  int n;
+  double lo, hi;   // accepted range
+  bool loopen;     // lo itself excluded
+  const char* unit;
+  const char* example;
+  size_t off = 0;  // hull fields: offset in HullParams
+};
+
+static const HullParams kHullDefault = {{0, 0}};
+
+// hull parameters, in HullParams order
+static const Field kHullFields[] = {
+  {"damping", 2, 0, INFINITY, false, "linear N s/m, angular N m s/rad", "200 50",
+   offsetof(HullParams, damp)},
+};
+
+// sea fields
+static const Field kSeaFields[] = {
+  {"density", 1, 0, INFINITY, true, "kg/m^3", "1000"},
+  {"level", 1, -INFINITY, INFINITY, false, "m", "0"},
+  {"depth", 1, 0, INFINITY, true, "m (omit for deep water)", "50"},
+  {"viscosity", 1, 0, INFINITY, true, "m^2/s, kinematic", "1e-6"},
+  {"current", 2, -INFINITY, INFINITY, false, "m/s, x and y", "0.5 0"},
+};
+
+static const Field kWave = {"wave", 5, -INFINITY, INFINITY, false,
+                            "amplitude m, wavelength m, direction deg, phase deg, steepness",
+                            "0.5 20 0 0 0.6"};
+
+static std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+
+static std::string tag(const char* kind, const char* name) {
+  return std::string("<") + kind + " name=\"" + name + "\">";
+}
+
+// range check of one value
+static std::string checkValue(const char* name, const Field& f, const char* what,
+                              double v) {
+  std::string pre = "mjbuoy: " + tag("numeric", name) + " " + what + " = " + fmt(v);
+  if (!std::isfinite(v)) {
+    return pre + " is not a finite number; give a finite value in " + f.unit +
+           ", e.g. data=\"" + f.example + "\"";
+  }
+  bool low = f.loopen ? v <= f.lo : v < f.lo;
+  if (low || v > f.hi) {
+    std::string range = std::string(f.loopen ? "> " : ">= ") + fmt(f.lo);
+    if (std::isfinite(f.hi)) range += " and <= " + fmt(f.hi);
+    return pre + " is out of range: it must be " + range + " [" + f.unit +
+           "]; fix its data attribute, e.g. data=\"" + f.example + "\"";
+  }
+  return "";
+}
+
+// count and range check of a numeric entry
+static std::string checkNumeric(const mjModel* m, int i, const Field& f) {
+  const char* name = m->names + m->name_numericadr[i];
+  int n = m->numeric_size[i];
+  if (n != f.n) {
+    return "mjbuoy: " + tag("numeric", name) + " has " + std::to_string(n) +
+           " value(s), expected " + std::to_string(f.n) + " (" + f.unit +
+           "), e.g. data=\"" + f.example + "\"";
+  }
+  const mjtNum* v = m->numeric_data + m->numeric_adr[i];
+  for (int j = 0; j < n; j++) {
+    std::string what = n == 1 ? "value" : "value " + std::to_string(j + 1);
+    std::string e = checkValue(name, f, what.c_str(), v[j]);
+    if (!e.empty()) return e;
+  }
+  return "";
+}
+
+// the values of hull field f inside p
+static double* param(HullParams* p, const Field& f) {
+  return reinterpret_cast<double*>(reinterpret_cast<char*>(p) + f.off);
+}
+
+static const Field* findField(const Field* fs, int n, const char* name) {
+  for (int i = 0; i < n; i++) {
+    if (!std::strcmp(fs[i].name, name)) return fs + i;
+  }
+  return nullptr;
+}
+
+static std::string fieldList(const Field* fs, int n) {
+  std::string s;
+  for (int i = 0; i < n; i++) s += (i ? ", " : "") + std::string(fs[i].name);
+  return s;
+}
+
+static const char kTopLevel[] =
+    "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.hulls, mjbuoy.backend, "
+    "mjbuoy.hull.<param>, mjbuoy.geom.<geom>.<param>";
+
+// wave: amplitude, wavelength, direction, phase, steepness
+static std::string parseWave(const char* name, const mjtNum* v, Wave* w) {
+  static const Field f[5] = {
+    {"amplitude", 1, 0, INFINITY, false, "m", "0.5 20 0 0 0.6"},
+    {"wavelength", 1, 0, INFINITY, true, "m", "0.5 20 0 0 0.6"},
+    {"direction", 1, -INFINITY, INFINITY, false, "deg", "0.5 20 0 0 0.6"},
+    {"phase", 1, -INFINITY, INFINITY, false, "deg", "0.5 20 0 0 0.6"},
+    {"steepness", 1, 0, 1, false, "dimensionless", "0.5 20 0 0 0.6"},
+  };
+  for (int j = 0; j < 5; j++) {
+    std::string e = checkValue(name, f[j], f[j].name, v[j]);
+    if (!e.empty()) return e;
+  }
+  *w = Wave{v[0], v[1], v[2], v[3], v[4], 0, 0, 0, 0, 0};
+  return "";
+}
+
+// hull geom list: whitespace-separated geom names or fnmatch patterns
+static std::string parseHulls(const mjModel* m, const char* name, const char* text,
+                              std::vector<char>* is) {
+  std::istringstream in(text);
+  std::string pat;
+  int count = 0;
+  while (in >> pat) {
+    count++;
+    int hits = 0;
+    for (int g = 0; g < m->ngeom; g++) {
+      const char* gn = m->names + m->name_geomadr[g];
+      if (!gn[0] || fnmatch(pat.c_str(), gn, 0)) continue;
+      hits++;
+      int t = m->geom_type[g];
+      if (t != mjGEOM_MESH && t != mjGEOM_BOX && t != mjGEOM_SPHERE &&
+          t != mjGEOM_CYLINDER && t != mjGEOM_CAPSULE && t != mjGEOM_ELLIPSOID) {
+        return "mjbuoy: " + tag("text", name) + " names geom \"" + gn +
+               "\", whose type cannot be a hull; accepted geom types: mesh, box, "
+               "sphere, cylinder, capsule, ellipsoid";
+      }
+      (*is)[g] = 1;
+    }
+    if (!hits) {
+      return "mjbuoy: " + tag("text", name) + " entry \"" + pat +
+             "\" matches no named geom; give geom names (shell patterns such as "
+             "\"boat*_hull\" are allowed)";
+    }
+  }
+  if (!count) {
+    return "mjbuoy: " + tag("text", name) +
+           " is empty; list the hull geom names, e.g. data=\"hull\"";
+  }
+  return "";
+}
+
+std::string setBackend(const char* name, const std::string& where, Config* c) {
+  if (std::strcmp(name, "cpu")) {
+    return "mjbuoy: " + where + " value \"" + name +
+           "\" is not a backend of this build; accepted: cpu";
+  }
+  c->backend = name;
+  return "";
+}
+
+std::string parseConfig(const mjModel* m, Config* c) {
+  *c = Config();
+  const size_t np = sizeof(kPre) - 1;
+  auto has = [&](const char* s) { return !std::strncmp(s, kPre, np); };
+
+  // gravity must point down z: the sea is z = eta(x, y, t)
+  const mjtNum* gv = m->opt.gravity;
+  if (gv[0] != 0 || gv[1] != 0 || !(gv[2] < 0) || !std::isfinite(gv[2])) {
+    return "mjbuoy: <option gravity=\"" + fmt(gv[0]) + " " + fmt(gv[1]) + " " +
+           fmt(gv[2]) + "\"> is not supported: mjbuoy needs gravity along -z "
+           "(the sea surface is z = eta(x, y)), e.g. gravity=\"0 0 -9.81\"";
+  }
+  c->sea.g = -gv[2];
+
+  // hulls first: per-geom overrides refer to them
+  std::vector<char> is(m->ngeom, 0);
+  bool anyHullList = false;
+  for (int i = 0; i < m->ntext; i++) {
+    const char* name = m->names + m->name_textadr[i];
+    if (!has(name)) continue;
+    const char* key = name + np;
+    const char* text = m->text_data + m->text_adr[i];
+    if (!std::strcmp(key, "hulls")) {
+      anyHullList = true;
+      std::string e = parseHulls(m, name, text, &is);
+      if (!e.empty()) return e;
+    } else if (!std::strcmp(key, "backend")) {
+      std::string e = setBackend(text, tag("text", name), c);
+      if (!e.empty()) return e;
+    } else {
+      return "mjbuoy: unknown entry " + tag("text", name) +
+             "; text entries are mjbuoy.hulls and mjbuoy.backend (numeric entries: " +
+             kTopLevel + "; see docs/mjcf.md)";
+    }
+  }
+
+  // hull geoms on the world body cannot move: ignored with a warning
+  for (int g = 0; g < m->ngeom; g++) {
+    if (is[g] && m->geom_bodyid[g] == 0) {
+      c->warn.push_back(std::string("geom \"") + (m->names + m->name_geomadr[g]) +
+                        "\" is listed as a hull but belongs to the world body; "
+                        "it cannot move and is ignored");
+      is[g] = 0;
+    }
+  }
+  HullParams def = kHullDefault;
+  std::vector<int> gid;
+  for (int g = 0; g < m->ngeom; g++) if (is[g]) gid.push_back(g);
+  std::vector<HullParams> par(gid.size(), def);
+  std::vector<std::vector<char>> set(gid.size(), std::vector<char>(
+      sizeof(kHullFields) / sizeof(kHullFields[0]), 0));
+  const int nhf = sizeof(kHullFields) / sizeof(kHullFields[0]);
+  const int nsf = sizeof(kSeaFields) / sizeof(kSeaFields[0]);
+  bool any = anyHullList;
+
+  // numeric entries
+  for (int i = 0; i < m->nnumeric; i++) {
+    const char* name = m->names + m->name_numericadr[i];
+    if (!has(name)) continue;
+    any = true;
+    const char* key = name + np;
+    const mjtNum* v = m->numeric_data + m->numeric_adr[i];
+    if (!std::strncmp(key, "sea.", 4)) {
+      const Field* f = findField(kSeaFields, nsf, key + 4);
+      if (!f) {
+        return "mjbuoy: unknown entry " + tag("numeric", name) + "; sea fields are " +
+               fieldList(kSeaFields, nsf) + " (see docs/mjcf.md)";
+      }
+      std::string e = checkNumeric(m, i, *f);
+      if (!e.empty()) return e;
+      Sea& s = c->sea;
+      if (f == kSeaFields + 0) s.rho = v[0];
+      if (f == kSeaFields + 1) s.level = v[0];
+      if (f == kSeaFields + 2) s.depth = v[0];
+      if (f == kSeaFields + 3) s.nu = v[0];
+      if (f == kSeaFields + 4) { s.current[0] = v[0]; s.current[1] = v[1]; }
+    } else if (!std::strncmp(key, "wave.", 5) && key[5]) {
+      std::string e = checkNumeric(m, i, kWave);
+      if (!e.empty()) return e;
+      Wave w;
+      e = parseWave(name, v, &w);
+      if (!e.empty()) return e;
+      c->sea.waves.push_back(w);
+    } else if (!std::strncmp(key, "hull.", 5)) {
+      const Field* f = findField(kHullFields, nhf, key + 5);
+      if (!f) {
+        return "mjbuoy: unknown entry " + tag("numeric", name) + "; hull parameters are " +
+               fieldList(kHullFields, nhf) + " (see docs/mjcf.md)";
+      }
+      std::string e = checkNumeric(m, i, *f);
+      if (!e.empty()) return e;
+      for (int j = 0; j < f->n; j++) param(&def, *f)[j] = v[j];
+    } else if (!std::strncmp(key, "geom.", 5)) {
+      // mjbuoy.geom.<geom>.<param>: geom names may hold dots, params do not
+      const char* rest = key + 5;
+      const char* dot = std::strrchr(rest, '.');
+      const Field* f = dot ? findField(kHullFields, nhf, dot + 1) : nullptr;
+      if (!f) {
+        return "mjbuoy: unknown entry " + tag("numeric", name) +
+               "; per-hull entries are mjbuoy.geom.<geom>.<param> with param one of " +
+               fieldList(kHullFields, nhf) + " (see docs/mjcf.md)";
+      }
+      std::string gname(rest, dot - rest);
+      int g = mj_name2id(m, mjOBJ_GEOM, gname.c_str());
+      int h = -1;
+      for (size_t j = 0; j < gid.size(); j++) if (gid[j] == g) h = j;
+      if (g < 0 || h < 0) {
+        return "mjbuoy: " + tag("numeric", name) + " refers to geom \"" + gname + "\", " +
+               (g < 0 ? "which does not exist" : "which is not listed in mjbuoy.hulls") +
+               "; fix the name or add the geom to <text name=\"mjbuoy.hulls\">";
+      }
+      std::string e = checkNumeric(m, i, *f);
+      if (!e.empty()) return e;
+      for (int j = 0; j < f->n; j++) param(&par[h], *f)[j] = v[j];
+      set[h][f - kHullFields] = 1;
+    } else {
+      return "mjbuoy: unknown entry " + tag("numeric", name) + "; known entries are " +
+             kTopLevel + " (see docs/mjcf.md)";
+    }
+  }
+
+  // per-hull values not overridden take the (possibly user-set) defaults
+  for (size_t h = 0; h < gid.size(); h++) {
+    for (int k = 0; k < nhf; k++) {
+      if (set[h][k]) continue;
+      for (int j = 0; j < kHullFields[k].n; j++) {
+        param(&par[h], kHullFields[k])[j] = param(&def, kHullFields[k])[j];
+      }
+    }
+  }
+
+  c->sea.derive();
+  double q = c->sea.fold();
+  if (!(q < 1)) {
+    return "mjbuoy: the waves fold: sum over mjbuoy.wave.* of steepness * k * amplitude = " +
+           fmt(q) + " must be < 1 (k = 2 pi / wavelength); lower steepness or amplitude";
+  }
+  if (m->opt.density > 0 || m->opt.viscosity > 0) {
+    c->warn.push_back("<option density/viscosity> is nonzero: MuJoCo's own fluid forces act "
+                      "on every body as well as mjbuoy's (double counting); set them to 0");
+  }
+  if (gid.empty()) {
+    c->warn.push_back(any ? "no hull geoms: mjbuoy adds no force"
+                          : "the model has no mjbuoy.* entries: mjbuoy adds no force");
+  }
+  c->geom = gid;
+  c->param = par;
+  return "";
+}
+
+}  // namespace mjb

@@ -1,0 +1,192 @@
+// MuJoCo glue: public API, registry of attached models, mjcb_passive
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <shared_mutex>
+
+#include "buoy.h"
+#include "hull.h"
+#include "mjbuoy.h"
+
+using mjb::Buoy;
+using mjb::State;
+
+struct mjbBuoy_ {
+  Buoy b;
+  std::shared_mutex mu;                               // guards data
+  std::map<const mjData*, std::unique_ptr<State>> data;
+};
+
+namespace {
+
+// attached models; the callback looks its model up here
+std::shared_mutex gmu;
+std::vector<mjbBuoy*> gattached;
+mjfGeneric gprev = nullptr;  // mjcb_passive found at first attach, chained
+
+mjbBuoy* find(const mjModel* m) {
+  for (mjbBuoy* b : gattached) if (b->b.m == m) return b;
+  return nullptr;
+}
+
+State* state(mjbBuoy* b, const mjData* d, bool create) {
+  {
+    std::shared_lock<std::shared_mutex> lk(b->mu);
+    auto it = b->data.find(d);
+    if (it != b->data.end()) return it->second.get();
+  }
+  if (!create) return nullptr;
+  std::unique_lock<std::shared_mutex> lk(b->mu);
+  auto& s = b->data[d];
+  if (!s) {
+    s = std::make_unique<State>();
+    mjb::makeState(b->b, s.get());
+  }
+  return s.get();
+}
+
+void passive(const mjModel* m, mjData* d) {
+  if (gprev) gprev(m, d);
+  mjbBuoy* b;
+  {
+    std::shared_lock<std::shared_mutex> lk(gmu);
+    b = find(m);
+  }
+  if (!b || b->b.hull.empty()) return;
+  State* s = state(b, d, true);
+  mjb::cpuWrench(b->b, m, d, s);
+  for (int bd : b->b.body) {
+    const mjtNum* w = s->wrench.data() + 6 * bd;
+    mj_applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
+  }
+}
+
+void copyError(const std::string& e, char* error, int error_sz) {
+  if (error && error_sz > 0) std::snprintf(error, error_sz, "%s", e.c_str());
+}
+
+}  // namespace
+
+mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz) {
+  copyError("", error, error_sz);
+  if (!m) {
+    copyError("mjbuoy: mjb_attach was given a NULL model", error, error_sz);
+    return nullptr;
+  }
+  auto b = std::make_unique<mjbBuoy>();
+  Buoy& B = b->b;
+  B.m = m;
+  std::string e = mjb::parseConfig(m, &B.cfg);
+  if (e.empty() && backend) e = mjb::setBackend(backend, "the backend argument", &B.cfg);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    return nullptr;
+  }
+
+  // hulls grouped by body so each body's triangles are contiguous
+  std::vector<int> order = B.cfg.geom;
+  std::stable_sort(order.begin(), order.end(), [&](int a, int c) {
+    return m->geom_bodyid[a] < m->geom_bodyid[c];
+  });
+  std::vector<std::string>& warn = B.cfg.warn;
+  for (int g : order) {
+    size_t k = std::find(B.cfg.geom.begin(), B.cfg.geom.end(), g) - B.cfg.geom.begin();
+    mjb::Mesh mesh = mjb::hullMesh(m, g, &warn);
+    mjb::Hull h;
+    h.geom = g;
+    h.body = m->geom_bodyid[g];
+    h.v0 = B.vert.size() / 3;
+    h.nv = mesh.nv();
+    h.t0 = B.face.size() / 3;
+    h.nt = mesh.nf();
+    h.par = B.cfg.param[k];
+    h.area = 0;
+    for (int f = 0; f < mesh.nf(); f++) {
+      const double* a = &mesh.v[3 * mesh.f[3 * f]];
+      const double* bb = &mesh.v[3 * mesh.f[3 * f + 1]];
+      const double* c = &mesh.v[3 * mesh.f[3 * f + 2]];
+      mjtNum u[3], v[3], x[3];
+      for (int j = 0; j < 3; j++) {
+        u[j] = bb[j] - a[j];
+        v[j] = c[j] - a[j];
+      }
+      mju_cross(x, u, v);
+      h.area += 0.5 * mju_norm3(x);
+    }
+    if (!(h.area > 0)) {
+      copyError(std::string("mjbuoy: hull geom \"") + (m->names + m->name_geomadr[g]) +
+                    "\" has no surface area (no faces, or all faces degenerate); "
+                    "give it a closed triangle mesh",
+                error, error_sz);
+      return nullptr;
+    }
+    B.vert.insert(B.vert.end(), mesh.v.begin(), mesh.v.end());
+    for (int i : mesh.f) B.face.push_back(i + h.v0);
+    B.hull.push_back(h);
+    if (B.body.empty() || B.body.back() != h.body) B.body.push_back(h.body);
+  }
+  for (const std::string& w : warn) B.warnings += "mjbuoy: warning: " + w + "\n";
+  B.renderer = "CPU";
+
+  mjbBuoy* out = b.release();
+  std::unique_lock<std::shared_mutex> lk(gmu);
+  if (gattached.empty() && mjcb_passive != passive) {
+    gprev = mjcb_passive;
+    mjcb_passive = passive;
+  }
+  gattached.push_back(out);
+  return out;
+}
+
+void mjb_detach(mjbBuoy* b) {
+  if (!b) return;
+  {
+    std::unique_lock<std::shared_mutex> lk(gmu);
+    gattached.erase(std::remove(gattached.begin(), gattached.end(), b), gattached.end());
+    if (gattached.empty() && mjcb_passive == passive) {
+      mjcb_passive = gprev;
+      gprev = nullptr;
+    }
+  }
+  delete b;
+}
+
+int mjb_bindData(mjbBuoy* b, const mjData* d) {
+  if (!b || !d) return 0;
+  return state(b, d, true) != nullptr;
+}
+
+void mjb_unbindData(mjbBuoy* b, const mjData* d) {
+  if (!b) return;
+  std::unique_lock<std::shared_mutex> lk(b->mu);
+  b->data.erase(d);
+}
+
+const mjtNum* mjb_wrench(const mjbBuoy* b, const mjData* d) {
+  if (!b) return nullptr;
+  State* s = state(const_cast<mjbBuoy*>(b), d, false);
+  return s ? s->wrench.data() : nullptr;
+}
+
+mjbInfo mjb_info(const mjbBuoy* b) {
+  mjbInfo i = {0, 0, 0, 0, "", ""};
+  if (!b) return i;
+  i.nhull = b->b.hull.size();
+  i.nbody = b->b.body.size();
+  i.ntri = b->b.face.size() / 3;
+  i.nvert = b->b.vert.size() / 3;
+  i.backend = b->b.cfg.backend.c_str();
+  i.renderer = b->b.renderer.c_str();
+  return i;
+}
+
+const char* mjb_warnings(const mjbBuoy* b) {
+  return b ? b->b.warnings.c_str() : "";
+}
+
+mjtNum mjb_seaHeight(const mjbBuoy* b, mjtNum x, mjtNum y, mjtNum t) {
+  return b ? b->b.cfg.sea.height(x, y, t) : 0;
+}

@@ -1,0 +1,70 @@
+// mjbuoy: buoyancy and hydrodynamics of floating bodies for MuJoCo 2.2.
+//
+// The sea and the hulls are described in the model's MJCF <custom> section
+// (docs/mjcf.md). mjb_attach reads them, builds the hulls and installs an
+// mjcb_passive callback; from then on every mj_step / mj_forward of that
+// model adds one wrench per hull body to d->qfrc_passive. d->xfrc_applied is
+// never written: it stays the user's.
+//
+// Units: SI (m, kg, s, N). Frames: world frame, z up.
+#ifndef MJBUOY_MJBUOY_H_
+#define MJBUOY_MJBUOY_H_
+
+#include <mujoco/mujoco.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct mjbBuoy_ mjbBuoy;
+
+// what an attached model holds
+typedef struct mjbInfo_ {
+  int nhull;             // hull geoms
+  int nbody;             // bodies carrying at least one hull
+  int ntri;              // hull triangles, all hulls
+  int nvert;             // hull vertices, all hulls
+  const char* backend;   // backend that runs: "cpu"
+  const char* renderer;  // device it runs on (CPU name or GL renderer)
+} mjbInfo;
+
+// attach mjbuoy to a compiled model. Reads and validates the "mjbuoy.*"
+// custom entries, builds the hulls and installs the mjcb_passive callback
+// (an mjcb_passive installed before is chained and still called).
+// backend: NULL to use the model's mjbuoy.backend entry, else "cpu".
+// Returns NULL on invalid input with the reason in error (error_sz bytes).
+// The model must stay alive and unchanged until mjb_detach.
+mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz);
+
+// detach: stop adding forces to this model and free everything
+void mjb_detach(mjbBuoy* b);
+
+// per-mjData state is created on the first callback for d; call this right
+// after mj_makeData to allocate it up front instead (0 on failure)
+int mjb_bindData(mjbBuoy* b, const mjData* d);
+
+// forget d's state; call before mj_deleteData if the process will keep
+// stepping other mjData of the same model
+void mjb_unbindData(mjbBuoy* b, const mjData* d);
+
+// the wrench mjbuoy added in the last callback for d: nbody x 6, laid out
+// like xfrc_applied: world-frame force [N], then world-frame torque about
+// the body's centre of mass d->xipos [N m]. Zero for bodies without hulls.
+// NULL if d was never seen.
+const mjtNum* mjb_wrench(const mjbBuoy* b, const mjData* d);
+
+// sizes and backend of an attached model
+mjbInfo mjb_info(const mjbBuoy* b);
+
+// load-time warnings (open meshes, double-counted fluid forces, ...), one
+// per line; empty string when there are none
+const char* mjb_warnings(const mjbBuoy* b);
+
+// the exact sea surface height eta(x, y, t) [m] of an attached model
+mjtNum mjb_seaHeight(const mjbBuoy* b, mjtNum x, mjtNum y, mjtNum t);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif  // MJBUOY_MJBUOY_H_

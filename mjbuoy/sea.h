@@ -1,0 +1,54 @@
+// sea: still level plus a sum of Gerstner components (physics.md section 6)
+#ifndef MJBUOY_SEA_H_
+#define MJBUOY_SEA_H_
+
+#include <vector>
+
+namespace mjb {
+
+// one Gerstner component, as given in MJCF plus derived constants
+struct Wave {
+  double amp;      // amplitude A [m]
+  double len;      // wavelength lambda [m]
+  double dir;      // direction of travel, from +x towards +y [deg]
+  double phase;    // phase phi [deg]
+  double steep;    // steepness Q [0, 1]
+  double k;        // wave number 2 pi / lambda [rad/m]
+  double omega;    // angular frequency from the dispersion relation [rad/s]
+  double dx, dy;   // unit direction
+  double ph;       // phase [rad]
+};
+
+struct Sea {
+  double rho = 1000;        // water density [kg/m^3]
+  double level = 0;         // still water level: height of the orbit centres [m]
+  double depth = 0;         // water depth [m]; 0 means deep water
+  double nu = 1.0e-6;       // kinematic viscosity [m^2/s]
+  double current[2] = {0, 0};  // uniform current [m/s]
+  double g = 9.81;          // gravity magnitude [m/s^2], from opt.gravity
+  std::vector<Wave> waves;
+
+  // fill k, omega, unit direction and phase in radians of every wave
+  void derive();
+
+  // sum over waves of Q k A; the surface folds (height stops being a
+  // function of x, y) when it reaches 1
+  double fold() const;
+
+  // exact surface height at a fixed horizontal point [m]: solves for the
+  // particle label a with x(a) = (x, y) to 1e-9 m, then sums A cos(theta(a))
+  double height(double x, double y, double t) const;
+
+  // water velocity at point p [m/s]: current plus the orbital velocity of
+  // every component, decaying below the surface (Airy; exp(k z) in deep
+  // water). Above the surface the surface value is used.
+  void velocity(const double p[3], double t, double v[3]) const;
+
+ private:
+  // particle label a whose displaced horizontal position is (x, y)
+  void label(double x, double y, double t, double a[2]) const;
+};
+
+}  // namespace mjb
+
+#endif  // MJBUOY_SEA_H_
