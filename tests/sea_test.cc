@@ -1,0 +1,75 @@
+// Gerstner surface height at a fixed point, against physics.md section 6
+// and against the forward particle map
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "testutil.h"
+
+namespace mjbt {
+namespace {
+
+std::string seaXML(const std::string& waves) {
+  return "<mujoco><custom>" + waves +
+         "<text name=\"mjbuoy.hulls\" data=\"h\"/></custom><worldbody><body>"
+         "<freejoint/><geom name=\"h\" type=\"sphere\" size=\"0.1\"/></body></worldbody></mujoco>";
+}
+
+TEST(Sea, GerstnerHeightCheckValue) {
+  // A = 1, lambda = 20, Q = 1, D = +x, phi = 0, deep water, t = 1.3, x = 3.7
+  Scene s(seaXML("<numeric name=\"mjbuoy.wave.a\" data=\"1 20 0 0 1\"/>"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  EXPECT_NEAR(mjb_seaHeight(s.b, 3.7, 0, 1.3), 0.1394445806, 1e-9);
+  // the same wave travelling along +y, probed along y
+  Scene r(seaXML("<numeric name=\"mjbuoy.wave.a\" data=\"1 20 90 0 1\"/>"));
+  ASSERT_TRUE(r.ok()) << r.err;
+  EXPECT_NEAR(mjb_seaHeight(r.b, -2.5, 3.7, 1.3), 0.1394445806, 1e-9);
+}
+
+TEST(Sea, FlatAndLevel) {
+  Scene s(seaXML("<numeric name=\"mjbuoy.sea.level\" data=\"-1.25\"/>"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  EXPECT_EQ(mjb_seaHeight(s.b, 10, -3, 7), -1.25);
+}
+
+TEST(Sea, HeightInvertsTheParticleMap) {
+  // three components, finite depth: move particles forward, then ask for the
+  // height where each particle landed
+  const double A[3] = {0.5, 0.2, 0.1}, L[3] = {30, 11, 5}, dir[3] = {0, 50, -120};
+  const double ph[3] = {0, 30, 200}, Q[3] = {0.8, 0.6, 0.9}, h = 8, lvl = 0.3;
+  Scene s(seaXML("<numeric name=\"mjbuoy.wave.a\" data=\"0.5 30 0 0 0.8\"/>"
+                 "<numeric name=\"mjbuoy.wave.b\" data=\"0.2 11 50 30 0.6\"/>"
+                 "<numeric name=\"mjbuoy.wave.c\" data=\"0.1 5 -120 200 0.9\"/>"
+                 "<numeric name=\"mjbuoy.sea.depth\" data=\"8\"/>"
+                 "<numeric name=\"mjbuoy.sea.level\" data=\"0.3\"/>"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> U(-50, 50);
+  for (int i = 0; i < 200; i++) {
+    double a0 = U(rng), a1 = U(rng), t = std::fabs(U(rng));
+    double x = a0, y = a1, z = lvl;
+    for (int k = 0; k < 3; k++) {
+      double kk = 2 * M_PI / L[k], w = std::sqrt(kG * kk * std::tanh(kk * h));
+      double dx = std::cos(dir[k] * M_PI / 180), dy = std::sin(dir[k] * M_PI / 180);
+      double th = kk * (dx * a0 + dy * a1) - w * t + ph[k] * M_PI / 180;
+      x -= Q[k] * A[k] * dx * std::sin(th);
+      y -= Q[k] * A[k] * dy * std::sin(th);
+      z += A[k] * std::cos(th);
+    }
+    ASSERT_NEAR(mjb_seaHeight(s.b, x, y, t), z, 1e-9) << "particle " << i;
+  }
+}
+
+TEST(Sea, MeanOfSteepSurfaceSitsBelowOrbitCentres) {
+  // Q = 1: the mean height over a wavelength is k A^2 / 2 below the level
+  Scene s(seaXML("<numeric name=\"mjbuoy.wave.a\" data=\"0.8 20 0 0 1\"/>"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  const int n = 20000;
+  double sum = 0;
+  for (int i = 0; i < n; i++) sum += mjb_seaHeight(s.b, 20.0 * (i + 0.5) / n, 0, 0.7);
+  double k = 2 * M_PI / 20;
+  EXPECT_NEAR(sum / n, -k * 0.8 * 0.8 / 2, 1e-6);
+}
+
+}  // namespace
+}  // namespace mjbt

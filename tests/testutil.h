@@ -1,0 +1,97 @@
+// test helpers: inline MJCF loading and an attached model bundle
+#ifndef MJBUOY_TESTS_TESTUTIL_H_
+#define MJBUOY_TESTS_TESTUTIL_H_
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <mujoco/mujoco.h>
+
+#include "mjbuoy.h"
+
+namespace mjbt {
+
+static const double kRho = 1000, kG = 9.81;
+
+// compile an MJCF string; NULL with the message in err on failure
+inline mjModel* loadXML(const std::string& xml, std::string* err = nullptr) {
+  mjVFS vfs;
+  mj_defaultVFS(&vfs);
+  mj_makeEmptyFileVFS(&vfs, "model.xml", xml.size());
+  int i = mj_findFileVFS(&vfs, "model.xml");
+  std::memcpy(vfs.filedata[i], xml.data(), xml.size());
+  char e[1024] = "";
+  mjModel* m = mj_loadXML("model.xml", &vfs, e, sizeof(e));
+  mj_deleteVFS(&vfs);
+  if (err) *err = e;
+  return m;
+}
+
+// a compiled model with mjbuoy attached and one mjData
+struct Scene {
+  mjModel* m = nullptr;
+  mjData* d = nullptr;
+  mjbBuoy* b = nullptr;
+  std::string err;
+  explicit Scene(const std::string& xml) {
+    m = loadXML(xml, &err);
+    if (!m) return;
+    char e[1024];
+    b = mjb_attach(m, nullptr, e, sizeof(e));
+    if (!b) {
+      err = e;
+      return;
+    }
+    d = mj_makeData(m);
+  }
+  ~Scene() {
+    if (d) mj_deleteData(d);
+    if (b) mjb_detach(b);
+    if (m) mj_deleteModel(m);
+  }
+  bool ok() const { return m && b && d; }
+  const mjtNum* wrench(int body) const { return mjb_wrench(b, d) + 6 * body; }
+  int body(const char* name) const { return mj_name2id(m, mjOBJ_BODY, name); }
+  // step for sim time T, returning the mean of f() over the last `window` s
+  template <class F>
+  double settle(double T, double window, F f) {
+    double sum = 0;
+    int n = 0;
+    while (d->time < T) {
+      mj_step(m, d);
+      if (d->time > T - window) {
+        sum += f();
+        n++;
+      }
+    }
+    return sum / n;
+  }
+};
+
+// roll about x [rad] of a body (marine convention, R = Rz Ry Rx)
+inline double roll(const mjData* d, int b) {
+  const mjtNum* R = d->xmat + 9 * b;
+  return std::atan2(R[7], R[8]);
+}
+
+// solve f(x) = 0 for x in [lo, hi] by bisection, f(lo) and f(hi) of opposite signs
+template <class F>
+double bisect(F f, double lo, double hi, double tol = 1e-13) {
+  double flo = f(lo);
+  for (int i = 0; i < 200 && hi - lo > tol; i++) {
+    double mid = 0.5 * (lo + hi), fm = f(mid);
+    if ((fm < 0) == (flo < 0)) {
+      lo = mid;
+      flo = fm;
+    } else {
+      hi = mid;
+    }
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace mjbt
+
+#endif  // MJBUOY_TESTS_TESTUTIL_H_
