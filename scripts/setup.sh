@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs the Debian packages mjbuoy needs (idempotent: quiet when all are
+# there), then configures and builds into build/. Why each package is here:
+# docs/dependencies.md.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+pkgs=(
+  cmake g++ make pkg-config
+  libmujoco-dev libqhull-dev   # MuJoCo 2.2.2; its CMake config names qhull's include dir
+  libeigen3-dev                # small fixed-size linear algebra in tests
+  libgtest-dev                 # unit tests
+  libcli11-dev                 # command-line parsing of the tools
+)
+
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+build=${MJBUOY_BUILD:-build}
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j"$(nproc)" 2>&1 | grep -E "error|warning|Error" || true
+test -x "$build/tools/mjbuoy-sim" || { echo "setup: build failed" >&2; exit 1; }
