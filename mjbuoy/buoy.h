@@ -8,6 +8,7 @@
 #include <mujoco/mujoco.h>
 
 #include "config.h"
+#include "mjbuoy.h"
 
 namespace mjb {
 
@@ -16,6 +17,7 @@ struct Hull {
   int v0, nv;         // vertex range in Buoy::vert
   int t0, nt;         // triangle range in Buoy::face
   double area;        // total surface area S_total [m^2]
+  double mass;        // body mass share of this hull (by area) [kg]
   HullParams par;
 };
 
@@ -26,17 +28,34 @@ struct Buoy {
   std::vector<Hull> hull;      // ordered by body, then geom
   std::vector<double> vert;    // hull vertices in body frame, 3 each [m]
   std::vector<int> face;       // 3 global vertex indices per triangle
+  std::vector<double> tarea;   // area of each triangle [m^2]
   std::vector<int> body;       // bodies carrying hulls, ascending
   std::string warnings;        // newline-separated
   std::string renderer;
 };
 
+// wet triangle data of one call, and the slamming history
+struct TriState {
+  std::vector<double> area;    // wet area [m^2]
+  std::vector<double> c;       // wet centroid relative to the body COM, 3 each [m]
+  std::vector<double> n;       // outward unit normal, 3 each
+  std::vector<double> v;       // flow-relative centroid velocity, 3 each [m/s]
+};
+
 // per-mjData state; sized at creation, never resized while stepping
 struct State {
   std::vector<double> wrench;  // nbody x 6: force, torque about xipos (world)
+  std::vector<double> part;    // mjbNPART x nbody x 6: wrench by force family
   std::vector<double> rel;     // vertex positions relative to their body COM [m]
   std::vector<double> h;       // vertex heights above the surface [m]
   std::vector<char> bad;       // per body: state not finite in the last call
+  TriState tri;                // this call
+  // slamming history: wet area and velocity per triangle at the first call
+  // of the current step (cur) and of the previous step (prev)
+  std::vector<double> curA, curV, prevA, prevV;
+  long key = -1;               // mjTIMER_STEP count of the current step
+  double tcur = 0, tprev = 0;  // times of those first calls [s]
+  bool hasPrev = false;
 };
 
 // allocate s for b

@@ -21,14 +21,50 @@ struct Field {
   const char* unit;
   const char* example;
   size_t off = 0;  // hull fields: offset in HullParams
+  const struct Field* parts = nullptr;  // per-value name and range, if they differ
 };
 
-static const HullParams kHullDefault = {{0, 0}};
+// defaults (docs/mjcf.md says why): simple damping off; form factor 1+k of
+// a typical slender hull; quadratic drag from the dynamic pressure
+// 0.5 rho v^2 = 500 Pa at 1 m/s (stagnation ~0.8 of it ahead, base suction
+// ~0.4 behind), linear terms that settle slow motion, Kerner's exponent 0.5;
+// slamming as Kerner with Gamma_max 100 m/s^2 and p = 2
+static const HullParams kHullDefault = {
+    {0, 0}, 1.3, {100, 400, 0.5}, {100, 200, 0.5}, 1.0, {1, 100, 2}};
 
-// hull parameters, in HullParams order
+#define PART(name, lo, hi, open, unit) {name, 1, lo, hi, open, unit, ""}
+static const Field kDragParts[3] = {
+  PART("linear coefficient", 0, INFINITY, false, "N/m^2"),
+  PART("quadratic coefficient", 0, INFINITY, false, "N/m^2"),
+  PART("exponent", 0, 8, false, "dimensionless"),
+};
+static const Field kSlamParts[3] = {
+  PART("gain", 0, 1, false, "dimensionless"),
+  PART("gamma_max", 0, INFINITY, true, "m/s^2"),
+  PART("power", 0, 16, true, "dimensionless"),
+};
+static const Field kWaveParts[5] = {
+  PART("amplitude", 0, INFINITY, false, "m"),
+  PART("wavelength", 0, INFINITY, true, "m"),
+  PART("direction", -INFINITY, INFINITY, false, "deg"),
+  PART("phase", -INFINITY, INFINITY, false, "deg"),
+  PART("steepness", 0, 1, false, "dimensionless"),
+};
+#undef PART
+
+// hull parameters
 static const Field kHullFields[] = {
-  {"damping", 2, 0, INFINITY, false, "linear N s/m, angular N m s/rad", "200 50",
+  {"damping", 2, 0, INFINITY, false, "linear N s/m, angular N m s/rad", "3000 300",
    offsetof(HullParams, damp)},
+  {"viscous", 1, 0, 3, false, "form factor 1+k, 0 = off", "1.3",
+   offsetof(HullParams, viscous)},
+  {"drag", 3, 0, 0, false, "C_PD1 N/m^2, C_PD2 N/m^2, f_P", "100 400 0.5",
+   offsetof(HullParams, drag), kDragParts},
+  {"suction", 3, 0, 0, false, "C_SD1 N/m^2, C_SD2 N/m^2, f_S", "100 200 0.5",
+   offsetof(HullParams, suction), kDragParts},
+  {"vref", 1, 0, INFINITY, true, "m/s", "1", offsetof(HullParams, vref)},
+  {"slamming", 3, 0, 0, false, "gain, gamma_max m/s^2, power", "1 100 2",
+   offsetof(HullParams, slam), kSlamParts},
 };
 
 // sea fields
@@ -40,9 +76,9 @@ static const Field kSeaFields[] = {
   {"current", 2, -INFINITY, INFINITY, false, "m/s, x and y", "0.5 0"},
 };
 
-static const Field kWave = {"wave", 5, -INFINITY, INFINITY, false,
+static const Field kWave = {"wave", 5, 0, 0, false,
                             "amplitude m, wavelength m, direction deg, phase deg, steepness",
-                            "0.5 20 0 0 0.6"};
+                            "0.5 20 0 0 0.6", 0, kWaveParts};
 
 static std::string fmt(double v) {
   std::ostringstream s;
@@ -57,18 +93,18 @@ static std::string tag(const char* kind, const char* name) {
 
 // range check of one value
 static std::string checkValue(const char* name, const Field& f, const char* what,
-                              double v) {
+                              double v, const char* example) {
   std::string pre = "mjbuoy: " + tag("numeric", name) + " " + what + " = " + fmt(v);
   if (!std::isfinite(v)) {
     return pre + " is not a finite number; give a finite value in " + f.unit +
-           ", e.g. data=\"" + f.example + "\"";
+           ", e.g. data=\"" + example + "\"";
   }
   bool low = f.loopen ? v <= f.lo : v < f.lo;
   if (low || v > f.hi) {
     std::string range = std::string(f.loopen ? "> " : ">= ") + fmt(f.lo);
     if (std::isfinite(f.hi)) range += " and <= " + fmt(f.hi);
     return pre + " is out of range: it must be " + range + " [" + f.unit +
-           "]; fix its data attribute, e.g. data=\"" + f.example + "\"";
+           "]; fix its data attribute, e.g. data=\"" + example + "\"";
   }
   return "";
 }
@@ -84,8 +120,10 @@ static std::string checkNumeric(const mjModel* m, int i, const Field& f) {
   }
   const mjtNum* v = m->numeric_data + m->numeric_adr[i];
   for (int j = 0; j < n; j++) {
+    const Field& fj = f.parts ? f.parts[j] : f;
     std::string what = n == 1 ? "value" : "value " + std::to_string(j + 1);
-    std::string e = checkValue(name, f, what.c_str(), v[j]);
+    if (f.parts) what += " (" + std::string(fj.name) + ")";
+    std::string e = checkValue(name, fj, what.c_str(), v[j], f.example);
     if (!e.empty()) return e;
   }
   return "";
@@ -112,23 +150,6 @@ static std::string fieldList(const Field* fs, int n) {
 static const char kTopLevel[] =
     "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.hulls, mjbuoy.backend, "
     "mjbuoy.hull.<param>, mjbuoy.geom.<geom>.<param>";
-
-// wave: amplitude, wavelength, direction, phase, steepness
-static std::string parseWave(const char* name, const mjtNum* v, Wave* w) {
-  static const Field f[5] = {
-    {"amplitude", 1, 0, INFINITY, false, "m", "0.5 20 0 0 0.6"},
-    {"wavelength", 1, 0, INFINITY, true, "m", "0.5 20 0 0 0.6"},
-    {"direction", 1, -INFINITY, INFINITY, false, "deg", "0.5 20 0 0 0.6"},
-    {"phase", 1, -INFINITY, INFINITY, false, "deg", "0.5 20 0 0 0.6"},
-    {"steepness", 1, 0, 1, false, "dimensionless", "0.5 20 0 0 0.6"},
-  };
-  for (int j = 0; j < 5; j++) {
-    std::string e = checkValue(name, f[j], f[j].name, v[j]);
-    if (!e.empty()) return e;
-  }
-  *w = Wave{v[0], v[1], v[2], v[3], v[4], 0, 0, 0, 0, 0};
-  return "";
-}
 
 // hull geom list: whitespace-separated geom names or fnmatch patterns
 static std::string parseHulls(const mjModel* m, const char* name, const char* text,
@@ -253,10 +274,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
     } else if (!std::strncmp(key, "wave.", 5) && key[5]) {
       std::string e = checkNumeric(m, i, kWave);
       if (!e.empty()) return e;
-      Wave w;
-      e = parseWave(name, v, &w);
-      if (!e.empty()) return e;
-      c->sea.waves.push_back(w);
+      c->sea.waves.push_back(Wave{v[0], v[1], v[2], v[3], v[4], 0, 0, 0, 0, 0});
     } else if (!std::strncmp(key, "hull.", 5)) {
       const Field* f = findField(kHullFields, nhf, key + 5);
       if (!f) {

@@ -1,17 +1,31 @@
 // cpu backend: the reference implementation every other backend must match
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
 #include "buoy.h"
+#include "hydro.h"
 #include "pressure.h"
 
 namespace mjb {
 
 void makeState(const Buoy& b, State* s) {
+  size_t nt = b.face.size() / 3;
   s->wrench.assign(6 * b.m->nbody, 0);
+  s->part.assign(mjbNPART * 6 * b.m->nbody, 0);
   s->rel.assign(b.vert.size(), 0);
   s->h.assign(b.vert.size() / 3, 0);
   s->bad.assign(b.m->nbody, 0);
+  s->tri.area.assign(nt, 0);
+  s->tri.c.assign(3 * nt, 0);
+  s->tri.n.assign(3 * nt, 0);
+  s->tri.v.assign(3 * nt, 0);
+  s->curA.assign(nt, 0);
+  s->prevA.assign(nt, 0);
+  s->curV.assign(3 * nt, 0);
+  s->prevV.assign(3 * nt, 0);
+  s->key = -1;
+  s->hasPrev = false;
 }
 
 static bool finite(const mjtNum* x, int n) {
@@ -19,67 +33,197 @@ static bool finite(const mjtNum* x, int n) {
   return true;
 }
 
-void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
+static double dot(const double* a, const double* b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross(const double* a, const double* b, double* c) {
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// advance the slamming history once per completed mj_step: MuJoCo counts
+// steps in timer[mjTIMER_STEP].number, which stays fixed across the four RK4
+// calls of one step and across bare mj_forward calls, and drops to 0 in
+// mj_resetData (time going backwards resets too)
+static bool newStep(const mjData* d, State* s) {
+  long k = d->timer[mjTIMER_STEP].number;
+  if (s->key < 0 || k < s->key || d->time < s->tcur) {
+    s->hasPrev = false;
+  } else if (k > s->key) {
+    std::swap(s->prevA, s->curA);
+    std::swap(s->prevV, s->curV);
+    s->tprev = s->tcur;
+    s->hasPrev = true;
+  } else {
+    return false;
+  }
+  s->key = k;
+  s->tcur = d->time;
+  return true;
+}
+
+// add force f at c (relative to the COM) to the wrench w
+static void add(double* w, const double* f, const double* c) {
+  double t[3];
+  cross(c, f, t);
+  for (int j = 0; j < 3; j++) {
+    w[j] += f[j];
+    w[3 + j] += t[j];
+  }
+}
+
+// forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
+// is the body's wrench of force family p
+static void hullWrench(const Buoy& b, const Hull& hl, const mjData* d,
+                       const double vel[6], bool first, State* s, double* const w[]) {
   const Sea& sea = b.cfg.sea;
-  const double rg = sea.rho * sea.g, t = d->time;
-  std::memset(s->wrench.data(), 0, s->wrench.size() * sizeof(double));
-  std::memset(s->bad.data(), 0, s->bad.size());
+  const HullParams& par = hl.par;
+  const double rho = sea.rho, rg = rho * sea.g, t = d->time;
+  const mjtNum* x = d->xpos + 3 * hl.body;
+  const mjtNum* R = d->xmat + 9 * hl.body;
+  const mjtNum* com = d->xipos + 3 * hl.body;
 
-  for (const Hull& hl : b.hull) {
-    const int bd = hl.body;
-    const mjtNum* x = d->xpos + 3 * bd;
-    const mjtNum* R = d->xmat + 9 * bd;
-    const mjtNum* c = d->xipos + 3 * bd;
-    mjtNum vel[6];  // [angular; linear] at the COM, world frame
-    mj_objectVelocity(m, d, mjOBJ_BODY, bd, vel, 0);
-    if (!finite(x, 3) || !finite(R, 9) || !finite(c, 3) || !finite(vel, 6)) {
-      s->bad[bd] = 1;
-      continue;
-    }
-    double* w = s->wrench.data() + 6 * bd;
-
-    // vertices: body frame -> relative to COM, and height above the surface
-    for (int i = hl.v0; i < hl.v0 + hl.nv; i++) {
-      const double* p = b.vert.data() + 3 * i;
-      double* r = s->rel.data() + 3 * i;
-      for (int j = 0; j < 3; j++) {
-        r[j] = R[3 * j] * p[0] + R[3 * j + 1] * p[1] + R[3 * j + 2] * p[2] + x[j] - c[j];
-      }
-      double z = r[2] + c[2];
-      s->h[i] = sea.waves.empty() ? z - sea.level : z - sea.height(r[0] + c[0], r[1] + c[1], t);
-    }
-
-    // triangles: pressure force -rho g dA n, torque -rho g drA x n
-    double f[3] = {0, 0, 0}, tq[3] = {0, 0, 0}, wet = 0;
-    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-      const int* fc = b.face.data() + 3 * k;
-      double p[3][3], h[3];
-      for (int e = 0; e < 3; e++) {
-        std::memcpy(p[e], s->rel.data() + 3 * fc[e], 3 * sizeof(double));
-        h[e] = s->h[fc[e]];
-      }
-      Wet wt;
-      wetTriangle(p, h, &wt);
-      if (wt.area <= 0) continue;
-      const double* n = wt.n;
-      for (int j = 0; j < 3; j++) f[j] -= rg * wt.dA * n[j];
-      tq[0] -= rg * (wt.drA[1] * n[2] - wt.drA[2] * n[1]);
-      tq[1] -= rg * (wt.drA[2] * n[0] - wt.drA[0] * n[2]);
-      tq[2] -= rg * (wt.drA[0] * n[1] - wt.drA[1] * n[0]);
-      wet += wt.area;
-    }
-
-    // simple damping (Cruz 2023): scaled by the wet fraction r_s = S_wet / S
-    double rs = wet / hl.area;
+  // vertices: body frame -> relative to COM, and height above the surface
+  for (int i = hl.v0; i < hl.v0 + hl.nv; i++) {
+    const double* p = b.vert.data() + 3 * i;
+    double* r = s->rel.data() + 3 * i;
     for (int j = 0; j < 3; j++) {
-      w[j] += f[j] - hl.par.damp[0] * rs * vel[3 + j];
-      w[3 + j] += tq[j] - hl.par.damp[1] * rs * vel[j];
+      r[j] = R[3 * j] * p[0] + R[3 * j + 1] * p[1] + R[3 * j + 2] * p[2] + x[j] - com[j];
+    }
+    double z = r[2] + com[2];
+    s->h[i] = sea.waves.empty() ? z - sea.level
+                                : z - sea.height(r[0] + com[0], r[1] + com[1], t);
+  }
+
+  // the hull's flow: its COM velocity relative to the water there; the
+  // wetted length L is the wet extent along it (body x when at rest)
+  double uw[3], vr[3], dir[3];
+  sea.velocity(com, t, uw);
+  for (int j = 0; j < 3; j++) vr[j] = vel[3 + j] - uw[j];
+  double speed = std::sqrt(dot(vr, vr));
+  for (int j = 0; j < 3; j++) dir[j] = speed > 1e-9 ? vr[j] / speed : R[3 * j];
+  double lo = INFINITY, hi = -INFINITY;
+
+  // pass 1: cut, exact pressure force -rho g dA n and torque -rho g drA x n
+  double* wp = w[mjbPART_PRESSURE];
+  double wet = 0;
+  for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+    const int* fc = b.face.data() + 3 * k;
+    double p[3][3], h[3];
+    for (int e = 0; e < 3; e++) {
+      std::memcpy(p[e], s->rel.data() + 3 * fc[e], 3 * sizeof(double));
+      h[e] = s->h[fc[e]];
+    }
+    Wet wt;
+    wetTriangle(p, h, &wt);
+    s->tri.area[k] = wt.area > 0 ? wt.area : 0;
+    if (!(wt.area > 0)) continue;
+    const double* n = wt.n;
+    double mo[3];
+    cross(wt.drA, n, mo);
+    for (int j = 0; j < 3; j++) {
+      wp[j] -= rg * wt.dA * n[j];
+      wp[3 + j] -= rg * mo[j];
+      s->tri.c[3 * k + j] = wt.rA[j] / wt.area;
+      s->tri.n[3 * k + j] = n[j];
+    }
+    wet += wt.area;
+    for (int i = 0; i < wt.nq; i++) {
+      double e = dot(wt.q[i], dir);
+      lo = std::min(lo, e);
+      hi = std::max(hi, e);
     }
   }
 
-  // a body with a non-finite state gets no force (other hulls of it included)
+  // viscous resistance: ITTC 1957 C_F at the hull's Reynolds number, and
+  // Kerner's per-triangle form factor, laminar (low) at the front and
+  // turbulent (high) at the rear: 1+k_i = (1+k)(1 + sbar - s_i), s in [0, 1]
+  // from rear to front, whose area-weighted mean is the hull's 1+k
+  double len = hi > lo ? hi - lo : 0;
+  double cf = ittc57(speed * len / sea.nu), sbar = 0;
+  if (wet > 0 && len > 0) {
+    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+      if (s->tri.area[k] > 0) sbar += s->tri.area[k] * (dot(&s->tri.c[3 * k], dir) - lo) / len;
+    }
+    sbar /= wet;
+  }
+
+  // pass 2: hydrodynamic forces at each wet centroid
+  const double slamdt = s->hasPrev ? t - s->tprev : 0;
+  for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+    double A = s->tri.area[k];
+    double* v = &s->tri.v[3 * k];
+    if (!(A > 0)) {
+      v[0] = v[1] = v[2] = 0;
+      continue;
+    }
+    const double* c = &s->tri.c[3 * k];
+    const double* n = &s->tri.n[3 * k];
+    double pw[3], wc[3];
+    for (int j = 0; j < 3; j++) pw[j] = c[j] + com[j];
+    sea.velocity(pw, t, uw);
+    cross(vel, c, wc);
+    for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uw[j];
+
+    double g[3];
+    if (par.viscous > 0) {
+      double sk = len > 0 ? (dot(c, dir) - lo) / len : sbar;
+      viscousForce(rho, cf, par.viscous * (1 + sbar - sk), A, n, v, g);
+      add(w[mjbPART_VISCOUS], g, c);
+    }
+    dragForce(par.drag, par.suction, par.vref, A, n, v, g);
+    add(w[mjbPART_DRAG], g, c);
+    if (s->hasPrev) {
+      slamForce(par.slam[0], par.slam[1], par.slam[2], hl.mass, hl.area, b.tarea[k], A, v,
+                s->prevA[k], &s->prevV[3 * k], n, slamdt, g);
+      add(w[mjbPART_SLAM], g, c);
+    }
+  }
+
+  // slamming history: this step's first call
+  if (first) {
+    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+      s->curA[k] = s->tri.area[k];
+      for (int j = 0; j < 3; j++) s->curV[3 * k + j] = s->tri.v[3 * k + j];
+    }
+  }
+
+  // simple damping (Cruz 2023), scaled by the wet fraction r_s = S_wet / S
+  double rs = wet / hl.area;
+  for (int j = 0; j < 3; j++) {
+    w[mjbPART_DAMPING][j] -= par.damp[0] * rs * vel[3 + j];
+    w[mjbPART_DAMPING][3 + j] -= par.damp[1] * rs * vel[j];
+  }
+}
+
+void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
+  const int nb6 = 6 * m->nbody;
+  std::memset(s->part.data(), 0, s->part.size() * sizeof(double));
+  std::memset(s->bad.data(), 0, s->bad.size());
+  bool first = newStep(d, s);
+  for (const Hull& hl : b.hull) {
+    const int bd = hl.body;
+    mjtNum vel[6];  // [angular; linear] at the COM, world frame
+    mj_objectVelocity(m, d, mjOBJ_BODY, bd, vel, 0);
+    if (!finite(d->xpos + 3 * bd, 3) || !finite(d->xmat + 9 * bd, 9) ||
+        !finite(d->xipos + 3 * bd, 3) || !finite(vel, 6)) {
+      s->bad[bd] = 1;
+      continue;
+    }
+    double* w[mjbNPART];
+    for (int p = 0; p < mjbNPART; p++) w[p] = s->part.data() + p * nb6 + 6 * bd;
+    hullWrench(b, hl, d, vel, first, s, w);
+  }
+  // total; a body with a non-finite state gets no force at all
+  std::memset(s->wrench.data(), 0, s->wrench.size() * sizeof(double));
   for (int bd : b.body) {
-    if (s->bad[bd]) std::memset(s->wrench.data() + 6 * bd, 0, 6 * sizeof(double));
+    for (int p = 0; p < mjbNPART; p++) {
+      double* wp = s->part.data() + p * nb6 + 6 * bd;
+      if (s->bad[bd]) std::memset(wp, 0, 6 * sizeof(double));
+      for (int j = 0; j < 6; j++) s->wrench[6 * bd + j] += wp[j];
+    }
   }
 }
 

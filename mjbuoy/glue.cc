@@ -104,6 +104,7 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     h.nt = mesh.nf();
     h.par = B.cfg.param[k];
     h.area = 0;
+    h.mass = m->body_mass[h.body];
     for (int f = 0; f < mesh.nf(); f++) {
       const double* a = &mesh.v[3 * mesh.f[3 * f]];
       const double* bb = &mesh.v[3 * mesh.f[3 * f + 1]];
@@ -114,7 +115,8 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
         v[j] = c[j] - a[j];
       }
       mju_cross(x, u, v);
-      h.area += 0.5 * mju_norm3(x);
+      B.tarea.push_back(0.5 * mju_norm3(x));
+      h.area += B.tarea.back();
     }
     if (!(h.area > 0)) {
       copyError(std::string("mjbuoy: hull geom \"") + (m->names + m->name_geomadr[g]) +
@@ -127,6 +129,12 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     for (int i : mesh.f) B.face.push_back(i + h.v0);
     B.hull.push_back(h);
     if (B.body.empty() || B.body.back() != h.body) B.body.push_back(h.body);
+  }
+  // a body's mass is shared among its hulls by area (slamming stops it)
+  for (mjb::Hull& h : B.hull) {
+    double s = 0;
+    for (const mjb::Hull& o : B.hull) if (o.body == h.body) s += o.area;
+    h.mass *= h.area / s;
   }
   for (const std::string& w : warn) B.warnings += "mjbuoy: warning: " + w + "\n";
   B.renderer = "CPU";
@@ -169,6 +177,12 @@ const mjtNum* mjb_wrench(const mjbBuoy* b, const mjData* d) {
   if (!b) return nullptr;
   State* s = state(const_cast<mjbBuoy*>(b), d, false);
   return s ? s->wrench.data() : nullptr;
+}
+
+const mjtNum* mjb_wrenchPart(const mjbBuoy* b, const mjData* d, int part) {
+  if (!b || part < 0 || part >= mjbNPART) return nullptr;
+  State* s = state(const_cast<mjbBuoy*>(b), d, false);
+  return s ? s->part.data() + 6 * b->b.m->nbody * part : nullptr;
 }
 
 mjbInfo mjb_info(const mjbBuoy* b) {

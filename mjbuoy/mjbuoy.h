@@ -53,6 +53,20 @@ void mjb_unbindData(mjbBuoy* b, const mjData* d);
 // NULL if d was never seen.
 const mjtNum* mjb_wrench(const mjbBuoy* b, const mjData* d);
 
+// the force families that make up the wrench
+typedef enum mjbPart_ {
+  mjbPART_PRESSURE = 0,  // hydrostatic pressure (buoyancy), exact
+  mjbPART_VISCOUS,       // viscous resistance (ITTC 1957)
+  mjbPART_DRAG,          // pressure and suction drag
+  mjbPART_SLAM,          // slamming
+  mjbPART_DAMPING,       // simple linear damping
+  mjbNPART
+} mjbPart;
+
+// one force family's share of mjb_wrench, same layout; NULL if d was never
+// seen or part is out of range
+const mjtNum* mjb_wrenchPart(const mjbBuoy* b, const mjData* d, int part);
+
 // sizes and backend of an attached model
 mjbInfo mjb_info(const mjbBuoy* b);
 

@@ -22,8 +22,8 @@ void wetTriangle(const double p[3][3], const double h[3], Wet* w) {
 
   // clip to h <= 0, walking the edges in the parent's order so the wet
   // polygon keeps its winding (Sutherland-Hodgman); at most 4 vertices
-  double q[4][3], d[4];
-  int nq = 0;
+  double (*q)[3] = w->q, d[4];
+  int& nq = w->nq;
   for (int i = 0; i < 3; i++) {
     int k = (i + 1) % 3;
     if (h[i] <= 0) {

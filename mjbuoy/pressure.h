@@ -21,6 +21,8 @@ struct Wet {
   double drA[3];  // integral of d r dA [m^4]
   double rA[3];   // integral of r dA [m^3] (wet centroid times area)
   double n[3];    // outward unit normal of the triangle (0 if degenerate)
+  double q[4][3]; // wet polygon, parent's winding
+  int nq;         // its vertex count: 0, 3 or 4
 };
 
 // p: the three vertices [m], counter-clockwise seen from outside, relative

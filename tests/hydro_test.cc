@@ -1,0 +1,135 @@
+// hydrodynamics: tow resistance against the ITTC line by hand, slamming
+// bounds, free decay, drift with a current
+#include <gtest/gtest.h>
+
+#include "testutil.h"
+
+namespace mjbt {
+namespace {
+
+// 2 x 1 x 0.5 m box of 500 kg (draft 0.25 m); `custom` adds mjbuoy entries,
+// `joint` is the body's joint(s)
+std::string box(const std::string& custom, const std::string& joint,
+                const std::string& extra = "", const char* pos = "0 0 0") {
+  return "<mujoco><option timestep=\"0.002\"/><custom>"
+         "<text name=\"mjbuoy.hulls\" data=\"hull\"/>" + custom +
+         "</custom><worldbody><body name=\"b\" pos=\"" + pos + "\">" + joint +
+         "<geom name=\"hull\" type=\"box\" size=\"1 0.5 0.25\" mass=\"500\"/></body>"
+         "</worldbody>" + extra + "</mujoco>";
+}
+
+const char kViscousOnly[] =
+    "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0.5\"/>"
+    "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0.5\"/>"
+    "<numeric name=\"mjbuoy.hull.slamming\" data=\"0 100 2\"/>";
+
+TEST(Hydro, TowResistanceFollowsITTC57) {
+  // towed along x at the equilibrium draft by a stiff velocity servo; at
+  // steady speed the servo force is the resistance. By hand: wetted area
+  // S = bottom + 2 sides = L B + 2 L T = 3 m^2 (the end faces meet the flow
+  // head-on and feel no shear), Rn = V L / nu,
+  // C_F = 0.075 / (log10 Rn - 2)^2, R = 0.5 rho C_F (1+k) S V^2, 1+k = 1.3
+  Scene s(box(kViscousOnly, "<joint name=\"x\" type=\"slide\" axis=\"1 0 0\"/>",
+              "<actuator><velocity joint=\"x\" kv=\"1e5\"/></actuator>"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  for (double V : {0.5, 1.0, 2.0}) {
+    mj_resetData(s.m, s.d);
+    s.d->ctrl[0] = V;
+    double R = s.settle(4, 1, [&] { return s.d->actuator_force[0]; });
+    double v = s.d->qvel[0];
+    double rn = v * 2 / 1e-6, cf = 0.075 / std::pow(std::log10(rn) - 2, 2);
+    double hand = 0.5 * kRho * cf * 1.3 * 3 * v * v;
+    EXPECT_NEAR(R, hand, 0.02 * hand) << "V = " << V << " Rn " << rn << " C_F " << cf;
+    RecordProperty("tow_" + std::to_string(V), std::to_string(R) + " vs " + std::to_string(hand));
+  }
+}
+
+TEST(Hydro, ViscousForceOpposesMotionAtAnyHeading) {
+  // a free box moving horizontally in calm water at rest: viscous force is
+  // opposite the velocity component along the hull and never drives it
+  Scene s(box(kViscousOnly, "<freejoint/>"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  int b = s.body("b");
+  for (double a = 0; a < 2 * M_PI; a += 0.3) {
+    mj_resetData(s.m, s.d);
+    s.d->qvel[0] = std::cos(a);
+    s.d->qvel[1] = std::sin(a);
+    mj_forward(s.m, s.d);
+    const mjtNum* f = mjb_wrenchPart(s.b, s.d, mjbPART_VISCOUS) + 6 * b;
+    EXPECT_LT(f[0] * s.d->qvel[0] + f[1] * s.d->qvel[1], 0) << a;
+  }
+}
+
+TEST(Hydro, SlammingNeverReversesAndReducesPenetration) {
+  // dropped with its bottom 5 m above the water; each step the slamming
+  // impulse along the velocity is at most the body's momentum, and the peak
+  // depth with slamming is smaller than without
+  auto drop = [&](bool slam, double* worst) {
+    std::string c = slam ? "" : "<numeric name=\"mjbuoy.hull.slamming\" data=\"0 100 2\"/>";
+    Scene s(box(c, "<freejoint/>", "", "0 0 5.25"));
+    EXPECT_TRUE(s.ok()) << s.err;
+    int b = s.body("b");
+    double lowest = 1e9, dt = s.m->opt.timestep;
+    *worst = 0;
+    while (s.d->time < 6) {
+      // the step's forces are computed from the state it starts from
+      double v[3] = {s.d->qvel[0], s.d->qvel[1], s.d->qvel[2]};
+      mj_step(s.m, s.d);
+      lowest = std::min(lowest, s.d->xipos[3 * b + 2]);
+      const mjtNum* f = mjb_wrenchPart(s.b, s.d, mjbPART_SLAM) + 6 * b;
+      double sp = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      if (sp > 0) {
+        double along = (f[0] * v[0] + f[1] * v[1] + f[2] * v[2]) / sp;
+        EXPECT_LE(along, 1e-9) << "slamming pushes along the motion at t " << s.d->time;
+        *worst = std::max(*worst, -along * dt / (500 * sp));
+      }
+    }
+    return lowest;
+  };
+  double wslam, woff;
+  double deep = drop(true, &wslam), deepOff = drop(false, &woff);
+  EXPECT_LE(wslam, 1.0) << "slamming impulse exceeds the momentum";
+  EXPECT_GT(wslam, 0.1) << "slamming barely acted";
+  EXPECT_EQ(woff, 0);
+  EXPECT_GT(deep, deepOff + 0.05) << "with " << deep << " without " << deepOff;
+  RecordProperty("lowest_com", std::to_string(deep) + " vs " + std::to_string(deepOff));
+}
+
+TEST(Hydro, FreeHeaveDecayIsMonotonic) {
+  // released 0.1 m below equilibrium, default forces (simple damping off)
+  Scene s(box("", "<freejoint/>", "", "0 0 -0.1"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  std::vector<double> peaks;
+  double z0 = s.d->qpos[2], z1 = z0;
+  int n = 0;
+  while (s.d->time < 20) {
+    mj_step(s.m, s.d);
+    double z2 = s.d->qpos[2];
+    if (n++ > 1 && z1 > z0 && z1 >= z2) peaks.push_back(z1);
+    z0 = z1;
+    z1 = z2;
+  }
+  ASSERT_GE(peaks.size(), 3u);
+  for (size_t i = 1; i < peaks.size(); i++) {
+    EXPECT_LT(std::fabs(peaks[i]), std::fabs(peaks[i - 1])) << "peak " << i;
+  }
+  EXPECT_LT(std::fabs(z1), 0.01);  // and it settles
+}
+
+TEST(Hydro, DriftsWithTheCurrentOnlyThroughDrag) {
+  const char cur[] = "<numeric name=\"mjbuoy.sea.current\" data=\"0.3 0.4\"/>";
+  Scene s(box(cur, "<freejoint/>"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  s.settle(90, 1, [] { return 0; });
+  EXPECT_NEAR(s.d->qvel[0], 0.3, 0.01 * 0.5);
+  EXPECT_NEAR(s.d->qvel[1], 0.4, 0.01 * 0.5);
+  Scene off(box(std::string(cur) + "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
+                "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0.5\"/>"
+                "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0.5\"/>", "<freejoint/>"));
+  ASSERT_TRUE(off.ok()) << off.err;
+  off.settle(90, 1, [] { return 0; });
+  EXPECT_LT(std::hypot(off.d->qvel[0], off.d->qvel[1]), 1e-6);
+}
+
+}  // namespace
+}  // namespace mjbt
