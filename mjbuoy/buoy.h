@@ -48,6 +48,7 @@ struct State {
   std::vector<double> part;    // mjbNPART x nbody x 6: wrench by force family
   std::vector<double> rel;     // vertex positions relative to their body COM [m]
   std::vector<double> h;       // vertex heights above the surface [m]
+  std::vector<double> lab;     // vertex surface particle labels, 2 each [m]
   std::vector<char> bad;       // per body: state not finite in the last call
   TriState tri;                // this call
   // slamming history: wet area and velocity per triangle at the first call

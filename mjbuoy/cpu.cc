@@ -15,6 +15,7 @@ void makeState(const Buoy& b, State* s) {
   s->part.assign(mjbNPART * 6 * b.m->nbody, 0);
   s->rel.assign(b.vert.size(), 0);
   s->h.assign(b.vert.size() / 3, 0);
+  s->lab.assign(2 * (b.vert.size() / 3), 0);
   s->bad.assign(b.m->nbody, 0);
   s->tri.area.assign(nt, 0);
   s->tri.c.assign(3 * nt, 0);
@@ -92,9 +93,11 @@ static void hullWrench(const Buoy& b, const Hull& hl, const mjData* d,
     for (int j = 0; j < 3; j++) {
       r[j] = R[3 * j] * p[0] + R[3 * j + 1] * p[1] + R[3 * j + 2] * p[2] + x[j] - com[j];
     }
-    double z = r[2] + com[2];
-    s->h[i] = sea.waves.empty() ? z - sea.level
-                                : z - sea.height(r[0] + com[0], r[1] + com[1], t);
+    double* a = s->lab.data() + 2 * i;
+    a[0] = r[0] + com[0];
+    a[1] = r[1] + com[1];
+    if (!sea.waves.empty()) sea.label(a[0], a[1], t, a);
+    s->h[i] = r[2] + com[2] - sea.heightOf(a, t);
   }
 
   // the hull's flow: its COM velocity relative to the water there; the
@@ -161,9 +164,17 @@ static void hullWrench(const Buoy& b, const Hull& hl, const mjData* d,
     }
     const double* c = &s->tri.c[3 * k];
     const double* n = &s->tri.n[3 * k];
-    double pw[3], wc[3];
+    // water velocity at the wet centroid; Newton starts from the mean of the
+    // vertex labels, which is within a few mm of the answer
+    const int* fc = b.face.data() + 3 * k;
+    double pw[3], wc[3], a[2] = {0, 0};
     for (int j = 0; j < 3; j++) pw[j] = c[j] + com[j];
-    sea.velocity(pw, t, uw);
+    for (int e = 0; e < 3; e++) {
+      a[0] += s->lab[2 * fc[e]] / 3;
+      a[1] += s->lab[2 * fc[e] + 1] / 3;
+    }
+    if (!sea.waves.empty()) sea.label(pw[0], pw[1], t, a);
+    sea.velocityOf(a, t, std::fmin(pw[2] - sea.heightOf(a, t), 0.0), uw);
     cross(vel, c, wc);
     for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uw[j];
 

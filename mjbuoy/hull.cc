@@ -151,15 +151,35 @@ Mesh tessellate(int type, const double size[3]) {
   return m;
 }
 
-Topology topology(const Mesh& m) {
-  // weld vertices at identical positions: mesh files often repeat them
+// index of the first vertex at the same position as each vertex
+static std::vector<int> weldIndex(const Mesh& m, int* nunique) {
   std::map<std::tuple<double, double, double>, int> weld;
   std::vector<int> id(m.nv());
   for (int i = 0; i < m.nv(); i++) {
     auto key = std::make_tuple(m.v[3 * i], m.v[3 * i + 1], m.v[3 * i + 2]);
-    auto it = weld.emplace(key, (int)weld.size()).first;
-    id[i] = it->second;
+    id[i] = weld.emplace(key, (int)weld.size()).first->second;
   }
+  *nunique = weld.size();
+  return id;
+}
+
+// merge vertices at identical positions: MuJoCo 2.2 gives every OBJ face
+// corner its own vertex, which would triple the per-vertex work
+static Mesh weld(const Mesh& m) {
+  int nu;
+  std::vector<int> id = weldIndex(m, &nu);
+  Mesh out;
+  out.v.resize(3 * nu);
+  for (int i = 0; i < m.nv(); i++) {
+    for (int j = 0; j < 3; j++) out.v[3 * id[i] + j] = m.v[3 * i + j];
+  }
+  for (int i : m.f) out.f.push_back(id[i]);
+  return out;
+}
+
+Topology topology(const Mesh& m) {
+  int nu;
+  std::vector<int> id = weldIndex(m, &nu);
   // directed edge counts: a closed, consistently wound mesh uses every
   // edge once in each direction
   std::map<std::pair<int, int>, int> dir;
@@ -206,6 +226,7 @@ Mesh hullMesh(const mjModel* m, int g, std::vector<std::string>* warn) {
       const int* f = m->mesh_face + 3 * (f0 + i);
       addTri(&local, f[0], f[1], f[2]);
     }
+    local = weld(local);
     Topology t = topology(local);
     if (t.boundary || t.nonmanifold) {
       warn->push_back("hull geom \"" + gname + "\": mesh is not closed (" +

@@ -29,9 +29,7 @@ void Sea::label(double x, double y, double t, double a[2]) const {
   // Newton on F(a) = a - Q A D sin(theta(a)) - x = 0, with
   // J = I - sum Q A k cos(theta) D D^T. The fold check (sum Q k A < 1)
   // keeps J positive definite, so the root is unique and Newton converges
-  // from a = x; the step is halved if it ever fails to reduce |F|.
-  a[0] = x;
-  a[1] = y;
+  // from any guess; the step is halved if it ever fails to reduce |F|.
   double f0, f1, j00, j01, j11, r2;
   auto eval = [&](const double* p) {
     f0 = p[0] - x;
@@ -69,10 +67,7 @@ void Sea::label(double x, double y, double t, double a[2]) const {
   }
 }
 
-double Sea::height(double x, double y, double t) const {
-  if (waves.empty()) return level;
-  double a[2];
-  label(x, y, t, a);
+double Sea::heightOf(const double a[2], double t) const {
   double z = level;
   for (const Wave& w : waves) {
     double th = w.k * (w.dx * a[0] + w.dy * a[1]) - w.omega * t + w.ph;
@@ -81,20 +76,24 @@ double Sea::height(double x, double y, double t) const {
   return z;
 }
 
+double Sea::height(double x, double y, double t) const {
+  if (waves.empty()) return level;
+  double a[2] = {x, y};
+  label(x, y, t, a);
+  return heightOf(a, t);
+}
+
 void Sea::velocity(const double p[3], double t, double v[3]) const {
+  double a[2] = {p[0], p[1]};
+  if (!waves.empty()) label(p[0], p[1], t, a);
+  velocityOf(a, t, std::fmin(p[2] - heightOf(a, t), 0.0), v);
+}
+
+void Sea::velocityOf(const double a[2], double t, double zb, double v[3]) const {
   v[0] = current[0];
   v[1] = current[1];
   v[2] = 0;
-  if (waves.empty()) return;
-  double a[2];
-  label(p[0], p[1], t, a);
-  double eta = level;
-  for (const Wave& w : waves) {
-    double th = w.k * (w.dx * a[0] + w.dy * a[1]) - w.omega * t + w.ph;
-    eta += w.amp * std::cos(th);
-  }
-  // depth below the surface (0 above it: surface velocity)
-  double zb = std::fmin(p[2] - eta, 0.0);
+  if (depth > 0) zb = std::fmax(zb, -depth);  // not below the sea bed
   for (const Wave& w : waves) {
     double th = w.k * (w.dx * a[0] + w.dy * a[1]) - w.omega * t + w.ph;
     // particle velocity: d/dt of x = a - Q A D sin(theta), z = A cos(theta)

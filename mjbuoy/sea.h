@@ -44,9 +44,13 @@ struct Sea {
   // water). Above the surface the surface value is used.
   void velocity(const double p[3], double t, double v[3]) const;
 
- private:
-  // particle label a whose displaced horizontal position is (x, y)
+  // the same in steps, for callers that keep labels: the particle label a
+  // whose displaced horizontal position is (x, y), by Newton from the guess
+  // in a; the surface height of particle a; the water velocity at depth
+  // zb <= 0 below particle a
   void label(double x, double y, double t, double a[2]) const;
+  double heightOf(const double a[2], double t) const;
+  void velocityOf(const double a[2], double t, double zb, double v[3]) const;
 };
 
 }  // namespace mjb
