@@ -147,11 +147,13 @@ static std::string fieldList(const Field* fs, int n) {
   return s;
 }
 
-static const char kTopLevel[] =
-    "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.hulls, mjbuoy.backend, "
-    "mjbuoy.hull.<param>, mjbuoy.geom.<geom>.<param>";
+static const char kNumericNames[] =
+    "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.hull.<param>, "
+    "mjbuoy.geom.<geom>.<param>";
 
-// hull geom list: whitespace-separated geom names or fnmatch patterns
+// hull geom list: whitespace-separated geom names or fnmatch patterns. A
+// pattern skips geoms that cannot be hulls ("*" with a floor in the scene);
+// a plain name of such a geom is an error.
 static std::string parseHulls(const mjModel* m, const char* name, const char* text,
                               std::vector<char>* is) {
   std::istringstream in(text);
@@ -160,23 +162,25 @@ static std::string parseHulls(const mjModel* m, const char* name, const char* te
   while (in >> pat) {
     count++;
     int hits = 0;
+    bool glob = pat.find_first_of("*?[") != std::string::npos;
     for (int g = 0; g < m->ngeom; g++) {
       const char* gn = m->names + m->name_geomadr[g];
       if (!gn[0] || fnmatch(pat.c_str(), gn, 0)) continue;
-      hits++;
       int t = m->geom_type[g];
       if (t != mjGEOM_MESH && t != mjGEOM_BOX && t != mjGEOM_SPHERE &&
           t != mjGEOM_CYLINDER && t != mjGEOM_CAPSULE && t != mjGEOM_ELLIPSOID) {
+        if (glob) continue;
         return "mjbuoy: " + tag("text", name) + " names geom \"" + gn +
                "\", whose type cannot be a hull; accepted geom types: mesh, box, "
                "sphere, cylinder, capsule, ellipsoid";
       }
+      hits++;
       (*is)[g] = 1;
     }
     if (!hits) {
       return "mjbuoy: " + tag("text", name) + " entry \"" + pat +
-             "\" matches no named geom; give geom names (shell patterns such as "
-             "\"boat*_hull\" are allowed)";
+             "\" matches no named geom that can be a hull; give geom names (shell "
+             "patterns such as \"boat*_hull\" are allowed)";
     }
   }
   if (!count) {
@@ -227,11 +231,12 @@ std::string parseConfig(const mjModel* m, Config* c) {
     } else {
       return "mjbuoy: unknown entry " + tag("text", name) +
              "; text entries are mjbuoy.hulls and mjbuoy.backend (numeric entries: " +
-             kTopLevel + "; see docs/mjcf.md)";
+             kNumericNames + "; see docs/mjcf.md)";
     }
   }
 
   // hull geoms on the world body cannot move: ignored with a warning
+  std::vector<char> listed = is;
   for (int g = 0; g < m->ngeom; g++) {
     if (is[g] && m->geom_bodyid[g] == 0) {
       c->warn.push_back(std::string("geom \"") + (m->names + m->name_geomadr[g]) +
@@ -300,16 +305,23 @@ std::string parseConfig(const mjModel* m, Config* c) {
       for (size_t j = 0; j < gid.size(); j++) if (gid[j] == g) h = j;
       if (g < 0 || h < 0) {
         return "mjbuoy: " + tag("numeric", name) + " refers to geom \"" + gname + "\", " +
-               (g < 0 ? "which does not exist" : "which is not listed in mjbuoy.hulls") +
+               (g < 0 ? "which does not exist"
+                : listed[g] ? "which is on the world body and so is not a hull"
+                            : "which is not listed in mjbuoy.hulls") +
                "; fix the name or add the geom to <text name=\"mjbuoy.hulls\">";
       }
       std::string e = checkNumeric(m, i, *f);
       if (!e.empty()) return e;
       for (int j = 0; j < f->n; j++) param(&par[h], *f)[j] = v[j];
       set[h][f - kHullFields] = 1;
+    } else if (!std::strcmp(key, "hulls") || !std::strcmp(key, "backend")) {
+      return "mjbuoy: " + tag("numeric", name) + " must be a <text> entry, e.g. "
+             "<text name=\"" + name + "\" data=\"" +
+             (key[0] == 'h' ? "hull" : "cpu") + "\"/>";
     } else {
-      return "mjbuoy: unknown entry " + tag("numeric", name) + "; known entries are " +
-             kTopLevel + " (see docs/mjcf.md)";
+      return "mjbuoy: unknown entry " + tag("numeric", name) + "; numeric entries are " +
+             kNumericNames + ", text entries mjbuoy.hulls and mjbuoy.backend "
+             "(see docs/mjcf.md)";
     }
   }
 

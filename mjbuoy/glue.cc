@@ -104,7 +104,7 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     h.nt = mesh.nf();
     h.par = B.cfg.param[k];
     h.area = 0;
-    h.mass = m->body_mass[h.body];
+    h.mass = m->body_subtreemass[h.body];  // all it carries
     for (int f = 0; f < mesh.nf(); f++) {
       const double* a = &mesh.v[3 * mesh.f[3 * f]];
       const double* bb = &mesh.v[3 * mesh.f[3 * f + 1]];
@@ -130,7 +130,8 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     B.hull.push_back(h);
     if (B.body.empty() || B.body.back() != h.body) B.body.push_back(h.body);
   }
-  // a body's mass is shared among its hulls by area (slamming stops it)
+  // the mass a body carries is shared among its hulls by area (slamming
+  // stops it)
   for (mjb::Hull& h : B.hull) {
     double s = 0;
     for (const mjb::Hull& o : B.hull) if (o.body == h.body) s += o.area;

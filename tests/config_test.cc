@@ -98,6 +98,12 @@ TEST(Config, EachInvalidEntryNamesItself) {
      {"mjbuoy.hull.vref", "> 0", "m/s"}},
     {"negative viscosity", "<numeric name=\"mjbuoy.sea.viscosity\" data=\"-1e-6\"/>", "",
      {"mjbuoy.sea.viscosity", "> 0"}},
+    {"numeric hull list", "<numeric name=\"mjbuoy.hulls\" data=\"1\"/>", "",
+     {"mjbuoy.hulls", "must be a <text> entry"}},
+    {"override of a world-body hull",
+     "<text name=\"mjbuoy.hulls\" data=\"hull fixed\"/>"
+     "<numeric name=\"mjbuoy.geom.fixed.damping\" data=\"1 0\"/>", "",
+     {"\"fixed\"", "on the world body"}},
     {"unknown backend", "<text name=\"mjbuoy.backend\" data=\"cuda\"/>", "",
      {"mjbuoy.backend", "\"cuda\"", "accepted: cpu"}},
     {"sideways gravity", "", "<option gravity=\"1 0 -9.81\"/>",
@@ -115,6 +121,14 @@ TEST(Config, EachInvalidEntryNamesItself) {
           << c.what << ": message lacks \"" << sub << "\": " << e;
     }
   }
+}
+
+TEST(Config, PatternsSkipGeomsThatCannotBeHulls) {
+  // "*" also matches the floor plane: skipped, not an error
+  EXPECT_EQ(attachError("<text name=\"mjbuoy.hulls\" data=\"*\"/>"), "");
+  EXPECT_NE(attachError("<text name=\"mjbuoy.hulls\" data=\"fl*\"/>")
+                .find("matches no named geom that can be a hull"),
+            std::string::npos);
 }
 
 TEST(Config, WarningsLoadAnyway) {
