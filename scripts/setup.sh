@@ -11,6 +11,7 @@ pkgs=(
   libeigen3-dev                # small fixed-size linear algebra in tests
   libgtest-dev                 # unit tests
   libcli11-dev                 # command-line parsing of the tools
+  python3                      # CSV checks of the command-line tests
 )
 
 missing=()
