@@ -133,3 +133,86 @@ TEST(Hydro, DriftsWithTheCurrentOnlyThroughDrag) {
 
 }  // namespace
 }  // namespace mjbt
+
+namespace mjbt {
+namespace {
+
+// the motorboat of models/motorboat.xml with its thruster yawed `deg` off
+// the centreline and drag exponents f_P = f_S = f (drag off when f < 0)
+std::string motorboat(double deg, double f) {
+  std::string drag = f < 0 ? "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0.5\"/>"
+                             "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0.5\"/>"
+                           : "<numeric name=\"mjbuoy.hull.drag\" data=\"100 400 " +
+                                 std::to_string(f) + "\"/><numeric name=\"mjbuoy.hull.suction\""
+                                 " data=\"100 200 " + std::to_string(f) + "\"/>";
+  return "<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" MJB_MODELS
+         "/meshes/wigley_576.obj\"/></asset><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>" +
+         drag + "</custom><worldbody><body name=\"boat\" pos=\"0 0 0.034\"><freejoint/>"
+         "<inertial pos=\"0 0 -0.08\" mass=\"176.2\" diaginertia=\"6.020 237.28 238.60\"/>"
+         "<geom name=\"hull\" type=\"mesh\" mesh=\"w\"/>"
+         "<site name=\"thruster\" pos=\"-1.9 0 -0.15\" euler=\"0 0 " + std::to_string(deg) +
+         "\"/></body></worldbody><actuator><motor site=\"thruster\" gear=\"1 0 0 0 0 0\"/>"
+         "</actuator></mujoco>";
+}
+
+// steady turn: speed over yaw rate after the transient [m]
+struct Turn { double radius, speed, sway[mjbNPART]; };
+Turn turn(double deg, double f) {
+  Scene s(motorboat(deg, f));
+  EXPECT_TRUE(s.ok()) << s.err;
+  s.d->ctrl[0] = 60;
+  Turn r = {0, 0, {0}};
+  double yaw = 0, dist = 0, T0 = 80, T1 = 100;
+  while (s.d->time < T1) {
+    mj_step(s.m, s.d);
+    if (s.d->time <= T0) continue;
+    const mjtNum* v = s.d->qvel;
+    double dt = s.m->opt.timestep;
+    yaw += v[5] * dt;  // world z angular velocity
+    dist += std::hypot(v[0], v[1]) * dt;
+    // sideways force on the hull in its own frame, by force family
+    const mjtNum* R = s.d->xmat + 9;
+    for (int p = 0; p < mjbNPART; p++) {
+      const mjtNum* w = mjb_wrenchPart(s.b, s.d, p) + 6;
+      r.sway[p] += (R[1] * w[0] + R[4] * w[1] + R[7] * w[2]) * dt / (T1 - T0);
+    }
+  }
+  r.speed = dist / (T1 - T0);
+  r.radius = dist / std::fabs(yaw);
+  return r;
+}
+
+TEST(Hydro, SelfPropelledBoatReachesSteadySpeed) {
+  // 60 N of thrust: the speed levels off, where the hydrodynamic resistance
+  // along the track balances the thrust
+  Scene s(motorboat(0, 0.5));
+  ASSERT_TRUE(s.ok()) << s.err;
+  s.d->ctrl[0] = 60;
+  s.settle(40, 1, [] { return 0; });
+  double v40 = s.d->qvel[0];
+  double drag = s.settle(60, 5, [&] { return s.wrench(1)[0]; });
+  double v60 = s.d->qvel[0];
+  EXPECT_GT(v40, 0.5);
+  EXPECT_NEAR(v60, v40, 0.01 * v40);
+  EXPECT_NEAR(drag, -60, 0.02 * 60);
+  RecordProperty("steady_speed", std::to_string(v60));
+}
+
+TEST(Hydro, TurningRadiusShrinksWithLowerDragExponents) {
+  // thruster yawed 10 deg: a steady turn. Lower f_P, f_S give faces that
+  // meet the flow obliquely more pressure drag (cos^f), hence more sideways
+  // resistance and a tighter turn (Kerner part 2)
+  Turn a = turn(10, 0.5), b = turn(10, 0.25), c = turn(10, 0.1);
+  EXPECT_LT(b.radius, 0.95 * a.radius) << a.radius << " " << b.radius;
+  EXPECT_LT(c.radius, 0.95 * b.radius) << b.radius << " " << c.radius;
+  // the sideways force resisting the drift is pressure/suction drag
+  EXPECT_GT(std::fabs(a.sway[mjbPART_DRAG]), 3 * std::fabs(a.sway[mjbPART_VISCOUS]));
+  // without pressure drag nothing resists the drift: the boat spins in place
+  Turn off = turn(10, -1);
+  EXPECT_LT(off.radius, 0.1 * a.radius);
+  RecordProperty("radius", std::to_string(a.radius) + " " + std::to_string(b.radius) + " " +
+                               std::to_string(c.radius) + " off " + std::to_string(off.radius));
+}
+
+}  // namespace
+}  // namespace mjbt

@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--backend", backend, "override the model's mjbuoy.backend")
       ->check(CLI::IsMember({"cpu"}));
+  std::vector<double> ctrl;
+  app.add_option("--ctrl", ctrl, "constant controls, one per actuator in model order");
   CLI11_PARSE(app, argc, argv);
 
   char err[1024] = "";
@@ -46,6 +48,12 @@ int main(int argc, char** argv) {
   std::fputs(mjb_warnings(b), stderr);
   mjData* d = mj_makeData(m);
   mjb_bindData(b, d);
+  if ((int)ctrl.size() > m->nu) {
+    std::fprintf(stderr, "mjbuoy-sim: --ctrl has %zu values but %s has %d actuator(s)\n",
+                 ctrl.size(), model.c_str(), m->nu);
+    return 1;
+  }
+  for (size_t i = 0; i < ctrl.size(); i++) d->ctrl[i] = ctrl[i];
 
   // bodies with a free joint go to the CSV
   std::vector<int> free;
