@@ -50,6 +50,8 @@ struct State {
   std::vector<double> h;       // vertex heights above the surface [m]
   std::vector<double> lab;     // vertex surface particle labels, 2 each [m]
   std::vector<char> bad;       // per body: state not finite in the last call
+  std::vector<char> told;      // per body: already named in notices
+  std::string notices;         // capacity reserved up front
   TriState tri;                // this call
   // slamming history: wet area and velocity per triangle at the first call
   // of the current step (cur) and of the previous step (prev)

@@ -1,6 +1,7 @@
 // cpu backend: the reference implementation every other backend must match
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "buoy.h"
@@ -17,6 +18,9 @@ void makeState(const Buoy& b, State* s) {
   s->h.assign(b.vert.size() / 3, 0);
   s->lab.assign(2 * (b.vert.size() / 3), 0);
   s->bad.assign(b.m->nbody, 0);
+  s->told.assign(b.m->nbody, 0);
+  s->notices.clear();
+  s->notices.reserve(4096);
   s->tri.area.assign(nt, 0);
   s->tri.c.assign(3 * nt, 0);
   s->tri.n.assign(3 * nt, 0);
@@ -230,6 +234,15 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   // total; a body with a non-finite state gets no force at all
   std::memset(s->wrench.data(), 0, s->wrench.size() * sizeof(double));
   for (int bd : b.body) {
+    if (s->bad[bd] && !s->told[bd]) {
+      s->told[bd] = 1;
+      char line[256];
+      std::snprintf(line, sizeof(line),
+                    "body \"%s\": position or velocity not finite at t = %g s; "
+                    "mjbuoy adds no force to it\n", m->names + m->name_bodyadr[bd], d->time);
+      // within the capacity reserved in makeState: no allocation while stepping
+      if (s->notices.size() + std::strlen(line) < s->notices.capacity()) s->notices += line;
+    }
     for (int p = 0; p < mjbNPART; p++) {
       double* wp = s->part.data() + p * nb6 + 6 * bd;
       if (s->bad[bd]) std::memset(wp, 0, 6 * sizeof(double));

@@ -186,6 +186,12 @@ const mjtNum* mjb_wrenchPart(const mjbBuoy* b, const mjData* d, int part) {
   return s ? s->part.data() + 6 * b->b.m->nbody * part : nullptr;
 }
 
+const char* mjb_notices(const mjbBuoy* b, const mjData* d) {
+  if (!b) return "";
+  State* s = state(const_cast<mjbBuoy*>(b), d, false);
+  return s ? s->notices.c_str() : "";
+}
+
 mjbInfo mjb_info(const mjbBuoy* b) {
   mjbInfo i = {0, 0, 0, 0, "", ""};
   if (!b) return i;

@@ -67,6 +67,10 @@ typedef enum mjbPart_ {
 // seen or part is out of range
 const mjtNum* mjb_wrenchPart(const mjbBuoy* b, const mjData* d, int part);
 
+// run-time notices for d, one line each, each fault reported once (a body
+// whose state is not finite gets no force, and is named here); "" if none
+const char* mjb_notices(const mjbBuoy* b, const mjData* d);
+
 // sizes and backend of an attached model
 mjbInfo mjb_info(const mjbBuoy* b);
 
