@@ -12,6 +12,8 @@
 
 namespace mjb {
 
+struct GlBackend;
+
 struct Hull {
   int geom, body;     // MuJoCo ids
   int v0, nv;         // vertex range in Buoy::vert
@@ -32,6 +34,7 @@ struct Buoy {
   std::vector<int> body;       // bodies carrying hulls, ascending
   std::string warnings;        // newline-separated
   std::string renderer;
+  GlBackend* gl = nullptr;     // gl backend, when it runs
 };
 
 // wet triangle data of one call, and the slamming history
@@ -59,13 +62,33 @@ struct State {
   long key = -1;               // mjTIMER_STEP count of the current step
   double tcur = 0, tprev = 0;  // times of those first calls [s]
   bool hasPrev = false;
+  unsigned slambuf[2] = {0, 0};  // gl backend: history buffers, [slamcur] = this step's
+  int slamcur = 0;
 };
+
+// slamming clock: kSameStep for another call within the current step,
+// kNewStep when a step has completed since the last call (the caller moves
+// the current history to the previous), kRestart after mj_resetData or
+// time going backwards (no previous history)
+enum { kSameStep = 0, kNewStep, kRestart };
+int stepClock(const mjData* d, State* s);
 
 // allocate s for b
 void makeState(const Buoy& b, State* s);
 
-// cpu backend: fill s->wrench from d's current state
+// cpu backend: fill s->wrench and s->part from d's current state
 void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s);
+
+// name each body with a non-finite state in s->notices, once
+void noteBad(const Buoy& b, const mjModel* m, const mjData* d, State* s);
+
+// gl backend (gl.cc): create it for b (false and err if GL is unusable),
+// compute the wrench like cpuWrench, free it with its context
+bool glMake(Buoy* b, std::string* err);
+void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s);
+void glFree(Buoy* b);
+void glFreeState(Buoy* b, State* s);
+int glStageTimes(Buoy* b, const char** name, double* ms, int n);
 
 }  // namespace mjb
 

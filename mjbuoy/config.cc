@@ -191,9 +191,9 @@ static std::string parseHulls(const mjModel* m, const char* name, const char* te
 }
 
 std::string setBackend(const char* name, const std::string& where, Config* c) {
-  if (std::strcmp(name, "cpu")) {
+  if (std::strcmp(name, "cpu") && std::strcmp(name, "gl") && std::strcmp(name, "auto")) {
     return "mjbuoy: " + where + " value \"" + name +
-           "\" is not a backend of this build; accepted: cpu";
+           "\" is not a backend; accepted: cpu, gl, auto";
   }
   c->backend = name;
   return "";

@@ -32,7 +32,7 @@ struct Config {
 // read m's custom entries into c; returns "" or the first error
 std::string parseConfig(const mjModel* m, Config* c);
 
-// choose backend name (cpu); where names the source for the error message
+// choose backend name (cpu, gl or auto); where names the source for the error message
 std::string setBackend(const char* name, const std::string& where, Config* c);
 
 }  // namespace mjb

@@ -51,22 +51,23 @@ static void cross(const double* a, const double* b, double* c) {
 // advance the slamming history once per completed mj_step: MuJoCo counts
 // steps in timer[mjTIMER_STEP].number, which stays fixed across the four RK4
 // calls of one step and across bare mj_forward calls, and drops to 0 in
-// mj_resetData (time going backwards resets too)
-static bool newStep(const mjData* d, State* s) {
+// mj_resetData (time going backwards restarts too)
+int stepClock(const mjData* d, State* s) {
   long k = d->timer[mjTIMER_STEP].number;
+  int r;
   if (s->key < 0 || k < s->key || d->time < s->tcur) {
     s->hasPrev = false;
+    r = kRestart;
   } else if (k > s->key) {
-    std::swap(s->prevA, s->curA);
-    std::swap(s->prevV, s->curV);
     s->tprev = s->tcur;
     s->hasPrev = true;
+    r = kNewStep;
   } else {
-    return false;
+    return kSameStep;
   }
   s->key = k;
   s->tcur = d->time;
-  return true;
+  return r;
 }
 
 // add force f at c (relative to the COM) to the wrench w
@@ -213,11 +214,29 @@ static void hullWrench(const Buoy& b, const Hull& hl, const mjData* d,
   }
 }
 
+void noteBad(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
+  for (int bd : b.body) {
+    if (!s->bad[bd] || s->told[bd]) continue;
+    s->told[bd] = 1;
+    char line[256];
+    std::snprintf(line, sizeof(line),
+                  "body \"%s\": position or velocity not finite at t = %g s; "
+                  "mjbuoy adds no force to it\n", m->names + m->name_bodyadr[bd], d->time);
+    // within the capacity reserved in makeState: no allocation while stepping
+    if (s->notices.size() + std::strlen(line) < s->notices.capacity()) s->notices += line;
+  }
+}
+
 void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   const int nb6 = 6 * m->nbody;
   std::memset(s->part.data(), 0, s->part.size() * sizeof(double));
   std::memset(s->bad.data(), 0, s->bad.size());
-  bool first = newStep(d, s);
+  int clock = stepClock(d, s);
+  if (clock == kNewStep) {
+    std::swap(s->prevA, s->curA);
+    std::swap(s->prevV, s->curV);
+  }
+  bool first = clock != kSameStep;
   for (const Hull& hl : b.hull) {
     const int bd = hl.body;
     mjtNum vel[6];  // [angular; linear] at the COM, world frame
@@ -231,18 +250,10 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
     for (int p = 0; p < mjbNPART; p++) w[p] = s->part.data() + p * nb6 + 6 * bd;
     hullWrench(b, hl, d, vel, first, s, w);
   }
+  noteBad(b, m, d, s);
   // total; a body with a non-finite state gets no force at all
   std::memset(s->wrench.data(), 0, s->wrench.size() * sizeof(double));
   for (int bd : b.body) {
-    if (s->bad[bd] && !s->told[bd]) {
-      s->told[bd] = 1;
-      char line[256];
-      std::snprintf(line, sizeof(line),
-                    "body \"%s\": position or velocity not finite at t = %g s; "
-                    "mjbuoy adds no force to it\n", m->names + m->name_bodyadr[bd], d->time);
-      // within the capacity reserved in makeState: no allocation while stepping
-      if (s->notices.size() + std::strlen(line) < s->notices.capacity()) s->notices += line;
-    }
     for (int p = 0; p < mjbNPART; p++) {
       double* wp = s->part.data() + p * nb6 + 6 * bd;
       if (s->bad[bd]) std::memset(wp, 0, 6 * sizeof(double));

@@ -57,7 +57,11 @@ void passive(const mjModel* m, mjData* d) {
   }
   if (!b || b->b.hull.empty()) return;
   State* s = state(b, d, true);
-  mjb::cpuWrench(b->b, m, d, s);
+  if (b->b.gl) {
+    mjb::glWrench(&b->b, m, d, s);
+  } else {
+    mjb::cpuWrench(b->b, m, d, s);
+  }
   for (int bd : b->b.body) {
     const mjtNum* w = s->wrench.data() + 6 * bd;
     mj_applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
@@ -137,8 +141,23 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     for (const mjb::Hull& o : B.hull) if (o.body == h.body) s += o.area;
     h.mass *= h.area / s;
   }
-  for (const std::string& w : warn) B.warnings += "mjbuoy: warning: " + w + "\n";
+  // gl: required; auto: gl when an EGL display with GL >= 4.3 compute is
+  // there, else cpu with a notice
   B.renderer = "CPU";
+  if (B.cfg.backend != "cpu") {
+    std::string ge;
+    if (!B.hull.empty() && mjb::glMake(&B, &ge)) {
+      B.cfg.backend = "gl";
+    } else if (B.cfg.backend == "gl" && !B.hull.empty()) {
+      copyError("mjbuoy: backend gl is not available: " + ge +
+                    "; use backend cpu or auto (docs/mjcf.md)", error, error_sz);
+      return nullptr;
+    } else {
+      if (!B.hull.empty()) warn.push_back("backend auto: no usable GL (" + ge + "); running on cpu");
+      B.cfg.backend = "cpu";
+    }
+  }
+  for (const std::string& w : warn) B.warnings += "mjbuoy: warning: " + w + "\n";
 
   mjbBuoy* out = b.release();
   std::unique_lock<std::shared_mutex> lk(gmu);
@@ -160,6 +179,8 @@ void mjb_detach(mjbBuoy* b) {
       gprev = nullptr;
     }
   }
+  for (auto& kv : b->data) mjb::glFreeState(&b->b, kv.second.get());
+  mjb::glFree(&b->b);
   delete b;
 }
 
@@ -171,7 +192,10 @@ int mjb_bindData(mjbBuoy* b, const mjData* d) {
 void mjb_unbindData(mjbBuoy* b, const mjData* d) {
   if (!b) return;
   std::unique_lock<std::shared_mutex> lk(b->mu);
-  b->data.erase(d);
+  auto it = b->data.find(d);
+  if (it == b->data.end()) return;
+  mjb::glFreeState(&b->b, it->second.get());
+  b->data.erase(it);
 }
 
 const mjtNum* mjb_wrench(const mjbBuoy* b, const mjData* d) {
@@ -202,6 +226,10 @@ mjbInfo mjb_info(const mjbBuoy* b) {
   i.backend = b->b.cfg.backend.c_str();
   i.renderer = b->b.renderer.c_str();
   return i;
+}
+
+int mjb_stageTimes(const mjbBuoy* b, const char** name, double* ms, int n) {
+  return b ? mjb::glStageTimes(const_cast<Buoy*>(&b->b), name, ms, n) : 0;
 }
 
 const char* mjb_warnings(const mjbBuoy* b) {

@@ -24,14 +24,16 @@ typedef struct mjbInfo_ {
   int nbody;             // bodies carrying at least one hull
   int ntri;              // hull triangles, all hulls
   int nvert;             // hull vertices, all hulls
-  const char* backend;   // backend that runs: "cpu"
+  const char* backend;   // backend that runs: "cpu" or "gl"
   const char* renderer;  // device it runs on (CPU name or GL renderer)
 } mjbInfo;
 
 // attach mjbuoy to a compiled model. Reads and validates the "mjbuoy.*"
 // custom entries, builds the hulls and installs the mjcb_passive callback
 // (an mjcb_passive installed before is chained and still called).
-// backend: NULL to use the model's mjbuoy.backend entry, else "cpu".
+// backend: NULL to use the model's mjbuoy.backend entry, else "cpu", "gl"
+// or "auto" (gl when an EGL display with GL >= 4.3 is there, else cpu with
+// a warning).
 // Returns NULL on invalid input with the reason in error (error_sz bytes).
 // The model must stay alive and unchanged until mjb_detach.
 mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz);
@@ -73,6 +75,11 @@ const char* mjb_notices(const mjbBuoy* b, const mjData* d);
 
 // sizes and backend of an attached model
 mjbInfo mjb_info(const mjbBuoy* b);
+
+// gl backend: mean GPU time per call of each pipeline stage [ms], from GL
+// timer queries; fills up to n names and times, returns the number of
+// stages (0 for the cpu backend)
+int mjb_stageTimes(const mjbBuoy* b, const char** name, double* ms, int n);
 
 // load-time warnings (open meshes, double-counted fluid forces, ...), one
 // per line; empty string when there are none

@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
   app.add_option("--interval", interval, "CSV output interval [s]")
       ->check(CLI::PositiveNumber);
   app.add_option("--backend", backend, "override the model's mjbuoy.backend")
-      ->check(CLI::IsMember({"cpu"}));
+      ->check(CLI::IsMember({"cpu", "gl", "auto"}));
   std::vector<double> ctrl;
   app.add_option("--ctrl", ctrl, "constant controls, one per actuator in model order");
   CLI11_PARSE(app, argc, argv);
@@ -111,6 +111,14 @@ int main(int argc, char** argv) {
               info.renderer, info.nhull, info.nbody, info.ntri);
   std::printf("  sim time %.3f s in %ld steps, wall %.3f s (%.1fx real time)\n", d->time,
               steps, wall, wall > 0 ? d->time / wall : 0.0);
+  const char* sn[8];
+  double sms[8];
+  int ns = mjb_stageTimes(b, sn, sms, 8);
+  if (ns) {
+    std::printf("  gl stages per step:");
+    for (int i = 0; i < ns; i++) std::printf(" %s %.3f ms", sn[i], sms[i]);
+    std::printf("\n");
+  }
   for (size_t i = 0; i < free.size() && i < 12; i++) {
     int bd = free[i];
     double a[3];

@@ -1,0 +1,317 @@
+// gl backend: the buoyancy pipeline as five compute dispatches for all hulls
+// of all bodies (shaders/*.comp), one readback of one wrench per body
+#include <cmath>
+#include <cstring>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "buoy.h"
+#include "egl.h"
+#include "glprog.h"
+#include "gltimer.h"
+#include "shared.h"
+#include "pipeline.h"
+
+namespace mjb {
+
+using namespace glsl;  // NOLINT: the shared layouts
+
+static const char* kStage[] = {"verts.comp", "wet.comp", "hulls.comp", "hydro.comp",
+                               "bodies.comp"};
+enum { kVerts, kWet, kHulls, kHydro, kBodies, kNStage };
+
+struct GlBackend {
+  GlContext ctx;
+  GLuint prog[kNStage] = {0};
+  GLuint buf[14] = {0};         // by binding point
+  GlTimer timer;
+  int tstage[kNStage] = {0};
+  std::mutex mu;                // one context: one thread at a time
+  int nvert = 0, ntri = 0, nhull = 0, nslot = 0, nwave = 0;
+  std::vector<GBody> body;      // per step, one per hull body
+  std::vector<float> phase;     // per step, nslot x nwave
+  std::vector<float> out;       // readback, nslot x 10 x 4
+};
+
+static GLint loc(GlBackend* g, int st, const char* name) {
+  return g->ctx.gl.GetUniformLocation(g->prog[st], name);
+}
+
+// buffer at binding point i with n bytes (data may be null)
+static void makeBuffer(GlBackend* g, int i, size_t n, const void* data, GLenum usage) {
+  const GladGLContext& gl = g->ctx.gl;
+  gl.GenBuffers(1, &g->buf[i]);
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[i]);
+  gl.BufferData(GL_SHADER_STORAGE_BUFFER, n ? n : 16, data, usage);
+}
+
+bool glMake(Buoy* b, std::string* err) {
+  auto g = new GlBackend;
+  if (!glCreate(&g->ctx, err)) {
+    delete g;
+    return false;
+  }
+  GlCurrent cur(&g->ctx);
+  if (!cur.ok()) {
+    *err = cur.error();
+    glDestroy(&g->ctx);
+    delete g;
+    return false;
+  }
+  const GladGLContext& gl = g->ctx.gl;
+  for (int i = 0; i < kNStage; i++) {
+    g->prog[i] = glProgram(gl, kStage[i], err);
+    if (!g->prog[i]) {
+      b->gl = g;
+      glFree(b);
+      return false;
+    }
+  }
+
+  // static data: vertices, triangles, hulls, waves
+  const mjModel* m = b->m;
+  g->nvert = b->vert.size() / 3;
+  g->ntri = b->face.size() / 3;
+  g->nhull = b->hull.size();
+  g->nslot = b->body.size();
+  std::vector<int> slot(m->nbody, -1);
+  for (int i = 0; i < g->nslot; i++) slot[b->body[i]] = i;
+  std::vector<GVert> vert(g->nvert);
+  std::vector<GTri> tri(g->ntri);
+  std::vector<GHull> hull(g->nhull);
+  g->body.assign(g->nslot, GBody{});
+  for (int h = 0; h < g->nhull; h++) {
+    const Hull& hl = b->hull[h];
+    const HullParams& p = hl.par;
+    for (int i = hl.v0; i < hl.v0 + hl.nv; i++) {
+      vert[i] = GVert{float(b->vert[3 * i]), float(b->vert[3 * i + 1]), float(b->vert[3 * i + 2]), h};
+    }
+    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+      tri[k] = GTri{b->face[3 * k], b->face[3 * k + 1], b->face[3 * k + 2], h};
+    }
+    int s = slot[hl.body];
+    hull[h].body = s;
+    hull[h].t0 = hl.t0;
+    hull[h].nt = hl.nt;
+    hull[h].shape = vec4{float(hl.area), float(hl.mass), float(p.viscous), float(p.vref)};
+    hull[h].drag = vec4{float(p.drag[0]), float(p.drag[1]), float(p.drag[2]), 0};
+    hull[h].suction = vec4{float(p.suction[0]), float(p.suction[1]), float(p.suction[2]), 0};
+    hull[h].slam = vec4{float(p.slam[0]), float(p.slam[1]), float(p.slam[2]), 0};
+    hull[h].damp = vec4{float(p.damp[0]), float(p.damp[1]), 0, 0};
+    // hulls are grouped by body (mjb_attach), so each body's ranges are contiguous
+    GBody& bd = g->body[s];
+    if (!bd.nh) {
+      bd.h0 = h;
+      bd.t0 = hl.t0;
+    }
+    bd.nh++;
+    bd.nt += hl.nt;
+  }
+  const Sea& sea = b->cfg.sea;
+  g->nwave = sea.waves.size();
+  std::vector<GWave> wave;
+  for (const Wave& w : sea.waves) {
+    wave.push_back(GWave{float(w.amp), float(w.k), float(w.omega), float(w.steep),
+                         float(w.dx), float(w.dy), 0, 0});
+  }
+  g->phase.assign(g->nslot * std::max(g->nwave, 1), 0);
+  g->out.assign(g->nslot * 40, 0);
+
+  makeBuffer(g, B_VERT, vert.size() * sizeof(GVert), vert.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_TRI, tri.size() * sizeof(GTri), tri.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_HULL, hull.size() * sizeof(GHull), hull.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_WAVE, wave.size() * sizeof(GWave), wave.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_BODY, g->nslot * sizeof(GBody), nullptr, GL_DYNAMIC_DRAW);
+  makeBuffer(g, B_PHASE, g->phase.size() * sizeof(float), nullptr, GL_DYNAMIC_DRAW);
+  makeBuffer(g, B_VOUT, g->nvert * 16, nullptr, GL_DYNAMIC_COPY);
+  makeBuffer(g, B_LAB, g->nvert * 8, nullptr, GL_DYNAMIC_COPY);
+  makeBuffer(g, B_WET, g->ntri * sizeof(GWet), nullptr, GL_DYNAMIC_COPY);
+  makeBuffer(g, B_TF, g->ntri * 8 * 16, nullptr, GL_DYNAMIC_COPY);
+  makeBuffer(g, B_HOUT, g->nhull * sizeof(GHullOut), nullptr, GL_DYNAMIC_COPY);
+  makeBuffer(g, B_OUT, g->out.size() * sizeof(float), nullptr, GL_DYNAMIC_READ);
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+
+  // uniforms that never change
+  gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "nvert"), g->nvert);
+  gl.ProgramUniform1i(g->prog[kWet], loc(g, kWet, "ntri"), g->ntri);
+  gl.ProgramUniform1f(g->prog[kWet], loc(g, kWet, "rhog"), float(sea.rho * sea.g));
+  gl.ProgramUniform1f(g->prog[kHulls], loc(g, kHulls, "nu"), float(sea.nu));
+  gl.ProgramUniform1i(g->prog[kHydro], loc(g, kHydro, "ntri"), g->ntri);
+  gl.ProgramUniform1f(g->prog[kHydro], loc(g, kHydro, "rho"), float(sea.rho));
+  for (int st : {kVerts, kHydro}) {
+    gl.ProgramUniform1i(g->prog[st], loc(g, st, "nwave"), g->nwave);
+    gl.ProgramUniform1f(g->prog[st], loc(g, st, "depth"), float(sea.depth));
+    gl.ProgramUniform2f(g->prog[st], loc(g, st, "current"), float(sea.current[0]),
+                        float(sea.current[1]));
+  }
+  timerInit(&g->timer, &gl);
+  for (int i = 0; i < kNStage; i++) g->tstage[i] = timerStage(&g->timer, kStage[i]);
+  b->gl = g;
+  b->renderer = g->ctx.renderer;
+  return true;
+}
+
+void glFreeState(Buoy* b, State* s) {
+  if (!b->gl || !s->slambuf[0]) return;
+  GlCurrent cur(&b->gl->ctx);
+  b->gl->ctx.gl.DeleteBuffers(2, s->slambuf);
+  s->slambuf[0] = s->slambuf[1] = 0;
+}
+
+void glFree(Buoy* b) {
+  GlBackend* g = b->gl;
+  if (!g) return;
+  {
+    GlCurrent cur(&g->ctx);
+    const GladGLContext& gl = g->ctx.gl;
+    timerFree(&g->timer);
+    for (GLuint& p : g->prog) if (p) gl.DeleteProgram(p);
+    for (GLuint& x : g->buf) if (x) gl.DeleteBuffers(1, &x);
+  }
+  glDestroy(&g->ctx);
+  delete g;
+  b->gl = nullptr;
+}
+
+// per-step body data, in double until the last moment: positions relative
+// to the COM, wave phases at the COM reduced mod 2 pi
+static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
+  GlBackend* g = b->gl;
+  const Sea& sea = b->cfg.sea;
+  for (int i = 0; i < g->nslot; i++) {
+    int bd = b->body[i];
+    GBody& o = g->body[i];
+    const mjtNum* R = d->xmat + 9 * bd;
+    const mjtNum* x = d->xpos + 3 * bd;
+    const mjtNum* c = d->xipos + 3 * bd;
+    mjtNum vel[6], uw[3];
+    mj_objectVelocity(m, d, mjOBJ_BODY, bd, vel, 0);
+    bool ok = true;
+    for (int j = 0; j < 9; j++) ok = ok && std::isfinite(R[j]);
+    for (int j = 0; j < 3; j++) ok = ok && std::isfinite(x[j]) && std::isfinite(c[j]);
+    for (int j = 0; j < 6; j++) ok = ok && std::isfinite(vel[j]);
+    s->bad[bd] = !ok;
+    if (!ok) {
+      // park it far above the water: no force, nothing non-finite on the GPU
+      std::memset(&o.r0, 0, 7 * sizeof(vec4));
+      o.r0.x = o.r1.y = o.r2.z = 1;
+      o.orig.w = 1e6;
+      o.flow.x = 1;
+      continue;
+    }
+    o.r0 = vec4{float(R[0]), float(R[1]), float(R[2]), 0};
+    o.r1 = vec4{float(R[3]), float(R[4]), float(R[5]), 0};
+    o.r2 = vec4{float(R[6]), float(R[7]), float(R[8]), 0};
+    o.orig = vec4{float(x[0] - c[0]), float(x[1] - c[1]), float(x[2] - c[2]),
+                  float(c[2] - sea.level)};
+    o.vlin = vec4{float(vel[3]), float(vel[4]), float(vel[5]), 0};
+    o.vang = vec4{float(vel[0]), float(vel[1]), float(vel[2]), 0};
+    // the hull's flow (as cpu.cc): COM velocity relative to the water there
+    sea.velocity(c, d->time, uw);
+    double vr[3] = {vel[3] - uw[0], vel[4] - uw[1], vel[5] - uw[2]};
+    double sp = std::sqrt(vr[0] * vr[0] + vr[1] * vr[1] + vr[2] * vr[2]);
+    for (int j = 0; j < 3; j++) (&o.flow.x)[j] = float(sp > 1e-9 ? vr[j] / sp : R[3 * j]);
+    o.flow.w = float(sp);
+    for (int w = 0; w < g->nwave; w++) {
+      const Wave& wv = sea.waves[w];
+      double th = wv.k * (wv.dx * c[0] + wv.dy * c[1]) - wv.omega * d->time + wv.ph;
+      g->phase[i * g->nwave + w] = float(std::remainder(th, 2 * M_PI));
+    }
+  }
+}
+
+void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
+  GlBackend* g = b->gl;
+  std::lock_guard<std::mutex> lk(g->mu);
+  GlCurrent cur(&g->ctx);
+  const GladGLContext& gl = g->ctx.gl;
+  if (!cur.ok()) return;
+
+  // per-data slamming history, created on the first call for d
+  if (!s->slambuf[0]) {
+    gl.GenBuffers(2, s->slambuf);
+    std::vector<float> zero(4 * std::max(g->ntri, 1), 0.0f);
+    for (GLuint x : s->slambuf) {
+      gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, x);
+      gl.BufferData(GL_SHADER_STORAGE_BUFFER, zero.size() * 4, zero.data(), GL_DYNAMIC_COPY);
+    }
+  }
+  int clock = stepClock(d, s);
+  if (clock == kNewStep) s->slamcur ^= 1;
+  std::memset(s->bad.data(), 0, s->bad.size());
+  bodies(b, m, d, s);
+
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_BODY]);
+  gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->nslot * sizeof(GBody), g->body.data());
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_PHASE]);
+  gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->phase.size() * sizeof(float), g->phase.data());
+  for (int i = 0; i < 14; i++) {
+    if (g->buf[i]) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, g->buf[i]);
+  }
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
+  gl.ProgramUniform1i(g->prog[kHydro], loc(g, kHydro, "hasprev"), s->hasPrev);
+  gl.ProgramUniform1i(g->prog[kHydro], loc(g, kHydro, "first"), clock != kSameStep);
+  gl.ProgramUniform1f(g->prog[kHydro], loc(g, kHydro, "slamdt"),
+                      float(s->hasPrev ? d->time - s->tprev : 0));
+
+  const int groups[kNStage] = {(g->nvert + BUOY_LOCAL - 1) / BUOY_LOCAL,
+                               (g->ntri + BUOY_LOCAL - 1) / BUOY_LOCAL, g->nhull,
+                               (g->ntri + BUOY_LOCAL - 1) / BUOY_LOCAL, g->nslot};
+  for (int st = 0; st < kNStage; st++) {
+    timerBegin(&g->timer, g->tstage[st]);
+    gl.UseProgram(g->prog[st]);
+    if (groups[st] > 0) gl.DispatchCompute(groups[st], 1, 1);
+    gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    timerEnd(&g->timer, g->tstage[st]);
+  }
+  gl.UseProgram(0);
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_OUT]);
+  gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->out.size() * sizeof(float), g->out.data());
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  for (int i = 0; i < 14; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
+  timerFrame(&g->timer);
+  noteBad(*b, m, d, s);
+
+  // unpack: part p of slot i at out[40 i + 8 p], force xyz then torque xyz
+  const int nb6 = 6 * m->nbody;
+  std::memset(s->part.data(), 0, s->part.size() * sizeof(double));
+  std::memset(s->wrench.data(), 0, s->wrench.size() * sizeof(double));
+  for (int i = 0; i < g->nslot; i++) {
+    int bd = b->body[i];
+    if (s->bad[bd]) continue;
+    for (int p = 0; p < mjbNPART; p++) {
+      double* w = s->part.data() + p * nb6 + 6 * bd;
+      const float* o = g->out.data() + 40 * i + 8 * p;
+      for (int j = 0; j < 3; j++) {
+        w[j] = o[j];
+        w[3 + j] = o[4 + j];
+        s->wrench[6 * bd + j] += w[j];
+        s->wrench[6 * bd + 3 + j] += w[3 + j];
+      }
+    }
+  }
+}
+
+}  // namespace mjb
+
+namespace mjb {
+
+int glStageTimes(Buoy* b, const char** name, double* ms, int n) {
+  GlBackend* g = b->gl;
+  if (!g) return 0;
+  std::lock_guard<std::mutex> lk(g->mu);
+  {
+    GlCurrent cur(&g->ctx);
+    timerFlush(&g->timer);
+  }
+  for (int i = 0; i < kNStage && i < n; i++) {
+    name[i] = kStage[i];
+    ms[i] = g->timer.stage[g->tstage[i]].mean();
+  }
+  return kNStage;
+}
+
+}  // namespace mjb

@@ -1,0 +1,194 @@
+// gl backend against the cpu reference: randomized scenes, whole runs,
+// backend selection
+#include <cstdlib>
+#include <random>
+#include <sstream>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "testutil.h"
+
+namespace mjbt {
+namespace {
+
+// a random scene: a Wigley boat, a box and a capsule, random sea
+std::string randomScene(std::mt19937* rng) {
+  std::uniform_real_distribution<double> U(0, 1);
+  const int res[] = {64, 256, 576, 2800, 7744};
+  std::ostringstream s;
+  s << "<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" MJB_MODELS
+    << "/meshes/wigley_" << res[(*rng)() % 5] << ".obj\"/></asset><custom>"
+    << "<text name=\"mjbuoy.hulls\" data=\"h*\"/>";
+  if (U(*rng) < 0.6) {
+    s << "<numeric name=\"mjbuoy.wave.a\" data=\"" << 0.1 + 0.4 * U(*rng) << " "
+      << 8 + 20 * U(*rng) << " " << 360 * U(*rng) << " " << 360 * U(*rng) << " "
+      << U(*rng) << "\"/>";
+    if (U(*rng) < 0.5) {
+      s << "<numeric name=\"mjbuoy.wave.b\" data=\"0.05 " << 3 + 3 * U(*rng) << " "
+        << 360 * U(*rng) << " 0 0.5\"/>";
+    }
+  }
+  if (U(*rng) < 0.5) {
+    s << "<numeric name=\"mjbuoy.sea.current\" data=\"" << U(*rng) - 0.5 << " "
+      << U(*rng) - 0.5 << "\"/>";
+  }
+  if (U(*rng) < 0.3) s << "<numeric name=\"mjbuoy.hull.damping\" data=\"500 50\"/>";
+  s << "</custom><worldbody>"
+       "<body name=\"w\"><freejoint/><inertial pos=\"0 0 -0.08\" mass=\"176\" "
+       "diaginertia=\"6 237 238\"/><geom name=\"hw\" type=\"mesh\" mesh=\"w\"/></body>"
+       "<body name=\"b\" pos=\"6 0 0\"><freejoint/>"
+       "<geom name=\"hb\" type=\"box\" size=\"1 0.5 0.25\" mass=\"500\"/></body>"
+       "<body name=\"c\" pos=\"0 5 0\"><freejoint/>"
+       "<geom name=\"hc\" type=\"capsule\" size=\"0.3 0.8\" euler=\"0 90 0\" mass=\"150\"/>"
+       "</body></worldbody></mujoco>";
+  return s.str();
+}
+
+// the same xml compiled twice, one copy per backend
+struct Pair {
+  mjModel *mc = nullptr, *mg = nullptr;
+  mjData *dc = nullptr, *dg = nullptr;
+  mjbBuoy *bc = nullptr, *bg = nullptr;
+  explicit Pair(const std::string& xml) {
+    std::string e;
+    mc = loadXML(xml, &e);
+    mg = loadXML(xml, &e);
+    EXPECT_TRUE(mc && mg) << e;
+    char err[1024];
+    bc = mjb_attach(mc, "cpu", err, sizeof(err));
+    EXPECT_TRUE(bc) << err;
+    bg = mjb_attach(mg, "gl", err, sizeof(err));
+    EXPECT_TRUE(bg) << err;
+    dc = mj_makeData(mc);
+    dg = mj_makeData(mg);
+  }
+  ~Pair() {
+    mj_deleteData(dc);
+    mj_deleteData(dg);
+    mjb_detach(bc);
+    mjb_detach(bg);
+    mj_deleteModel(mc);
+    mj_deleteModel(mg);
+  }
+};
+
+TEST(GlParity, RandomScenesMatchTheCpuReference) {
+  // 25 scenes x 8 random states, each stepped 3 times from the same state
+  // on both backends (so slamming history is exercised): forces within
+  // 1e-4 relative or 1e-4 of the body's weight, torques likewise (weight x 1 m)
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<double> U(-1, 1);
+  int checked = 0, wet = 0;
+  for (int sc = 0; sc < 25; sc++) {
+    Pair p(randomScene(&rng));
+    ASSERT_TRUE(p.bc && p.bg);
+    ASSERT_STREQ(mjb_info(p.bg).backend, "gl");
+    for (int st = 0; st < 8; st++) {
+      mj_resetData(p.mc, p.dc);
+      for (int b = 0; b < 3; b++) {
+        double* q = p.dc->qpos + 7 * b;
+        q[2] = 0.25 * U(rng);
+        Eigen::Quaterniond r(Eigen::AngleAxisd(0.5 * U(rng), Eigen::Vector3d::UnitX()) *
+                             Eigen::AngleAxisd(0.4 * U(rng), Eigen::Vector3d::UnitY()) *
+                             Eigen::AngleAxisd(3.0 * U(rng), Eigen::Vector3d::UnitZ()));
+        q[3] = r.w(); q[4] = r.x(); q[5] = r.y(); q[6] = r.z();
+        for (int j = 0; j < 6; j++) p.dc->qvel[6 * b + j] = (j < 3 ? 1.5 : 0.8) * U(rng);
+      }
+      p.dc->time = 10 * (U(rng) + 1);
+      mj_resetData(p.mg, p.dg);
+      for (int k = 0; k < 3; k++) {
+        // same state on both, then one step each
+        mju_copy(p.dg->qpos, p.dc->qpos, p.mc->nq);
+        mju_copy(p.dg->qvel, p.dc->qvel, p.mc->nv);
+        p.dg->time = p.dc->time;
+        mj_step(p.mc, p.dc);
+        mj_step(p.mg, p.dg);
+        const mjtNum* wc = mjb_wrench(p.bc, p.dc);
+        const mjtNum* wg = mjb_wrench(p.bg, p.dg);
+        for (int b = 1; b <= 3; b++) {
+          double weight = p.mc->body_mass[b] * kG;
+          double fn = 0, tn = 0;
+          for (int j = 0; j < 3; j++) {
+            fn += wc[6 * b + j] * wc[6 * b + j];
+            tn += wc[6 * b + 3 + j] * wc[6 * b + 3 + j];
+          }
+          double ftol = std::max(1e-4 * std::sqrt(fn), 1e-4 * weight);
+          double ttol = std::max(1e-4 * std::sqrt(tn), 1e-4 * weight);
+          for (int j = 0; j < 3; j++) {
+            ASSERT_NEAR(wg[6 * b + j], wc[6 * b + j], ftol)
+                << "scene " << sc << " state " << st << " step " << k << " body " << b;
+            ASSERT_NEAR(wg[6 * b + 3 + j], wc[6 * b + 3 + j], ttol)
+                << "scene " << sc << " state " << st << " step " << k << " body " << b;
+          }
+          wet += fn > 0;
+          checked++;
+        }
+      }
+    }
+  }
+  EXPECT_GT(wet, checked / 2);
+}
+
+// run a model file for T s on backend be, sampling body 1's pose
+std::vector<double> trajectory(const char* file, const char* be, double T) {
+  char e[1024];
+  mjModel* m = mj_loadXML((std::string(MJB_MODELS "/") + file).c_str(), nullptr, e, sizeof(e));
+  EXPECT_TRUE(m) << e;
+  mjbBuoy* b = mjb_attach(m, be, e, sizeof(e));
+  EXPECT_TRUE(b) << e;
+  mjData* d = mj_makeData(m);
+  std::vector<double> out;
+  while (d->time < T) {
+    mj_step(m, d);
+    out.insert(out.end(), d->qpos, d->qpos + 7);
+  }
+  mj_deleteData(d);
+  mjb_detach(b);
+  mj_deleteModel(m);
+  return out;
+}
+
+TEST(GlParity, WholeRunsAgree) {
+  // 10 s: positions within 1 mm, orientation within 0.1 deg
+  for (const char* f : {"barge.xml", "wigley.xml"}) {
+    std::vector<double> c = trajectory(f, "cpu", 10), g = trajectory(f, "gl", 10);
+    ASSERT_EQ(c.size(), g.size());
+    double dp = 0, da = 0;
+    for (size_t i = 0; i < c.size(); i += 7) {
+      for (int j = 0; j < 3; j++) dp = std::max(dp, std::fabs(c[i + j] - g[i + j]));
+      double dot = 0;
+      for (int j = 3; j < 7; j++) dot += c[i + j] * g[i + j];
+      da = std::max(da, 2 * std::acos(std::min(1.0, std::fabs(dot))) * 180 / M_PI);
+    }
+    EXPECT_LT(dp, 1e-3) << f;
+    EXPECT_LT(da, 0.1) << f;
+    RecordProperty(f, std::to_string(dp) + " m " + std::to_string(da) + " deg");
+  }
+}
+
+TEST(GlBackend, AutoFallsBackAndGlFailsWithoutDisplay) {
+  // MJBUOY_EGL=none simulates a machine without an EGL display
+  setenv("MJBUOY_EGL", "none", 1);
+  mjModel* m = mj_loadXML(MJB_MODELS "/barge.xml", nullptr, nullptr, 0);
+  ASSERT_TRUE(m);
+  char e[1024];
+  mjbBuoy* b = mjb_attach(m, "auto", e, sizeof(e));
+  ASSERT_TRUE(b) << e;
+  EXPECT_STREQ(mjb_info(b).backend, "cpu");
+  EXPECT_NE(std::string(mjb_warnings(b)).find("backend auto: no usable GL"), std::string::npos)
+      << mjb_warnings(b);
+  mjb_detach(b);
+  EXPECT_FALSE(mjb_attach(m, "gl", e, sizeof(e)));
+  EXPECT_NE(std::string(e).find("backend gl is not available"), std::string::npos) << e;
+  EXPECT_NE(std::string(e).find("MJBUOY_EGL=none"), std::string::npos) << e;
+  unsetenv("MJBUOY_EGL");
+  b = mjb_attach(m, "auto", e, sizeof(e));
+  ASSERT_TRUE(b) << e;
+  EXPECT_STREQ(mjb_info(b).backend, "gl");
+  mjb_detach(b);
+  mj_deleteModel(m);
+}
+
+}  // namespace
+}  // namespace mjbt
