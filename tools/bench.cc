@@ -1,0 +1,199 @@
+// mjbuoy-bench: the dissertation's grid (boats x Wigley resolutions on a
+// Gerstner sea), timing mjbuoy's forces, the full mj_step and a bare mj_step
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <mujoco/mujoco.h>
+
+#include "mjbuoy.h"
+
+using Clock = std::chrono::steady_clock;
+
+// boats spaced on a grid 6 m x 2 m apart, all partly wet on a 20 m swell
+static std::string scene(const std::string& meshes, int boats, int tris) {
+  std::ostringstream s;
+  s << "<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" << meshes
+    << "/wigley_" << tris << ".obj\"/></asset><custom>"
+    << "<text name=\"mjbuoy.hulls\" data=\"h*\"/>"
+    << "<numeric name=\"mjbuoy.wave.swell\" data=\"0.3 20 20 0 0.5\"/></custom><worldbody>";
+  int side = std::ceil(std::sqrt(boats));
+  for (int i = 0; i < boats; i++) {
+    s << "<body pos=\"" << 6 * (i % side) << " " << 2 * (i / side) << " 0.03\"><freejoint/>"
+      << "<inertial pos=\"0 0 -0.08\" mass=\"176.2\" diaginertia=\"6.02 237.28 238.6\"/>"
+      << "<geom name=\"h" << i << "\" type=\"mesh\" mesh=\"w\" contype=\"0\" conaffinity=\"0\"/>"
+      << "</body>";
+  }
+  s << "</worldbody></mujoco>";
+  return s.str();
+}
+
+static mjModel* compile(const std::string& xml) {
+  mjVFS vfs;
+  mj_defaultVFS(&vfs);
+  mj_makeEmptyFileVFS(&vfs, "bench.xml", xml.size());
+  std::copy(xml.begin(), xml.end(), (char*)vfs.filedata[mj_findFileVFS(&vfs, "bench.xml")]);
+  char err[512];
+  mjModel* m = mj_loadXML("bench.xml", &vfs, err, sizeof(err));
+  mj_deleteVFS(&vfs);
+  if (!m) std::fprintf(stderr, "mjbuoy-bench: %s\n", err);
+  return m;
+}
+
+// the callback mjbuoy installed, timed
+static mjfGeneric ginner = nullptr;
+static double ghydro = 0;
+static void timed(const mjModel* m, mjData* d) {
+  auto t0 = Clock::now();
+  ginner(m, d);
+  ghydro += std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+struct Cell {
+  int boats, tris, ntri;
+  std::string backend;
+  double hydro, step, bare;  // ms per step (median of repetitions)
+  std::vector<std::pair<std::string, double>> stages;
+};
+
+static double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+static bool run(const std::string& meshes, int boats, int tris, const std::string& be,
+                int steps, int reps, Cell* c) {
+  mjModel* m = compile(scene(meshes, boats, tris));
+  if (!m) return false;
+  mjData* d = mj_makeData(m);
+  // bare step first, then with mjbuoy
+  std::vector<double> bare, full, hydro;
+  for (int r = 0; r < reps; r++) {
+    mj_resetData(m, d);
+    auto t0 = Clock::now();
+    for (int i = 0; i < steps; i++) mj_step(m, d);
+    bare.push_back(std::chrono::duration<double>(Clock::now() - t0).count() * 1e3 / steps);
+  }
+  char err[512];
+  mjbBuoy* b = mjb_attach(m, be.c_str(), err, sizeof(err));
+  if (!b) {
+    std::fprintf(stderr, "mjbuoy-bench: %s\n", err);
+    return false;
+  }
+  mjb_bindData(b, d);
+  ginner = mjcb_passive;
+  mjcb_passive = timed;
+  mj_resetData(m, d);
+  for (int i = 0; i < 5; i++) mj_step(m, d);  // warm up
+  for (int r = 0; r < reps; r++) {
+    ghydro = 0;
+    auto t0 = Clock::now();
+    for (int i = 0; i < steps; i++) mj_step(m, d);
+    full.push_back(std::chrono::duration<double>(Clock::now() - t0).count() * 1e3 / steps);
+    hydro.push_back(ghydro * 1e3 / steps);
+  }
+  mjcb_passive = ginner;
+  const char* sn[8];
+  double ms[8];
+  int ns = mjb_stageTimes(b, sn, ms, 8);
+  *c = Cell{boats, tris, mjb_info(b).ntri, mjb_info(b).backend, median(hydro), median(full),
+            median(bare), {}};
+  for (int i = 0; i < ns; i++) c->stages.emplace_back(sn[i], ms[i]);
+  mjb_unbindData(b, d);
+  mj_deleteData(d);
+  mjb_detach(b);
+  mj_deleteModel(m);
+  return true;
+}
+
+// dissertation (Cruz 2023), GTX 1660 Ti GPU ms per frame: physics.md section 5
+static double paper(int boats, int tris) {
+  const int B[] = {1, 50, 100, 200, 400, 800}, T[] = {64, 256, 576, 7744};
+  const double v[6][4] = {{0.999, 0.904, 1.01, 8.46},   {4.86, 5.43, 6.49, 17.07},
+                          {9.88, 10.86, 13.12, 34.77}, {19.38, 21.72, 26.12, 69.47},
+                          {38.66, 43.72, 52.19, 138.57}, {76.1, 86.87, 103.62, 278.83}};
+  for (int i = 0; i < 6; i++) {
+    for (int j = 0; j < 4; j++) {
+      if (B[i] == boats && T[j] == tris) return v[i][j];
+    }
+  }
+  return NAN;
+}
+
+int main(int argc, char** argv) {
+  CLI::App app{"Benchmark mjbuoy on the dissertation's grid of Wigley boats."};
+  std::string grid = "small", json, meshes = MJB_MODELS "/meshes";
+  std::vector<std::string> backends = {"cpu", "gl"};
+  std::vector<int> boats, tris;
+  int steps = 20, reps = 3;
+  app.add_option("--grid", grid, "small (1, 50 boats x 64, 576 triangles) or full")
+      ->check(CLI::IsMember({"small", "full"}));
+  app.add_option("--backend", backends, "backends to measure")
+      ->check(CLI::IsMember({"cpu", "gl"}));
+  app.add_option("--boats", boats, "boat counts (overrides the grid)");
+  app.add_option("--tris", tris, "Wigley resolutions: 64 256 576 2800 7744 (overrides the grid)");
+  app.add_option("--steps", steps, "steps per repetition")->check(CLI::PositiveNumber);
+  app.add_option("--reps", reps, "repetitions (the median is reported)")->check(CLI::PositiveNumber);
+  app.add_option("--json", json, "also write the results as JSON");
+  app.add_option("--meshes", meshes, "directory of wigley_N.obj");
+  CLI11_PARSE(app, argc, argv);
+  if (boats.empty()) boats = grid == "full" ? std::vector<int>{1, 50, 100, 200, 400, 800}
+                                            : std::vector<int>{1, 50};
+  if (tris.empty()) tris = grid == "full" ? std::vector<int>{64, 256, 576, 2800, 7744}
+                                          : std::vector<int>{64, 576};
+
+  std::vector<Cell> cells;
+  int total = boats.size() * tris.size() * backends.size(), done = 0;
+  auto start = Clock::now();
+  std::printf("| backend | boats | tris/boat | triangles | hydro ms/step | step ms | bare step ms "
+              "| step/bare | Mtri/s | paper GPU ms | hydro/paper |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (int t : tris) {
+    for (int n : boats) {
+      for (const std::string& be : backends) {
+        Cell c;
+        // fewer steps for huge cells so the grid finishes in minutes
+        int st = std::max(2, std::min(steps, int(2e6 / double(n * t)) + 2));
+        if (!run(meshes, n, t, be, st, reps, &c)) return 1;
+        cells.push_back(c);
+        double p = paper(n, t);
+        std::printf("| %s | %d | %d | %d | %.3f | %.3f | %.3f | %.2f | %.1f | %s | %s |\n",
+                    be.c_str(), n, t, c.ntri, c.hydro, c.step, c.bare, c.step / c.bare,
+                    c.ntri / c.hydro / 1e3, std::isnan(p) ? "" : std::to_string(p).c_str(),
+                    std::isnan(p) ? "" : std::to_string(c.hydro / p).c_str());
+        std::fflush(stdout);
+        double el = std::chrono::duration<double>(Clock::now() - start).count();
+        done++;
+        std::fprintf(stderr, "\rmjbuoy-bench: %d/%d cells, %.0f s elapsed, ~%.0f s left   ",
+                     done, total, el, el / done * (total - done));
+      }
+    }
+  }
+  std::fprintf(stderr, "\n");
+  if (!json.empty()) {
+    FILE* f = std::fopen(json.c_str(), "w");
+    if (!f) {
+      std::fprintf(stderr, "mjbuoy-bench: cannot write %s\n", json.c_str());
+      return 1;
+    }
+    std::fprintf(f, "[\n");
+    for (size_t i = 0; i < cells.size(); i++) {
+      const Cell& c = cells[i];
+      std::fprintf(f, "  {\"backend\": \"%s\", \"boats\": %d, \"tris\": %d, \"triangles\": %d, "
+                   "\"hydro_ms\": %.6f, \"step_ms\": %.6f, \"bare_ms\": %.6f, \"stages\": {",
+                   c.backend.c_str(), c.boats, c.tris, c.ntri, c.hydro, c.step, c.bare);
+      for (size_t j = 0; j < c.stages.size(); j++) {
+        std::fprintf(f, "%s\"%s\": %.6f", j ? ", " : "", c.stages[j].first.c_str(),
+                     c.stages[j].second);
+      }
+      std::fprintf(f, "}}%s\n", i + 1 < cells.size() ? "," : "");
+    }
+    std::fprintf(f, "]\n");
+    std::fclose(f);
+  }
+  return 0;
+}
