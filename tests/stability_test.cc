@@ -28,6 +28,7 @@ TEST(Equilibrium, BoxBargeDraft) {
   double z = s.settle(30, 5, [&] { return s.d->xipos[3 * b + 2]; });
   double draft = 0.25 - z;
   EXPECT_NEAR(draft, 0.25, 0.005 * 0.25);
+  RecordProperty("barge_draft", std::to_string(draft) + " vs 0.25");
 }
 
 TEST(Equilibrium, SphereDraft) {
@@ -42,6 +43,7 @@ TEST(Equilibrium, SphereDraft) {
   int b = s.body("b");
   double z = s.settle(30, 5, [&] { return s.d->xipos[3 * b + 2]; });
   EXPECT_NEAR(R - z, h, 0.005 * h) << "analytic draft " << h;
+  RecordProperty("sphere_draft", std::to_string(R - z) + " vs " + std::to_string(h));
 }
 
 TEST(Equilibrium, HorizontalCylinderDraft) {
@@ -60,6 +62,7 @@ TEST(Equilibrium, HorizontalCylinderDraft) {
   int b = s.body("b");
   double z = s.settle(30, 5, [&] { return s.d->xipos[3 * b + 2]; });
   EXPECT_NEAR(R - z, h, 0.005 * h) << "analytic draft " << h;
+  RecordProperty("cylinder_draft", std::to_string(R - z) + " vs " + std::to_string(h));
 }
 
 TEST(Equilibrium, WigleyDraftFromItsOwnVolume) {
@@ -96,6 +99,7 @@ TEST(Equilibrium, WigleyDraftFromItsOwnVolume) {
   mj_resetData(s.m, s.d);
   double z = s.settle(30, 5, [&] { return s.d->xpos[3 * b + 2]; });
   EXPECT_NEAR(z - z0, 0, 0.005 * draft) << "own-volume draft " << draft;
+  RecordProperty("wigley_draft", std::to_string(draft - (z - z0)) + " vs " + std::to_string(draft));
   EXPECT_NEAR(roll(s.d, b), 0, 1e-3);
 }
 
@@ -146,6 +150,8 @@ TEST(Stability, NegativeGMSettlesAtAngleOfLoll) {
   int b = s.body("b");
   double phi = s.settle(60, 5, [&] { return roll(s.d, b); });
   EXPECT_NEAR(phi, loll, 0.005 * loll) << "loll " << loll * 180 / M_PI << " deg";
+  RecordProperty("loll_deg", std::to_string(phi * 180 / M_PI) + " vs " +
+                                 std::to_string(loll * 180 / M_PI));
 }
 
 }  // namespace
