@@ -16,6 +16,7 @@ pkgs=(
   libegl-dev libegl-mesa0      # headless EGL for the GL compute backend (Mesa's surfaceless platform)
   libgl1-mesa-dri              # Mesa's GL drivers (llvmpipe when there is no GPU)
   python3-glad                 # generates the GL loader at build time (/usr/bin/python3 -m glad)
+  xvfb xauth                   # an X server for the test of GLX context restoring
 )
 
 missing=()
