@@ -1,7 +1,12 @@
 // mjbuoy-sim: run an MJCF boat scene headless and summarise it
+#include <unistd.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,6 +14,8 @@
 #include <mujoco/mujoco.h>
 
 #include "mjbuoy.h"
+#include "plot.h"
+#include "render.h"
 
 // roll, pitch, yaw [deg] of rotation matrix R (row-major), marine
 // convention R = Rz(yaw) Ry(pitch) Rx(roll) (intrinsic z, y', x'')
@@ -17,6 +24,48 @@ static void rpy(const mjtNum* R, double out[3]) {
   out[1] = -std::asin(std::fmax(-1.0, std::fmin(1.0, R[6]))) * 180 / M_PI;
   out[2] = std::atan2(R[3], R[0]) * 180 / M_PI;
 }
+
+// progress on stderr: a bar with ETA on a terminal, plain lines every 10%
+// otherwise
+struct Progress {
+  enum Mode { OFF, BAR, LINES } mode = OFF;
+  double total = 0;
+  int lastTenth = -1;
+  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now(), last;
+  static std::string clock(double s) {
+    char b[32];
+    int n = (int)std::lround(std::max(0.0, s));
+    std::snprintf(b, sizeof(b), "%d:%02d", n / 60, n % 60);
+    return b;
+  }
+  void update(double t) {
+    if (mode == OFF || total <= 0) return;
+    auto now = std::chrono::steady_clock::now();
+    double el = std::chrono::duration<double>(now - t0).count();
+    double fr = std::fmin(1.0, t / total);
+    double eta = fr > 0 ? el * (1 - fr) / fr : 0;
+    if (mode == BAR) {
+      if (fr < 1 && std::chrono::duration<double>(now - last).count() < 0.1) return;
+      last = now;
+      const int w = 30;
+      int n = (int)(fr * w);
+      std::string bar(n, '=');
+      if (n < w) bar += '>' + std::string(w - n - 1, ' ');
+      std::fprintf(stderr, "\r  [%s] %3d%%  sim %.2f/%.2f s  elapsed %s  ETA %s ", bar.c_str(),
+                   (int)(100 * fr), t, total, clock(el).c_str(), fr > 0 ? clock(eta).c_str() : "?");
+      std::fflush(stderr);
+    } else {
+      int tenth = (int)(10 * fr + 1e-9);
+      if (tenth == lastTenth) return;
+      lastTenth = tenth;
+      std::fprintf(stderr, "mjbuoy-sim: %3d%% (sim %.2f of %.2f s, %.1f s elapsed, about %.1f s left)\n",
+                   10 * tenth, t, total, el, eta);
+    }
+  }
+  void done() {
+    if (mode == BAR) std::fprintf(stderr, "\r\033[K");
+  }
+};
 
 int main(int argc, char** argv) {
   CLI::App app{"Simulate an mjbuoy MJCF scene headless and print a summary."};
@@ -31,7 +80,75 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"cpu", "gl", "auto"}));
   std::vector<double> ctrl;
   app.add_option("--ctrl", ctrl, "constant controls, one per actuator in model order");
+  std::string video, camera, plot, progress = "auto";
+  double fps = 30;
+  int width = 1280, height = 720;
+  std::vector<std::string> snapshots;
+  bool showForces = false;
+  app.add_option("--render", video, "write a video of the run (H.264 MP4 through ffmpeg)");
+  app.add_option("--fps", fps, "video frames per second of simulated time")
+      ->check(CLI::Range(1.0, 240.0));
+  app.add_option("--width", width, "picture width [pixels]")->check(CLI::Range(16, 8192));
+  app.add_option("--height", height, "picture height [pixels]")->check(CLI::Range(16, 8192));
+  app.add_option("--camera", camera,
+                 "model camera to render from (default: a free camera following the hulls)");
+  app.add_option("--snapshot", snapshots, "T:FILE.png: a still picture at simulated time T");
+  app.add_flag("--show-forces", showForces, "draw each hull body's mjbuoy force as an arrow");
+  app.add_option("--plot", plot, "plot heave, roll and pitch of the hull bodies (PNG, gnuplot)");
+  app.add_option("--progress", progress,
+                 "progress on stderr: auto (bar on a terminal, lines when rendering), bar, "
+                 "lines or off")
+      ->check(CLI::IsMember({"auto", "bar", "lines", "off"}));
   CLI11_PARSE(app, argc, argv);
+
+  // pictures: check everything that can fail before simulating
+  struct Snap {
+    double t;
+    std::string file;
+    bool done;
+  };
+  std::vector<Snap> snaps;
+  for (const std::string& s : snapshots) {
+    size_t c = s.find(':');
+    char* end = nullptr;
+    double t = c == std::string::npos ? -1 : std::strtod(s.c_str(), &end);
+    if (c == std::string::npos || end != s.c_str() + c || !(t >= 0) || c + 1 >= s.size()) {
+      std::fprintf(stderr, "mjbuoy-sim: --snapshot %s: expected TIME:FILE.png, e.g. 1.5:still.png\n",
+                   s.c_str());
+      return 1;
+    }
+    if (t > duration + 1e-9) {
+      std::fprintf(stderr, "mjbuoy-sim: --snapshot %s: time %g s is after the end of the run "
+                   "(--duration %g)\n", s.c_str(), t, duration);
+      return 1;
+    }
+    snaps.push_back(Snap{t, s.substr(c + 1), false});
+    std::string e;
+    if (!mjbsim::checkWritable(snaps.back().file, &e)) {
+      std::fprintf(stderr, "mjbuoy-sim: --snapshot: %s\n", e.c_str());
+      return 1;
+    }
+  }
+  if (!plot.empty()) {
+    std::string e;
+    if (!mjbsim::plotAvailable(&e) || !mjbsim::checkWritable(plot, &e)) {
+      std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
+      return 1;
+    }
+  }
+  mjbsim::VideoWriter writer;
+  if (!video.empty()) {
+    std::string e;
+    if (!mjbsim::findProgram("ffmpeg").size()) {
+      writer.open(video, width, height, fps, &e);  // says which package
+      std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
+      return 1;
+    }
+    if (!mjbsim::checkWritable(video, &e)) {
+      std::fprintf(stderr, "mjbuoy-sim: --render: %s\n", e.c_str());
+      return 1;
+    }
+  }
 
   char err[1024] = "";
   mjModel* m = mj_loadXML(model.c_str(), nullptr, err, sizeof(err));
@@ -54,6 +171,32 @@ int main(int argc, char** argv) {
     return 1;
   }
   for (size_t i = 0; i < ctrl.size(); i++) d->ctrl[i] = ctrl[i];
+
+  std::unique_ptr<mjbsim::Renderer> renderer;
+  if (!video.empty() || !snaps.empty()) {
+    mjbsim::RenderOptions ro;
+    ro.width = width;
+    ro.height = height;
+    ro.camera = camera;
+    ro.showForces = showForces;
+    std::string e;
+    renderer = mjbsim::Renderer::create(m, b, ro, &e);
+    if (!renderer) {
+      std::fprintf(stderr, "mjbuoy-sim: cannot render: %s\n", e.c_str());
+      return 1;
+    }
+    if (!video.empty() && !writer.open(video, width, height, fps, &e)) {
+      std::fprintf(stderr, "mjbuoy-sim: --render: %s\n", e.c_str());
+      return 1;
+    }
+  }
+  Progress prog;
+  prog.total = duration;
+  bool tty = isatty(2);
+  if (progress == "bar" || (progress == "auto" && tty)) prog.mode = Progress::BAR;
+  if (progress == "lines" || (progress == "auto" && !tty && (renderer || !plot.empty()))) {
+    prog.mode = Progress::LINES;
+  }
 
   // bodies with a free joint go to the CSV
   std::vector<int> free;
@@ -90,8 +233,27 @@ int main(int argc, char** argv) {
   };
 
   mj_forward(m, d);
+
+  // the plot's bodies: those mjbuoy pushes on (hull bodies), else free ones
+  std::vector<int> hullBodies;
+  std::vector<mjbsim::PlotSeries> series;
+  std::vector<double> plotT;
+  if (!plot.empty()) {
+    const mjtNum* w = mjb_wrench(b, d);
+    for (int i = 1; w && i < m->nbody; i++) {
+      bool any = false;
+      for (int k = 0; k < 6; k++) any |= w[6 * i + k] != 0;
+      if (any) hullBodies.push_back(i);
+    }
+    if (hullBodies.empty()) hullBodies = free;
+    for (int bd : hullBodies) series.push_back({m->names + m->name_bodyadr[bd], {}, {}, {}});
+  }
+
   long steps = 0;
-  double next = 0;
+  double next = 0, nextPlot = 0;
+  long frame = 0;
+  std::vector<unsigned char> rgb;
+  bool failed = false;
   auto t0 = std::chrono::steady_clock::now();
   const double eps = 1e-9 * std::fmax(1.0, duration);
   while (true) {
@@ -99,10 +261,52 @@ int main(int argc, char** argv) {
       row();
       next += interval;
     }
+    if (!plot.empty() && d->time >= nextPlot - eps) {
+      plotT.push_back(d->time);
+      for (size_t k = 0; k < hullBodies.size(); k++) {
+        double a[3];
+        rpy(d->xmat + 9 * hullBodies[k], a);
+        series[k].z.push_back(d->xpos[3 * hullBodies[k] + 2]);
+        series[k].roll.push_back(a[0]);
+        series[k].pitch.push_back(a[1]);
+      }
+      nextPlot += interval;
+    }
+    if (renderer) {
+      std::string e;
+      // frames k / fps for k / fps < duration: 2 s at 30 fps are 60 frames
+      if (!video.empty() && frame / fps < duration - eps && d->time >= frame / fps - eps) {
+        if (!renderer->render(d, &rgb, &e) || !writer.write(rgb, &e)) {
+          std::fprintf(stderr, "mjbuoy-sim: --render: %s\n", e.c_str());
+          failed = true;
+          break;
+        }
+        frame++;
+      }
+      for (Snap& s : snaps) {
+        if (s.done || d->time < s.t - eps) continue;
+        s.done = true;
+        if (!renderer->render(d, &rgb, &e) ||
+            !mjbsim::writePng(s.file, rgb, renderer->width(), renderer->height(), &e)) {
+          std::fprintf(stderr, "mjbuoy-sim: --snapshot: %s\n", e.c_str());
+          failed = true;
+        }
+      }
+      if (failed) break;
+    }
+    prog.update(d->time);
     if (d->time >= duration - eps) break;
     mj_step(m, d);
     steps++;
   }
+  prog.done();
+  std::string verr;
+  if (!video.empty() && !writer.close(&verr)) {
+    std::fprintf(stderr, "mjbuoy-sim: --render: %s\n", verr.c_str());
+    failed = true;
+  }
+  renderer.reset();
+  if (failed) return 1;
   double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   mjbInfo info = mjb_info(b);
@@ -131,6 +335,19 @@ int main(int argc, char** argv) {
   if (out) {
     std::fclose(out);
     std::printf("  wrote %s\n", csv.c_str());
+  }
+  if (!video.empty()) {
+    std::printf("  wrote %s (%d frames, %dx%d, %g fps)\n", video.c_str(), writer.frames(), width,
+                height, fps);
+  }
+  for (const Snap& s : snaps) std::printf("  wrote %s (t = %g s)\n", s.file.c_str(), s.t);
+  if (!plot.empty()) {
+    std::string e;
+    if (!mjbsim::writePlot(plot, model + ": heave, roll and pitch", plotT, series, &e)) {
+      std::fprintf(stderr, "mjbuoy-sim: --plot: %s\n", e.c_str());
+      return 1;
+    }
+    std::printf("  wrote %s\n", plot.c_str());
   }
   mjb_unbindData(b, d);
   mj_deleteData(d);

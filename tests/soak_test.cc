@@ -1,0 +1,321 @@
+// stability soak (issue "Hydrodynamics"): a Wigley boat of each of the
+// dissertation's five resolutions on each of its three Gerstner seas, with
+// mjbuoy's default hydrodynamic forces only (no simple damping), for
+// MJBUOY_SOAK_SECONDS of simulated time (default 120); and the demo fleet.
+//
+// CTest runs every case as its own test twice (tests/CMakeLists.txt): 120 s
+// (label "hydro", part of the default run) and 600 s (label "soak", run with
+// `ctest --test-dir build -L soak`). Each case prints one "[soak]" line with
+// its wall time, maximum roll and pitch, distance to the surface and energy
+// statistics, and records the same numbers with RecordProperty.
+//
+// Checked at every step: qpos and qvel finite; |roll|, |pitch| < 75 deg;
+// |z_com - eta(x_com, y_com, t)| < 2 m. Over the run: the mechanical energy
+// does not grow on average (see EnergyCriterion below).
+//
+// Sea mapping. The dissertation gives each sea as (amplitude, frequency)
+// following GPU Gems (ch. 1, "Effective Water Simulation from Physical
+// Models"), where the "frequency" w is the spatial one, w = 2 pi / L in
+// rad/m. So wavelength = 2 pi / frequency: F = 0.8 -> 7.854 m,
+// F = 0.5 -> 12.566 m. Direction 0 deg (+x), phase 0, steepness Q = 0.5.
+// Deep water, omega^2 = g k: periods 2.243 s (7.854 m) and 2.837 s
+// (12.566 m). Folding sum Q k A = 0.32, 0.20 and 0.25, all < 1.
+#include <chrono>
+#include <cinttypes>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "testutil.h"
+
+namespace mjbt {
+namespace {
+
+// simulated seconds per case, from MJBUOY_SOAK_SECONDS (default 120)
+double soakSeconds() {
+  const char* s = std::getenv("MJBUOY_SOAK_SECONDS");
+  if (!s || !*s) return 120;
+  char* end = nullptr;
+  double t = std::strtod(s, &end);
+  if (end == s || *end || !(t > 0) || !std::isfinite(t)) {
+    ADD_FAILURE() << "MJBUOY_SOAK_SECONDS=\"" << s << "\" is not a positive number";
+    return 0;
+  }
+  return t;
+}
+
+struct Case {
+  int tris;     // models/meshes/wigley_<tris>.obj
+  double amp;   // wave amplitude [m]
+  double freq;  // GPU Gems spatial frequency [rad/m]: wavelength 2 pi / freq
+};
+
+// "0.8" -> "0p8"
+std::string num(double x) {
+  char b[32];
+  std::snprintf(b, sizeof(b), "%.1f", x);
+  std::string s = b;
+  for (char& c : s) if (c == '.') c = 'p';
+  return s;
+}
+
+std::string caseName(const Case& c) {
+  return "W" + std::to_string(c.tris) + "_A" + num(c.amp) + "_F" + num(c.freq);
+}
+
+// readable GetParam() in failure messages
+void PrintTo(const Case& c, std::ostream* os) { *os << caseName(c); }
+
+// one Wigley boat as in models/wigley.xml (same pose and <inertial>, the
+// mass ballasted for the 576 mesh, used for every resolution) without
+// mjbuoy.hull.damping: only mjbuoy's default hydrodynamic forces damp it.
+// The hydrodynamic parameters can be overridden through `extra` entries.
+std::string boatXML(const Case& c, const std::string& extra = "") {
+  char wave[128];
+  std::snprintf(wave, sizeof(wave), "%.17g %.17g 0 0 0.5", c.amp, 2 * M_PI / c.freq);
+  return std::string(
+             "<mujoco model=\"soak\">"
+             "<option timestep=\"0.002\"/>"
+             "<custom>"
+             "<numeric name=\"mjbuoy.sea.density\" data=\"1000\"/>"
+             "<numeric name=\"mjbuoy.sea.level\" data=\"0\"/>"
+             "<numeric name=\"mjbuoy.wave.sea\" data=\"") + wave + "\"/>"
+         "<text name=\"mjbuoy.hulls\" data=\"wigley_hull\"/>" + extra +
+         "</custom>"
+         "<asset><mesh name=\"wigley\" file=\"" MJB_MODELS "/meshes/wigley_" +
+         std::to_string(c.tris) + ".obj\"/></asset>"
+         "<worldbody><body name=\"wigley\" pos=\"0 0 0.1\"><freejoint/>"
+         "<inertial pos=\"0 0 -0.08\" mass=\"176.2\" diaginertia=\"6.020 237.28 238.60\"/>"
+         "<geom name=\"wigley_hull\" type=\"mesh\" mesh=\"wigley\" contype=\"0\" "
+         "conaffinity=\"0\"/></body></worldbody></mujoco>";
+}
+
+// roll and pitch [rad] of body b, marine convention R = Rz(yaw) Ry(pitch) Rx(roll)
+void rollPitch(const mjData* d, int b, double* roll, double* pitch) {
+  const mjtNum* R = d->xmat + 9 * b;
+  *roll = std::atan2(R[7], R[8]);
+  *pitch = std::asin(std::fmax(-1.0, std::fmin(1.0, -R[6])));
+}
+
+bool finite(const mjtNum* x, int n) {
+  for (int i = 0; i < n; i++) if (!std::isfinite(x[i])) return false;
+  return true;
+}
+
+// "" if the step that just ended left a sane state, else what went wrong.
+// MuJoCo itself catches a diverging state (bad qpos, qvel or qacc): it warns
+// and calls mj_resetData, so the state is finite again and d->time restarts
+// at 0. Hence the warning counters, and stepping a fixed number of steps
+// rather than `while (d->time < T)`, which would then never end.
+std::string badStep(const mjModel* m, const mjData* d, double tBefore) {
+  if (!finite(d->qpos, m->nq) || !finite(d->qvel, m->nv)) return "qpos/qvel not finite";
+  for (int w : {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC}) {
+    if (d->warning[w].number) {
+      return "MuJoCo reset the unstable simulation (warning " + std::to_string(w) +
+             ", bad qpos/qvel/qacc)";
+    }
+  }
+  if (!(d->time > tBefore)) return "time did not advance";
+  return "";
+}
+
+// steps for T simulated seconds
+long stepsFor(const mjModel* m, double T) { return std::lround(T / m->opt.timestep); }
+
+// Energy criterion. E = energy[0] + energy[1] (gravitational potential
+// m g z_com, zero at the still-water level, plus kinetic) sampled every
+// step. Buoyancy is not in E, so E is not conserved; forced by the waves
+// it settles into a bounded oscillation about a steady mean. The first
+// third of the run is the start-up transient and is ignored; the run fails
+// if the mean over the last third exceeds the mean over the middle third by
+// more than 10% of the mean |E| over the middle third plus an absolute
+// tolerance of 2% of m g A (the boat lifted by the wave amplitude; 27.6 J
+// for A = 0.8 m), the tolerance keeping the test meaningful when E is near
+// zero. A steady growth of E by more than this margin per third fails.
+struct EnergyStats {
+  double meanMid = 0, meanLast = 0, absMid = 0, sdMid = 0, limit = 0, maxE = -1e300;
+};
+
+EnergyStats energyStats(const std::vector<double>& e, double mass, double amp) {
+  EnergyStats s;
+  size_t n = e.size(), a = n / 3, b = 2 * n / 3;
+  if (n < 3) return s;
+  for (size_t i = a; i < b; i++) {
+    s.meanMid += e[i];
+    s.absMid += std::fabs(e[i]);
+  }
+  s.meanMid /= (b - a);
+  s.absMid /= (b - a);
+  for (size_t i = a; i < b; i++) s.sdMid += (e[i] - s.meanMid) * (e[i] - s.meanMid);
+  s.sdMid = std::sqrt(s.sdMid / (b - a));
+  for (size_t i = b; i < n; i++) s.meanLast += e[i];
+  s.meanLast /= (n - b);
+  for (double x : e) s.maxE = std::fmax(s.maxE, x);
+  s.limit = s.meanMid + 0.10 * s.absMid + 0.02 * mass * kG * amp;
+  return s;
+}
+
+struct Result {
+  double wall = 0, simT = 0, maxRoll = 0, maxPitch = 0, maxDz = 0;
+  bool nan = false;
+  long out = 0;  // steps with roll, pitch or |z - eta| out of bounds
+  EnergyStats E;
+};
+
+// run one boat case for T simulated seconds; failures are reported as
+// non-fatal expectations (the first excursion out of bounds and their
+// count), the run stops early only at a NaN
+Result runBoat(const Case& c, double T, const std::string& extra = "") {
+  Result r;
+  Scene s(boatXML(c, extra));
+  EXPECT_TRUE(s.ok()) << s.err;
+  if (!s.ok()) return r;
+  EXPECT_STREQ(mjb_warnings(s.b), "");
+  s.m->opt.enableflags |= mjENBL_ENERGY;
+  int b = s.body("wigley");
+  const double lim = 75 * M_PI / 180, mass = s.m->body_subtreemass[b];
+  std::vector<double> energy;
+  energy.reserve(size_t(T / s.m->opt.timestep) + 2);
+  auto t0 = std::chrono::steady_clock::now();
+  for (long k = 0, nk = stepsFor(s.m, T); k < nk; k++) {
+    // after mj_step, xipos, xmat and energy are those of the state the
+    // step started from, i.e. at time t
+    double t = s.d->time;
+    mj_step(s.m, s.d);
+    std::string bad = badStep(s.m, s.d, t);
+    if (!bad.empty()) {
+      r.nan = true;
+      ADD_FAILURE() << bad << " in the step from t " << t;
+      break;
+    }
+    double roll, pitch;
+    rollPitch(s.d, b, &roll, &pitch);
+    const mjtNum* x = s.d->xipos + 3 * b;
+    double dz = std::fabs(x[2] - mjb_seaHeight(s.b, x[0], x[1], t));
+    r.maxRoll = std::fmax(r.maxRoll, std::fabs(roll));
+    r.maxPitch = std::fmax(r.maxPitch, std::fabs(pitch));
+    r.maxDz = std::fmax(r.maxDz, dz);
+    energy.push_back(s.d->energy[0] + s.d->energy[1]);
+    if ((std::fabs(roll) >= lim || std::fabs(pitch) >= lim || !(dz < 2)) && !r.out++) {
+      ADD_FAILURE() << "first excursion at t " << t << ": roll " << roll * 180 / M_PI
+                    << " deg, pitch " << pitch * 180 / M_PI << " deg, |z - eta| " << dz
+                    << " m (bounds 75 deg, 75 deg, 2 m)";
+    }
+  }
+  if (r.out) ADD_FAILURE() << r.out << " steps out of bounds";
+  r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.simT = s.d->time;
+  r.E = energyStats(energy, mass, c.amp);
+  return r;
+}
+
+void report(const std::string& name, const Result& r) {
+  std::printf("[soak] %s T %.0f s wall %.1f s max|roll| %.2f deg max|pitch| %.2f deg "
+              "max|z-eta| %.3f m E_mid %.1f J E_last %.1f J sd_mid %.1f J "
+              "E_max %.1f J limit %.1f J steps out of bounds %ld\n",
+              name.c_str(), r.simT, r.wall, r.maxRoll * 180 / M_PI, r.maxPitch * 180 / M_PI,
+              r.maxDz, r.E.meanMid, r.E.meanLast, r.E.sdMid, r.E.maxE, r.E.limit, r.out);
+  std::fflush(stdout);
+  auto rec = [](const char* k, double v) {
+    char b[64];
+    std::snprintf(b, sizeof(b), "%.6g", v);
+    ::testing::Test::RecordProperty(k, b);
+  };
+  rec("sim_seconds", r.simT);
+  rec("wall_seconds", r.wall);
+  rec("max_roll_deg", r.maxRoll * 180 / M_PI);
+  rec("max_pitch_deg", r.maxPitch * 180 / M_PI);
+  rec("max_dz_m", r.maxDz);
+  rec("energy_mean_mid_J", r.E.meanMid);
+  rec("energy_mean_last_J", r.E.meanLast);
+  rec("energy_sd_mid_J", r.E.sdMid);
+  rec("energy_limit_J", r.E.limit);
+}
+
+class Soak : public ::testing::TestWithParam<Case> {};
+
+TEST_P(Soak, StaysUprightAfloatAndBounded) {
+  const Case& c = GetParam();
+  double T = soakSeconds();
+  ASSERT_GT(T, 0);
+  Result r = runBoat(c, T);
+  report(caseName(c), r);
+  if (r.nan) return;  // already reported
+  EXPECT_LE(r.E.meanLast, r.E.limit)
+      << "mechanical energy grows: mean over the last third " << r.E.meanLast
+      << " J, middle third " << r.E.meanMid << " J, allowed up to " << r.E.limit << " J";
+}
+
+std::vector<Case> matrix() {
+  std::vector<Case> v;
+  for (int n : {64, 256, 576, 2800, 7744}) {
+    for (auto sea : {std::pair<double, double>{0.8, 0.8}, {0.5, 0.8}, {1.0, 0.5}}) {
+      v.push_back({n, sea.first, sea.second});
+    }
+  }
+  return v;
+}
+
+INSTANTIATE_TEST_SUITE_P(Wigley, Soak, ::testing::ValuesIn(matrix()),
+                         [](const ::testing::TestParamInfo<Case>& i) { return caseName(i.param); });
+
+// the demo scene for the soak duration: every free body stays finite and
+// rides the waves: |mean over the run of (z_com - eta at the body)| below
+// its hull's depth (Wigley boats 0.4 m = draft 0.25 + freeboard 0.15,
+// buoys 1.0 m = diameter, barge 0.5 m = height)
+TEST(SoakFleet, BodiesRideTheSurface) {
+  double T = soakSeconds();
+  ASSERT_GT(T, 0);
+  char e[1024] = "";
+  mjModel* m = mj_loadXML(MJB_MODELS "/fleet.xml", nullptr, e, sizeof(e));
+  ASSERT_TRUE(m) << e;
+  mjbBuoy* bu = mjb_attach(m, nullptr, e, sizeof(e));
+  ASSERT_TRUE(bu) << e;
+  mjData* d = mj_makeData(m);
+  std::vector<int> bodies;
+  for (int j = 0; j < m->njnt; j++) {
+    if (m->jnt_type[j] == mjJNT_FREE) bodies.push_back(m->jnt_bodyid[j]);
+  }
+  EXPECT_EQ(bodies.size(), 12u);
+  std::vector<double> sum(bodies.size(), 0), tilt(bodies.size(), 0);
+  long n = 0;
+  auto t0 = std::chrono::steady_clock::now();
+  for (long k = 0, nk = stepsFor(m, T); k < nk; k++) {
+    double t = d->time;
+    mj_step(m, d);
+    std::string why = badStep(m, d, t);
+    if (!why.empty()) {
+      ADD_FAILURE() << why << " in the step from t " << t;
+      break;
+    }
+    for (size_t i = 0; i < bodies.size(); i++) {
+      const mjtNum* x = d->xipos + 3 * bodies[i];
+      sum[i] += x[2] - mjb_seaHeight(bu, x[0], x[1], t);
+      double c = std::fmax(-1.0, std::fmin(1.0, d->xmat[9 * bodies[i] + 8]));
+      tilt[i] = std::fmax(tilt[i], std::acos(c) * 180 / M_PI);
+    }
+    n++;
+  }
+  double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("[soak] fleet T %.0f s wall %.1f s\n", d->time, wall);
+  for (size_t i = 0; i < bodies.size() && n > 0; i++) {
+    const char* name = m->names + m->name_bodyadr[bodies[i]];
+    std::string nm = name;
+    double depth = nm.rfind("boat", 0) == 0 ? 0.4 : nm.rfind("buoy", 0) == 0 ? 1.0 : 0.5;
+    double mean = sum[i] / n;
+    std::printf("[soak] fleet %-6s mean(z_com - eta) %+.4f m (bound %.1f) max tilt %.2f deg\n",
+                name, mean, depth, tilt[i]);
+    RecordProperty(nm + "_mean_dz_m", std::to_string(mean));
+    RecordProperty(nm + "_max_tilt_deg", std::to_string(tilt[i]));
+    EXPECT_LT(std::fabs(mean), depth) << name;
+  }
+  std::fflush(stdout);
+  mj_deleteData(d);
+  mjb_detach(bu);
+  mj_deleteModel(m);
+}
+
+}  // namespace
+}  // namespace mjbt

@@ -1,0 +1,93 @@
+// render: headless pictures of an mjbuoy scene for mjbuoy-sim (--render,
+// --snapshot, --show-forces).
+//
+// MuJoCo's own renderer (mjr_render) draws the model into its offscreen
+// buffer, sized to the request, on a GL 4.5 compatibility-profile context of
+// our own on Mesa's surfaceless EGL platform (no window, no X server). Into
+// the same framebuffer, with MuJoCo's projection and depth buffer, we then
+// draw a sky where nothing was drawn and the sea: a graded triangle grid
+// around the camera's point of interest with heights from mjb_seaHeight
+// (the exact Gerstner surface), semi-transparent, so the wet part of each
+// hull shows through it. The model needs no visual elements of its own; two
+// optional <custom> entries override the sea (mjbuoy-sim.* entries are not
+// mjbuoy.* entries, so the library ignores them):
+//   <numeric name="mjbuoy-sim.sea.rgba" data="r g b a"/>   colour, opacity
+//   <numeric name="mjbuoy-sim.sea.extent" data="R"/>      half-size [m]
+// Without a camera name, a free camera frames all hull bodies and follows
+// them. Frames go to the ffmpeg program through a pipe (H.264 MP4), stills
+// to PNG through libpng.
+#ifndef MJBUOY_TOOLS_RENDER_H_
+#define MJBUOY_TOOLS_RENDER_H_
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "mjbuoy.h"
+
+namespace mjbsim {
+
+struct RenderOptions {
+  int width = 1280, height = 720;
+  std::string camera;       // model camera name; empty: free camera framing the hulls
+  bool showForces = false;  // per-body force arrows (mjb_wrench)
+};
+
+class Renderer {
+ public:
+  // a renderer for m (copied; offscreen buffer resized to the request);
+  // nullptr with the reason in err
+  static std::unique_ptr<Renderer> create(const mjModel* m, const mjbBuoy* b,
+                                          const RenderOptions& o, std::string* err);
+  ~Renderer();
+
+  // draw d; rgb gets width*height*3 bytes, bottom row first (OpenGL order)
+  bool render(const mjData* d, std::vector<unsigned char>* rgb, std::string* err);
+
+  int width() const;
+  int height() const;
+
+  struct Impl;
+
+ private:
+  explicit Renderer(Impl* p) : p_(p) {}
+  Impl* p_;
+};
+
+// H.264 MP4 (or whatever the extension says) through the ffmpeg program
+class VideoWriter {
+ public:
+  ~VideoWriter();
+  // checks that ffmpeg is on PATH and path is writable, then starts ffmpeg
+  bool open(const std::string& path, int width, int height, double fps, std::string* err);
+  // one frame, bottom row first
+  bool write(const std::vector<unsigned char>& rgb, std::string* err);
+  // waits for ffmpeg; false with its complaint if it failed
+  bool close(std::string* err);
+  int frames() const { return frames_; }
+
+ private:
+  FILE* pipe_ = nullptr;
+  std::string path_, log_;
+  int width_ = 0, height_ = 0, frames_ = 0;
+};
+
+// the directory on PATH holding an executable `name`, or ""
+std::string findProgram(const std::string& name);
+
+// is path creatable/writable (the file is created and left empty)
+bool checkWritable(const std::string& path, std::string* err);
+
+// PNG through libpng; rgb bottom row first, so rows are flipped
+bool writePng(const std::string& path, const std::vector<unsigned char>& rgb, int width,
+              int height, std::string* err);
+
+// shell-quote s for popen
+std::string shellQuote(const std::string& s);
+
+}  // namespace mjbsim
+
+#endif  // MJBUOY_TOOLS_RENDER_H_
