@@ -17,6 +17,9 @@ pkgs=(
   libgl1-mesa-dri              # Mesa's GL drivers (llvmpipe when there is no GPU)
   python3-glad                 # generates the GL loader at build time (/usr/bin/python3 -m glad)
   xvfb xauth                   # an X server for the test of GLX context restoring
+  ffmpeg                       # mjbuoy-sim --render: encodes the clip (H.264 MP4); ffprobe for its test
+  libpng-dev                   # mjbuoy-sim --snapshot: PNG stills
+  gnuplot-nox                  # mjbuoy-sim --plot: heave, roll and pitch plots
 )
 
 missing=()

@@ -164,6 +164,29 @@ struct Result {
   EnergyStats E;
 };
 
+// the criterion itself on synthetic 120 s runs shaped like the boats'
+// (mean 420 J, swinging +-1500 J with the 2.243 s wave): a steady state or
+// a decay passes; a steady gain of 5 J/s (200 J per third) or kinetic energy
+// growing 1% per second fails
+TEST(SoakCriterion, RejectsGrowingEnergy) {
+  const double dt = 0.002, T = 120, mass = 176.2, A = 0.8, P = 2.243;
+  auto passes = [&](double rate, double grow) {
+    std::vector<double> e;
+    for (long k = 0; k < std::lround(T / dt); k++) {
+      double t = k * dt, s = std::sin(2 * M_PI * t / P);
+      double pe = 60 + 1500 * s, ke = 720 * std::exp(grow * t) * (1 - s * s);
+      e.push_back(pe + ke + rate * t);
+    }
+    EnergyStats st = energyStats(e, mass, A);
+    return st.meanLast <= st.limit;
+  };
+  EXPECT_TRUE(passes(0, 0));
+  EXPECT_TRUE(passes(-5, 0));
+  EXPECT_TRUE(passes(0, -0.01));
+  EXPECT_FALSE(passes(5, 0));
+  EXPECT_FALSE(passes(0, 0.01));
+}
+
 // run one boat case for T simulated seconds; failures are reported as
 // non-fatal expectations (the first excursion out of bounds and their
 // count), the run stops early only at a NaN
@@ -190,6 +213,7 @@ Result runBoat(const Case& c, double T, const std::string& extra = "") {
       ADD_FAILURE() << bad << " in the step from t " << t;
       break;
     }
+    r.simT = s.d->time;
     double roll, pitch;
     rollPitch(s.d, b, &roll, &pitch);
     const mjtNum* x = s.d->xipos + 3 * b;
@@ -206,7 +230,6 @@ Result runBoat(const Case& c, double T, const std::string& extra = "") {
   }
   if (r.out) ADD_FAILURE() << r.out << " steps out of bounds";
   r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.simT = s.d->time;
   r.E = energyStats(energy, mass, c.amp);
   return r;
 }

@@ -56,7 +56,7 @@ bool writePlot(const std::string& png, const std::string& title, const std::vect
     for (size_t j = 0; j < s.size(); j++) {
       char col[64];
       std::snprintf(col, sizeof(col), "using 1:%zu", 2 + 3 * j + k);
-      script += (j ? ", " : "") + gq(dat) + " " + col + " with lines lw 1.5 title " +
+      script += (j ? ", " : "") + gq(dat) + " " + col + " with lines lw 1.5" + (j >= 8 ? " dt 2" : "") + " title " +
                 gq(s[j].name);
     }
     if (s.empty()) script += "0 title 'no bodies'";

@@ -109,7 +109,7 @@ bool Renderer::Impl::makeContext(std::string* err) {
 }
 
 // the bodies to frame: those mjbuoy pushes on (hull bodies, wet at the
-// start), else those with a free joint, else all
+// start) and those with a free joint; all if there are none
 void Renderer::Impl::chooseBodies(const mjData* d) {
   const mjtNum* w = mjb_wrench(b, d);
   for (int i = 1; w && i < m->nbody; i++) {
@@ -117,9 +117,11 @@ void Renderer::Impl::chooseBodies(const mjData* d) {
     for (int k = 0; k < 6; k++) any |= w[6 * i + k] != 0;
     if (any) bodies.push_back(i);
   }
-  if (bodies.empty()) {
-    for (int j = 0; j < m->njnt; j++) {
-      if (m->jnt_type[j] == mjJNT_FREE) bodies.push_back(m->jnt_bodyid[j]);
+  // bodies with a free joint too: a hull above the water at t = 0 gets no force yet
+  for (int j = 0; j < m->njnt; j++) {
+    int bd = m->jnt_bodyid[j];
+    if (m->jnt_type[j] == mjJNT_FREE && std::find(bodies.begin(), bodies.end(), bd) == bodies.end()) {
+      bodies.push_back(bd);
     }
   }
   if (bodies.empty()) for (int i = 1; i < m->nbody; i++) bodies.push_back(i);
@@ -251,15 +253,13 @@ void Renderer::Impl::drawSea(const mjData* d, const mjvGLCamera& c) {
   for (int j = 0; j < n; j++) {
     for (int i = 0; i < n; i++) z[j * n + i] = mjb_seaHeight(b, cx + u[i], cy + u[j], d->time);
   }
-  // sun: the model's first directional light, else from above
-  V3 sun = unit(v3(0.3, -0.4, 1));
-  for (int l = 0; l < m->nlight; l++) {
-    if (m->light_directional[l]) {
-      const mjtNum* dir = d->light_xdir + 3 * l;
-      sun = unit(v3(-dir[0], -dir[1], -dir[2]));
-      break;
-    }
-  }
+  // the sea's own sun: low (30 degrees) ahead and to the left of the view,
+  // so that slopes shade and the far water glitters; a light from straight
+  // above (the usual MJCF light) would leave the sea flat
+  V3 fw = unit(v3(c.forward[0], c.forward[1], 0));
+  if (dot(fw, fw) < 0.5) fw = v3(0, 1, 0);
+  V3 lf = cross(v3(0, 0, 1), fw);
+  V3 sun = unit(std::cos(M_PI / 6) * unit(fw + 0.6 * lf) + v3(0, 0, std::sin(M_PI / 6)));
   std::vector<float> col(4 * n * n);
   for (int j = 0; j < n; j++) {
     for (int i = 0; i < n; i++) {
@@ -274,12 +274,12 @@ void Renderer::Impl::drawSea(const mjData* d, const mjvGLCamera& c) {
       double ndv = std::max(0.0, dot(nrm, view));
       double fres = 0.04 + 0.96 * std::pow(1 - ndv, 5);
       V3 hv = unit(sun + view);
-      double spec = 0.6 * std::pow(std::max(0.0, dot(nrm, hv)), 80);
+      double spec = 0.35 * std::pow(std::max(0.0, dot(nrm, hv)), 120);
       double r = std::sqrt(u[i] * u[i] + u[j] * u[j]);
       double fog = smooth(0.45 * R, 0.95 * R, r);
       float* o4 = &col[4 * (j * n + i)];
       for (int k = 0; k < 3; k++) {
-        double w = sea[k] * (0.45 + 0.55 * ndl);
+        double w = sea[k] * (0.25 + 1.1 * ndl);
         w = w + fres * (kSky[k] - w) + spec;
         o4[k] = w + fog * (kSky[k] - w);
       }
@@ -315,7 +315,7 @@ void Renderer::Impl::addForces(const mjData* d) {
       if (m->geom_bodyid[g] == i) r = std::max(r, m->geom_rbound[g]);
     }
     double mg = std::max(1e-9, m->body_subtreemass[i] * std::fabs(m->opt.gravity[2]));
-    double len = std::min(4.0, fn / mg) * r;
+    double len = 1.6 * std::min(4.0, fn / mg) * r;
     const mjtNum* p = d->xipos + 3 * i;
     mjvGeom* g = scn.geoms + scn.ngeom++;
     const float rgba[4] = {0.95f, 0.15f, 0.1f, 1};
@@ -414,6 +414,22 @@ Renderer::~Renderer() {
   }
   if (p_->m) mj_deleteModel(p_->m);
   delete p_;
+}
+
+std::string Renderer::describeCamera() const {
+  char buf[256];
+  const mjvCamera& c = p_->cam;
+  if (c.type == mjCAMERA_FIXED) {
+    std::snprintf(buf, sizeof(buf), "camera \"%s\" (model camera), fovy %g deg",
+                  p_->o.camera.c_str(), p_->m->cam_fovy[c.fixedcamid]);
+  } else {
+    std::snprintf(buf, sizeof(buf),
+                  "free camera: lookat %.4f %.4f %.4f distance %.4f azimuth %g elevation %g "
+                  "fovy %g deg",
+                  c.lookat[0], c.lookat[1], c.lookat[2], c.distance, c.azimuth, c.elevation,
+                  p_->m->vis.global.fovy);
+  }
+  return buf;
 }
 
 int Renderer::width() const { return p_->o.width; }

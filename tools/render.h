@@ -47,6 +47,10 @@ class Renderer {
   // draw d; rgb gets width*height*3 bytes, bottom row first (OpenGL order)
   bool render(const mjData* d, std::vector<unsigned char>* rgb, std::string* err);
 
+  // the camera of the last picture, one line (free camera: lookat, distance,
+  // azimuth, elevation, fovy)
+  std::string describeCamera() const;
+
   int width() const;
   int height() const;
 

@@ -245,7 +245,13 @@ int main(int argc, char** argv) {
       for (int k = 0; k < 6; k++) any |= w[6 * i + k] != 0;
       if (any) hullBodies.push_back(i);
     }
-    if (hullBodies.empty()) hullBodies = free;
+    // bodies with a free joint too: a hull above the water at t = 0 gets no force yet
+    for (int bd : free) {
+      if (std::find(hullBodies.begin(), hullBodies.end(), bd) == hullBodies.end()) {
+        hullBodies.push_back(bd);
+      }
+    }
+    std::sort(hullBodies.begin(), hullBodies.end());
     for (int bd : hullBodies) series.push_back({m->names + m->name_bodyadr[bd], {}, {}, {}});
   }
 
@@ -300,7 +306,8 @@ int main(int argc, char** argv) {
     steps++;
   }
   prog.done();
-  std::string verr;
+  std::string verr, camLine;
+  if (renderer) camLine = renderer->describeCamera();
   if (!video.empty() && !writer.close(&verr)) {
     std::fprintf(stderr, "mjbuoy-sim: --render: %s\n", verr.c_str());
     failed = true;
@@ -341,6 +348,7 @@ int main(int argc, char** argv) {
                 height, fps);
   }
   for (const Snap& s : snaps) std::printf("  wrote %s (t = %g s)\n", s.file.c_str(), s.t);
+  if (!camLine.empty()) std::printf("  last picture: %s\n", camLine.c_str());
   if (!plot.empty()) {
     std::string e;
     if (!mjbsim::writePlot(plot, model + ": heave, roll and pitch", plotT, series, &e)) {
