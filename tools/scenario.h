@@ -181,6 +181,9 @@ bool writeJUnit(const std::vector<Report>& reports, const std::string& path);
 // number formatting shared by the parts: %.6g, "inf" for infinities
 std::string num(double v);
 
+// the shortest decimal that reads back as v (scenario_parse.cc)
+std::string exact(double v);
+
 }  // namespace scn
 
 #endif  // MJBUOY_TOOLS_SCENARIO_H_

@@ -28,16 +28,6 @@ Sim::~Sim() {
   if (m) mj_deleteModel(m);
 }
 
-// the shortest decimal that reads back as v
-static std::string exact(double v) {
-  char buf[64];
-  for (int p = 6; p <= 17; p++) {
-    std::snprintf(buf, sizeof(buf), "%.*g", p, v);
-    if (std::strtod(buf, nullptr) == v) break;
-  }
-  return buf;
-}
-
 // the <custom> children of the model, in document order
 static std::vector<XMLElement*> customs(XMLElement* root) {
   std::vector<XMLElement*> v;

@@ -34,8 +34,7 @@ std::string num(double v) {
   return buf;
 }
 
-// the shortest decimal that reads back as v
-static std::string exact(double v) {
+std::string exact(double v) {
   char buf[64];
   for (int p = 6; p <= 17; p++) {
     std::snprintf(buf, sizeof(buf), "%.*g", p, v);
