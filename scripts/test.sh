@@ -8,6 +8,9 @@ build=${MJBUOY_BUILD:-build}
 # asked for, e.g. bash scripts/test.sh -L soak
 exclude=(-LE soak)
 for a in "$@"; do
-  case $a in -L* | --label-regex*) exclude=() ;; esac
+  case $a in
+    -LE* | --label-exclude*) ;;
+    -L* | --label-regex*) exclude=() ;;
+  esac
 done
 ctest --test-dir "$build" --output-on-failure -j"$(nproc)" "${exclude[@]}" "$@"
