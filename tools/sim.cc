@@ -302,7 +302,14 @@ int main(int argc, char** argv) {
     }
     prog.update(d->time);
     if (d->time >= duration - eps) break;
+    double before = d->time;
     mj_step(m, d);
+    // MuJoCo resets a diverging state (time back to 0): stop, never loop forever
+    if (d->time < before) {
+      std::fprintf(stderr, "mjbuoy-sim: the simulation diverged at t = %g s and MuJoCo reset "
+                   "it (NaN, Inf or huge value in the state); stopping\n", before);
+      return 1;
+    }
     steps++;
   }
   prog.done();
