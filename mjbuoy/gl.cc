@@ -29,6 +29,7 @@ struct GlBackend {
   int tstage[kNStage] = {0};
   std::mutex mu;                // one context: one thread at a time
   int nvert = 0, ntri = 0, nhull = 0, nslot = 0, nwave = 0;
+  GLint uHasprev = -1, uFirst = -1, uSlamdt = -1;  // per-step uniforms, looked up once
   std::vector<GBody> body;      // per step, one per hull body
   std::vector<float> phase;     // per step, nslot x nwave
   std::vector<float> out;       // readback, nslot x 10 x 4
@@ -145,6 +146,9 @@ bool glMake(Buoy* b, std::string* err) {
     gl.ProgramUniform2f(g->prog[st], loc(g, st, "current"), float(sea.current[0]),
                         float(sea.current[1]));
   }
+  g->uHasprev = loc(g, kHydro, "hasprev");
+  g->uFirst = loc(g, kHydro, "first");
+  g->uSlamdt = loc(g, kHydro, "slamdt");
   timerInit(&g->timer, &gl);
   for (int i = 0; i < kNStage; i++) g->tstage[i] = timerStage(&g->timer, kStage[i]);
   b->gl = g;
@@ -251,10 +255,9 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   }
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
-  gl.ProgramUniform1i(g->prog[kHydro], loc(g, kHydro, "hasprev"), s->hasPrev);
-  gl.ProgramUniform1i(g->prog[kHydro], loc(g, kHydro, "first"), clock != kSameStep);
-  gl.ProgramUniform1f(g->prog[kHydro], loc(g, kHydro, "slamdt"),
-                      float(s->hasPrev ? d->time - s->tprev : 0));
+  gl.ProgramUniform1i(g->prog[kHydro], g->uHasprev, s->hasPrev);
+  gl.ProgramUniform1i(g->prog[kHydro], g->uFirst, clock != kSameStep);
+  gl.ProgramUniform1f(g->prog[kHydro], g->uSlamdt, float(s->hasPrev ? d->time - s->tprev : 0));
 
   const int groups[kNStage] = {(g->nvert + BUOY_LOCAL - 1) / BUOY_LOCAL,
                                (g->ntri + BUOY_LOCAL - 1) / BUOY_LOCAL, g->nhull,
