@@ -13,6 +13,7 @@
 namespace mjb {
 
 struct GlBackend;
+struct Pool;
 
 struct Hull {
   int geom, body;     // MuJoCo ids
@@ -20,6 +21,7 @@ struct Hull {
   int t0, nt;         // triangle range in Buoy::face
   double area;        // total surface area S_total [m^2]
   double mass;        // body mass share of this hull (by area) [kg]
+  double rad;         // largest vertex distance from the body origin [m]
   HullParams par;
 };
 
@@ -35,6 +37,11 @@ struct Buoy {
   std::string warnings;        // newline-separated
   std::string renderer;
   GlBackend* gl = nullptr;     // gl backend, when it runs
+  // cpu backend threads: hulls [split[i], split[i + 1]) go to thread i;
+  // the pool has nthreads - 1 workers (none when the scene is small)
+  int nthreads = 1;
+  std::vector<int> split;
+  Pool* pool = nullptr;
 };
 
 // wet triangle data of one call, and the slamming history
@@ -52,6 +59,15 @@ struct State {
   std::vector<double> rel;     // vertex positions relative to their body COM [m]
   std::vector<double> h;       // vertex heights above the surface [m]
   std::vector<double> lab;     // vertex surface particle labels, 2 each [m]
+  // label minus position of each vertex, 2 each [m], the guess of the label
+  // search: off is read, from the first call of the previous step (zero
+  // after a restart) so every call of a step sees the same guess and gives
+  // the same bits; offNew is written by the first call of this step
+  std::vector<double> off, offNew;
+  std::vector<double> hoff, hoffNew;  // the same for each hull's COM [m]
+  std::vector<WaveNow> wn;     // wave constants of this call
+  std::vector<double> scr;     // Newton scratch, 4 per wave per thread
+  double crest = 0;            // highest possible surface height [m]
   std::vector<char> bad;       // per body: state not finite in the last call
   std::vector<char> told;      // per body: already named in notices
   std::string notices;         // capacity reserved up front

@@ -80,6 +80,9 @@ static const Field kWave = {"wave", 5, 0, 0, false,
                             "amplitude m, wavelength m, direction deg, phase deg, steepness",
                             "0.5 20 0 0 0.6", 0, kWaveParts};
 
+// cpu backend threads: 0 picks them from the scene size and the cores
+static const Field kThreads = {"threads", 1, 0, 64, false, "threads, 0 = auto", "0"};
+
 static std::string fmt(double v) {
   std::ostringstream s;
   s.precision(10);
@@ -149,7 +152,7 @@ static std::string fieldList(const Field* fs, int n) {
 
 static const char kNumericNames[] =
     "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.hull.<param>, "
-    "mjbuoy.geom.<geom>.<param>";
+    "mjbuoy.geom.<geom>.<param>, mjbuoy.threads";
 
 // hull geom list: whitespace-separated geom names or fnmatch patterns. A
 // pattern skips geoms that cannot be hulls ("*" with a floor in the scene);
@@ -314,6 +317,15 @@ std::string parseConfig(const mjModel* m, Config* c) {
       if (!e.empty()) return e;
       for (int j = 0; j < f->n; j++) param(&par[h], *f)[j] = v[j];
       set[h][f - kHullFields] = 1;
+    } else if (!std::strcmp(key, "threads")) {
+      std::string e = checkNumeric(m, i, kThreads);
+      if (!e.empty()) return e;
+      if (v[0] != std::floor(v[0])) {
+        return "mjbuoy: " + tag("numeric", name) + " value = " + fmt(v[0]) +
+               " is not a whole number of threads; give 0 (auto) or a count from 1 to 64, "
+               "e.g. data=\"0\"";
+      }
+      c->threads = int(v[0]);
     } else if (!std::strcmp(key, "hulls") || !std::strcmp(key, "backend")) {
       return "mjbuoy: " + tag("numeric", name) + " must be a <text> entry, e.g. "
              "<text name=\"" + name + "\" data=\"" +

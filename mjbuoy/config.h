@@ -24,6 +24,7 @@ struct HullParams {
 struct Config {
   Sea sea;
   std::string backend = "cpu";
+  int threads = 0;                 // cpu backend threads; 0 = auto
   std::vector<int> geom;           // hull geom ids, ascending
   std::vector<HullParams> param;   // one per hull geom
   std::vector<std::string> warn;   // load-time warnings

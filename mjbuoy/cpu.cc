@@ -6,6 +6,7 @@
 
 #include "buoy.h"
 #include "hydro.h"
+#include "pool.h"
 #include "pressure.h"
 
 namespace mjb {
@@ -29,6 +30,12 @@ void makeState(const Buoy& b, State* s) {
   s->prevA.assign(nt, 0);
   s->curV.assign(3 * nt, 0);
   s->prevV.assign(3 * nt, 0);
+  s->off.assign(b.vert.size() / 3 * 2, 0);
+  s->offNew.assign(b.vert.size() / 3 * 2, 0);
+  s->hoff.assign(2 * b.hull.size(), 0);
+  s->hoffNew.assign(2 * b.hull.size(), 0);
+  s->wn.assign(b.cfg.sea.waves.size(), WaveNow{});
+  s->scr.assign(4 * b.cfg.sea.waves.size() * std::max(1, b.nthreads), 0);
   s->key = -1;
   s->hasPrev = false;
 }
@@ -81,17 +88,39 @@ static void add(double* w, const double* f, const double* c) {
 }
 
 // forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
-// is the body's wrench of force family p
-static void hullWrench(const Buoy& b, const Hull& hl, const mjData* d,
-                       const double vel[6], bool first, State* s, double* const w[]) {
+// is the body's wrench of force family p; sc is scratch of 4 per wave
+static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6], bool first,
+                       State* s, double* sc, double* const w[]) {
+  const Hull& hl = b.hull[ih];
   const Sea& sea = b.cfg.sea;
+  const WaveNow* wn = s->wn.data();
+  double* tmp = sc + 2 * sea.waves.size();
   const HullParams& par = hl.par;
   const double rho = sea.rho, rg = rho * sea.g, t = d->time;
   const mjtNum* x = d->xpos + 3 * hl.body;
   const mjtNum* R = d->xmat + 9 * hl.body;
   const mjtNum* com = d->xipos + 3 * hl.body;
 
-  // vertices: body frame -> relative to COM, and height above the surface
+  // whole hull above the highest crest the waves can make: all dry, which
+  // gives exactly what the passes below give then (no force, no history)
+  if (x[2] - hl.rad > s->crest + 1e-6 * (1 + std::fabs(x[2]) + hl.rad)) {
+    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+      s->tri.area[k] = 0;
+      for (int j = 0; j < 3; j++) s->tri.v[3 * k + j] = 0;
+    }
+    if (first) {
+      std::memset(&s->curA[hl.t0], 0, hl.nt * sizeof(double));
+      std::memset(&s->curV[3 * hl.t0], 0, 3 * hl.nt * sizeof(double));
+      // the next step's guesses: cold, as after a restart
+      std::memset(&s->offNew[2 * hl.v0], 0, 2 * hl.nv * sizeof(double));
+      s->hoffNew[2 * ih] = s->hoffNew[2 * ih + 1] = 0;
+    }
+    return;
+  }
+
+  // vertices: body frame -> relative to COM, and height above the surface;
+  // the label search starts from the vertex's label offset of the last call
+  // (zero after a restart), which moves by mm per step
   for (int i = hl.v0; i < hl.v0 + hl.nv; i++) {
     const double* p = b.vert.data() + 3 * i;
     double* r = s->rel.data() + 3 * i;
@@ -99,31 +128,48 @@ static void hullWrench(const Buoy& b, const Hull& hl, const mjData* d,
       r[j] = R[3 * j] * p[0] + R[3 * j + 1] * p[1] + R[3 * j + 2] * p[2] + x[j] - com[j];
     }
     double* a = s->lab.data() + 2 * i;
-    a[0] = r[0] + com[0];
-    a[1] = r[1] + com[1];
-    if (!sea.waves.empty()) sea.label(a[0], a[1], t, a);
-    s->h[i] = r[2] + com[2] - sea.heightOf(a, t);
+    const double* o = s->off.data() + 2 * i;
+    double px = r[0] + com[0], py = r[1] + com[1];
+    a[0] = px + o[0];
+    a[1] = py + o[1];
+    double hz = sea.solve(wn, px, py, a, sc, tmp);
+    if (first) {
+      s->offNew[2 * i] = a[0] - px;
+      s->offNew[2 * i + 1] = a[1] - py;
+    }
+    s->h[i] = r[2] + com[2] - hz;
   }
 
   // the hull's flow: its COM velocity relative to the water there; the
   // wetted length L is the wet extent along it (body x when at rest)
   double uw[3], vr[3], dir[3];
-  sea.velocity(com, t, uw);
+  {
+    const double* o = s->hoff.data() + 2 * ih;
+    double a[2] = {com[0] + o[0], com[1] + o[1]};
+    double hz = sea.solve(wn, com[0], com[1], a, sc, tmp);
+    if (first) {
+      s->hoffNew[2 * ih] = a[0] - com[0];
+      s->hoffNew[2 * ih + 1] = a[1] - com[1];
+    }
+    sea.velocitySC(wn, sc, std::fmin(com[2] - hz, 0.0), uw);
+  }
   for (int j = 0; j < 3; j++) vr[j] = vel[3 + j] - uw[j];
   double speed = std::sqrt(dot(vr, vr));
   for (int j = 0; j < 3; j++) dir[j] = speed > 1e-9 ? vr[j] / speed : R[3 * j];
   double lo = INFINITY, hi = -INFINITY;
 
-  // pass 1: cut, exact pressure force -rho g dA n and torque -rho g drA x n
+  // pass 1: cut, exact pressure force -rho g dA n and torque -rho g drA x n;
+  // a triangle with no vertex below the surface has no wet part
   double* wp = w[mjbPART_PRESSURE];
   double wet = 0;
   for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
     const int* fc = b.face.data() + 3 * k;
-    double p[3][3], h[3];
-    for (int e = 0; e < 3; e++) {
-      std::memcpy(p[e], s->rel.data() + 3 * fc[e], 3 * sizeof(double));
-      h[e] = s->h[fc[e]];
+    double p[3][3], h[3] = {s->h[fc[0]], s->h[fc[1]], s->h[fc[2]]};
+    if (h[0] >= 0 && h[1] >= 0 && h[2] >= 0) {
+      s->tri.area[k] = 0;
+      continue;
     }
+    for (int e = 0; e < 3; e++) std::memcpy(p[e], s->rel.data() + 3 * fc[e], 3 * sizeof(double));
     Wet wt;
     wetTriangle(p, h, &wt);
     s->tri.area[k] = wt.area > 0 ? wt.area : 0;
@@ -172,14 +218,14 @@ static void hullWrench(const Buoy& b, const Hull& hl, const mjData* d,
     // water velocity at the wet centroid; Newton starts from the mean of the
     // vertex labels, which is within a few mm of the answer
     const int* fc = b.face.data() + 3 * k;
-    double pw[3], wc[3], a[2] = {0, 0};
+    const double* l0 = &s->lab[2 * fc[0]];
+    const double* l1 = &s->lab[2 * fc[1]];
+    const double* l2 = &s->lab[2 * fc[2]];
+    double pw[3], wc[3];
+    double a[2] = {(l0[0] + l1[0] + l2[0]) * (1.0 / 3), (l0[1] + l1[1] + l2[1]) * (1.0 / 3)};
     for (int j = 0; j < 3; j++) pw[j] = c[j] + com[j];
-    for (int e = 0; e < 3; e++) {
-      a[0] += s->lab[2 * fc[e]] / 3;
-      a[1] += s->lab[2 * fc[e] + 1] / 3;
-    }
-    if (!sea.waves.empty()) sea.label(pw[0], pw[1], t, a);
-    sea.velocityOf(a, t, std::fmin(pw[2] - sea.heightOf(a, t), 0.0), uw);
+    double hz = sea.solve(wn, pw[0], pw[1], a, sc, tmp);
+    sea.velocitySC(wn, sc, std::fmin(pw[2] - hz, 0.0), uw);
     cross(vel, c, wc);
     for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uw[j];
 
@@ -214,6 +260,45 @@ static void hullWrench(const Buoy& b, const Hull& hl, const mjData* d,
   }
 }
 
+// hulls [h0, h1), which own whole bodies, with scratch slot i
+struct Job {
+  const Buoy* b;
+  const mjModel* m;
+  const mjData* d;
+  State* s;
+  bool first;
+};
+
+static void hullRange(const Job& j, int h0, int h1, int slot) {
+  const Buoy& b = *j.b;
+  State* s = j.s;
+  const int nb6 = 6 * j.m->nbody;
+  double* sc = s->scr.data() + 4 * b.cfg.sea.waves.size() * slot;
+  for (int ih = h0; ih < h1; ih++) {
+    const int bd = b.hull[ih].body;
+    mjtNum vel[6];  // [angular; linear] at the COM, world frame
+    mj_objectVelocity(j.m, j.d, mjOBJ_BODY, bd, vel, 0);
+    if (!finite(j.d->xpos + 3 * bd, 3) || !finite(j.d->xmat + 9 * bd, 9) ||
+        !finite(j.d->xipos + 3 * bd, 3) || !finite(vel, 6)) {
+      s->bad[bd] = 1;
+      if (j.first) {  // the next step's guesses: cold
+        const Hull& hl = b.hull[ih];
+        std::memset(&s->offNew[2 * hl.v0], 0, 2 * hl.nv * sizeof(double));
+        s->hoffNew[2 * ih] = s->hoffNew[2 * ih + 1] = 0;
+      }
+      continue;
+    }
+    double* w[mjbNPART];
+    for (int p = 0; p < mjbNPART; p++) w[p] = s->part.data() + p * nb6 + 6 * bd;
+    hullWrench(b, ih, j.d, vel, j.first, s, sc, w);
+  }
+}
+
+static void runPart(void* arg, int i) {
+  const Job& j = *static_cast<const Job*>(arg);
+  hullRange(j, j.b->split[i], j.b->split[i + 1], i);
+}
+
 void noteBad(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   for (int bd : b.body) {
     if (!s->bad[bd] || s->told[bd]) continue;
@@ -235,21 +320,26 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   if (clock == kNewStep) {
     std::swap(s->prevA, s->curA);
     std::swap(s->prevV, s->curV);
+    std::swap(s->off, s->offNew);
+    std::swap(s->hoff, s->hoffNew);
   }
-  bool first = clock != kSameStep;
-  for (const Hull& hl : b.hull) {
-    const int bd = hl.body;
-    mjtNum vel[6];  // [angular; linear] at the COM, world frame
-    mj_objectVelocity(m, d, mjOBJ_BODY, bd, vel, 0);
-    if (!finite(d->xpos + 3 * bd, 3) || !finite(d->xmat + 9 * bd, 9) ||
-        !finite(d->xipos + 3 * bd, 3) || !finite(vel, 6)) {
-      s->bad[bd] = 1;
-      continue;
-    }
-    double* w[mjbNPART];
-    for (int p = 0; p < mjbNPART; p++) w[p] = s->part.data() + p * nb6 + 6 * bd;
-    hullWrench(b, hl, d, vel, first, s, w);
+  if (clock == kRestart) {
+    // label guesses start cold so a rerun repeats the first bit for bit
+    std::fill(s->off.begin(), s->off.end(), 0.0);
+    std::fill(s->hoff.begin(), s->hoff.end(), 0.0);
+    std::fill(s->offNew.begin(), s->offNew.end(), 0.0);
+    std::fill(s->hoffNew.begin(), s->hoffNew.end(), 0.0);
   }
+  // per-call wave constants, and the highest crest: level + sum |A|
+  const Sea& sea = b.cfg.sea;
+  sea.now(d->time, s->wn.data());
+  s->crest = sea.level;
+  for (const Wave& wv : sea.waves) s->crest += std::fabs(wv.amp);
+  // large scenes split by hulls over the pool's threads; each part owns
+  // whole bodies and its own scratch, so the result does not depend on
+  // the split. Another mjData holding the pool: run serially here.
+  Job job{&b, m, d, s, clock != kSameStep};
+  if (!b.pool || !poolRun(b.pool, runPart, &job)) hullRange(job, 0, b.hull.size(), 0);
   noteBad(b, m, d, s);
   // total; a body with a non-finite state gets no force at all
   std::memset(s->wrench.data(), 0, s->wrench.size() * sizeof(double));

@@ -6,9 +6,11 @@
 #include <memory>
 #include <mutex>
 #include <shared_mutex>
+#include <thread>
 
 #include "buoy.h"
 #include "hull.h"
+#include "pool.h"
 #include "mjbuoy.h"
 
 using mjb::Buoy;
@@ -48,6 +50,24 @@ State* state(mjbBuoy* b, const mjData* d, bool create) {
   return s.get();
 }
 
+// mj_applyFT restricted to the dofs that move body: the same J^T [f; tq]
+// (J from cdof as in mj_jac) without clearing and scanning all nv columns,
+// which made a fleet of n free boats cost O(n^2) per step
+void applyFT(const mjModel* m, mjData* d, const mjtNum f[3], const mjtNum tq[3],
+             const mjtNum pt[3], int body, mjtNum* qfrc) {
+  mjtNum off[3];
+  mju_sub3(off, pt, d->subtree_com + 3 * m->body_rootid[body]);
+  while (body && !m->body_dofnum[body]) body = m->body_parentid[body];
+  if (!body) return;
+  for (int i = m->body_dofadr[body] + m->body_dofnum[body] - 1; i >= 0; i = m->dof_parentid[i]) {
+    const mjtNum* c = d->cdof + 6 * i;  // [angular; linear] motion of dof i
+    mjtNum t[3];
+    mju_cross(t, c, off);
+    qfrc[i] += (c[3] + t[0]) * f[0] + (c[4] + t[1]) * f[1] + (c[5] + t[2]) * f[2];
+    qfrc[i] += c[0] * tq[0] + c[1] * tq[1] + c[2] * tq[2];
+  }
+}
+
 void passive(const mjModel* m, mjData* d) {
   if (gprev) gprev(m, d);
   mjbBuoy* b;
@@ -64,7 +84,37 @@ void passive(const mjModel* m, mjData* d) {
   }
   for (int bd : b->b.body) {
     const mjtNum* w = s->wrench.data() + 6 * bd;
-    mj_applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
+    applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
+  }
+}
+
+// cpu threads: mjbuoy.threads, or with 0 (auto) every core once the scene
+// has kParMin triangles (below it waking a thread costs more than it saves:
+// docs/benchmarks.md); parts split the hulls at body boundaries with about
+// equal triangle counts
+const int kParMin = 2000, kMaxAuto = 8;
+
+void threads(Buoy* B) {
+  int n = B->cfg.threads;
+  if (n == 0) {
+    n = int(B->face.size() / 3) >= kParMin ? int(std::thread::hardware_concurrency()) : 1;
+    n = std::max(1, std::min(n, kMaxAuto));
+  }
+  n = std::min(n, int(B->body.size()));
+  B->split.assign(1, 0);
+  long total = B->face.size() / 3, acc = 0;
+  for (size_t h = 0; h < B->hull.size(); h++) {
+    acc += B->hull[h].nt;
+    bool bodyEnd = h + 1 == B->hull.size() || B->hull[h + 1].body != B->hull[h].body;
+    int part = B->split.size();  // the part this boundary would close
+    if (bodyEnd && part < n && acc * n >= total * part) B->split.push_back(h + 1);
+  }
+  if (B->split.back() != int(B->hull.size())) B->split.push_back(B->hull.size());
+  B->nthreads = B->split.size() - 1;
+  if (B->nthreads > 1) B->pool = mjb::poolMake(B->nthreads - 1);
+  if (!B->pool) {
+    B->nthreads = 1;
+    B->split = {0, int(B->hull.size())};
   }
 }
 
@@ -141,6 +191,12 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     for (const mjb::Hull& o : B.hull) if (o.body == h.body) s += o.area;
     h.mass *= h.area / s;
   }
+  // bounding radius of each hull about its body origin (vertices are in the
+  // body frame), for skipping hulls entirely above the waves
+  for (mjb::Hull& h : B.hull) {
+    h.rad = 0;
+    for (int i = h.v0; i < h.v0 + h.nv; i++) h.rad = std::max(h.rad, mju_norm3(&B.vert[3 * i]));
+  }
   // gl: required; auto: gl when an EGL display with GL >= 4.3 compute is
   // there, else cpu with a notice
   B.renderer = "CPU";
@@ -158,6 +214,7 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     }
   }
   for (const std::string& w : warn) B.warnings += "mjbuoy: warning: " + w + "\n";
+  if (B.cfg.backend == "cpu") threads(&B);
 
   mjbBuoy* out = b.release();
   std::unique_lock<std::shared_mutex> lk(gmu);
@@ -181,6 +238,7 @@ void mjb_detach(mjbBuoy* b) {
   }
   for (auto& kv : b->data) mjb::glFreeState(&b->b, kv.second.get());
   mjb::glFree(&b->b);
+  mjb::poolFree(b->b.pool);
   delete b;
 }
 

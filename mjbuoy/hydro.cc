@@ -9,6 +9,15 @@ static double dot(const double a[3], const double b[3]) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
+// pow(x, p) for x >= 0, with the exponents of the defaults (0.5, 1, 2)
+// done without the general pow, which is slow; same value to round-off
+static double powp(double x, double p) {
+  if (p == 0.5) return std::sqrt(x);
+  if (p == 1) return x;
+  if (p == 2) return x * x;
+  return std::pow(x, p);
+}
+
 double ittc57(double rn) {
   double l = std::log10(std::fmax(rn, kRnMin)) - 2;
   return 0.075 / (l * l);
@@ -35,9 +44,9 @@ void dragForce(const double drag[3], const double suction[3], double vr, double 
   if (!(sp > 0)) return;
   double c = dot(v, n) / sp, u = sp / vr, s;
   if (c > 0) {
-    s = -(drag[0] * u + drag[1] * u * u) * A * std::pow(c, drag[2]);
+    s = -(drag[0] * u + drag[1] * u * u) * A * powp(c, drag[2]);
   } else if (c < 0) {
-    s = (suction[0] * u + suction[1] * u * u) * A * std::pow(-c, suction[2]);
+    s = (suction[0] * u + suction[1] * u * u) * A * powp(-c, suction[2]);
   } else {
     return;
   }
@@ -56,7 +65,7 @@ void slamForce(double gain, double gmax, double p, double mass, double shull, do
   for (int j = 0; j < 3; j++) dq[j] = A * v[j] - Aprev * vprev[j];
   double gamma = std::sqrt(dot(dq, dq)) / (S * dt);
   double r = std::fmin(gamma / gmax, 1.0);
-  double s = -gain * std::pow(r, p) * c * mass * 2 * A / shull / dt;
+  double s = -gain * powp(r, p) * c * mass * 2 * A / shull / dt;
   for (int j = 0; j < 3; j++) f[j] = s * v[j];
 }
 

@@ -2,6 +2,7 @@
 #include "sea.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace mjb {
 
@@ -110,6 +111,132 @@ void Sea::velocityOf(const double a[2], double t, double zb, double v[3]) const 
     }
     v[0] += uh * fh * w.dx;
     v[1] += uh * fh * w.dy;
+    v[2] += uz * fz;
+  }
+}
+
+void Sea::now(double t, WaveNow* w) const {
+  for (size_t i = 0; i < waves.size(); i++) {
+    const Wave& W = waves[i];
+    double qa = W.steep * W.amp;
+    w[i] = WaveNow{W.k, W.dx, W.dy, W.omega * t, W.ph, qa * W.dx, qa * W.dy, qa * W.k,
+                   W.amp, qa * W.omega, W.amp * W.omega};
+  }
+}
+
+// the phase shifted by d [rad]: sin, cos of theta + d from those of theta by
+// angle addition; Taylor series of sin d and cos d - 1 to d^9 and d^10 are
+// exact in double for |d| < kShift (next terms below 1e-21), beyond it the
+// caller evaluates the phase directly
+static const double kShift = 0.05;
+static inline void shift(double s, double c, double d, double* out) {
+  double d2 = d * d;
+  double sd = d * (1 + d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880)))));
+  double cm = d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 +
+                                                                      d2 * (-1.0 / 3628800)))));
+  out[0] = s + (s * cm + c * sd);
+  out[1] = c + (c * cm - s * sd);
+}
+
+// solve() for n components; N > 0 fixes n at compile time so the loops
+// unroll and the phases stay in registers (N = 0: any n, phases in sc/tmp)
+template <int N>
+static double solveN(const WaveNow* w, int n, double level, double x, double y, double a[2],
+                     double* sc, double* tmp) {
+  if (N > 0) n = N;
+  double lc[N > 0 ? 2 * N : 1], ln[N > 0 ? 2 * N : 1];
+  double* cur = N > 0 ? lc : sc;
+  double* nxt = N > 0 ? ln : tmp;
+  for (int i = 0; i < n; i++) {
+    double th = w[i].k * (w[i].dx * a[0] + w[i].dy * a[1]) - w[i].wt + w[i].ph;
+    cur[2 * i] = std::sin(th);
+    cur[2 * i + 1] = std::cos(th);
+  }
+  // Newton with step halving exactly as in label(), on the phases in q
+  double f0, f1, j00, j01, j11, r2;
+  auto eval = [&](const double* p, const double* q) {
+    f0 = p[0] - x;
+    f1 = p[1] - y;
+    j00 = 1; j01 = 0; j11 = 1;
+    for (int i = 0; i < n; i++) {
+      double s = q[2 * i], c = q[2 * i + 1];
+      f0 -= w[i].qx * s;
+      f1 -= w[i].qy * s;
+      double jc = w[i].qk * c;
+      j00 -= jc * w[i].dx * w[i].dx;
+      j01 -= jc * w[i].dx * w[i].dy;
+      j11 -= jc * w[i].dy * w[i].dy;
+    }
+    r2 = f0 * f0 + f1 * f1;
+  };
+  eval(a, cur);
+  for (int it = 0; it < 50 && r2 > 1e-24; it++) {
+    double det = j00 * j11 - j01 * j01;
+    double s0 = (j11 * f0 - j01 * f1) / det;
+    double s1 = (j00 * f1 - j01 * f0) / det;
+    double prev = r2, b[2];
+    double step = 1;
+    for (int h = 0; h < 30; h++, step *= 0.5) {
+      b[0] = a[0] - step * s0;
+      b[1] = a[1] - step * s1;
+      double e0 = b[0] - a[0], e1 = b[1] - a[1];
+      for (int i = 0; i < n; i++) {
+        double d = w[i].k * (w[i].dx * e0 + w[i].dy * e1);
+        if (std::fabs(d) < kShift) {
+          shift(cur[2 * i], cur[2 * i + 1], d, nxt + 2 * i);
+        } else {
+          double th = w[i].k * (w[i].dx * b[0] + w[i].dy * b[1]) - w[i].wt + w[i].ph;
+          nxt[2 * i] = std::sin(th);
+          nxt[2 * i + 1] = std::cos(th);
+        }
+      }
+      eval(b, nxt);
+      if (r2 < prev) break;
+    }
+    a[0] = b[0];
+    a[1] = b[1];
+    for (int i = 0; i < 2 * n; i++) cur[i] = nxt[i];
+    if (r2 >= prev) break;  // no further progress in double
+  }
+  double z = level;
+  for (int i = 0; i < n; i++) z += w[i].amp * cur[2 * i + 1];
+  if (N > 0) {
+    for (int i = 0; i < 2 * n; i++) sc[i] = cur[i];
+  }
+  return z;
+}
+
+double Sea::solve(const WaveNow* w, double x, double y, double a[2], double* sc,
+                  double* tmp) const {
+  const int n = waves.size();
+  switch (n) {
+    case 0: return level;
+    case 1: return solveN<1>(w, n, level, x, y, a, sc, tmp);
+    case 2: return solveN<2>(w, n, level, x, y, a, sc, tmp);
+    case 3: return solveN<3>(w, n, level, x, y, a, sc, tmp);
+    case 4: return solveN<4>(w, n, level, x, y, a, sc, tmp);
+    default: return solveN<0>(w, n, level, x, y, a, sc, tmp);
+  }
+}
+
+void Sea::velocitySC(const WaveNow* w, const double* sc, double zb, double v[3]) const {
+  v[0] = current[0];
+  v[1] = current[1];
+  v[2] = 0;
+  if (depth > 0) zb = std::fmax(zb, -depth);
+  for (size_t i = 0; i < waves.size(); i++) {
+    double uh = w[i].qao * sc[2 * i + 1];
+    double uz = w[i].ao * sc[2 * i];
+    double fh, fz;
+    if (depth > 0) {
+      double kd = w[i].k * depth, kz = w[i].k * (zb + depth);
+      fh = std::cosh(kz) / std::cosh(kd);
+      fz = std::sinh(kz) / std::sinh(kd);
+    } else {
+      fh = fz = std::exp(w[i].k * zb);
+    }
+    v[0] += uh * fh * w[i].dx;
+    v[1] += uh * fh * w[i].dy;
     v[2] += uz * fz;
   }
 }

@@ -19,6 +19,18 @@ struct Wave {
   double ph;       // phase [rad]
 };
 
+// per-call constants of one component at a fixed time t (Sea::now), so the
+// hot loops do no per-wave setup; products keep label()'s association so a
+// cold solve gives the same bits as label() + heightOf()
+struct WaveNow {
+  double k, dx, dy;  // wave number [rad/m], unit direction
+  double wt, ph;     // omega t, phase [rad]
+  double qx, qy;     // Q A dx, Q A dy [m]
+  double qk;         // Q A k [1]
+  double amp;        // A [m]
+  double qao, ao;    // Q A omega, A omega [m/s]
+};
+
 struct Sea {
   double rho = 1000;        // water density [kg/m^3]
   double level = 0;         // still water level: height of the orbit centres [m]
@@ -51,6 +63,19 @@ struct Sea {
   void label(double x, double y, double t, double a[2]) const;
   double heightOf(const double a[2], double t) const;
   void velocityOf(const double a[2], double t, double zb, double v[3]) const;
+
+  // fast path for the cpu backend: the constants of every component at t
+  // (w holds waves.size())
+  void now(double t, WaveNow* w) const;
+  // label() from the guess in a, to the same tolerance, returning the
+  // surface height of the particle found (heightOf); sc gets sin and cos of
+  // each component's phase there and tmp is scratch (2 per wave each).
+  // Iterates reuse the phase by angle addition, so only the guess costs one
+  // sin and cos per component: the result differs from label() by round-off
+  double solve(const WaveNow* w, double x, double y, double a[2], double* sc,
+               double* tmp) const;
+  // velocityOf() from the phases solve() left in sc
+  void velocitySC(const WaveNow* w, const double* sc, double zb, double v[3]) const;
 };
 
 }  // namespace mjb

@@ -16,12 +16,16 @@
 using Clock = std::chrono::steady_clock;
 
 // boats spaced on a grid 6 m x 2 m apart, all partly wet on a 20 m swell
+static int gthreads = -1;  // mjbuoy.threads, -1: leave it out (auto)
+
 static std::string scene(const std::string& meshes, int boats, int tris) {
   std::ostringstream s;
   s << "<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" << meshes
     << "/wigley_" << tris << ".obj\"/></asset><custom>"
     << "<text name=\"mjbuoy.hulls\" data=\"h*\"/>"
-    << "<numeric name=\"mjbuoy.wave.swell\" data=\"0.3 20 20 0 0.5\"/></custom><worldbody>";
+    << "<numeric name=\"mjbuoy.wave.swell\" data=\"0.3 20 20 0 0.5\"/>";
+  if (gthreads >= 0) s << "<numeric name=\"mjbuoy.threads\" data=\"" << gthreads << "\"/>";
+  s << "</custom><worldbody>";
   int side = std::ceil(std::sqrt(boats));
   for (int i = 0; i < boats; i++) {
     s << "<body pos=\"" << 6 * (i % side) << " " << 2 * (i / side) << " 0.03\"><freejoint/>"
@@ -139,6 +143,8 @@ int main(int argc, char** argv) {
   app.add_option("--tris", tris, "Wigley resolutions: 64 256 576 2800 7744 (overrides the grid)");
   app.add_option("--steps", steps, "steps per repetition")->check(CLI::PositiveNumber);
   app.add_option("--reps", reps, "repetitions (the median is reported)")->check(CLI::PositiveNumber);
+  app.add_option("--threads", gthreads, "cpu threads (mjbuoy.threads; 0 = auto, the default)")
+      ->check(CLI::Range(0, 64));
   app.add_option("--json", json, "also write the results as JSON");
   app.add_option("--meshes", meshes, "directory of wigley_N.obj");
   CLI11_PARSE(app, argc, argv);
