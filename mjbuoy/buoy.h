@@ -37,8 +37,8 @@ struct Buoy {
   std::string warnings;        // newline-separated
   std::string renderer;
   GlBackend* gl = nullptr;     // gl backend, when it runs
-  // cpu backend threads: hulls [split[i], split[i + 1]) go to thread i;
-  // the pool has nthreads - 1 workers (none when the scene is small)
+  // cpu backend threads: chunk c is hulls [split[c], split[c + 1]); the
+  // pool has nthreads - 1 workers (none when the scene is small)
   int nthreads = 1;
   std::vector<int> split;
   Pool* pool = nullptr;
@@ -66,7 +66,11 @@ struct State {
   std::vector<double> off, offNew;
   std::vector<double> hoff, hoffNew;  // the same for each hull's COM [m]
   std::vector<WaveNow> wn;     // wave constants of this call
-  std::vector<double> scr;     // Newton scratch, 4 per wave per thread
+  // per thread: Newton and structure-of-arrays scratch (cpu.cc
+  // scratchSize), per doubles each; wet triangle list, mi ints each
+  std::vector<double> scr;
+  std::vector<int> idx;
+  size_t per = 0, mi = 0;
   double crest = 0;            // highest possible surface height [m]
   std::vector<char> bad;       // per body: state not finite in the last call
   std::vector<char> told;      // per body: already named in notices

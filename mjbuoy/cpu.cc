@@ -11,6 +11,20 @@
 
 namespace mjb {
 
+// most points one hull solves at once: its vertices or its triangles
+static size_t maxItems(const Buoy& b) {
+  size_t n = 1;
+  for (const Hull& h : b.hull) n = std::max(n, size_t(std::max(h.nv, h.nt)));
+  return n;
+}
+
+// per thread: 4 per wave for solve(), then x, y, a0, a1, z and 2 per wave
+// for every point of a hull
+static size_t scratchSize(const Buoy& b) {
+  size_t nw = b.cfg.sea.waves.size();
+  return 4 * nw + (5 + 2 * nw) * maxItems(b);
+}
+
 void makeState(const Buoy& b, State* s) {
   size_t nt = b.face.size() / 3;
   s->wrench.assign(6 * b.m->nbody, 0);
@@ -35,7 +49,10 @@ void makeState(const Buoy& b, State* s) {
   s->hoff.assign(2 * b.hull.size(), 0);
   s->hoffNew.assign(2 * b.hull.size(), 0);
   s->wn.assign(b.cfg.sea.waves.size(), WaveNow{});
-  s->scr.assign(4 * b.cfg.sea.waves.size() * std::max(1, b.nthreads), 0);
+  s->mi = maxItems(b);
+  s->per = scratchSize(b);
+  s->scr.assign(s->per * std::max(1, b.nthreads), 0);
+  s->idx.assign(s->mi * std::max(1, b.nthreads), 0);
   s->key = -1;
   s->hasPrev = false;
 }
@@ -88,9 +105,10 @@ static void add(double* w, const double* f, const double* c) {
 }
 
 // forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
-// is the body's wrench of force family p; sc is scratch of 4 per wave
+// is the body's wrench of force family p; slot picks the thread's scratch
 static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6], bool first,
-                       State* s, double* sc, double* const w[]) {
+                       State* s, int slot, double* const w[]) {
+  double* sc = s->scr.data() + s->per * slot;
   const Hull& hl = b.hull[ih];
   const Sea& sea = b.cfg.sea;
   const WaveNow* wn = s->wn.data();
@@ -119,25 +137,38 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   }
 
   // vertices: body frame -> relative to COM, and height above the surface;
-  // the label search starts from the vertex's label offset of the last call
-  // (zero after a restart), which moves by mm per step
-  for (int i = hl.v0; i < hl.v0 + hl.nv; i++) {
+  // the label search starts from the vertex's label offset of the last
+  // step (zero after a restart), which moves by mm per step, and runs for
+  // all vertices at once (structure of arrays)
+  const size_t nw = sea.waves.size(), mi = s->mi;
+  double* X = sc + 4 * nw;
+  double* Y = X + mi;
+  double* A0 = Y + mi;
+  double* A1 = A0 + mi;
+  double* Z = A1 + mi;
+  double* SC = Z + mi;
+  for (int q = 0; q < hl.nv; q++) {
+    const int i = hl.v0 + q;
     const double* p = b.vert.data() + 3 * i;
     double* r = s->rel.data() + 3 * i;
     for (int j = 0; j < 3; j++) {
       r[j] = R[3 * j] * p[0] + R[3 * j + 1] * p[1] + R[3 * j + 2] * p[2] + x[j] - com[j];
     }
-    double* a = s->lab.data() + 2 * i;
-    const double* o = s->off.data() + 2 * i;
-    double px = r[0] + com[0], py = r[1] + com[1];
-    a[0] = px + o[0];
-    a[1] = py + o[1];
-    double hz = sea.solve(wn, px, py, a, sc, tmp);
+    X[q] = r[0] + com[0];
+    Y[q] = r[1] + com[1];
+    A0[q] = X[q] + s->off[2 * i];
+    A1[q] = Y[q] + s->off[2 * i + 1];
+  }
+  sea.solveMany(wn, hl.nv, X, Y, A0, A1, Z, SC, tmp);
+  for (int q = 0; q < hl.nv; q++) {
+    const int i = hl.v0 + q;
+    s->lab[2 * i] = A0[q];
+    s->lab[2 * i + 1] = A1[q];
     if (first) {
-      s->offNew[2 * i] = a[0] - px;
-      s->offNew[2 * i + 1] = a[1] - py;
+      s->offNew[2 * i] = A0[q] - X[q];
+      s->offNew[2 * i + 1] = A1[q] - Y[q];
     }
-    s->h[i] = r[2] + com[2] - hz;
+    s->h[i] = s->rel[3 * i + 2] + com[2] - Z[q];
   }
 
   // the hull's flow: its COM velocity relative to the water there; the
@@ -204,28 +235,39 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     sbar /= wet;
   }
 
-  // pass 2: hydrodynamic forces at each wet centroid
-  const double slamdt = s->hasPrev ? t - s->tprev : 0;
+  // pass 2: hydrodynamic forces at each wet centroid. Water velocity there
+  // first, for all wet centroids at once; Newton starts from the mean of
+  // the vertex labels, which is within a few mm of the answer
+  int* idx = s->idx.data() + mi * slot;
+  int nw8 = 0;
   for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-    double A = s->tri.area[k];
     double* v = &s->tri.v[3 * k];
-    if (!(A > 0)) {
+    if (!(s->tri.area[k] > 0)) {
       v[0] = v[1] = v[2] = 0;
       continue;
     }
     const double* c = &s->tri.c[3 * k];
-    const double* n = &s->tri.n[3 * k];
-    // water velocity at the wet centroid; Newton starts from the mean of the
-    // vertex labels, which is within a few mm of the answer
     const int* fc = b.face.data() + 3 * k;
     const double* l0 = &s->lab[2 * fc[0]];
     const double* l1 = &s->lab[2 * fc[1]];
     const double* l2 = &s->lab[2 * fc[2]];
-    double pw[3], wc[3];
-    double a[2] = {(l0[0] + l1[0] + l2[0]) * (1.0 / 3), (l0[1] + l1[1] + l2[1]) * (1.0 / 3)};
-    for (int j = 0; j < 3; j++) pw[j] = c[j] + com[j];
-    double hz = sea.solve(wn, pw[0], pw[1], a, sc, tmp);
-    sea.velocitySC(wn, sc, std::fmin(pw[2] - hz, 0.0), uw);
+    idx[nw8] = k;
+    X[nw8] = c[0] + com[0];
+    Y[nw8] = c[1] + com[1];
+    A0[nw8] = (l0[0] + l1[0] + l2[0]) * (1.0 / 3);
+    A1[nw8] = (l0[1] + l1[1] + l2[1]) * (1.0 / 3);
+    nw8++;
+  }
+  sea.solveMany(wn, nw8, X, Y, A0, A1, Z, SC, tmp);
+  const double slamdt = s->hasPrev ? t - s->tprev : 0;
+  for (int q = 0; q < nw8; q++) {
+    const int k = idx[q];
+    double A = s->tri.area[k];
+    double* v = &s->tri.v[3 * k];
+    const double* c = &s->tri.c[3 * k];
+    const double* n = &s->tri.n[3 * k];
+    double wc[3];
+    sea.velocitySC(wn, SC + 2 * nw * q, std::fmin(c[2] + com[2] - Z[q], 0.0), uw);
     cross(vel, c, wc);
     for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uw[j];
 
@@ -273,7 +315,6 @@ static void hullRange(const Job& j, int h0, int h1, int slot) {
   const Buoy& b = *j.b;
   State* s = j.s;
   const int nb6 = 6 * j.m->nbody;
-  double* sc = s->scr.data() + 4 * b.cfg.sea.waves.size() * slot;
   for (int ih = h0; ih < h1; ih++) {
     const int bd = b.hull[ih].body;
     mjtNum vel[6];  // [angular; linear] at the COM, world frame
@@ -290,13 +331,13 @@ static void hullRange(const Job& j, int h0, int h1, int slot) {
     }
     double* w[mjbNPART];
     for (int p = 0; p < mjbNPART; p++) w[p] = s->part.data() + p * nb6 + 6 * bd;
-    hullWrench(b, ih, j.d, vel, j.first, s, sc, w);
+    hullWrench(b, ih, j.d, vel, j.first, s, slot, w);
   }
 }
 
-static void runPart(void* arg, int i) {
+static void runChunk(void* arg, int c, int slot) {
   const Job& j = *static_cast<const Job*>(arg);
-  hullRange(j, j.b->split[i], j.b->split[i + 1], i);
+  hullRange(j, j.b->split[c], j.b->split[c + 1], slot);
 }
 
 void noteBad(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
@@ -335,11 +376,13 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   sea.now(d->time, s->wn.data());
   s->crest = sea.level;
   for (const Wave& wv : sea.waves) s->crest += std::fabs(wv.amp);
-  // large scenes split by hulls over the pool's threads; each part owns
-  // whole bodies and its own scratch, so the result does not depend on
-  // the split. Another mjData holding the pool: run serially here.
+  // large scenes: chunks of hulls shared among the pool's threads; a chunk
+  // owns whole bodies and each thread its own scratch, so the result does
+  // not depend on who runs what. Another mjData holding the pool: serial.
   Job job{&b, m, d, s, clock != kSameStep};
-  if (!b.pool || !poolRun(b.pool, runPart, &job)) hullRange(job, 0, b.hull.size(), 0);
+  if (!b.pool || !poolRun(b.pool, runChunk, &job, int(b.split.size()) - 1)) {
+    hullRange(job, 0, b.hull.size(), 0);
+  }
   noteBad(b, m, d, s);
   // total; a body with a non-finite state gets no force at all
   std::memset(s->wrench.data(), 0, s->wrench.size() * sizeof(double));

@@ -88,11 +88,12 @@ void passive(const mjModel* m, mjData* d) {
   }
 }
 
-// cpu threads: mjbuoy.threads, or with 0 (auto) every core once the scene
-// has kParMin triangles (below it waking a thread costs more than it saves:
-// docs/benchmarks.md); parts split the hulls at body boundaries with about
-// equal triangle counts
-const int kParMin = 2000, kMaxAuto = 8;
+// cpu threads: mjbuoy.threads, or with 0 (auto) every core (up to
+// kMaxAuto) once the scene has kParMin triangles: below that the ~20 us of
+// waking a worker and joining it is not repaid (docs/mjcf.md). The hulls
+// are cut at body boundaries into kChunks chunks per thread of about equal
+// triangle counts, claimed dynamically so a busy core does not stall a step.
+const int kParMin = 2000, kMaxAuto = 8, kChunks = 4;
 
 void threads(Buoy* B) {
   int n = B->cfg.threads;
@@ -101,17 +102,18 @@ void threads(Buoy* B) {
     n = std::max(1, std::min(n, kMaxAuto));
   }
   n = std::min(n, int(B->body.size()));
+  int nc = std::min(n > 1 ? kChunks * n : 1, int(B->body.size()));
   B->split.assign(1, 0);
   long total = B->face.size() / 3, acc = 0;
   for (size_t h = 0; h < B->hull.size(); h++) {
     acc += B->hull[h].nt;
     bool bodyEnd = h + 1 == B->hull.size() || B->hull[h + 1].body != B->hull[h].body;
-    int part = B->split.size();  // the part this boundary would close
-    if (bodyEnd && part < n && acc * n >= total * part) B->split.push_back(h + 1);
+    long part = B->split.size();  // the chunk this boundary would close
+    if (bodyEnd && part < nc && acc * nc >= total * part) B->split.push_back(h + 1);
   }
   if (B->split.back() != int(B->hull.size())) B->split.push_back(B->hull.size());
-  B->nthreads = B->split.size() - 1;
-  if (B->nthreads > 1) B->pool = mjb::poolMake(B->nthreads - 1);
+  B->nthreads = n;
+  if (n > 1) B->pool = mjb::poolMake(n - 1);
   if (!B->pool) {
     B->nthreads = 1;
     B->split = {0, int(B->hull.size())};

@@ -12,11 +12,13 @@ Pool* poolMake(int n);
 // stop and join the workers
 void poolFree(Pool* p);
 
-// run fn(arg, i) for i = 0 .. n (n workers): i = 0 on the calling thread,
-// the rest on the workers, and return when all are done. Returns false at
-// once, running nothing, when another thread is using the pool (the caller
-// then does the work itself). No allocation.
-bool poolRun(Pool* p, void (*fn)(void*, int), void* arg);
+// run fn(arg, c, slot) for every chunk c in [0, nc): the calling thread
+// (slot 0) and the workers (slots 1 .. n) claim chunks in order until none
+// is left, so a worker the OS does not schedule promptly costs at most the
+// chunk it holds. Returns when all chunks are done. Returns false at once,
+// running nothing, when another thread is using the pool (the caller then
+// does the work itself). No allocation.
+bool poolRun(Pool* p, void (*fn)(void*, int, int), void* arg, int nc);
 
 }  // namespace mjb
 

@@ -20,6 +20,25 @@ void wetTriangle(const double p[3][3], const double h[3], Wet* w) {
   for (int j = 0; j < 3; j++) w->n[j] = c[j] / len;
   if (h[0] >= 0 && h[1] >= 0 && h[2] >= 0) return;  // dry (or lying on the surface)
 
+  if (h[0] <= 0 && h[1] <= 0 && h[2] <= 0) {
+    // all wet: the polygon is the triangle, one piece whose cross product
+    // is c; the same arithmetic as the fan below, without the clipping
+    for (int i = 0; i < 3; i++) {
+      for (int j = 0; j < 3; j++) w->q[i][j] = p[i][j];
+    }
+    w->nq = 3;
+    double A = 0.5 * (c[0] * w->n[0] + c[1] * w->n[1] + c[2] * w->n[2]);
+    double d0 = -h[0], d1 = -h[1], d2 = -h[2], sd = d0 + d1 + d2;
+    w->area = 0 + A;
+    w->dA = 0 + A * sd / 3;
+    for (int j = 0; j < 3; j++) {
+      double sr = p[0][j] + p[1][j] + p[2][j];
+      w->drA[j] = 0 + A / 12 * (d0 * p[0][j] + d1 * p[1][j] + d2 * p[2][j] + sd * sr);
+      w->rA[j] = 0 + A * sr / 3;
+    }
+    return;
+  }
+
   // clip to h <= 0, walking the edges in the parent's order so the wet
   // polygon keeps its winding (Sutherland-Hodgman); at most 4 vertices
   double (*q)[3] = w->q, d[4];
