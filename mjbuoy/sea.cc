@@ -220,163 +220,17 @@ double Sea::solve(const WaveNow* w, double x, double y, double a[2], double* sc,
   }
 }
 
-// solveMany() for N components on one block of nb <= kBlock points, four
-// lanes at a time in GCC vector types (SSE2 pairs on any x86-64; GCC's
-// if-conversion does not vectorise the masked updates from plain loops)
-static const int kBlock = 32;
-// static helpers only: the AVX-argument ABI note does not concern callers
-#pragma GCC diagnostic ignored "-Wpsabi"
-typedef double vd __attribute__((vector_size(32)));
-typedef long long vm __attribute__((vector_size(32)));
-
-static inline vd ld(const double* p) {
-  vd v;
-  std::memcpy(&v, p, sizeof(v));
-  return v;
-}
-static inline void st(double* p, vd v) { std::memcpy(p, &v, sizeof(v)); }
-
-template <int N>
-static void solveBlock(const WaveNow* w, int nb, double level, const double* x,
-                       const double* y, double* a0, double* a1, double* z, double* sc,
-                       double* redo) {
-  double X[kBlock], Y[kBlock], A0[kBlock], A1[kBlock], S[N][kBlock], C[N][kBlock];
-  double F0[kBlock], F1[kBlock], J00[kBlock], J01[kBlock], J11[kBlock], R2[kBlock];
-  double bad[kBlock];
-  const int nv = (nb + 3) / 4 * 4;
-  for (int i = 0; i < nv; i++) {
-    // padding lanes: converged at the origin
-    X[i] = i < nb ? x[i] : 0;
-    Y[i] = i < nb ? y[i] : 0;
-    A0[i] = i < nb ? a0[i] : 0;
-    A1[i] = i < nb ? a1[i] : 0;
-    bad[i] = i < nb ? 0 : 1;
-  }
-  for (int j = 0; j < N; j++) {
-    for (int i = 0; i < nv; i++) {
-      double th = w[j].k * (w[j].dx * A0[i] + w[j].dy * A1[i]) - w[j].wt + w[j].ph;
-      S[j][i] = std::sin(th);
-      C[j][i] = std::cos(th);
-    }
-  }
-  // residual and Jacobian at the guess (the arithmetic of solveN's eval)
-  for (int i = 0; i < nv; i++) {
-    double f0 = A0[i] - X[i], f1 = A1[i] - Y[i], j00 = 1, j01 = 0, j11 = 1;
-    for (int j = 0; j < N; j++) {
-      f0 -= w[j].qx * S[j][i];
-      f1 -= w[j].qy * S[j][i];
-      double jc = w[j].qk * C[j][i];
-      j00 -= jc * w[j].dx * w[j].dx;
-      j01 -= jc * w[j].dx * w[j].dy;
-      j11 -= jc * w[j].dy * w[j].dy;
-    }
-    F0[i] = f0; F1[i] = f1; J00[i] = j00; J01[i] = j01; J11[i] = j11;
-    R2[i] = f0 * f0 + f1 * f1;
-  }
-  // full Newton steps in lockstep; a point is done when converged, and
-  // marked for redo when solveN would halve the step or evaluate the phase
-  // directly (the step fails to reduce |F|, or |d| >= kShift)
-  const vd one = {1, 1, 1, 1};
-  for (int it = 0; it < 50; it++) {
-    vm any = {0, 0, 0, 0};
-    for (int i = 0; i < nv; i += 4) {
-      vd a0v = ld(A0 + i), a1v = ld(A1 + i), r2o = ld(R2 + i), bd = ld(bad + i);
-      vd f0o = ld(F0 + i), f1o = ld(F1 + i);
-      vd j00o = ld(J00 + i), j01o = ld(J01 + i), j11o = ld(J11 + i);
-      vm act = (r2o > 1e-24) & (bd == 0);
-      vd det = j00o * j11o - j01o * j01o;
-      vd s0 = (j11o * f0o - j01o * f1o) / det;
-      vd s1 = (j00o * f1o - j01o * f0o) / det;
-      vd b0 = a0v - s0, b1 = a1v - s1;
-      vd e0 = b0 - a0v, e1 = b1 - a1v;
-      vd f0 = b0 - ld(X + i), f1 = b1 - ld(Y + i), j00 = one, j01 = one - one, j11 = one;
-      vm near = ~(act & 0);
-      vd ns[N], nc[N];
-      for (int j = 0; j < N; j++) {
-        vd d = w[j].k * (w[j].dx * e0 + w[j].dy * e1);
-        near &= (d < kShift) & (d > -kShift);
-        vd d2 = d * d;
-        vd sd = d * (1 + d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880)))));
-        vd cm = d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 +
-                                                                      d2 * (-1.0 / 3628800)))));
-        vd sv = ld(S[j] + i), cv = ld(C[j] + i);
-        ns[j] = sv + (sv * cm + cv * sd);
-        nc[j] = cv + (cv * cm - sv * sd);
-        f0 -= w[j].qx * ns[j];
-        f1 -= w[j].qy * ns[j];
-        vd jc = w[j].qk * nc[j];
-        j00 -= jc * w[j].dx * w[j].dx;
-        j01 -= jc * w[j].dx * w[j].dy;
-        j11 -= jc * w[j].dy * w[j].dy;
-      }
-      vd r2 = f0 * f0 + f1 * f1;
-      vm ok = act & near & (r2 < r2o);
-      st(bad + i, (act & ~ok) ? one : bd);
-      st(A0 + i, ok ? b0 : a0v);
-      st(A1 + i, ok ? b1 : a1v);
-      for (int j = 0; j < N; j++) {
-        st(S[j] + i, ok ? ns[j] : ld(S[j] + i));
-        st(C[j] + i, ok ? nc[j] : ld(C[j] + i));
-      }
-      st(F0 + i, ok ? f0 : f0o);
-      st(F1 + i, ok ? f1 : f1o);
-      st(J00 + i, ok ? j00 : j00o);
-      st(J01 + i, ok ? j01 : j01o);
-      st(J11 + i, ok ? j11 : j11o);
-      st(R2 + i, ok ? r2 : r2o);
-      any |= ok;
-    }
-    if (!(any[0] | any[1] | any[2] | any[3])) break;
-  }
-  for (int i = 0; i < nb; i++) {
-    redo[i] = bad[i];
-    if (bad[i] != 0) continue;  // the guess stays in a0, a1 for the redo
-    a0[i] = A0[i];
-    a1[i] = A1[i];
-    double h = level;
-    for (int j = 0; j < N; j++) {
-      h += w[j].amp * C[j][i];
-      sc[2 * (N * i + j)] = S[j][i];
-      sc[2 * (N * i + j) + 1] = C[j][i];
-    }
-    z[i] = h;
-  }
-}
-
-template <int N>
-static void solveBlocks(const Sea& sea, const WaveNow* w, int m, const double* x,
-                        const double* y, double* a0, double* a1, double* z, double* sc,
-                        double* tmp) {
-  double redo[kBlock];
-  for (int i0 = 0; i0 < m; i0 += kBlock) {
-    int nb = std::min(kBlock, m - i0);
-    solveBlock<N>(w, nb, sea.level, x + i0, y + i0, a0 + i0, a1 + i0, z + i0, sc + 2 * N * i0,
-                  redo);
-    for (int i = 0; i < nb; i++) {
-      if (redo[i] == 0) continue;
-      double a[2] = {a0[i0 + i], a1[i0 + i]};
-      z[i0 + i] = sea.solve(w, x[i0 + i], y[i0 + i], a, sc + 2 * N * (i0 + i), tmp);
-      a0[i0 + i] = a[0];
-      a1[i0 + i] = a[1];
-    }
-  }
-}
-
 void Sea::solveMany(const WaveNow* w, int m, const double* x, const double* y, double* a0,
                     double* a1, double* z, double* sc, double* tmp) const {
+  // one point after the other: a lockstep version over SSE2 lanes (the
+  // masked Newton updates in GCC vector types) measured no faster, the
+  // out-of-order core already overlaps the independent solves
   const int n = waves.size();
-  switch (n) {
-    case 1: return solveBlocks<1>(*this, w, m, x, y, a0, a1, z, sc, tmp);
-    case 2: return solveBlocks<2>(*this, w, m, x, y, a0, a1, z, sc, tmp);
-    case 3: return solveBlocks<3>(*this, w, m, x, y, a0, a1, z, sc, tmp);
-    case 4: return solveBlocks<4>(*this, w, m, x, y, a0, a1, z, sc, tmp);
-    default:
-      for (int i = 0; i < m; i++) {
-        double a[2] = {a0[i], a1[i]};
-        z[i] = solve(w, x[i], y[i], a, sc + 2 * n * i, tmp);
-        a0[i] = a[0];
-        a1[i] = a[1];
-      }
+  for (int i = 0; i < m; i++) {
+    double a[2] = {a0[i], a1[i]};
+    z[i] = solve(w, x[i], y[i], a, sc + 2 * n * i, tmp);
+    a0[i] = a[0];
+    a1[i] = a[1];
   }
 }
 

@@ -74,12 +74,9 @@ struct Sea {
   // sin and cos per component: the result differs from label() by round-off
   double solve(const WaveNow* w, double x, double y, double a[2], double* sc,
                double* tmp) const;
-  // solve() for m points at once, same bits: positions x, y; guesses in
-  // a0, a1 become labels; z gets heights and sc 2 per wave per point
-  // (point-major, as solve's sc); tmp is scratch of 2 per wave. Up to 4
-  // components the points run in lockstep blocks the compiler vectorises;
-  // a point whose Newton step needs halving or a long phase shift is
-  // redone alone by solve()
+  // solve() for m points, same bits: positions x, y; guesses in a0, a1
+  // become labels; z gets heights and sc 2 per wave per point (point-major,
+  // as solve's sc); tmp is scratch of 2 per wave
   void solveMany(const WaveNow* w, int m, const double* x, const double* y, double* a0,
                  double* a1, double* z, double* sc, double* tmp) const;
   // velocityOf() from the phases solve() left in sc
