@@ -128,13 +128,19 @@ void Sea::now(double t, WaveNow* w) const {
 // the phase shifted by d [rad]: sin, cos of theta + d from those of theta by
 // angle addition; Taylor series of sin d and cos d - 1 to d^9 and d^10 are
 // exact in double for |d| < kShift (next terms below 1e-21), beyond it the
-// caller evaluates the phase directly
-static const double kShift = 0.05;
+// caller evaluates the phase directly. Newton's later steps are tiny: below
+// kShort the series to d^5 and d^6 are already exact (next terms < 1e-25)
+static const double kShift = 0.05, kShort = 1e-3;
 static inline void shift(double s, double c, double d, double* out) {
-  double d2 = d * d;
-  double sd = d * (1 + d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880)))));
-  double cm = d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 +
-                                                                      d2 * (-1.0 / 3628800)))));
+  double d2 = d * d, sd, cm;
+  if (std::fabs(d) < kShort) {
+    sd = d * (1 + d2 * (-1.0 / 6 + d2 * (1.0 / 120)));
+    cm = d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720)));
+  } else {
+    sd = d * (1 + d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880)))));
+    cm = d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 +
+                                                                d2 * (-1.0 / 3628800)))));
+  }
   out[0] = s + (s * cm + c * sd);
   out[1] = c + (c * cm - s * sd);
 }
