@@ -239,7 +239,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   // first, for all wet centroids at once; Newton starts from the mean of
   // the vertex labels, which is within a few mm of the answer
   int* idx = s->idx.data() + mi * slot;
-  int nw8 = 0;
+  int nwet = 0;
   for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
     double* v = &s->tri.v[3 * k];
     if (!(s->tri.area[k] > 0)) {
@@ -251,16 +251,16 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     const double* l0 = &s->lab[2 * fc[0]];
     const double* l1 = &s->lab[2 * fc[1]];
     const double* l2 = &s->lab[2 * fc[2]];
-    idx[nw8] = k;
-    X[nw8] = c[0] + com[0];
-    Y[nw8] = c[1] + com[1];
-    A0[nw8] = (l0[0] + l1[0] + l2[0]) * (1.0 / 3);
-    A1[nw8] = (l0[1] + l1[1] + l2[1]) * (1.0 / 3);
-    nw8++;
+    idx[nwet] = k;
+    X[nwet] = c[0] + com[0];
+    Y[nwet] = c[1] + com[1];
+    A0[nwet] = (l0[0] + l1[0] + l2[0]) * (1.0 / 3);
+    A1[nwet] = (l0[1] + l1[1] + l2[1]) * (1.0 / 3);
+    nwet++;
   }
-  sea.solveMany(wn, nw8, X, Y, A0, A1, Z, SC, tmp);
+  sea.solveMany(wn, nwet, X, Y, A0, A1, Z, SC, tmp);
   const double slamdt = s->hasPrev ? t - s->tprev : 0;
-  for (int q = 0; q < nw8; q++) {
+  for (int q = 0; q < nwet; q++) {
     const int k = idx[q];
     double A = s->tri.area[k];
     double* v = &s->tri.v[3 * k];
