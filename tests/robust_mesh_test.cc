@@ -221,5 +221,13 @@ TEST(RobustMesh, SingleTriangleActsAsAPlate) {
   EXPECT_NEAR(roll(s.d, s.body("b")), 0, 1e-3);
 }
 
+TEST(RobustMesh, NoAreaLeftIsAnError) {
+  // every face of zero area (four collinear vertices, so MuJoCo's four-
+  // vertex minimum is met): nothing could carry pressure, so attaching fails
+  Scene s(scene("vertex=\"0 0 0 1 0 0 2 0 0 3 0 0\" face=\"0 1 2 1 2 3\""));
+  EXPECT_FALSE(s.ok());
+  EXPECT_TRUE(has(s.err, "mjbuoy: hull geom \"hull\" has no surface area")) << s.err;
+}
+
 }  // namespace
 }  // namespace mjbt

@@ -2,6 +2,7 @@
 // MuJoCo rejects, hulls on welded, sliding and hinged bodies, a time step
 // too long for the heave (docs/robustness.md)
 #include <cstdlib>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -230,6 +231,86 @@ TEST(RobustModel, HugeTimestepWarnsAndStaysFinite) {
   EXPECT_STREQ(mjb_warnings(t.b), "");
   double z = t.settle(60, 10, [&] { return t.d->qpos[2]; });
   EXPECT_NEAR(z, 0, 0.005 * 0.5);  // draft 0.5 m: centre at the surface
+}
+
+// attach error for a scene with one free box hull plus `custom` entries
+std::string attachError(const std::string& custom) {
+  std::string e;
+  mjModel* m = loadXML("<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>" + custom +
+                       "</custom><worldbody><body><freejoint/><geom name=\"hull\" type=\"box\" "
+                       "size=\"1 0.5 0.25\" mass=\"300\"/></body></worldbody></mujoco>", &e);
+  if (!m) return "mujoco: " + e;
+  char err[1024] = "";
+  mjbBuoy* b = mjb_attach(m, "cpu", err, sizeof(err));
+  if (b) mjb_detach(b);
+  mj_deleteModel(m);
+  return b ? "" : err;
+}
+
+TEST(RobustConfig, NonFiniteInAnyFieldIsNamed) {
+  // nan, inf and -inf in each value of each numeric entry: an error naming
+  // the entry, the value's position and "not a finite number"
+  struct Entry {
+    const char* name;
+    int n;
+    const char* valid;  // a valid value list to poke one value into
+  } entries[] = {
+      {"mjbuoy.sea.density", 1, "1000"},        {"mjbuoy.sea.level", 1, "0"},
+      {"mjbuoy.sea.depth", 1, "50"},            {"mjbuoy.sea.viscosity", 1, "1e-6"},
+      {"mjbuoy.sea.current", 2, "0.5 0"},       {"mjbuoy.wave.w", 5, "0.5 20 0 0 0.5"},
+      {"mjbuoy.hull.damping", 2, "10 1"},       {"mjbuoy.hull.viscous", 1, "1.3"},
+      {"mjbuoy.hull.drag", 3, "100 400 0.5"},   {"mjbuoy.hull.suction", 3, "100 200 0.5"},
+      {"mjbuoy.hull.vref", 1, "1"},             {"mjbuoy.hull.slamming", 3, "1 100 2"},
+      {"mjbuoy.geom.hull.drag", 3, "100 400 0.5"},
+  };
+  int checked = 0;
+  for (const Entry& en : entries) {
+    ASSERT_EQ(attachError(std::string("<numeric name=\"") + en.name + "\" data=\"" + en.valid +
+                          "\"/>"), "") << en.name;
+    for (int j = 0; j < en.n; j++) {
+      for (const char* bad : {"nan", "inf", "-inf"}) {
+        std::istringstream in(en.valid);
+        std::string v, data;
+        for (int k = 0; in >> v; k++) data += (k ? " " : "") + (k == j ? std::string(bad) : v);
+        std::string e = attachError(std::string("<numeric name=\"") + en.name + "\" data=\"" +
+                                    data + "\"/>");
+        SCOPED_TRACE(std::string(en.name) + " = \"" + data + "\"");
+        EXPECT_TRUE(has(e, en.name)) << e;
+        EXPECT_TRUE(has(e, "is not a finite number")) << e;
+        if (en.n > 1) EXPECT_TRUE(has(e, "value " + std::to_string(j + 1))) << e;
+        checked++;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 3 * 27);
+  // a zero wavelength is out of range like a negative one
+  std::string e = attachError("<numeric name=\"mjbuoy.wave.w\" data=\"0.5 0 0 0 0.5\"/>");
+  EXPECT_TRUE(has(e, "mjbuoy.wave.w") && has(e, "wavelength") && has(e, "> 0")) << e;
+}
+
+TEST(RobustConfig, SceneWithoutHullsIsANoOp) {
+  // no mjbuoy entries at all: attaches, says so, and the body falls freely:
+  // MuJoCo's semi-implicit Euler gives z_n = z0 - g dt^2 n (n + 1) / 2
+  const char* xml = "<mujoco><option timestep=\"0.001\"/><worldbody><body pos=\"0 0 10\">"
+                    "<freejoint/><geom type=\"box\" size=\"1 0.5 0.25\" mass=\"300\"/></body>"
+                    "</worldbody></mujoco>";
+  mjModel* m = loadXML(xml);
+  ASSERT_TRUE(m);
+  char e[1024];
+  mjbBuoy* b = mjb_attach(m, nullptr, e, sizeof(e));
+  ASSERT_TRUE(b) << e;
+  EXPECT_TRUE(has(mjb_warnings(b), "the model has no mjbuoy.* entries: mjbuoy adds no force"))
+      << mjb_warnings(b);
+  EXPECT_EQ(mjb_info(b).nhull, 0);
+  mjData* d = mj_makeData(m);
+  for (int k = 0; k < 2000; k++) mj_step(m, d);
+  EXPECT_EQ(mjb_wrench(b, d), nullptr);
+  for (int i = 0; i < m->nv; i++) EXPECT_EQ(d->qfrc_passive[i], 0);
+  const double dt = 0.001, n = 2000;
+  EXPECT_NEAR(d->qpos[2], 10 - 0.5 * kG * dt * dt * n * (n + 1), 1e-9);
+  mj_deleteData(d);
+  mjb_detach(b);
+  mj_deleteModel(m);
 }
 
 }  // namespace

@@ -36,6 +36,18 @@ TEST(Robust, NonFiniteBodyGetsNoForceAndDoesNotSpread) {
   EXPECT_NE(n.find("body \"a\""), std::string::npos) << n;
   EXPECT_EQ(n.find("body \"a\""), n.rfind("body \"a\"")) << "reported more than once: " << n;
   EXPECT_EQ(n.find("body \"b\""), std::string::npos) << n;
+
+  // an infinite position on another mjData: the same
+  mjData* d2 = mj_makeData(s.m);
+  d2->qpos[7] = INFINITY;  // body b's x
+  mj_forward(s.m, d2);
+  for (int j = 0; j < 6; j++) EXPECT_EQ(mjb_wrench(s.b, d2)[6 * b + j], 0);
+  EXPECT_NE(mjb_wrench(s.b, d2)[6 * a + 2], 0);
+  n = mjb_notices(s.b, d2);
+  EXPECT_NE(n.find("body \"b\""), std::string::npos) << n;
+  EXPECT_EQ(n.find("body \"a\""), std::string::npos) << n;
+  mjb_unbindData(s.b, d2);
+  mj_deleteData(d2);
 }
 
 // run a scene for T seconds (counting steps, see Scene::settle), returning qpos
