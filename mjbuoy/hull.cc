@@ -291,7 +291,7 @@ Repair repair(Mesh* m) {
   }
 
   // orientation: neighbours across a two-triangle edge must run it in
-  // opposite directions. Breadth-first over each connected piece, flip[f]
+  // opposite directions. Breadth-first over each connected piece, par[f]
   // says whether f disagrees with the piece's first triangle; the minority
   // is re-wound (ties keep the first triangle's winding)
   EdgeMap em = edges(*m);
@@ -411,7 +411,7 @@ static void stepCheck(const mjModel* m, int g, const Mesh& mesh, std::vector<std
                   (m->names + m->name_geomadr[g]) + "\": its heave period 2 pi sqrt(m / (rho g "
                   "A_wp)) is about " + num(T) + " s (m " + num(mass) + " kg, A_wp up to " +
                   num(a) + " m^2); a step above T/10 is inaccurate and above T/pi unstable "
-                  "(the hull bounces ever higher); use timestep <= " + num(T / 20));
+                  "(the motion gains energy every step); use timestep <= " + num(T / 20));
 }
 
 Mesh hullMesh(const mjModel* m, int g, std::vector<std::string>* warn) {
@@ -443,9 +443,10 @@ Mesh hullMesh(const mjModel* m, int g, std::vector<std::string>* warn) {
                       " dropped (they carry no pressure)");
     }
     if (r.rewound) {
-      warn->push_back(pre + count(r.rewound, "triangle") +
-                      " wound against their neighbours (mixed winding), re-wound to match "
-                      "them; fix the mesh so every face is counter-clockwise seen from outside");
+      warn->push_back(pre + count(r.rewound, "triangle") + " wound against " +
+                      (r.rewound == 1 ? "its" : "their") + " neighbours (mixed winding), "
+                      "re-wound to match them; fix the mesh so every face is counter-clockwise "
+                      "seen from outside");
     }
     if (r.inverted) {
       warn->push_back(pre + "normals look inverted (enclosed volume " + num(r.invvol) +
