@@ -382,10 +382,12 @@ size_t residentBytes() {
 // the energy criterion above on the fleet's total mechanical energy (mass:
 // the whole fleet, amplitude: the sum of the wave amplitudes); and memory
 // flat after the first simulated minute, sampled every simulated minute:
-// malloc's bytes in use (mallinfo2) must not change at all (mjbuoy and
-// MuJoCo allocate nothing per step) and the resident set may grow by at
-// most 1 MiB (pages touched late). Everything the loop writes is allocated
-// and touched before it starts
+// malloc's bytes in use (mallinfo2) may grow by less than 16 KiB (mjbuoy
+// and MuJoCo allocate nothing per step, and without heaptrack the growth
+// is 0; heaptrack's own bookkeeping inside the process adds about 1 KiB
+// once; an allocation of a few bytes per step kept would add megabytes)
+// and the resident set by at most 1 MiB (pages touched late). Everything
+// the loop writes is allocated and touched before it starts
 TEST(SoakFleet, EnergyBoundedMemoryFlat) {
   double T = soakSeconds();
   ASSERT_GE(T, 120) << "the energy criterion and the memory samples need two minutes or more";
@@ -437,15 +439,19 @@ TEST(SoakFleet, EnergyBoundedMemoryFlat) {
   double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
   long nmin = nk / perMin;
   size_t heapGrowth = 0, rssGrowth = 0;
+  long heapFirst = 0;  // minute of the first change of the bytes in use
   for (long i = 2; i <= nmin; i++) {
+    if (!heapFirst && heap[i] != heap[1]) heapFirst = i;
     heapGrowth = std::max(heapGrowth, heap[i] > heap[1] ? heap[i] - heap[1] : 0);
     rssGrowth = std::max(rssGrowth, rss[i] > rss[1] ? rss[i] - rss[1] : 0);
   }
   EnergyStats st = energyStats(energy, mass, amp);
   std::printf("[soak] fleet-memory T %.0f s wall %.1f s cpu %.1f s heap in use at 1 min %zu B, "
-              "max growth after %zu B; resident at 1 min %zu B, max growth after %zu B; "
+              "max growth after %zu B (first change at minute %ld, bytes in use at the end %zu B); "
+              "resident at 1 min %zu B, max growth after %zu B; "
               "E_mid %.1f J E_last %.1f J sd_mid %.1f J E_max %.1f J limit %.1f J\n",
-              d->time, wall, cpu, heap[1], heapGrowth, rss[1], rssGrowth, st.meanMid,
+              d->time, wall, cpu, heap[1], heapGrowth, heapFirst, heap[nmin], rss[1], rssGrowth,
+              st.meanMid,
               st.meanLast, st.sdMid, st.maxE, st.limit);
   std::fflush(stdout);
   RecordProperty("sim_seconds", std::to_string(d->time));
@@ -455,7 +461,7 @@ TEST(SoakFleet, EnergyBoundedMemoryFlat) {
   RecordProperty("energy_mean_last_J", std::to_string(st.meanLast));
   RecordProperty("energy_limit_J", std::to_string(st.limit));
   if (!diverged) {
-    EXPECT_EQ(heapGrowth, 0u) << "malloc'd bytes grew while stepping";
+    EXPECT_LT(heapGrowth, 16u << 10) << "malloc'd bytes grew while stepping";
     EXPECT_LE(rssGrowth, 1u << 20) << "resident set grew while stepping";
     EXPECT_LE(st.meanLast, st.limit)
         << "mechanical energy grows: mean over the last third " << st.meanLast
