@@ -238,13 +238,17 @@ std::string parseConfig(const mjModel* m, Config* c) {
     }
   }
 
-  // hull geoms on the world body cannot move: ignored with a warning
+  // hull geoms on the world body, or on a body welded to it (no joint on
+  // the way), cannot move: ignored with a warning
   std::vector<char> listed = is;
   for (int g = 0; g < m->ngeom; g++) {
-    if (is[g] && m->geom_bodyid[g] == 0) {
+    int bd = m->geom_bodyid[g];
+    if (is[g] && m->body_weldid[bd] == 0) {
+      std::string on = bd == 0 ? std::string("belongs to the world body")
+                               : std::string("is on body \"") + (m->names + m->name_bodyadr[bd]) +
+                                     "\", which has no joint between it and the world body";
       c->warn.push_back(std::string("geom \"") + (m->names + m->name_geomadr[g]) +
-                        "\" is listed as a hull but belongs to the world body; "
-                        "it cannot move and is ignored");
+                        "\" is listed as a hull but " + on + "; it cannot move and is ignored");
       is[g] = 0;
     }
   }
@@ -309,7 +313,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
       if (g < 0 || h < 0) {
         return "mjbuoy: " + tag("numeric", name) + " refers to geom \"" + gname + "\", " +
                (g < 0 ? "which does not exist"
-                : listed[g] ? "which is on the world body and so is not a hull"
+                : listed[g] ? "which is on the world body (or welded to it) and so is not a hull"
                             : "which is not listed in mjbuoy.hulls") +
                "; fix the name or add the geom to <text name=\"mjbuoy.hulls\">";
       }

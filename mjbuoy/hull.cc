@@ -1,7 +1,10 @@
 // hull meshes: mesh geoms as compiled, primitives tessellated
 #include "hull.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <tuple>
@@ -210,6 +213,207 @@ Topology topology(const Mesh& m) {
   return t;
 }
 
+// twice the area of triangle f, and its longest edge squared
+static double area2(const Mesh& m, int f, double* lmax2) {
+  const double* p[3];
+  for (int e = 0; e < 3; e++) p[e] = &m.v[3 * m.f[3 * f + e]];
+  double u[3], w[3], l2 = 0;
+  for (int e = 0; e < 3; e++) {
+    double s = 0;
+    for (int j = 0; j < 3; j++) {
+      double d = p[(e + 1) % 3][j] - p[e][j];
+      s += d * d;
+    }
+    l2 = std::max(l2, s);
+  }
+  for (int j = 0; j < 3; j++) {
+    u[j] = p[1][j] - p[0][j];
+    w[j] = p[2][j] - p[0][j];
+  }
+  double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  *lmax2 = l2;
+  return std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+}
+
+static void flip(Mesh* m, int f) {
+  std::swap(m->f[3 * f + 1], m->f[3 * f + 2]);
+}
+
+// triangles of each undirected edge (lo, hi), with +1 when a triangle runs
+// lo -> hi and -1 when it runs hi -> lo
+typedef std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> EdgeMap;
+
+static EdgeMap edges(const Mesh& m) {
+  EdgeMap e;
+  for (int f = 0; f < m.nf(); f++) {
+    for (int k = 0; k < 3; k++) {
+      int p = m.f[3 * f + k], q = m.f[3 * f + (k + 1) % 3];
+      if (p < q) e[{p, q}].push_back({f, 1});
+      else e[{q, p}].push_back({f, -1});
+    }
+  }
+  return e;
+}
+
+Repair repair(Mesh* m) {
+  Repair r;
+  // duplicates (any order or winding) and triangles with a repeated vertex
+  // go first: a copy doubles (same winding) or cancels (opposite winding)
+  // the pressure on its patch, and breaks the edge topology below
+  {
+    std::map<std::array<int, 3>, int> seen;
+    Mesh out;
+    out.v = m->v;
+    for (int f = 0; f < m->nf(); f++) {
+      std::array<int, 3> k = {m->f[3 * f], m->f[3 * f + 1], m->f[3 * f + 2]};
+      std::array<int, 3> s = k;
+      std::sort(s.begin(), s.end());
+      if (s[0] == s[1] || s[1] == s[2]) {
+        r.degenerate++;
+        continue;
+      }
+      if (!seen.emplace(s, f).second) {
+        r.duplicate++;
+        continue;
+      }
+      out.f.insert(out.f.end(), k.begin(), k.end());
+    }
+    *m = out;
+  }
+  // zero area: height below 1e-6 of the longest edge, i.e. collinear to
+  // within float precision. Kept through the topology (a sliver closing a
+  // T-junction keeps the edges paired) and dropped at the end
+  const int nf = m->nf();
+  std::vector<char> zero(nf);
+  for (int f = 0; f < nf; f++) {
+    double l2, a2 = area2(*m, f, &l2);
+    zero[f] = !(a2 > 1e-6 * l2);
+  }
+
+  // orientation: neighbours across a two-triangle edge must run it in
+  // opposite directions. Breadth-first over each connected piece, par[f]
+  // says whether f disagrees with the piece's first triangle; the minority
+  // is re-wound (ties keep the first triangle's winding)
+  EdgeMap em = edges(*m);
+  std::vector<int> piece(nf, -1), par(nf, 0);
+  std::vector<std::vector<int>> adj(nf);
+  std::vector<std::vector<int>> same(nf);  // 1 when the pair runs the edge the same way
+  for (const auto& [e, t] : em) {
+    if (t.size() != 2) continue;
+    adj[t[0].first].push_back(t[1].first);
+    adj[t[1].first].push_back(t[0].first);
+    int sm = t[0].second == t[1].second;
+    same[t[0].first].push_back(sm);
+    same[t[1].first].push_back(sm);
+  }
+  int np = 0;
+  for (int f0 = 0; f0 < nf; f0++) {
+    if (piece[f0] >= 0) continue;
+    std::vector<int> q = {f0};
+    piece[f0] = np;
+    for (size_t i = 0; i < q.size(); i++) {
+      int f = q[i];
+      for (size_t j = 0; j < adj[f].size(); j++) {
+        int g = adj[f][j];
+        if (piece[g] >= 0) continue;
+        piece[g] = np;
+        par[g] = par[f] ^ same[f][j];
+        q.push_back(g);
+      }
+    }
+    int n[2] = {0, 0};
+    for (int f : q) n[par[f]] += !zero[f];
+    int bad = n[1] > n[0] ? 0 : 1;
+    for (int f : q) {
+      if (par[f] != bad) continue;
+      flip(m, f);
+      r.rewound += !zero[f];
+    }
+    np++;
+  }
+
+  // holes, non-manifold edges, and pieces that are closed but inside out
+  em = edges(*m);
+  std::vector<char> open(np, 0);
+  for (const auto& [e, t] : em) {
+    if (t.size() == 1) {
+      r.boundary++;
+      open[piece[t[0].first]] = 1;
+    } else if (t.size() > 2 || t[0].second == t[1].second) {
+      r.nonmanifold++;
+      for (const auto& ft : t) open[piece[ft.first]] = 1;
+    }
+  }
+  std::vector<double> vol(np, 0);
+  for (int f = 0; f < nf; f++) {
+    const double* a = &m->v[3 * m->f[3 * f]];
+    const double* b = &m->v[3 * m->f[3 * f + 1]];
+    const double* c = &m->v[3 * m->f[3 * f + 2]];
+    vol[piece[f]] += (a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) +
+                      a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+  }
+  for (int p = 0; p < np; p++) {
+    if (open[p] || !(vol[p] < 0)) continue;
+    r.inverted++;
+    r.invvol += vol[p];
+    for (int f = 0; f < nf; f++) if (piece[f] == p) flip(m, f);
+  }
+
+  // zero-area triangles carry no pressure
+  Mesh out;
+  out.v = m->v;
+  for (int f = 0; f < nf; f++) {
+    if (zero[f]) {
+      r.degenerate++;
+      continue;
+    }
+    out.f.insert(out.f.end(), m->f.begin() + 3 * f, m->f.begin() + 3 * f + 3);
+  }
+  *m = out;
+  return r;
+}
+
+static std::string count(int n, const char* what) {
+  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+}
+
+static std::string num(double x) {
+  char b[32];
+  std::snprintf(b, sizeof(b), "%.3g", x);
+  return b;
+}
+
+// a time step the heave cannot follow. Undamped heave of a wall-sided hull
+// (mjbuoy adds no added mass): omega^2 = rho g A_wp / m. MuJoCo's
+// semi-implicit Euler is unstable for omega dt > 2 (dt > T / pi) and
+// inaccurate well before; warn above T / 10. A_wp is bounded by the hull's
+// area projected on its body's xy plane, so the estimate of T is short (the
+// warning errs on the safe side), and one hull of several on a body sees
+// only its own share
+static void stepCheck(const mjModel* m, int g, const Mesh& mesh, std::vector<std::string>* warn) {
+  double a = 0;
+  for (int f = 0; f < mesh.nf(); f++) {
+    const double* p = &mesh.v[3 * mesh.f[3 * f]];
+    const double* q = &mesh.v[3 * mesh.f[3 * f + 1]];
+    const double* r = &mesh.v[3 * mesh.f[3 * f + 2]];
+    double cz = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+    if (cz < 0) a -= 0.5 * cz;  // downward-facing: the wetted bottom
+  }
+  double rho = 1000;
+  int i = mj_name2id(m, mjOBJ_NUMERIC, "mjbuoy.sea.density");
+  if (i >= 0 && m->numeric_size[i] == 1) rho = m->numeric_data[m->numeric_adr[i]];
+  double mass = m->body_subtreemass[m->body_weldid[m->geom_bodyid[g]]];
+  double G = -m->opt.gravity[2], dt = m->opt.timestep;
+  if (!(a > 0) || !(mass > 0) || !(G > 0)) return;
+  double T = 2 * M_PI * std::sqrt(mass / (rho * G * a));
+  if (!(dt > T / 10)) return;
+  warn->push_back("<option timestep=\"" + num(dt) + "\"> is too long for hull geom \"" +
+                  (m->names + m->name_geomadr[g]) + "\": its heave period 2 pi sqrt(m / (rho g "
+                  "A_wp)) is about " + num(T) + " s (m " + num(mass) + " kg, A_wp up to " +
+                  num(a) + " m^2); a step above T/10 is inaccurate and above T/pi unstable "
+                  "(the motion gains energy every step); use timestep <= " + num(T / 20));
+}
+
 Mesh hullMesh(const mjModel* m, int g, std::vector<std::string>* warn) {
   Mesh local;
   std::string gname = m->names + m->name_geomadr[g];
@@ -227,18 +431,34 @@ Mesh hullMesh(const mjModel* m, int g, std::vector<std::string>* warn) {
       addTri(&local, f[0], f[1], f[2]);
     }
     local = weld(local);
-    Topology t = topology(local);
-    if (t.boundary || t.nonmanifold) {
-      warn->push_back("hull geom \"" + gname + "\": mesh is not closed (" +
-                      std::to_string(t.boundary) + " boundary edges, " +
-                      std::to_string(t.nonmanifold) +
-                      " non-manifold or inconsistently wound edges); buoyancy is exact "
-                      "only for closed, outward-oriented meshes");
+    Repair r = repair(&local);
+    std::string pre = "hull geom \"" + gname + "\": ";
+    if (r.duplicate) {
+      warn->push_back(pre + count(r.duplicate, "duplicate triangle") +
+                      " (the same three vertices as another) dropped: a copy would double, "
+                      "or with opposite winding cancel, the pressure on its patch");
     }
-    if (t.volume < 0) {
-      warn->push_back("hull geom \"" + gname + "\": normals look inverted (enclosed "
-                      "volume " + std::to_string(t.volume) +
-                      " m^3 < 0); fix the face winding to counter-clockwise seen from outside");
+    if (r.degenerate) {
+      warn->push_back(pre + count(r.degenerate, "zero-area triangle") +
+                      " dropped (they carry no pressure)");
+    }
+    if (r.rewound) {
+      warn->push_back(pre + count(r.rewound, "triangle") + " wound against " +
+                      (r.rewound == 1 ? "its" : "their") + " neighbours (mixed winding), "
+                      "re-wound to match them; fix the mesh so every face is counter-clockwise "
+                      "seen from outside");
+    }
+    if (r.inverted) {
+      warn->push_back(pre + "normals look inverted (enclosed volume " + num(r.invvol) +
+                      " m^3 < 0), turned outward; fix the face winding to counter-clockwise "
+                      "seen from outside");
+    }
+    if (r.boundary || r.nonmanifold) {
+      warn->push_back(pre + "mesh is not closed (" + count(r.boundary, "boundary edge") +
+                      ", " + count(r.nonmanifold, "non-manifold edge") +
+                      "); the pressure on the faces that are there still acts, so buoyancy "
+                      "stays exact while the holes are dry and misses the pressure on any "
+                      "missing surface under water");
     }
   } else {
     double s[3] = {m->geom_size[3 * g], m->geom_size[3 * g + 1], m->geom_size[3 * g + 2]};
@@ -255,6 +475,7 @@ Mesh hullMesh(const mjModel* m, int g, std::vector<std::string>* warn) {
     mju_rotVecQuat(r, p, gq);
     for (int j = 0; j < 3; j++) out.v[3 * i + j] = r[j] + gp[j];
   }
+  stepCheck(m, g, out, warn);
   return out;
 }
 

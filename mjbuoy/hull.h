@@ -36,6 +36,18 @@ struct Topology {
 };
 Topology topology(const Mesh& mesh);
 
+// what repair() found in a welded mesh and did about it
+struct Repair {
+  int duplicate = 0;    // triangles on the same three vertices as an earlier one: dropped
+  int degenerate = 0;   // zero-area triangles: dropped
+  int rewound = 0;      // triangles wound against their neighbours: re-wound to match
+  int inverted = 0;     // closed pieces enclosing negative volume: all their faces re-wound
+  double invvol = 0;    // the enclosed volume of those pieces before [m^3]
+  int boundary = 0;     // edges of one triangle only (holes), after repair
+  int nonmanifold = 0;  // edges of more than two triangles, or not orientable, after repair
+};
+Repair repair(Mesh* mesh);
+
 // mesh of hull geom g in its body frame; appends load warnings
 Mesh hullMesh(const mjModel* m, int g, std::vector<std::string>* warn);
 

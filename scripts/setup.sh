@@ -20,6 +20,7 @@ pkgs=(
   ffmpeg                       # mjbuoy-sim --render: encodes the clip (H.264 MP4); ffprobe for its test
   libpng-dev                   # mjbuoy-sim --snapshot: PNG stills
   gnuplot-nox                  # mjbuoy-sim --plot: heave, roll and pitch plots
+  heaptrack                    # soak.fleet.3600s: records every allocation of the hour-long soak (tests/check_heaptrack.py)
 )
 
 missing=()

@@ -2,6 +2,7 @@
 // independent across threads, data and models
 #include <thread>
 
+#include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
 #include "testutil.h"
@@ -35,11 +36,23 @@ TEST(Robust, NonFiniteBodyGetsNoForceAndDoesNotSpread) {
   EXPECT_NE(n.find("body \"a\""), std::string::npos) << n;
   EXPECT_EQ(n.find("body \"a\""), n.rfind("body \"a\"")) << "reported more than once: " << n;
   EXPECT_EQ(n.find("body \"b\""), std::string::npos) << n;
+
+  // an infinite position on another mjData: the same
+  mjData* d2 = mj_makeData(s.m);
+  d2->qpos[7] = INFINITY;  // body b's x
+  mj_forward(s.m, d2);
+  for (int j = 0; j < 6; j++) EXPECT_EQ(mjb_wrench(s.b, d2)[6 * b + j], 0);
+  EXPECT_NE(mjb_wrench(s.b, d2)[6 * a + 2], 0);
+  n = mjb_notices(s.b, d2);
+  EXPECT_NE(n.find("body \"b\""), std::string::npos) << n;
+  EXPECT_EQ(n.find("body \"a\""), std::string::npos) << n;
+  mjb_unbindData(s.b, d2);
+  mj_deleteData(d2);
 }
 
-// run a scene for T seconds, returning qpos
+// run a scene for T seconds (counting steps, see Scene::settle), returning qpos
 std::vector<double> run(const mjModel* m, mjData* d, double T) {
-  while (d->time < T) mj_step(m, d);
+  for (long k = 0, n = std::lround(T / m->opt.timestep); k < n; k++) mj_step(m, d);
   return std::vector<double>(d->qpos, d->qpos + m->nq);
 }
 
@@ -107,6 +120,70 @@ TEST(Robust, FullySubmergedAndAirborne) {
   s.d->qpos[2] = 10;
   mj_forward(s.m, s.d);
   for (int j = 0; j < 6; j++) EXPECT_EQ(s.wrench(a)[j], 0);
+}
+
+TEST(Robust, TimeGoingBackwardsRestartsTheSlammingHistory) {
+  // a box dropped onto waves (slamming acts); at t = 1.5 s its clock is set
+  // back to 0.2 s. From there it runs bit for bit like a fresh mjData given
+  // the same state at 0.2 s: no slamming history from the old timeline
+  Scene s(kTwo);
+  ASSERT_TRUE(s.ok()) << s.err;
+  s.d->qpos[2] = 0.6;
+  run(s.m, s.d, 1.5);
+  mjData* fresh = mj_makeData(s.m);
+  mju_copy(fresh->qpos, s.d->qpos, s.m->nq);
+  mju_copy(fresh->qvel, s.d->qvel, s.m->nv);
+  s.d->time = fresh->time = 0.2;
+  double slam = 0;
+  for (int k = 0; k < 500; k++) {
+    mj_step(s.m, s.d);
+    mj_step(s.m, fresh);
+    for (int j = 0; j < 6 * s.m->nbody; j++) {
+      ASSERT_EQ(mjb_wrench(s.b, s.d)[j], mjb_wrench(s.b, fresh)[j]) << "step " << k;
+    }
+    slam = std::fmax(slam, std::fabs(mjb_wrenchPart(s.b, s.d, mjbPART_SLAM)[6 * 1 + 2]));
+  }
+  EXPECT_GT(slam, 0) << "slamming never acted: the test shows nothing";
+  mjb_unbindData(s.b, fresh);
+  mj_deleteData(fresh);
+}
+
+TEST(Robust, SettleStopsWhenMuJoCoResets) {
+  // tests/testutil.h Scene::settle counts steps: when MuJoCo resets a
+  // diverging state (time back to 0) it reports it and returns, where a
+  // `while (d->time < T)` loop would start over
+  Scene s(kTwo);
+  ASSERT_TRUE(s.ok()) << s.err;
+  s.d->qvel[2] = NAN;
+  double z = 0;
+  EXPECT_NONFATAL_FAILURE(z = s.settle(1, 0.5, [&] { return s.d->qpos[2]; }),
+                          "MuJoCo reset the diverging simulation in step 0");
+  EXPECT_TRUE(std::isnan(z));
+  EXPECT_EQ(s.resets(), 1);
+}
+
+TEST(Robust, GlIsRepeatableOnOneDriver) {
+  // the gl backend sums in a fixed order (no atomics), so the same scene
+  // run twice on the same driver gives the same bits; across drivers only
+  // the GlParity tolerance (1e-4 of the cpu reference) holds
+  auto runGl = [](std::vector<double>* q) {
+    mjModel* m = loadXML(kTwo);
+    ASSERT_TRUE(m);
+    char e[1024];
+    mjbBuoy* b = mjb_attach(m, "gl", e, sizeof(e));
+    ASSERT_TRUE(b) << e;
+    ASSERT_STREQ(mjb_info(b).backend, "gl");
+    mjData* d = mj_makeData(m);
+    *q = run(m, d, 2);
+    mj_deleteData(d);
+    mjb_detach(b);
+    mj_deleteModel(m);
+  };
+  std::vector<double> a, b;
+  runGl(&a);
+  runGl(&b);
+  ASSERT_EQ(a.size(), 14u);
+  EXPECT_EQ(a, b);
 }
 
 }  // namespace

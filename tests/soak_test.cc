@@ -22,6 +22,9 @@
 // F = 0.5 -> 12.566 m. Direction 0 deg (+x), phase 0, steepness Q = 0.5.
 // Deep water, omega^2 = g k: periods 2.243 s (7.854 m) and 2.837 s
 // (12.566 m). Folding sum Q k A = 0.32, 0.20 and 0.25, all < 1.
+#include <malloc.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -352,6 +355,118 @@ TEST(SoakFleet, BodiesRideTheSurface) {
     EXPECT_LT(std::fabs(mean), depth) << name;
   }
   std::fflush(stdout);
+  mj_deleteData(d);
+  mjb_detach(bu);
+  mj_deleteModel(m);
+}
+
+// bytes malloc has handed out and not taken back (arena and mmapped blocks)
+size_t heapInUse() {
+  struct mallinfo2 mi = mallinfo2();
+  return mi.uordblks + mi.hblkhd;
+}
+
+// resident set size [bytes]
+size_t residentBytes() {
+  long size = 0, res = 0;
+  if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(f, "%ld %ld", &size, &res) != 2) res = 0;
+    std::fclose(f);
+  }
+  return size_t(res) * size_t(sysconf(_SC_PAGESIZE));
+}
+
+// the demo fleet for the soak duration (3600 s in its CTest entry
+// soak.fleet.3600s, labels soak and soak-hour, run under heaptrack by
+// tests/check_heaptrack.py): every step finite and never reset by MuJoCo;
+// the energy criterion above on the fleet's total mechanical energy (mass:
+// the whole fleet, amplitude: the sum of the wave amplitudes); and memory
+// flat after the first simulated minute, sampled every simulated minute:
+// malloc's bytes in use (mallinfo2) may grow by less than 16 KiB (mjbuoy
+// and MuJoCo allocate nothing per step, and without heaptrack the growth
+// is 0; heaptrack's own bookkeeping inside the process adds about 1 KiB
+// once; an allocation of a few bytes per step kept would add megabytes)
+// and the resident set by at most 1 MiB (pages touched late). Everything
+// the loop writes is allocated and touched before it starts
+TEST(SoakFleet, EnergyBoundedMemoryFlat) {
+  double T = soakSeconds();
+  ASSERT_GE(T, 120) << "the energy criterion and the memory samples need two minutes or more";
+  char e[1024] = "";
+  mjModel* m = mj_loadXML(MJB_MODELS "/fleet.xml", nullptr, e, sizeof(e));
+  ASSERT_TRUE(m) << e;
+  mjbBuoy* bu = mjb_attach(m, nullptr, e, sizeof(e));
+  ASSERT_TRUE(bu) << e;
+  m->opt.enableflags |= mjENBL_ENERGY;
+  mjData* d = mj_makeData(m);
+  ASSERT_TRUE(mjb_bindData(bu, d));
+  double mass = 0, amp = 0;
+  for (int b = 1; b < m->nbody; b++) mass += m->body_mass[b];
+  for (int i = 0; i < m->nnumeric; i++) {
+    if (!std::strncmp(m->names + m->name_numericadr[i], "mjbuoy.wave.", 12)) {
+      amp += m->numeric_data[m->numeric_adr[i]];
+    }
+  }
+  const long nk = stepsFor(m, T), perMin = stepsFor(m, 60);
+  std::vector<double> energy(nk, 0.0);         // touched now: the RSS stays flat
+  std::vector<size_t> heap(nk / perMin + 1, 0), rss(nk / perMin + 1, 0);
+  std::printf("[soak] fleet-memory: %ld steps, %s backend\n", nk, mjb_info(bu).backend);
+  std::fflush(stdout);
+  bool diverged = false;
+  auto t0 = std::chrono::steady_clock::now();
+  std::clock_t c0 = std::clock();
+  for (long k = 0; k < nk; k++) {
+    double t = d->time;
+    mj_step(m, d);
+    std::string why = badStep(m, d, t);
+    if (!why.empty()) {
+      ADD_FAILURE() << why << " in the step from t " << t;
+      diverged = true;
+      break;
+    }
+    energy[k] = d->energy[0] + d->energy[1];
+    if ((k + 1) % perMin == 0) {
+      long i = (k + 1) / perMin;
+      heap[i] = heapInUse();
+      rss[i] = residentBytes();
+      if (i % 10 == 0) {
+        std::printf("[soak] fleet-memory t %.0f s: heap in use %zu B, resident %zu B\n", d->time,
+                    heap[i], rss[i]);
+        std::fflush(stdout);
+      }
+    }
+  }
+  double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
+  long nmin = nk / perMin;
+  size_t heapGrowth = 0, rssGrowth = 0;
+  long heapFirst = 0;  // minute of the first change of the bytes in use
+  for (long i = 2; i <= nmin; i++) {
+    if (!heapFirst && heap[i] != heap[1]) heapFirst = i;
+    heapGrowth = std::max(heapGrowth, heap[i] > heap[1] ? heap[i] - heap[1] : 0);
+    rssGrowth = std::max(rssGrowth, rss[i] > rss[1] ? rss[i] - rss[1] : 0);
+  }
+  EnergyStats st = energyStats(energy, mass, amp);
+  std::printf("[soak] fleet-memory T %.0f s wall %.1f s cpu %.1f s heap in use at 1 min %zu B, "
+              "max growth after %zu B (first change at minute %ld, bytes in use at the end %zu B); "
+              "resident at 1 min %zu B, max growth after %zu B; "
+              "E_mid %.1f J E_last %.1f J sd_mid %.1f J E_max %.1f J limit %.1f J\n",
+              d->time, wall, cpu, heap[1], heapGrowth, heapFirst, heap[nmin], rss[1], rssGrowth,
+              st.meanMid,
+              st.meanLast, st.sdMid, st.maxE, st.limit);
+  std::fflush(stdout);
+  RecordProperty("sim_seconds", std::to_string(d->time));
+  RecordProperty("wall_seconds", std::to_string(wall));
+  RecordProperty("heap_growth_bytes", std::to_string(heapGrowth));
+  RecordProperty("rss_growth_bytes", std::to_string(rssGrowth));
+  RecordProperty("energy_mean_last_J", std::to_string(st.meanLast));
+  RecordProperty("energy_limit_J", std::to_string(st.limit));
+  if (!diverged) {
+    EXPECT_LT(heapGrowth, 16u << 10) << "malloc'd bytes grew while stepping";
+    EXPECT_LE(rssGrowth, 1u << 20) << "resident set grew while stepping";
+    EXPECT_LE(st.meanLast, st.limit)
+        << "mechanical energy grows: mean over the last third " << st.meanLast
+        << " J, middle third " << st.meanMid << " J, allowed up to " << st.limit << " J";
+  }
   mj_deleteData(d);
   mjb_detach(bu);
   mj_deleteModel(m);

@@ -54,19 +54,34 @@ struct Scene {
   bool ok() const { return m && b && d; }
   const mjtNum* wrench(int body) const { return mjb_wrench(b, d) + 6 * body; }
   int body(const char* name) const { return mj_name2id(m, mjOBJ_BODY, name); }
-  // step for sim time T, returning the mean of f() over the last `window` s
+  // step until sim time T, returning the mean of f() over the last `window`
+  // s. Counts steps rather than looping `while (d->time < T)`: MuJoCo
+  // resets a diverging simulation to time 0, and such a loop would never
+  // end; a reset fails the test and returns NaN
   template <class F>
   double settle(double T, double window, F f) {
+    const double dt = m->opt.timestep;
+    const long steps = std::lround((T - d->time) / dt), from = steps - std::lround(window / dt);
+    const int resets0 = resets();
     double sum = 0;
-    int n = 0;
-    while (d->time < T) {
+    long n = 0;
+    for (long k = 0; k < steps; k++) {
       mj_step(m, d);
-      if (d->time > T - window) {
+      if (resets() != resets0) {
+        ADD_FAILURE() << "MuJoCo reset the diverging simulation in step " << k << " of " << steps;
+        return NAN;
+      }
+      if (k >= from) {
         sum += f();
         n++;
       }
     }
-    return sum / n;
+    return n ? sum / n : NAN;
+  }
+  // MuJoCo's count of unstable states it caught (and reset)
+  int resets() const {
+    return d->warning[mjWARN_BADQPOS].number + d->warning[mjWARN_BADQVEL].number +
+           d->warning[mjWARN_BADQACC].number;
   }
 };
 
