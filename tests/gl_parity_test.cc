@@ -139,7 +139,7 @@ std::vector<double> trajectory(const char* file, const char* be, double T) {
   EXPECT_TRUE(b) << e;
   mjData* d = mj_makeData(m);
   std::vector<double> out;
-  while (d->time < T) {
+  for (long step = 0, nstep = mjbt::stepsTo(m, d, T); step < nstep; step++) {
     mj_step(m, d);
     out.insert(out.end(), d->qpos, d->qpos + 7);
   }

@@ -71,7 +71,7 @@ TEST(Hydro, SlammingNeverReversesAndReducesPenetration) {
     int b = s.body("b");
     double lowest = 1e9, dt = s.m->opt.timestep;
     *worst = 0;
-    while (s.d->time < 6) {
+    for (long step = 0, nstep = mjbt::stepsTo(s.m, s.d, 6); step < nstep; step++) {
       // the step's forces are computed from the state it starts from
       double v[3] = {s.d->qvel[0], s.d->qvel[1], s.d->qvel[2]};
       mj_step(s.m, s.d);
@@ -102,7 +102,7 @@ TEST(Hydro, FreeHeaveDecayIsMonotonic) {
   std::vector<double> peaks;
   double z0 = s.d->qpos[2], z1 = z0;
   int n = 0;
-  while (s.d->time < 20) {
+  for (long step = 0, nstep = mjbt::stepsTo(s.m, s.d, 20); step < nstep; step++) {
     mj_step(s.m, s.d);
     double z2 = s.d->qpos[2];
     if (n++ > 1 && z1 > z0 && z1 >= z2) peaks.push_back(z1);
@@ -163,7 +163,7 @@ Turn turn(double deg, double f) {
   s.d->ctrl[0] = 60;
   Turn r = {0, 0, {0}};
   double yaw = 0, dist = 0, T0 = 80, T1 = 100;
-  while (s.d->time < T1) {
+  for (long step = 0, nstep = mjbt::stepsTo(s.m, s.d, T1); step < nstep; step++) {
     mj_step(s.m, s.d);
     if (s.d->time <= T0) continue;
     const mjtNum* v = s.d->qvel;

@@ -44,7 +44,7 @@ TEST(Models, SettleAtTheirAnalyticDrafts) {
     ASSERT_GE(b, 0) << c.file;
     double sum = 0;
     int n = 0;
-    while (s.d->time < 30) {
+    for (long step = 0, nstep = mjbt::stepsTo(s.m, s.d, 30); step < nstep; step++) {
       mj_step(s.m, s.d);
       if (s.d->time > 20) {
         sum += s.d->xipos[3 * b + 2];
@@ -59,7 +59,7 @@ TEST(Models, FleetRidesTheWaves) {
   // every free body stays finite, near the surface and upright for 10 s
   Model s("fleet.xml");
   ASSERT_TRUE(s.b);
-  while (s.d->time < 10) {
+  for (long step = 0, nstep = mjbt::stepsTo(s.m, s.d, 10); step < nstep; step++) {
     mj_step(s.m, s.d);
     for (int j = 0; j < s.m->njnt; j++) {
       int b = s.m->jnt_bodyid[j];

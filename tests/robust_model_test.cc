@@ -277,7 +277,9 @@ TEST(RobustConfig, NonFiniteInAnyFieldIsNamed) {
         SCOPED_TRACE(std::string(en.name) + " = \"" + data + "\"");
         EXPECT_TRUE(has(e, en.name)) << e;
         EXPECT_TRUE(has(e, "is not a finite number")) << e;
-        if (en.n > 1) EXPECT_TRUE(has(e, "value " + std::to_string(j + 1))) << e;
+        if (en.n > 1) {
+          EXPECT_TRUE(has(e, "value " + std::to_string(j + 1))) << e;
+        }
         checked++;
       }
     }

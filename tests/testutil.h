@@ -2,6 +2,7 @@
 #ifndef MJBUOY_TESTS_TESTUTIL_H_
 #define MJBUOY_TESTS_TESTUTIL_H_
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -84,6 +85,13 @@ struct Scene {
            d->warning[mjWARN_BADQACC].number;
   }
 };
+
+// steps from d->time to sim time T [s]. Loops count steps rather than run
+// `while (d->time < T)`: MuJoCo resets a diverging simulation to time 0 and
+// such a loop would never end
+inline long stepsTo(const mjModel* m, const mjData* d, double T) {
+  return std::max(0L, std::lround((T - d->time) / m->opt.timestep));
+}
 
 // roll about x [rad] of a body (marine convention, R = Rz Ry Rx)
 inline double roll(const mjData* d, int b) {
