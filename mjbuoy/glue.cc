@@ -160,7 +160,9 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     h.nt = mesh.nf();
     h.par = B.cfg.param[k];
     h.area = 0;
-    h.mass = m->body_subtreemass[h.body];  // all it carries
+    // all that moves rigidly with it: a hull on a massless child welded to
+    // its parent still stops the parent
+    h.mass = m->body_subtreemass[m->body_weldid[h.body]];
     for (int f = 0; f < mesh.nf(); f++) {
       const double* a = &mesh.v[3 * mesh.f[3 * f]];
       const double* bb = &mesh.v[3 * mesh.f[3 * f + 1]];
@@ -186,11 +188,13 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     B.hull.push_back(h);
     if (B.body.empty() || B.body.back() != h.body) B.body.push_back(h.body);
   }
-  // the mass a body carries is shared among its hulls by area (slamming
-  // stops it)
+  // the mass a rigid group carries is shared among its hulls by area
+  // (slamming stops it)
   for (mjb::Hull& h : B.hull) {
     double s = 0;
-    for (const mjb::Hull& o : B.hull) if (o.body == h.body) s += o.area;
+    for (const mjb::Hull& o : B.hull) {
+      if (m->body_weldid[o.body] == m->body_weldid[h.body]) s += o.area;
+    }
     h.mass *= h.area / s;
   }
   // bounding radius of each hull about its body origin (vertices are in the

@@ -148,6 +148,39 @@ TEST(RobustModel, HullOnAWeldedChildActsThroughTheParentsJoint) {
   }
 }
 
+TEST(RobustModel, SlammingStopsTheWholeRigidGroup) {
+  // slamming may stop at most the mass moving rigidly with the hull: a hull
+  // on a massless (or 100 kg) child welded to a 300 kg assembly must feel
+  // the same slamming as the same hull on the 300 kg body itself (before,
+  // a massless child got none)
+  auto peak = [&](const std::string& body) {
+    Scene s(std::string(kHead) + body + kTail);
+    EXPECT_TRUE(s.ok()) << s.err;
+    if (!s.ok()) return 0.0;
+    int b = s.body("b");
+    double worst = 0;
+    for (long k = 0, n = mjbt::stepsTo(s.m, s.d, 1.5); k < n; k++) {
+      mj_step(s.m, s.d);
+      const mjtNum* f = mjb_wrenchPart(s.b, s.d, mjbPART_SLAM);
+      for (int c = 0; c < s.m->nbody; c++) worst = std::max(worst, std::fabs(f[6 * c + 2]));
+    }
+    EXPECT_GT(s.d->xpos[3 * b + 2], -1.0);
+    return worst;
+  };
+  const std::string inert = "<inertial pos=\"0 0 0\" mass=\"";
+  const std::string box = "type=\"box\" size=\"1 0.5 0.25\"";
+  double direct = peak("<body name=\"b\" pos=\"0 0 3\"><freejoint/><geom name=\"hull\" " + box +
+                       " mass=\"300\"/></body>");
+  ASSERT_GT(direct, 0);
+  for (const char* child : {"0", "100"}) {
+    std::string parent = std::to_string(300 - std::atoi(child));
+    double welded = peak("<body name=\"b\" pos=\"0 0 3\"><freejoint/>" + inert + parent +
+                         "\" diaginertia=\"20 70 80\"/><body name=\"c\"><geom name=\"hull\" " +
+                         box + " mass=\"" + child + "\"/></body></body>");
+    EXPECT_NEAR(welded, direct, 0.05 * direct) << "child mass " << child;
+  }
+}
+
 TEST(RobustModel, HullOnASlideSettlesAtItsDraft) {
   Scene s(std::string(kHead) + "<body name=\"b\" pos=\"0 0 0.3\">"
           "<joint type=\"slide\" axis=\"0 0 1\"/>"
