@@ -1,5 +1,6 @@
 // gl backend: the buoyancy pipeline as five compute dispatches for all hulls
 // of all bodies (shaders/*.comp), one readback of one wrench per body
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <mutex>
@@ -20,6 +21,7 @@ using namespace glsl;  // NOLINT: the shared layouts
 static const char* kStage[] = {"verts.comp", "wet.comp", "hulls.comp", "hydro.comp",
                                "bodies.comp"};
 enum { kVerts, kWet, kHulls, kHydro, kBodies, kNStage };
+const int kMaxGroups = 65535;  // GL 4.3's minimum GL_MAX_COMPUTE_WORK_GROUP_COUNT
 
 struct GlBackend {
   GlContext ctx;
@@ -76,6 +78,14 @@ bool glMake(Buoy* b, std::string* err) {
   g->ntri = b->face.size() / 3;
   g->nhull = b->hull.size();
   g->nslot = b->body.size();
+  if (g->nhull > kMaxGroups) {
+    // one workgroup per hull in hulls.comp
+    *err = "gl backend: " + std::to_string(g->nhull) + " hull geoms, more than the " +
+           std::to_string(kMaxGroups) + " it can dispatch; use backend cpu";
+    b->gl = g;
+    glFree(b);
+    return false;
+  }
   std::vector<int> slot(m->nbody, -1);
   for (int i = 0; i < g->nslot; i++) slot[b->body[i]] = i;
   std::vector<GVert> vert(g->nvert);
@@ -259,9 +269,11 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   gl.ProgramUniform1i(g->prog[kHydro], g->uFirst, clock != kSameStep);
   gl.ProgramUniform1f(g->prog[kHydro], g->uSlamdt, float(s->hasPrev ? d->time - s->tprev : 0));
 
-  const int groups[kNStage] = {(g->nvert + BUOY_LOCAL - 1) / BUOY_LOCAL,
-                               (g->ntri + BUOY_LOCAL - 1) / BUOY_LOCAL, g->nhull,
-                               (g->ntri + BUOY_LOCAL - 1) / BUOY_LOCAL, g->nslot};
+  // per-item stages loop (grid-stride) past 65535 groups, GL's guaranteed
+  // GL_MAX_COMPUTE_WORK_GROUP_COUNT: beyond it glDispatchCompute does nothing
+  auto items = [](int n) { return std::min((n + BUOY_LOCAL - 1) / BUOY_LOCAL, kMaxGroups); };
+  const int groups[kNStage] = {items(g->nvert), items(g->ntri), g->nhull, items(g->ntri),
+                               g->nslot};
   for (int st = 0; st < kNStage; st++) {
     timerBegin(&g->timer, g->tstage[st]);
     gl.UseProgram(g->prog[st]);

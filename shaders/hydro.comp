@@ -27,9 +27,7 @@ void put(int k, int p, vec3 f, vec3 c) {
   tf[8 * k + 2 * p + 1] = vec4(cross(c, f), 0.0);
 }
 
-void main() {
-  int k = int(gl_GlobalInvocationID.x);
-  if (k >= ntri) return;
+void triangle(int k) {
   GTri t = tri[k];
   GWet w = wet[k];
   float A = w.c.w;
@@ -82,4 +80,10 @@ void main() {
     }
   }
   if (first != 0) scur[k] = vec4(v, A);
+}
+
+// grid-stride: the dispatch is capped at GL's minimum of 65535 workgroups
+void main() {
+  int n = int(gl_NumWorkGroups.x * gl_WorkGroupSize.x);
+  for (int k = int(gl_GlobalInvocationID.x); k < ntri; k += n) triangle(k);
 }

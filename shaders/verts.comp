@@ -14,9 +14,7 @@ layout(std430, binding = B_LAB) writeonly buffer Labs { vec2 lab[]; };
 
 uniform int nvert;
 
-void main() {
-  int i = int(gl_GlobalInvocationID.x);
-  if (i >= nvert) return;
+void vertex(int i) {
   GVert v = vert[i];
   int b = hull[v.hull].body;
   vec3 p = vec3(v.x, v.y, v.z);
@@ -25,4 +23,10 @@ void main() {
   vec2 a = seaLabel(b, r.xy, r.xy);
   lab[i] = a;
   vout[i] = vec4(r, r.z + body[b].orig.w - seaEta(b, a));
+}
+
+// grid-stride: the dispatch is capped at GL's minimum of 65535 workgroups
+void main() {
+  int n = int(gl_NumWorkGroups.x * gl_WorkGroupSize.x);
+  for (int i = int(gl_GlobalInvocationID.x); i < nvert; i += n) vertex(i);
 }

@@ -15,9 +15,7 @@ layout(std430, binding = B_TF) writeonly buffer Tf { vec4 tf[]; };
 uniform int ntri;
 uniform float rhog;   // rho g [N/m^3]
 
-void main() {
-  int k = int(gl_GlobalInvocationID.x);
-  if (k >= ntri) return;
+void triangle(int k) {
   GTri t = tri[k];
   vec3 dir = body[hull[t.hull].body].flow.xyz;
   vec4 P[3] = vec4[3](vout[t.v0], vout[t.v1], vout[t.v2]);
@@ -68,4 +66,10 @@ void main() {
   bool w = area > 0.0;
   tf[8 * k] = vec4(w ? -rhog * dA * n : vec3(0.0), 0.0);
   tf[8 * k + 1] = vec4(w ? -rhog * cross(drA, n) : vec3(0.0), 0.0);
+}
+
+// grid-stride: the dispatch is capped at GL's minimum of 65535 workgroups
+void main() {
+  int n = int(gl_NumWorkGroups.x * gl_WorkGroupSize.x);
+  for (int k = int(gl_GlobalInvocationID.x); k < ntri; k += n) triangle(k);
 }
