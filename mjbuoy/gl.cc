@@ -1,7 +1,9 @@
-// gl backend: the buoyancy pipeline as five compute dispatches for all hulls
-// of all bodies (shaders/*.comp), one readback of one wrench per body
+// gl backend: the buoyancy pipeline as three compute dispatches for all
+// hulls of all bodies (shaders/*.comp), one readback of one wrench per body
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <mutex>
 #include <string>
@@ -18,9 +20,8 @@ namespace mjb {
 
 using namespace glsl;  // NOLINT: the shared layouts
 
-static const char* kStage[] = {"verts.comp", "wet.comp", "hulls.comp", "hydro.comp",
-                               "bodies.comp"};
-enum { kVerts, kWet, kHulls, kHydro, kBodies, kNStage };
+static const char* kStage[] = {"verts.comp", "tris.comp", "bodies.comp"};
+enum { kVerts, kTris, kBodies, kNStage };
 const int kMaxGroups = 65535;  // GL 4.3's minimum GL_MAX_COMPUTE_WORK_GROUP_COUNT
 
 struct GlBackend {
@@ -30,7 +31,8 @@ struct GlBackend {
   GlTimer timer;
   int tstage[kNStage] = {0};
   std::mutex mu;                // one context: one thread at a time
-  int nvert = 0, ntri = 0, nhull = 0, nslot = 0, nwave = 0;
+  int nvert = 0, ntri = 0, nhull = 0, nslot = 0, nwave = 0, nchunk = 0;
+  int vlocal = BUOY_VERT_LOCAL, local = BUOY_LOCAL, per = BUOY_PER, blocal = BUOY_BODY_LOCAL;
   GLint uHasprev = -1, uFirst = -1, uSlamdt = -1;  // per-step uniforms, looked up once
   std::vector<GBody> body;      // per step, one per hull body
   std::vector<float> phase;     // per step, nslot x nwave
@@ -49,6 +51,24 @@ static void makeBuffer(GlBackend* g, int i, size_t n, const void* data, GLenum u
   gl.BufferData(GL_SHADER_STORAGE_BUFFER, n ? n : 16, data, usage);
 }
 
+// workgroup sizes: the tuned defaults of pipeline.h, or for tuning
+// MJBUOY_GL_GROUPS="verts tris per bodies" (powers of two, 1 .. 1024 each)
+static bool groupSizes(GlBackend* g, std::string* err) {
+  const char* env = std::getenv("MJBUOY_GL_GROUPS");
+  if (!env || !*env) return true;
+  int v[4];
+  char end;
+  bool ok = std::sscanf(env, "%d %d %d %d %c", v, v + 1, v + 2, v + 3, &end) == 4;
+  for (int x : v) ok = ok && x >= 1 && x <= 1024 && !(x & (x - 1));
+  if (!ok) {
+    *err = std::string("MJBUOY_GL_GROUPS=\"") + env +
+           "\": want four powers of two in 1..1024: verts tris per bodies (e.g. \"64 64 4 8\")";
+    return false;
+  }
+  g->vlocal = v[0], g->local = v[1], g->per = v[2], g->blocal = v[3];
+  return true;
+}
+
 bool glMake(Buoy* b, std::string* err) {
   auto g = new GlBackend;
   if (!glCreate(&g->ctx, err)) {
@@ -63,8 +83,17 @@ bool glMake(Buoy* b, std::string* err) {
     return false;
   }
   const GladGLContext& gl = g->ctx.gl;
+  if (!groupSizes(g, err)) {
+    b->gl = g;
+    glFree(b);
+    return false;
+  }
+  std::string defs = "#define BUOY_VERT_LOCAL " + std::to_string(g->vlocal) +
+                     "\n#define BUOY_LOCAL " + std::to_string(g->local) +
+                     "\n#define BUOY_PER " + std::to_string(g->per) +
+                     "\n#define BUOY_BODY_LOCAL " + std::to_string(g->blocal) + "\n";
   for (int i = 0; i < kNStage; i++) {
-    g->prog[i] = glProgram(gl, kStage[i], err);
+    g->prog[i] = glProgram(gl, kStage[i], err, defs);
     if (!g->prog[i]) {
       b->gl = g;
       glFree(b);
@@ -78,19 +107,13 @@ bool glMake(Buoy* b, std::string* err) {
   g->ntri = b->face.size() / 3;
   g->nhull = b->hull.size();
   g->nslot = b->body.size();
-  if (g->nhull > kMaxGroups) {
-    // one workgroup per hull in hulls.comp
-    *err = "gl backend: " + std::to_string(g->nhull) + " hull geoms, more than the " +
-           std::to_string(kMaxGroups) + " it can dispatch; use backend cpu";
-    b->gl = g;
-    glFree(b);
-    return false;
-  }
   std::vector<int> slot(m->nbody, -1);
   for (int i = 0; i < g->nslot; i++) slot[b->body[i]] = i;
   std::vector<GVert> vert(g->nvert);
   std::vector<GTri> tri(g->ntri);
   std::vector<GHull> hull(g->nhull);
+  std::vector<GChunk> chunk;
+  const int csize = g->local * g->per;
   g->body.assign(g->nslot, GBody{});
   for (int h = 0; h < g->nhull; h++) {
     const Hull& hl = b->hull[h];
@@ -103,8 +126,12 @@ bool glMake(Buoy* b, std::string* err) {
     }
     int s = slot[hl.body];
     hull[h].body = s;
-    hull[h].t0 = hl.t0;
+    hull[h].c0 = chunk.size();
     hull[h].nt = hl.nt;
+    for (int t = 0; t < hl.nt; t += csize) {
+      chunk.push_back(GChunk{h, hl.t0 + t, std::min(csize, hl.nt - t), 0});
+    }
+    hull[h].nc = int(chunk.size()) - hull[h].c0;
     hull[h].shape = vec4{float(hl.area), float(hl.mass), float(p.viscous), float(p.vref)};
     hull[h].drag = vec4{float(p.drag[0]), float(p.drag[1]), float(p.drag[2]), 0};
     hull[h].suction = vec4{float(p.suction[0]), float(p.suction[1]), float(p.suction[2]), 0};
@@ -128,6 +155,7 @@ bool glMake(Buoy* b, std::string* err) {
   }
   g->phase.assign(g->nslot * std::max(g->nwave, 1), 0);
   g->out.assign(g->nslot * 40, 0);
+  g->nchunk = chunk.size();
 
   makeBuffer(g, B_VERT, vert.size() * sizeof(GVert), vert.data(), GL_STATIC_DRAW);
   makeBuffer(g, B_TRI, tri.size() * sizeof(GTri), tri.data(), GL_STATIC_DRAW);
@@ -137,28 +165,28 @@ bool glMake(Buoy* b, std::string* err) {
   makeBuffer(g, B_PHASE, g->phase.size() * sizeof(float), nullptr, GL_DYNAMIC_DRAW);
   makeBuffer(g, B_VOUT, g->nvert * 16, nullptr, GL_DYNAMIC_COPY);
   makeBuffer(g, B_LAB, g->nvert * 8, nullptr, GL_DYNAMIC_COPY);
-  makeBuffer(g, B_WET, g->ntri * sizeof(GWet), nullptr, GL_DYNAMIC_COPY);
-  makeBuffer(g, B_TF, g->ntri * 8 * 16, nullptr, GL_DYNAMIC_COPY);
-  makeBuffer(g, B_HOUT, g->nhull * sizeof(GHullOut), nullptr, GL_DYNAMIC_COPY);
+  makeBuffer(g, B_CHUNK, chunk.size() * sizeof(GChunk), chunk.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_CPART, chunk.size() * BUOY_NSUM * 16, nullptr, GL_DYNAMIC_COPY);
   makeBuffer(g, B_OUT, g->out.size() * sizeof(float), nullptr, GL_DYNAMIC_READ);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 
   // uniforms that never change
   gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "nvert"), g->nvert);
-  gl.ProgramUniform1i(g->prog[kWet], loc(g, kWet, "ntri"), g->ntri);
-  gl.ProgramUniform1f(g->prog[kWet], loc(g, kWet, "rhog"), float(sea.rho * sea.g));
-  gl.ProgramUniform1f(g->prog[kHulls], loc(g, kHulls, "nu"), float(sea.nu));
-  gl.ProgramUniform1i(g->prog[kHydro], loc(g, kHydro, "ntri"), g->ntri);
-  gl.ProgramUniform1f(g->prog[kHydro], loc(g, kHydro, "rho"), float(sea.rho));
-  for (int st : {kVerts, kHydro}) {
+  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "nchunk"), g->nchunk);
+  gl.ProgramUniform1f(g->prog[kTris], loc(g, kTris, "rhog"), float(sea.rho * sea.g));
+  gl.ProgramUniform1f(g->prog[kTris], loc(g, kTris, "rho"), float(sea.rho));
+  gl.ProgramUniform1i(g->prog[kBodies], loc(g, kBodies, "nslot"), g->nslot);
+  gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "nu"), float(sea.nu));
+  gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "rho"), float(sea.rho));
+  for (int st : {kVerts, kTris}) {
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "nwave"), g->nwave);
     gl.ProgramUniform1f(g->prog[st], loc(g, st, "depth"), float(sea.depth));
     gl.ProgramUniform2f(g->prog[st], loc(g, st, "current"), float(sea.current[0]),
                         float(sea.current[1]));
   }
-  g->uHasprev = loc(g, kHydro, "hasprev");
-  g->uFirst = loc(g, kHydro, "first");
-  g->uSlamdt = loc(g, kHydro, "slamdt");
+  g->uHasprev = loc(g, kTris, "hasprev");
+  g->uFirst = loc(g, kTris, "first");
+  g->uSlamdt = loc(g, kTris, "slamdt");
   timerInit(&g->timer, &gl);
   for (int i = 0; i < kNStage; i++) g->tstage[i] = timerStage(&g->timer, kStage[i]);
   b->gl = g;
@@ -265,15 +293,15 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   }
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
-  gl.ProgramUniform1i(g->prog[kHydro], g->uHasprev, s->hasPrev);
-  gl.ProgramUniform1i(g->prog[kHydro], g->uFirst, clock != kSameStep);
-  gl.ProgramUniform1f(g->prog[kHydro], g->uSlamdt, float(s->hasPrev ? d->time - s->tprev : 0));
+  gl.ProgramUniform1i(g->prog[kTris], g->uHasprev, s->hasPrev);
+  gl.ProgramUniform1i(g->prog[kTris], g->uFirst, clock != kSameStep);
+  gl.ProgramUniform1f(g->prog[kTris], g->uSlamdt, float(s->hasPrev ? d->time - s->tprev : 0));
 
   // per-item stages loop (grid-stride) past 65535 groups, GL's guaranteed
   // GL_MAX_COMPUTE_WORK_GROUP_COUNT: beyond it glDispatchCompute does nothing
-  auto items = [](int n) { return std::min((n + BUOY_LOCAL - 1) / BUOY_LOCAL, kMaxGroups); };
-  const int groups[kNStage] = {items(g->nvert), items(g->ntri), g->nhull, items(g->ntri),
-                               g->nslot};
+  const int groups[kNStage] = {std::min((g->nvert + g->vlocal - 1) / g->vlocal, kMaxGroups),
+                               std::min(g->nchunk, kMaxGroups),
+                               (g->nslot + g->blocal - 1) / g->blocal};
   for (int st = 0; st < kNStage; st++) {
     timerBegin(&g->timer, g->tstage[st]);
     gl.UseProgram(g->prog[st]);

@@ -5,7 +5,7 @@
 #include "pipeline.h"
 #include "sea.glsl"
 
-layout(local_size_x = BUOY_LOCAL) in;
+layout(local_size_x = BUOY_VERT_LOCAL) in;
 layout(std430, binding = B_VERT) readonly buffer Verts { GVert vert[]; };
 layout(std430, binding = B_HULL) readonly buffer Hulls { GHull hull[]; };
 layout(std430, binding = B_BODY) readonly buffer Bodies { GBody body[]; };
