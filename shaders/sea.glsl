@@ -29,7 +29,9 @@ vec2 seaLabel(int b, vec2 x, vec2 a) {
     float det = j00 * j11 - j01 * j01;
     vec2 st = vec2(j11 * f.x - j01 * f.y, j00 * f.y - j01 * f.x) / det;
     a -= st;
-    if (dot(st, st) < 1e-14) break;
+    // a 10 um step: Newton's next error is ~(k Q A)|st|^2, far below float's
+    // resolution of the label; 1e-7 m would never be reached in float
+    if (dot(st, st) < 1e-10) break;
   }
   return a;
 }
