@@ -1,8 +1,8 @@
 #version 430
-// stage 3, one invocation per body: sum its hulls' chunk sums in a fixed
-// order; per hull the wetted length, Kerner's mean position sbar and the
-// ITTC 1957 C_F at the hull's Rn, which scale its viscous sums
-// (tris.comp); add the simple damping of its hulls
+// stage 3, one invocation per body: add up its hulls' per-invocation sums
+// (tris.comp) in a fixed order; per hull the wetted length, Kerner's mean
+// position sbar and the ITTC 1957 C_F at the hull's Rn, which scale its
+// viscous sums; add the simple damping of its hulls
 #include "shared.h"
 #include "pipeline.h"
 
@@ -27,7 +27,7 @@ void main() {
     GHull hl = hull[h];
     vec3 G = vec3(0.0), EG = vec3(0.0), CG = vec3(0.0), ECG = vec3(0.0);
     vec4 wt = vec4(0.0, 1e30, -1e30, 0.0);
-    for (int c = hl.c0; c < hl.c0 + hl.nc; c++) {
+    for (int c = BUOY_LOCAL * hl.c0; c < BUOY_LOCAL * (hl.c0 + hl.nc); c++) {
       int o = BUOY_NSUM * c;
       pF += cpart[o].xyz;
       pT += cpart[o + 1].xyz;

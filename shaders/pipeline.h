@@ -40,7 +40,8 @@ namespace glsl {
 #define B_VOUT 5     // vec4[]       vertex: position rel. COM (xyz), height above water (w)
 #define B_LAB 6      // vec2[]       vertex: surface particle label rel. COM
 #define B_CHUNK 7    // GChunk[]     static: triangle chunks, one hull each
-#define B_CPART 8    // vec4[]       chunk: BUOY_NSUM sums (tris.comp)
+#define B_CPART 8    // vec4[]       chunk invocation: BUOY_NSUM sums (tris.comp)
+#define B_VCHUNK 9   // GChunk[]     static: vertex chunks, one hull each
 #define B_OUT 10     // vec4[]       body: force, torque per family (2 x 5 each)
 #define B_SLAMPREV 11  // vec4[]     triangle: previous step's velocity (xyz), wet area (w)
 #define B_SLAMCUR 12   // vec4[]     triangle: this step's, written on its first call
@@ -99,8 +100,8 @@ struct GWave {
 
 struct GChunk {
   int hull;
-  int t0;          // first triangle
-  int nt;          // triangles, at most BUOY_LOCAL x BUOY_PER
+  int t0;          // first triangle (vertex)
+  int nt;          // triangles (vertices), at most BUOY_LOCAL (BUOY_VERT_LOCAL) x BUOY_PER
   int pad;
 };
 

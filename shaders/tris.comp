@@ -3,8 +3,8 @@
 // invocation BUOY_PER of them: cut each triangle at the waterline and
 // integrate the pressure exactly (mjbuoy/pressure.cc), then Kerner's
 // viscous resistance, pressure/suction drag and slamming at the wet centroid
-// (mjbuoy/hydro.cc); sums per chunk in a fixed order, so no per-triangle
-// buffer. The viscous force needs the hull's wetted length and sbar, known
+// (mjbuoy/hydro.cc); each invocation sums its triangles in a fixed order,
+// so no per-triangle buffer. The viscous force needs the hull's wetted length and sbar, known
 // only after all its triangles: its per-triangle factor (1 + sbar - s_k),
 // s_k = (e_k - lo) / len, is linear in e_k, so the chunk keeps sum g and
 // sum e g (g = A |v|^2 t / |t|) and bodies.comp applies the factor.
@@ -13,15 +13,16 @@
 #include "sea.glsl"
 
 layout(local_size_x = BUOY_LOCAL) in;
-layout(std430, binding = B_TRI) readonly buffer Tris { GTri tri[]; };
 layout(std430, binding = B_HULL) readonly buffer Hulls { GHull hull[]; };
 layout(std430, binding = B_BODY) readonly buffer Bodies { GBody body[]; };
-layout(std430, binding = B_VOUT) readonly buffer Vout { vec4 vout[]; };
-layout(std430, binding = B_LAB) readonly buffer Labs { vec2 lab[]; };
 layout(std430, binding = B_CHUNK) readonly buffer Chunks { GChunk chunk[]; };
-layout(std430, binding = B_CPART) writeonly buffer Cpart { vec4 cpart[]; };
+layout(std430, binding = B_CPART) writeonly buffer Cpart { vec4 cpart[]; };  // per invocation
 layout(std430, binding = B_SLAMPREV) readonly buffer Sprev { vec4 sprev[]; };
 layout(std430, binding = B_SLAMCUR) writeonly buffer Scur { vec4 scur[]; };
+
+uniform samplerBuffer tVout;   // B_VOUT, B_LAB and B_TRI as buffer textures
+uniform samplerBuffer tLab;
+uniform isamplerBuffer tTri;
 
 uniform int nchunk;
 uniform float rhog;    // rho g [N/m^3]
@@ -29,8 +30,6 @@ uniform float rho;     // [kg/m^3]
 uniform int hasprev;   // slamming history exists
 uniform int first;     // first call of this step: record the history
 uniform float slamdt;  // time since the previous step's first call [s]
-
-shared vec4 red[BUOY_NSUM * BUOY_LOCAL];
 
 // per-invocation sums over its triangles (BUOY_NSUM vec4, see pipeline.h)
 vec3 pF, pT, vG, vEG, vCG, vECG, dF, dT, sF, sT;
@@ -49,8 +48,8 @@ void piece(vec3 q0, vec3 q1, vec3 q2, float d0, float d1, float d2, vec3 n, inou
 }
 
 void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) {
-  GTri t = tri[k];
-  vec4 P0 = vout[t.v0], P1 = vout[t.v1], P2 = vout[t.v2];
+  ivec4 t = texelFetch(tTri, k);
+  vec4 P0 = texelFetch(tVout, t.x), P1 = texelFetch(tVout, t.y), P2 = texelFetch(tVout, t.z);
   vec3 cr = cross(P1.xyz - P0.xyz, P2.xyz - P0.xyz);
   float tlen = length(cr);
   bool w0 = P0.w <= 0.0, w1 = P1.w <= 0.0, w2 = P2.w <= 0.0;
@@ -102,7 +101,8 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
 
   // flow-relative velocity: point velocity minus the water's there; the
   // label search starts from the mean of the vertex labels
-  vec2 la = seaLabel(b, cc.xy, (lab[t.v0] + lab[t.v1] + lab[t.v2]) / 3.0);
+  vec2 l3 = texelFetch(tLab, t.x).xy + texelFetch(tLab, t.y).xy + texelFetch(tLab, t.z).xy;
+  vec2 la = seaLabel(b, cc.xy, l3 / 3.0);
   float zb = min(cc.z + zc - seaEta(b, la), 0.0);
   vec3 v = vlin + cross(vang, cc) - seaVelocity(b, la, zb);
   float v2 = dot(v, v), sp = sqrt(v2);
@@ -121,10 +121,11 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
 
   // pressure (cos > 0) and suction (cos < 0) drag
   float cs = sp > 0.0 ? dot(v, n) / sp : 0.0;
-  if (sp > 0.0) {
-    float u = sp / hl.shape.w, s = 0.0;
-    if (cs > 0.0) s = -(hl.drag.x * u + hl.drag.y * u * u) * A * pow(cs, hl.drag.z);
-    if (cs < 0.0) s = (hl.suction.x * u + hl.suction.y * u * u) * A * pow(-cs, hl.suction.z);
+  // (one pow for both: SIMD lanes of either sign would run both branches)
+  if (sp > 0.0 && cs != 0.0) {
+    float u = sp / hl.shape.w;
+    vec3 k = cs > 0.0 ? -hl.drag.xyz : hl.suction.xyz;
+    float s = (k.x * u + k.y * u * u) * A * pow(abs(cs), cs > 0.0 ? hl.drag.z : hl.suction.z);
     dF += s * n;
     dT += cross(cc, s * n);
   }
@@ -153,27 +154,19 @@ void main() {
     pF = pT = vG = vEG = vCG = vECG = dF = dT = sF = sT = vec3(0.0);
     wt = vec4(0.0, 1e30, -1e30, 0.0);
     for (int j = l; j < ch.nt; j += BUOY_LOCAL) triangle(ch.t0 + j, b, hl, dir, vlin, vang, zc);
-    red[0 * BUOY_LOCAL + l] = vec4(pF, 0.0);
-    red[1 * BUOY_LOCAL + l] = vec4(pT, 0.0);
-    red[2 * BUOY_LOCAL + l] = vec4(vG, 0.0);
-    red[3 * BUOY_LOCAL + l] = vec4(vEG, 0.0);
-    red[4 * BUOY_LOCAL + l] = vec4(vCG, 0.0);
-    red[5 * BUOY_LOCAL + l] = vec4(vECG, 0.0);
-    red[6 * BUOY_LOCAL + l] = vec4(dF, 0.0);
-    red[7 * BUOY_LOCAL + l] = vec4(dT, 0.0);
-    red[8 * BUOY_LOCAL + l] = vec4(sF, 0.0);
-    red[9 * BUOY_LOCAL + l] = vec4(sT, 0.0);
-    red[10 * BUOY_LOCAL + l] = wt;
-    barrier();
-    // invocation j < BUOY_NSUM sums row j over the invocations in order
-    if (l < BUOY_NSUM) {
-      vec4 s = red[l * BUOY_LOCAL];
-      for (int i = 1; i < BUOY_LOCAL; i++) {
-        vec4 x = red[l * BUOY_LOCAL + i];
-        s = l == BUOY_NSUM - 1 ? vec4(s.x + x.x, min(s.y, x.y), max(s.z, x.z), s.w + x.w) : s + x;
-      }
-      cpart[BUOY_NSUM * ci + l] = s;
-    }
-    barrier();
+    // no shared memory and no barrier (llvmpipe runs barrier shaders as
+    // coroutines): each invocation stores its sums, bodies.comp adds them
+    int o = BUOY_NSUM * (BUOY_LOCAL * ci + l);
+    cpart[o] = vec4(pF, 0.0);
+    cpart[o + 1] = vec4(pT, 0.0);
+    cpart[o + 2] = vec4(vG, 0.0);
+    cpart[o + 3] = vec4(vEG, 0.0);
+    cpart[o + 4] = vec4(vCG, 0.0);
+    cpart[o + 5] = vec4(vECG, 0.0);
+    cpart[o + 6] = vec4(dF, 0.0);
+    cpart[o + 7] = vec4(dT, 0.0);
+    cpart[o + 8] = vec4(sF, 0.0);
+    cpart[o + 9] = vec4(sT, 0.0);
+    cpart[o + 10] = wt;
   }
 }
