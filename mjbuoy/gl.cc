@@ -98,7 +98,6 @@ bool glMake(Buoy* b, std::string* err) {
                      "\n#define BUOY_LOCAL " + std::to_string(g->local) +
                      "\n#define BUOY_PER " + std::to_string(g->per) +
                      "\n#define BUOY_BODY_LOCAL " + std::to_string(g->blocal) + "\n";
-  if (getenv("MJBUOY_GL_DEFS")) defs += std::string(getenv("MJBUOY_GL_DEFS")) + "\n";  // TEMP
   for (int i = 0; i < kNStage; i++) {
     g->prog[i] = glProgram(gl, kStage[i], err, defs);
     if (!g->prog[i]) {

@@ -12,17 +12,21 @@ namespace mjb {
 namespace glsl {
 #endif
 
-// workgroup sizes, tuned for Mesa llvmpipe (docs/benchmarks.md), which runs
-// a workgroup on one thread, 8 invocations per SIMD vector; gl.cc may
-// override them (MJBUOY_GL_GROUPS) by defining them first
+// workgroup sizes, tuned for Mesa llvmpipe, which runs a workgroup on one
+// thread, 8 invocations per SIMD vector (256-bit AVX2). One vector per
+// workgroup and long per-invocation loops win: at 200 Wigley 7744 boats,
+// CPU ms/step (tris local x per): 8x16 175, 8x64 163, 8x256 157, 16x64 174,
+// 64x16 201, 64x64 195; verts local 8 vs 64 at 8x64: 151 vs 163. 8x64
+// keeps 2+ chunks per hull down to 576 triangles for both cores.
+// MJBUOY_GL_GROUPS overrides them (gl.cc) by defining them first.
 #ifndef BUOY_VERT_LOCAL
-#define BUOY_VERT_LOCAL 64   // verts.comp: vertices per workgroup
+#define BUOY_VERT_LOCAL 8    // verts.comp: invocations per vertex chunk workgroup
 #endif
 #ifndef BUOY_LOCAL
-#define BUOY_LOCAL 64        // tris.comp: invocations per chunk workgroup
+#define BUOY_LOCAL 8         // tris.comp: invocations per triangle chunk workgroup
 #endif
 #ifndef BUOY_PER
-#define BUOY_PER 4           // tris.comp: triangles per invocation (chunk: BUOY_LOCAL x BUOY_PER)
+#define BUOY_PER 64          // triangles (vertices) per invocation: chunk = local x per
 #endif
 #ifndef BUOY_BODY_LOCAL
 #define BUOY_BODY_LOCAL 8    // bodies.comp: bodies per workgroup
