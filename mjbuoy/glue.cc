@@ -48,6 +48,25 @@ State* state(mjbBuoy* b, const mjData* d, bool create) {
   return s.get();
 }
 
+// qfrc += J^T [f; t] for a wrench at point p on body, like mj_applyFT but
+// over the body's dof chain only: mj_applyFT clears and multiplies two full
+// 3 x nv Jacobians, O(nv) per body and so O(bodies^2) for a fleet (12 ms a
+// step at 800 free bodies). Columns as mj_jac: linear cdof + cdof_ang x
+// (p - subtree COM), angular cdof; forces before torques, as mj_applyFT.
+void applyWrench(const mjModel* m, const mjData* d, const mjtNum* f, const mjtNum* t,
+                 const mjtNum* p, int body, mjtNum* qfrc) {
+  mjtNum off[3], tmp[3];
+  mju_sub3(off, p, d->subtree_com + 3 * m->body_rootid[body]);
+  while (body && !m->body_dofnum[body]) body = m->body_parentid[body];
+  if (!body) return;
+  for (int i = m->body_dofadr[body] + m->body_dofnum[body] - 1; i >= 0; i = m->dof_parentid[i]) {
+    const mjtNum* c = d->cdof + 6 * i;
+    mju_cross(tmp, c, off);
+    qfrc[i] += (c[3] + tmp[0]) * f[0] + (c[4] + tmp[1]) * f[1] + (c[5] + tmp[2]) * f[2];
+    qfrc[i] += c[0] * t[0] + c[1] * t[1] + c[2] * t[2];
+  }
+}
+
 void passive(const mjModel* m, mjData* d) {
   if (gprev) gprev(m, d);
   mjbBuoy* b;
@@ -64,7 +83,7 @@ void passive(const mjModel* m, mjData* d) {
   }
   for (int bd : b->b.body) {
     const mjtNum* w = s->wrench.data() + 6 * bd;
-    mj_applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
+    applyWrench(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
   }
 }
 
