@@ -68,7 +68,7 @@ static bool groupSizes(GlBackend* g, std::string* err) {
   for (int x : v) ok = ok && x >= 1 && x <= 1024 && !(x & (x - 1));
   if (!ok) {
     *err = std::string("MJBUOY_GL_GROUPS=\"") + env +
-           "\": want four powers of two in 1..1024: verts tris per bodies (e.g. \"64 64 4 8\")";
+           "\": want four powers of two in 1..1024: verts tris per bodies (e.g. \"8 8 256 8\")";
     return false;
   }
   g->vlocal = v[0], g->local = v[1], g->per = v[2], g->blocal = v[3];

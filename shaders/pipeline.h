@@ -16,8 +16,9 @@ namespace glsl {
 // thread, 8 invocations per SIMD vector (256-bit AVX2). One vector per
 // workgroup and long per-invocation loops win: at 200 Wigley 7744 boats,
 // CPU ms/step (tris local x per): 8x16 175, 8x64 163, 8x256 157, 16x64 174,
-// 64x16 201, 64x64 195; verts local 8 vs 64 at 8x64: 151 vs 163. 8x64
-// keeps 2+ chunks per hull down to 576 triangles for both cores.
+// 64x16 201, 64x64 195; verts local 8 vs 64 at 8x64: 151 vs 163; 8x256 vs
+// 8x64 again: 148 vs 155 (and 64 vs 66 at 800 x 576). Chunks of 2048
+// triangles leave a lone small hull on one core, which costs < 0.1 ms.
 // MJBUOY_GL_GROUPS overrides them (gl.cc) by defining them first.
 #ifndef BUOY_VERT_LOCAL
 #define BUOY_VERT_LOCAL 8    // verts.comp: invocations per vertex chunk workgroup
@@ -26,7 +27,7 @@ namespace glsl {
 #define BUOY_LOCAL 8         // tris.comp: invocations per triangle chunk workgroup
 #endif
 #ifndef BUOY_PER
-#define BUOY_PER 64          // triangles (vertices) per invocation: chunk = local x per
+#define BUOY_PER 256         // triangles (vertices) per invocation: chunk = local x per
 #endif
 #ifndef BUOY_BODY_LOCAL
 #define BUOY_BODY_LOCAL 8    // bodies.comp: bodies per workgroup
