@@ -207,6 +207,16 @@ bool glMake(Buoy* b, std::string* err) {
   // the per-triangle gathers read through texel fetches: llvmpipe gathers a
   // texel per lane in straight-line SIMD code, an SSBO load with a
   // per-lane index in a scalar loop per component
+  GLint tmax = 0;  // texels; GL guarantees only 65536, llvmpipe has 2^27
+  gl.GetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &tmax);
+  if (std::max(g->ntri, g->nvert) > tmax) {
+    *err = "gl backend: " + std::to_string(g->ntri) + " triangles and " +
+           std::to_string(g->nvert) + " vertices exceed the driver's buffer texture size (" +
+           std::to_string(tmax) + " texels); use backend cpu";
+    b->gl = g;
+    glFree(b);
+    return false;
+  }
   const GLenum tfmt[4] = {GL_RGBA32F, GL_RG32F, GL_RGBA32I, GL_RGBA32F};
   const int tbuf[4] = {B_VOUT, B_LAB, B_TRI, B_VERT};
   gl.GenTextures(4, g->tex);
