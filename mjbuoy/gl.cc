@@ -1,6 +1,9 @@
-// gl backend: the buoyancy pipeline as five compute dispatches for all hulls
-// of all bodies (shaders/*.comp), one readback of one wrench per body
+// gl backend: the buoyancy pipeline as three compute dispatches for all
+// hulls of all bodies (shaders/*.comp), one readback of one wrench per body
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <mutex>
 #include <string>
@@ -17,22 +20,29 @@ namespace mjb {
 
 using namespace glsl;  // NOLINT: the shared layouts
 
-static const char* kStage[] = {"verts.comp", "wet.comp", "hulls.comp", "hydro.comp",
-                               "bodies.comp"};
-enum { kVerts, kWet, kHulls, kHydro, kBodies, kNStage };
+static const char* kStage[] = {"verts.comp", "tris.comp", "bodies.comp"};
+enum { kVerts, kTris, kBodies, kNStage };
+const int kMaxGroups = 65535;  // GL 4.3's minimum GL_MAX_COMPUTE_WORK_GROUP_COUNT
 
 struct GlBackend {
   GlContext ctx;
   GLuint prog[kNStage] = {0};
   GLuint buf[14] = {0};         // by binding point
+  GLuint tex[4] = {0};          // buffer textures of B_VOUT, B_LAB, B_TRI, B_VERT (units 0..3)
   GlTimer timer;
   int tstage[kNStage] = {0};
   std::mutex mu;                // one context: one thread at a time
-  int nvert = 0, ntri = 0, nhull = 0, nslot = 0, nwave = 0;
+  int nvert = 0, ntri = 0, nhull = 0, nslot = 0, nwave = 0, nchunk = 0, nvchunk = 0;
+  int vlocal = BUOY_VERT_LOCAL, local = BUOY_LOCAL, per = BUOY_PER, blocal = BUOY_BODY_LOCAL;
   GLint uHasprev = -1, uFirst = -1, uSlamdt = -1;  // per-step uniforms, looked up once
-  std::vector<GBody> body;      // per step, one per hull body
+  std::vector<GBody> body;      // per step, one per hull body (staging without persist)
   std::vector<float> phase;     // per step, nslot x nwave
   std::vector<float> out;       // readback, nslot x 10 x 4
+  // persistent coherent mappings of B_BODY, B_PHASE (GL 4.4), else the
+  // vectors above with glBufferSubData
+  bool persist = false;
+  GBody* bodyp = nullptr;
+  float* phasep = nullptr;
 };
 
 static GLint loc(GlBackend* g, int st, const char* name) {
@@ -45,6 +55,24 @@ static void makeBuffer(GlBackend* g, int i, size_t n, const void* data, GLenum u
   gl.GenBuffers(1, &g->buf[i]);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[i]);
   gl.BufferData(GL_SHADER_STORAGE_BUFFER, n ? n : 16, data, usage);
+}
+
+// workgroup sizes: the tuned defaults of pipeline.h, or for tuning
+// MJBUOY_GL_GROUPS="verts tris per bodies" (powers of two, 1 .. 1024 each)
+static bool groupSizes(GlBackend* g, std::string* err) {
+  const char* env = std::getenv("MJBUOY_GL_GROUPS");
+  if (!env || !*env) return true;
+  int v[4];
+  char end;
+  bool ok = std::sscanf(env, "%d %d %d %d %c", v, v + 1, v + 2, v + 3, &end) == 4;
+  for (int x : v) ok = ok && x >= 1 && x <= 1024 && !(x & (x - 1));
+  if (!ok) {
+    *err = std::string("MJBUOY_GL_GROUPS=\"") + env +
+           "\": want four powers of two in 1..1024: verts tris per bodies (e.g. \"8 8 256 8\")";
+    return false;
+  }
+  g->vlocal = v[0], g->local = v[1], g->per = v[2], g->blocal = v[3];
+  return true;
 }
 
 bool glMake(Buoy* b, std::string* err) {
@@ -61,8 +89,17 @@ bool glMake(Buoy* b, std::string* err) {
     return false;
   }
   const GladGLContext& gl = g->ctx.gl;
+  if (!groupSizes(g, err)) {
+    b->gl = g;
+    glFree(b);
+    return false;
+  }
+  std::string defs = "#define BUOY_VERT_LOCAL " + std::to_string(g->vlocal) +
+                     "\n#define BUOY_LOCAL " + std::to_string(g->local) +
+                     "\n#define BUOY_PER " + std::to_string(g->per) +
+                     "\n#define BUOY_BODY_LOCAL " + std::to_string(g->blocal) + "\n";
   for (int i = 0; i < kNStage; i++) {
-    g->prog[i] = glProgram(gl, kStage[i], err);
+    g->prog[i] = glProgram(gl, kStage[i], err, defs);
     if (!g->prog[i]) {
       b->gl = g;
       glFree(b);
@@ -81,6 +118,8 @@ bool glMake(Buoy* b, std::string* err) {
   std::vector<GVert> vert(g->nvert);
   std::vector<GTri> tri(g->ntri);
   std::vector<GHull> hull(g->nhull);
+  std::vector<GChunk> chunk, vchunk;
+  const int csize = g->local * g->per;
   g->body.assign(g->nslot, GBody{});
   for (int h = 0; h < g->nhull; h++) {
     const Hull& hl = b->hull[h];
@@ -93,8 +132,15 @@ bool glMake(Buoy* b, std::string* err) {
     }
     int s = slot[hl.body];
     hull[h].body = s;
-    hull[h].t0 = hl.t0;
+    hull[h].c0 = chunk.size();
     hull[h].nt = hl.nt;
+    for (int t = 0; t < hl.nt; t += csize) {
+      chunk.push_back(GChunk{h, hl.t0 + t, std::min(csize, hl.nt - t), 0});
+    }
+    hull[h].nc = int(chunk.size()) - hull[h].c0;
+    for (int v = 0; v < hl.nv; v += g->vlocal * g->per) {
+      vchunk.push_back(GChunk{h, hl.v0 + v, std::min(g->vlocal * g->per, hl.nv - v), 0});
+    }
     hull[h].shape = vec4{float(hl.area), float(hl.mass), float(p.viscous), float(p.vref)};
     hull[h].drag = vec4{float(p.drag[0]), float(p.drag[1]), float(p.drag[2]), 0};
     hull[h].suction = vec4{float(p.suction[0]), float(p.suction[1]), float(p.suction[2]), 0};
@@ -118,37 +164,89 @@ bool glMake(Buoy* b, std::string* err) {
   }
   g->phase.assign(g->nslot * std::max(g->nwave, 1), 0);
   g->out.assign(g->nslot * 40, 0);
+  g->nchunk = chunk.size();
+  g->nvchunk = vchunk.size();
 
   makeBuffer(g, B_VERT, vert.size() * sizeof(GVert), vert.data(), GL_STATIC_DRAW);
   makeBuffer(g, B_TRI, tri.size() * sizeof(GTri), tri.data(), GL_STATIC_DRAW);
   makeBuffer(g, B_HULL, hull.size() * sizeof(GHull), hull.data(), GL_STATIC_DRAW);
   makeBuffer(g, B_WAVE, wave.size() * sizeof(GWave), wave.data(), GL_STATIC_DRAW);
-  makeBuffer(g, B_BODY, g->nslot * sizeof(GBody), nullptr, GL_DYNAMIC_DRAW);
-  makeBuffer(g, B_PHASE, g->phase.size() * sizeof(float), nullptr, GL_DYNAMIC_DRAW);
+  // the per-step inputs: written in place where GL 4.4 can map them for
+  // good (on llvmpipe a mapping is the buffer's own memory: no copy)
+  g->persist = gl.VERSION_4_4 && gl.BufferStorage && gl.MapBufferRange;
+  if (g->persist) {
+    const GLbitfield wr = GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+    auto mapped = [&](int i, size_t n, GLbitfield fl) {
+      gl.GenBuffers(1, &g->buf[i]);
+      gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[i]);
+      gl.BufferStorage(GL_SHADER_STORAGE_BUFFER, n, nullptr, fl);
+      return gl.MapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, n, fl);
+    };
+    g->bodyp = static_cast<GBody*>(mapped(B_BODY, g->nslot * sizeof(GBody), wr));
+    g->phasep = static_cast<float*>(mapped(B_PHASE, g->phase.size() * sizeof(float), wr));
+    if (!g->bodyp || !g->phasep) {
+      *err = "gl backend: could not map its per-step buffers (glMapBufferRange)";
+      b->gl = g;
+      glFree(b);
+      return false;
+    }
+    std::memcpy(g->bodyp, g->body.data(), g->nslot * sizeof(GBody));
+  } else {
+    makeBuffer(g, B_BODY, g->nslot * sizeof(GBody), nullptr, GL_DYNAMIC_DRAW);
+    makeBuffer(g, B_PHASE, g->phase.size() * sizeof(float), nullptr, GL_DYNAMIC_DRAW);
+    g->bodyp = g->body.data();
+    g->phasep = g->phase.data();
+  }
   makeBuffer(g, B_VOUT, g->nvert * 16, nullptr, GL_DYNAMIC_COPY);
   makeBuffer(g, B_LAB, g->nvert * 8, nullptr, GL_DYNAMIC_COPY);
-  makeBuffer(g, B_WET, g->ntri * sizeof(GWet), nullptr, GL_DYNAMIC_COPY);
-  makeBuffer(g, B_TF, g->ntri * 8 * 16, nullptr, GL_DYNAMIC_COPY);
-  makeBuffer(g, B_HOUT, g->nhull * sizeof(GHullOut), nullptr, GL_DYNAMIC_COPY);
+  makeBuffer(g, B_CHUNK, chunk.size() * sizeof(GChunk), chunk.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_VCHUNK, vchunk.size() * sizeof(GChunk), vchunk.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_CPART, chunk.size() * g->local * BUOY_NSUM * 16, nullptr, GL_DYNAMIC_COPY);
   makeBuffer(g, B_OUT, g->out.size() * sizeof(float), nullptr, GL_DYNAMIC_READ);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  // the per-triangle gathers read through texel fetches: llvmpipe gathers a
+  // texel per lane in straight-line SIMD code, an SSBO load with a
+  // per-lane index in a scalar loop per component
+  GLint tmax = 0;  // texels; GL guarantees only 65536, llvmpipe has 2^27
+  gl.GetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &tmax);
+  if (std::max(g->ntri, g->nvert) > tmax) {
+    *err = "gl backend: " + std::to_string(g->ntri) + " triangles and " +
+           std::to_string(g->nvert) + " vertices exceed the driver's buffer texture size (" +
+           std::to_string(tmax) + " texels); use backend cpu";
+    b->gl = g;
+    glFree(b);
+    return false;
+  }
+  const GLenum tfmt[4] = {GL_RGBA32F, GL_RG32F, GL_RGBA32I, GL_RGBA32F};
+  const int tbuf[4] = {B_VOUT, B_LAB, B_TRI, B_VERT};
+  gl.GenTextures(4, g->tex);
+  for (int i = 0; i < 4; i++) {
+    gl.BindTexture(GL_TEXTURE_BUFFER, g->tex[i]);
+    gl.TexBuffer(GL_TEXTURE_BUFFER, tfmt[i], g->buf[tbuf[i]]);
+  }
+  gl.BindTexture(GL_TEXTURE_BUFFER, 0);
+  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tVout"), 0);
+  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tLab"), 1);
+  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tTri"), 2);
+  gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "tVert"), 3);
+  gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "nvchunk"), g->nvchunk);
 
   // uniforms that never change
-  gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "nvert"), g->nvert);
-  gl.ProgramUniform1i(g->prog[kWet], loc(g, kWet, "ntri"), g->ntri);
-  gl.ProgramUniform1f(g->prog[kWet], loc(g, kWet, "rhog"), float(sea.rho * sea.g));
-  gl.ProgramUniform1f(g->prog[kHulls], loc(g, kHulls, "nu"), float(sea.nu));
-  gl.ProgramUniform1i(g->prog[kHydro], loc(g, kHydro, "ntri"), g->ntri);
-  gl.ProgramUniform1f(g->prog[kHydro], loc(g, kHydro, "rho"), float(sea.rho));
-  for (int st : {kVerts, kHydro}) {
+  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "nchunk"), g->nchunk);
+  gl.ProgramUniform1f(g->prog[kTris], loc(g, kTris, "rhog"), float(sea.rho * sea.g));
+  gl.ProgramUniform1f(g->prog[kTris], loc(g, kTris, "rho"), float(sea.rho));
+  gl.ProgramUniform1i(g->prog[kBodies], loc(g, kBodies, "nslot"), g->nslot);
+  gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "nu"), float(sea.nu));
+  gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "rho"), float(sea.rho));
+  for (int st : {kVerts, kTris}) {
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "nwave"), g->nwave);
     gl.ProgramUniform1f(g->prog[st], loc(g, st, "depth"), float(sea.depth));
     gl.ProgramUniform2f(g->prog[st], loc(g, st, "current"), float(sea.current[0]),
                         float(sea.current[1]));
   }
-  g->uHasprev = loc(g, kHydro, "hasprev");
-  g->uFirst = loc(g, kHydro, "first");
-  g->uSlamdt = loc(g, kHydro, "slamdt");
+  g->uHasprev = loc(g, kTris, "hasprev");
+  g->uFirst = loc(g, kTris, "first");
+  g->uSlamdt = loc(g, kTris, "slamdt");
   timerInit(&g->timer, &gl);
   for (int i = 0; i < kNStage; i++) g->tstage[i] = timerStage(&g->timer, kStage[i]);
   b->gl = g;
@@ -172,6 +270,7 @@ void glFree(Buoy* b) {
     timerFree(&g->timer);
     for (GLuint& p : g->prog) if (p) gl.DeleteProgram(p);
     for (GLuint& x : g->buf) if (x) gl.DeleteBuffers(1, &x);
+    for (GLuint& x : g->tex) if (x) gl.DeleteTextures(1, &x);
   }
   glDestroy(&g->ctx);
   delete g;
@@ -185,7 +284,7 @@ static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   const Sea& sea = b->cfg.sea;
   for (int i = 0; i < g->nslot; i++) {
     int bd = b->body[i];
-    GBody& o = g->body[i];
+    GBody& o = g->bodyp[i];
     const mjtNum* R = d->xmat + 9 * bd;
     const mjtNum* x = d->xpos + 3 * bd;
     const mjtNum* c = d->xipos + 3 * bd;
@@ -220,7 +319,7 @@ static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     for (int w = 0; w < g->nwave; w++) {
       const Wave& wv = sea.waves[w];
       double th = wv.k * (wv.dx * c[0] + wv.dy * c[1]) - wv.omega * d->time + wv.ph;
-      g->phase[i * g->nwave + w] = float(std::remainder(th, 2 * M_PI));
+      g->phasep[i * g->nwave + w] = float(std::remainder(th, 2 * M_PI));
     }
   }
 }
@@ -246,35 +345,51 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   std::memset(s->bad.data(), 0, s->bad.size());
   bodies(b, m, d, s);
 
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_BODY]);
-  gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->nslot * sizeof(GBody), g->body.data());
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_PHASE]);
-  gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->phase.size() * sizeof(float), g->phase.data());
+  if (!g->persist) {
+    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_BODY]);
+    gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->nslot * sizeof(GBody), g->body.data());
+    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_PHASE]);
+    gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->phase.size() * sizeof(float),
+                     g->phase.data());
+  }
   for (int i = 0; i < 14; i++) {
     if (g->buf[i]) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, g->buf[i]);
   }
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
-  gl.ProgramUniform1i(g->prog[kHydro], g->uHasprev, s->hasPrev);
-  gl.ProgramUniform1i(g->prog[kHydro], g->uFirst, clock != kSameStep);
-  gl.ProgramUniform1f(g->prog[kHydro], g->uSlamdt, float(s->hasPrev ? d->time - s->tprev : 0));
+  gl.ProgramUniform1i(g->prog[kTris], g->uHasprev, s->hasPrev);
+  gl.ProgramUniform1i(g->prog[kTris], g->uFirst, clock != kSameStep);
+  gl.ProgramUniform1f(g->prog[kTris], g->uSlamdt, float(s->hasPrev ? d->time - s->tprev : 0));
 
-  const int groups[kNStage] = {(g->nvert + BUOY_LOCAL - 1) / BUOY_LOCAL,
-                               (g->ntri + BUOY_LOCAL - 1) / BUOY_LOCAL, g->nhull,
-                               (g->ntri + BUOY_LOCAL - 1) / BUOY_LOCAL, g->nslot};
+  // per-item stages loop (grid-stride) past 65535 groups, GL's guaranteed
+  // GL_MAX_COMPUTE_WORK_GROUP_COUNT: beyond it glDispatchCompute does nothing
+  const int groups[kNStage] = {std::min(g->nvchunk, kMaxGroups),
+                               std::min(g->nchunk, kMaxGroups),
+                               (g->nslot + g->blocal - 1) / g->blocal};
+  for (int i = 0; i < 4; i++) {
+    gl.ActiveTexture(GL_TEXTURE0 + i);
+    gl.BindTexture(GL_TEXTURE_BUFFER, g->tex[i]);
+  }
   for (int st = 0; st < kNStage; st++) {
     timerBegin(&g->timer, g->tstage[st]);
     gl.UseProgram(g->prog[st]);
     if (groups[st] > 0) gl.DispatchCompute(groups[st], 1, 1);
-    gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     timerEnd(&g->timer, g->tstage[st]);
   }
   gl.UseProgram(0);
+  // the readback copies: a persistent read mapping of a buffer the shaders
+  // wrote stays zero on Mesa 22.3 llvmpipe (checked), and 160 bytes a body
+  // cost nothing next to the dispatches
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_OUT]);
   gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->out.size() * sizeof(float), g->out.data());
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   for (int i = 0; i < 14; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
+  for (int i = 3; i >= 0; i--) {
+    gl.ActiveTexture(GL_TEXTURE0 + i);
+    gl.BindTexture(GL_TEXTURE_BUFFER, 0);
+  }
   timerFrame(&g->timer);
   noteBad(*b, m, d, s);
 

@@ -56,14 +56,21 @@ GLuint build(const GladGLContext& gl, const std::string& label, const char* file
 
 }  // namespace
 
-GLuint glProgram(const GladGLContext& gl, const char* name, std::string* err) {
+GLuint glProgram(const GladGLContext& gl, const char* name, std::string* err,
+                 const std::string& defines) {
   const char* files = nullptr;
   const char* src = shaderSource(name, &files);
   if (!src) {
     *err = "shaders/" + std::string(name) + ": no such embedded shader";
     return 0;
   }
-  return build(gl, "shaders/" + std::string(name), files, src, err);
+  if (defines.empty()) return build(gl, "shaders/" + std::string(name), files, src, err);
+  // after the #version line, then #line 2 keeps the log's line numbers
+  std::string s = src;
+  size_t eol = s.find('\n');
+  eol = eol == std::string::npos ? s.size() : eol + 1;
+  s.insert(eol, defines + "#line 2 0\n");
+  return build(gl, "shaders/" + std::string(name), files, s.c_str(), err);
 }
 
 GLuint glProgramSource(const GladGLContext& gl, const char* label, const char* src,

@@ -21,8 +21,9 @@ const char* shaderName(int i);
 
 // compile and link shaders/NAME as a compute program, with gl's context
 // current: the program id, or 0 with the reason in err, which names the
-// file and holds the driver's log
-GLuint glProgram(const GladGLContext& gl, const char* name, std::string* err);
+// file and holds the driver's log; defines are lines put after its #version
+GLuint glProgram(const GladGLContext& gl, const char* name, std::string* err,
+                 const std::string& defines = "");
 
 // the same from source text; label names it in errors
 GLuint glProgramSource(const GladGLContext& gl, const char* label, const char* src,

@@ -12,8 +12,29 @@ namespace mjb {
 namespace glsl {
 #endif
 
-#define BUOY_LOCAL 64        // workgroup size of every stage
-#define BUOY_NPART 4         // per-triangle force families: pressure, viscous, drag, slam
+// workgroup sizes, tuned for Mesa llvmpipe, which runs a workgroup on one
+// thread, 8 invocations per SIMD vector (256-bit AVX2). One vector per
+// workgroup and long per-invocation loops win: at 200 Wigley 7744 boats,
+// CPU ms/step (tris local x per): 8x16 175, 8x64 163, 8x256 157, 16x64 174,
+// 64x16 201, 64x64 195; verts local 8 vs 64 at 8x64: 151 vs 163; 8x256 vs
+// 8x64 again: 148 vs 155 (and 64 vs 66 at 800 x 576). Chunks of 2048
+// triangles leave a lone small hull on one core, which costs < 0.1 ms.
+// MJBUOY_GL_GROUPS overrides them (gl.cc) by defining them first.
+#ifndef BUOY_VERT_LOCAL
+#define BUOY_VERT_LOCAL 8    // verts.comp: invocations per vertex chunk workgroup
+#endif
+#ifndef BUOY_LOCAL
+#define BUOY_LOCAL 8         // tris.comp: invocations per triangle chunk workgroup
+#endif
+#ifndef BUOY_PER
+#define BUOY_PER 256         // triangles (vertices) per invocation: chunk = local x per
+#endif
+#ifndef BUOY_BODY_LOCAL
+#define BUOY_BODY_LOCAL 8    // bodies.comp: bodies per workgroup
+#endif
+#define BUOY_NSUM 11         // vec4 sums per chunk: pressure F, T; viscous g, e g, c x g,
+                             // e c x g; drag F, T; slam F, T; wet area, lo, hi, sum A e
+#define BUOY_NPART 4         // per-body force families: pressure, viscous, drag, slam
 
 // bindings
 #define B_VERT 0     // GVert[]      static: hull vertices, body frame
@@ -23,9 +44,9 @@ namespace glsl {
 #define B_PHASE 4    // float[]      per step: phase of wave i at body b, b * nwave + i
 #define B_VOUT 5     // vec4[]       vertex: position rel. COM (xyz), height above water (w)
 #define B_LAB 6      // vec2[]       vertex: surface particle label rel. COM
-#define B_WET 7      // GWet[]       triangle: wet data
-#define B_TF 8       // vec4[]       triangle: force, torque per family (2 BUOY_NPART each)
-#define B_HOUT 9     // GHullOut[]   hull: flow and wet totals
+#define B_CHUNK 7    // GChunk[]     static: triangle chunks, one hull each
+#define B_CPART 8    // vec4[]       chunk invocation: BUOY_NSUM sums (tris.comp)
+#define B_VCHUNK 9   // GChunk[]     static: vertex chunks, one hull each
 #define B_OUT 10     // vec4[]       body: force, torque per family (2 x 5 each)
 #define B_SLAMPREV 11  // vec4[]     triangle: previous step's velocity (xyz), wet area (w)
 #define B_SLAMCUR 12   // vec4[]     triangle: this step's, written on its first call
@@ -47,9 +68,9 @@ struct GTri {
 
 struct GHull {
   int body;        // slot in GBody[]
-  int t0;          // first triangle
+  int c0;          // first chunk
+  int nc;          // chunks
   int nt;          // triangles
-  int pad;
   vec4 shape;      // area S [m^2], mass share [kg], form factor 1+k, vref [m/s]
   vec4 drag;       // C_PD1, C_PD2, f_P
   vec4 suction;    // C_SD1, C_SD2, f_S
@@ -82,21 +103,11 @@ struct GWave {
   float pad1;
 };
 
-struct GWet {
-  vec4 c;          // wet centroid rel. COM (xyz), wet area (w)
-  vec4 n;          // outward unit normal (xyz), whole triangle's area (w)
-  vec4 e;          // wet polygon extent along the flow: min, max; centroid's (z)
-};
-
-struct GHullOut {
-  float wet;       // wet area [m^2]
-  float lo;        // wet extent along the flow [m]
-  float hi;
-  float sbar;      // area-weighted mean position, 0 rear .. 1 front
-  float cf;        // ITTC 1957 C_F
-  float pad0;
-  float pad1;
-  float pad2;
+struct GChunk {
+  int hull;
+  int t0;          // first triangle (vertex)
+  int nt;          // triangles (vertices), at most BUOY_LOCAL (BUOY_VERT_LOCAL) x BUOY_PER
+  int pad;
 };
 
 #ifdef __cplusplus
@@ -105,8 +116,7 @@ static_assert(sizeof(GTri) == 16, "std430 stride of GTri");
 static_assert(sizeof(GHull) == 96, "std430 stride of GHull");
 static_assert(sizeof(GBody) == 128, "std430 stride of GBody");
 static_assert(sizeof(GWave) == 32, "std430 stride of GWave");
-static_assert(sizeof(GWet) == 48, "std430 stride of GWet");
-static_assert(sizeof(GHullOut) == 32, "std430 stride of GHullOut");
+static_assert(sizeof(GChunk) == 16, "std430 stride of GChunk");
 }  // namespace glsl
 }  // namespace mjb
 #endif

@@ -29,7 +29,9 @@ vec2 seaLabel(int b, vec2 x, vec2 a) {
     float det = j00 * j11 - j01 * j01;
     vec2 st = vec2(j11 * f.x - j01 * f.y, j00 * f.y - j01 * f.x) / det;
     a -= st;
-    if (dot(st, st) < 1e-14) break;
+    // a 0.1 mm step: Newton's next error is ~k (k Q A) |st|^2 < 1e-8 m, below
+    // float's resolution of the label; 1e-7 m would never be reached in float
+    if (dot(st, st) < 1e-8) break;
   }
   return a;
 }

@@ -167,6 +167,58 @@ TEST(GlParity, WholeRunsAgree) {
   }
 }
 
+TEST(GlParity, PastTheWorkgroupLimit) {
+  // GL guarantees only 65535 workgroups per dispatch; with one vertex and
+  // one triangle per workgroup (MJBUOY_GL_GROUPS) 17 Wigley 7744 hulls need
+  // 65841 vertex and 131580 triangle workgroups, so the stages must loop
+  // past the limit (before, such a dispatch silently did nothing)
+  std::ostringstream s;
+  s << "<mujoco><asset><mesh name=\"w\" file=\"" MJB_MODELS "/meshes/wigley_7744.obj\"/>"
+    << "</asset><custom><text name=\"mjbuoy.hulls\" data=\"h*\"/>"
+    << "<numeric name=\"mjbuoy.wave.swell\" data=\"0.3 20 20 0 0.5\"/></custom><worldbody>";
+  for (int i = 0; i < 17; i++) {
+    s << "<body pos=\"" << 6 * (i % 5) << " " << 2 * (i / 5) << " " << 0.02 * (i % 3)
+      << "\" euler=\"" << 3 * (i % 4) << " 0 " << 10 * i << "\"><freejoint/>"
+      << "<inertial pos=\"0 0 -0.08\" mass=\"176.2\" diaginertia=\"6.02 237.28 238.6\"/>"
+      << "<geom name=\"h" << i << "\" type=\"mesh\" mesh=\"w\"/></body>";
+  }
+  s << "</worldbody></mujoco>";
+  setenv("MJBUOY_GL_GROUPS", "1 1 1 1", 1);
+  Pair p(s.str());
+  unsetenv("MJBUOY_GL_GROUPS");
+  ASSERT_TRUE(p.bc && p.bg);
+  EXPECT_EQ(mjb_info(p.bg).ntri, 17 * 7740);
+  for (mjData* d : {p.dc, p.dg}) {
+    for (int j = 0; j < 17 * 6; j++) d->qvel[j] = 0.3 * std::sin(1.7 * j);
+  }
+  mj_step(p.mc, p.dc);
+  mj_step(p.mg, p.dg);
+  const mjtNum* wc = mjb_wrench(p.bc, p.dc);
+  const mjtNum* wg = mjb_wrench(p.bg, p.dg);
+  double lift = 0;
+  for (int b = 1; b <= 17; b++) {
+    double weight = p.mc->body_mass[b] * kG;
+    lift += wc[6 * b + 2] / weight / 17;
+    for (int j = 0; j < 6; j++) {
+      EXPECT_NEAR(wg[6 * b + j], wc[6 * b + j], 1e-4 * std::max(std::fabs(wc[6 * b + j]), weight))
+          << "body " << b << " component " << j;
+    }
+  }
+  EXPECT_GT(lift, 0.5);  // most of the fleet floats: the comparison means something
+}
+
+TEST(GlBackend, BadWorkgroupSizesAreNamed) {
+  setenv("MJBUOY_GL_GROUPS", "64 48 4 8", 1);
+  mjModel* m = mj_loadXML(MJB_MODELS "/barge.xml", nullptr, nullptr, 0);
+  ASSERT_TRUE(m);
+  char e[1024];
+  EXPECT_FALSE(mjb_attach(m, "gl", e, sizeof(e)));
+  unsetenv("MJBUOY_GL_GROUPS");
+  EXPECT_NE(std::string(e).find("MJBUOY_GL_GROUPS=\"64 48 4 8\""), std::string::npos) << e;
+  EXPECT_NE(std::string(e).find("powers of two"), std::string::npos) << e;
+  mj_deleteModel(m);
+}
+
 TEST(GlBackend, AutoFallsBackAndGlFailsWithoutDisplay) {
   // MJBUOY_EGL=none simulates a machine without an EGL display
   setenv("MJBUOY_EGL", "none", 1);

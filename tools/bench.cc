@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <sstream>
 #include <string>
+#include <ctime>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -51,17 +52,27 @@ static mjModel* compile(const std::string& xml) {
 
 // the callback mjbuoy installed, timed
 static mjfGeneric ginner = nullptr;
-static double ghydro = 0;
+static double ghydro = 0, gcpu = 0;
+// CPU time of all the process's threads (llvmpipe's too) [s]: unlike wall
+// time, it barely moves when other processes load the machine
+static double cpuTime() {
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
 static void timed(const mjModel* m, mjData* d) {
+  double c0 = cpuTime();
   auto t0 = Clock::now();
   ginner(m, d);
   ghydro += std::chrono::duration<double>(Clock::now() - t0).count();
+  gcpu += cpuTime() - c0;
 }
 
 struct Cell {
   int boats, tris, ntri;
   std::string backend;
   double hydro, step, bare;  // ms per step (median of repetitions)
+  double cpu;                // CPU ms (all threads) in mjbuoy per step (median)
   std::vector<std::pair<std::string, double>> stages;
 };
 
@@ -76,7 +87,7 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
   if (!m) return false;
   mjData* d = mj_makeData(m);
   // bare step first, then with mjbuoy
-  std::vector<double> bare, full, hydro;
+  std::vector<double> bare, full, hydro, cpu;
   for (int r = 0; r < reps; r++) {
     mj_resetData(m, d);
     auto t0 = Clock::now();
@@ -95,18 +106,19 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
   mj_resetData(m, d);
   for (int i = 0; i < 5; i++) mj_step(m, d);  // warm up
   for (int r = 0; r < reps; r++) {
-    ghydro = 0;
+    ghydro = gcpu = 0;
     auto t0 = Clock::now();
     for (int i = 0; i < steps; i++) mj_step(m, d);
     full.push_back(std::chrono::duration<double>(Clock::now() - t0).count() * 1e3 / steps);
     hydro.push_back(ghydro * 1e3 / steps);
+    cpu.push_back(gcpu * 1e3 / steps);
   }
   mjcb_passive = ginner;
   const char* sn[8];
   double ms[8];
   int ns = mjb_stageTimes(b, sn, ms, 8);
   *c = Cell{boats, tris, mjb_info(b).ntri, mjb_info(b).backend, median(hydro), median(full),
-            median(bare), {}};
+            median(bare), median(cpu), {}};
   for (int i = 0; i < ns; i++) c->stages.emplace_back(sn[i], ms[i]);
   mjb_unbindData(b, d);
   mj_deleteData(d);
@@ -190,8 +202,8 @@ int main(int argc, char** argv) {
     for (size_t i = 0; i < cells.size(); i++) {
       const Cell& c = cells[i];
       std::fprintf(f, "  {\"backend\": \"%s\", \"boats\": %d, \"tris\": %d, \"triangles\": %d, "
-                   "\"hydro_ms\": %.6f, \"step_ms\": %.6f, \"bare_ms\": %.6f, \"stages\": {",
-                   c.backend.c_str(), c.boats, c.tris, c.ntri, c.hydro, c.step, c.bare);
+                   "\"hydro_ms\": %.6f, \"hydro_cpu_ms\": %.6f, \"step_ms\": %.6f, \"bare_ms\": %.6f, \"stages\": {",
+                   c.backend.c_str(), c.boats, c.tris, c.ntri, c.hydro, c.cpu, c.step, c.bare);
       for (size_t j = 0; j < c.stages.size(); j++) {
         std::fprintf(f, "%s\"%s\": %.6f", j ? ", " : "", c.stages[j].first.c_str(),
                      c.stages[j].second);

@@ -1,0 +1,172 @@
+#version 430
+// stage 2, one workgroup per chunk of one hull's triangles (GChunk), each
+// invocation BUOY_PER of them: cut each triangle at the waterline and
+// integrate the pressure exactly (mjbuoy/pressure.cc), then Kerner's
+// viscous resistance, pressure/suction drag and slamming at the wet centroid
+// (mjbuoy/hydro.cc); each invocation sums its triangles in a fixed order,
+// so no per-triangle buffer. The viscous force needs the hull's wetted length and sbar, known
+// only after all its triangles: its per-triangle factor (1 + sbar - s_k),
+// s_k = (e_k - lo) / len, is linear in e_k, so the chunk keeps sum g and
+// sum e g (g = A |v|^2 t / |t|) and bodies.comp applies the factor.
+#include "shared.h"
+#include "pipeline.h"
+#include "sea.glsl"
+
+layout(local_size_x = BUOY_LOCAL) in;
+layout(std430, binding = B_HULL) readonly buffer Hulls { GHull hull[]; };
+layout(std430, binding = B_BODY) readonly buffer Bodies { GBody body[]; };
+layout(std430, binding = B_CHUNK) readonly buffer Chunks { GChunk chunk[]; };
+layout(std430, binding = B_CPART) writeonly buffer Cpart { vec4 cpart[]; };  // per invocation
+layout(std430, binding = B_SLAMPREV) readonly buffer Sprev { vec4 sprev[]; };
+layout(std430, binding = B_SLAMCUR) writeonly buffer Scur { vec4 scur[]; };
+
+uniform samplerBuffer tVout;   // B_VOUT, B_LAB and B_TRI as buffer textures
+uniform samplerBuffer tLab;
+uniform isamplerBuffer tTri;
+
+uniform int nchunk;
+uniform float rhog;    // rho g [N/m^3]
+uniform float rho;     // [kg/m^3]
+uniform int hasprev;   // slamming history exists
+uniform int first;     // first call of this step: record the history
+uniform float slamdt;  // time since the previous step's first call [s]
+
+// per-invocation sums over its triangles (BUOY_NSUM vec4, see pipeline.h)
+vec3 pF, pT, vG, vEG, vCG, vECG, dF, dT, sF, sT;
+vec4 wt;
+
+// exact moments of pressure depth d over triangle q (fan piece of the wet polygon)
+void piece(vec3 q0, vec3 q1, vec3 q2, float d0, float d1, float d2, vec3 n, inout float area,
+           inout float dA, inout vec3 drA, inout vec3 rA) {
+  float A = 0.5 * dot(cross(q1 - q0, q2 - q0), n);
+  float sd = d0 + d1 + d2;
+  vec3 sr = q0 + q1 + q2;
+  area += A;
+  dA += A * sd / 3.0;
+  drA += A / 12.0 * (d0 * q0 + d1 * q1 + d2 * q2 + sd * sr);
+  rA += A * sr / 3.0;
+}
+
+void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) {
+  ivec4 t = texelFetch(tTri, k);
+  vec4 P0 = texelFetch(tVout, t.x), P1 = texelFetch(tVout, t.y), P2 = texelFetch(tVout, t.z);
+  vec3 cr = cross(P1.xyz - P0.xyz, P2.xyz - P0.xyz);
+  float tlen = length(cr);
+  bool w0 = P0.w <= 0.0, w1 = P1.w <= 0.0, w2 = P2.w <= 0.0;
+  bool dry = P0.w >= 0.0 && P1.w >= 0.0 && P2.w >= 0.0;
+  if (tlen <= 0.0 || dry) {
+    if (first != 0) scur[k] = vec4(0.0);
+    return;
+  }
+  vec3 n = cr / tlen;
+  // Sutherland-Hodgman against h <= 0 without indexing arrays (which
+  // llvmpipe spills): rotate the odd vertex (the only wet one, or the only
+  // dry one) to the front, keeping the winding; the wet part is one
+  // triangle, or a quad as two
+  int nw = int(w0) + int(w1) + int(w2);
+  bool o0 = w0 == (nw == 1), o1 = w1 == (nw == 1);
+  vec4 a = o0 ? P0 : o1 ? P1 : P2;
+  vec4 bq = o0 ? P1 : o1 ? P2 : P0;
+  vec4 c = o0 ? P2 : o1 ? P0 : P1;
+  vec3 pab = a.xyz + a.w / (a.w - bq.w) * (bq.xyz - a.xyz);
+  vec3 pca = a.xyz + a.w / (a.w - c.w) * (c.xyz - a.xyz);
+  float area = 0.0, dA = 0.0;
+  vec3 drA = vec3(0.0), rA = vec3(0.0);
+  vec3 q0, q1, q2;
+  if (nw == 3) {
+    q0 = P0.xyz; q1 = P1.xyz; q2 = P2.xyz;
+    piece(q0, q1, q2, -P0.w, -P1.w, -P2.w, n, area, dA, drA, rA);
+  } else if (nw == 1) {
+    q0 = a.xyz; q1 = pab; q2 = pca;
+    piece(q0, q1, q2, -a.w, 0.0, 0.0, n, area, dA, drA, rA);
+  } else {
+    q0 = pab; q1 = bq.xyz; q2 = c.xyz;
+    piece(q0, q1, q2, 0.0, -bq.w, -c.w, n, area, dA, drA, rA);
+    piece(pab, c.xyz, pca, 0.0, -c.w, 0.0, n, area, dA, drA, rA);
+  }
+  if (!(area > 0.0)) {
+    if (first != 0) scur[k] = vec4(0.0);
+    return;
+  }
+  float e0 = dot(q0, dir), e1 = dot(q1, dir), e2 = dot(q2, dir);
+  float e3 = nw == 2 ? dot(pca, dir) : e0;
+  float A = area;
+  vec3 cc = rA / A;
+  float ez = dot(cc, dir);
+  wt += vec4(A, 0.0, 0.0, A * ez);
+  wt.y = min(wt.y, min(min(e0, e1), min(e2, e3)));
+  wt.z = max(wt.z, max(max(e0, e1), max(e2, e3)));
+  pF -= rhog * dA * n;
+  pT -= rhog * cross(drA, n);
+
+  // flow-relative velocity: point velocity minus the water's there; the
+  // label search starts from the mean of the vertex labels
+  vec2 l3 = texelFetch(tLab, t.x).xy + texelFetch(tLab, t.y).xy + texelFetch(tLab, t.z).xy;
+  vec2 la = seaLabel(b, cc.xy, l3 / 3.0);
+  float zb = min(cc.z + zc - seaEta(b, la), 0.0);
+  vec3 v = vlin + cross(vang, cc) - seaVelocity(b, la, zb);
+  float v2 = dot(v, v), sp = sqrt(v2);
+
+  // viscous: 0.5 rho C_F (1+k_i) (1 + sbar - s_k) A |v|^2 against the
+  // tangential flow; here only g = A |v|^2 t / |t| and e_k g
+  vec3 tg = v - dot(v, n) * n;
+  float tl = length(tg);
+  if (tl > 1e-6 * sp) {
+    vec3 g = A * v2 / tl * tg, cg = cross(cc, g);
+    vG += g;
+    vEG += ez * g;
+    vCG += cg;
+    vECG += ez * cg;
+  }
+
+  // pressure (cos > 0) and suction (cos < 0) drag
+  float cs = sp > 0.0 ? dot(v, n) / sp : 0.0;
+  // (one pow for both: SIMD lanes of either sign would run both branches)
+  if (sp > 0.0 && cs != 0.0) {
+    float u = sp / hl.shape.w;
+    vec3 k = cs > 0.0 ? -hl.drag.xyz : hl.suction.xyz;
+    float s = (k.x * u + k.y * u * u) * A * pow(abs(cs), cs > 0.0 ? hl.drag.z : hl.suction.z);
+    dF += s * n;
+    dT += cross(cc, s * n);
+  }
+
+  // slamming: Gamma = |A v - A' v'| / (S dt), stopping force m v (2A/S_hull) / dt
+  if (hasprev != 0 && hl.slam.x > 0.0 && slamdt > 0.0 && cs > 0.0) {
+    vec4 pv = sprev[k];
+    float gamma = length(A * v - pv.w * pv.xyz) / (0.5 * tlen * slamdt);
+    float r = min(gamma / hl.slam.y, 1.0);
+    float s = -hl.slam.x * pow(r, hl.slam.z) * cs * hl.shape.y * 2.0 * A / hl.shape.x / slamdt;
+    sF += s * v;
+    sT += cross(cc, s * v);
+  }
+  if (first != 0) scur[k] = vec4(v, A);
+}
+
+void main() {
+  int l = int(gl_LocalInvocationID.x);
+  // loops past 65535 chunks, GL's guaranteed workgroup count (uniform per group)
+  for (int ci = int(gl_WorkGroupID.x); ci < nchunk; ci += int(gl_NumWorkGroups.x)) {
+    GChunk ch = chunk[ci];
+    GHull hl = hull[ch.hull];
+    int b = hl.body;
+    vec3 dir = body[b].flow.xyz, vlin = body[b].vlin.xyz, vang = body[b].vang.xyz;
+    float zc = body[b].orig.w;
+    pF = pT = vG = vEG = vCG = vECG = dF = dT = sF = sT = vec3(0.0);
+    wt = vec4(0.0, 1e30, -1e30, 0.0);
+    for (int j = l; j < ch.nt; j += BUOY_LOCAL) triangle(ch.t0 + j, b, hl, dir, vlin, vang, zc);
+    // no shared memory and no barrier (llvmpipe runs barrier shaders as
+    // coroutines): each invocation stores its sums, bodies.comp adds them
+    int o = BUOY_NSUM * (BUOY_LOCAL * ci + l);
+    cpart[o] = vec4(pF, 0.0);
+    cpart[o + 1] = vec4(pT, 0.0);
+    cpart[o + 2] = vec4(vG, 0.0);
+    cpart[o + 3] = vec4(vEG, 0.0);
+    cpart[o + 4] = vec4(vCG, 0.0);
+    cpart[o + 5] = vec4(vECG, 0.0);
+    cpart[o + 6] = vec4(dF, 0.0);
+    cpart[o + 7] = vec4(dT, 0.0);
+    cpart[o + 8] = vec4(sF, 0.0);
+    cpart[o + 9] = vec4(sT, 0.0);
+    cpart[o + 10] = wt;
+  }
+}
