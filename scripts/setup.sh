@@ -20,6 +20,7 @@ pkgs=(
   ffmpeg                       # mjbuoy-sim --render: encodes the clip (H.264 MP4); ffprobe for its test
   libpng-dev                   # mjbuoy-sim --snapshot: PNG stills
   gnuplot-nox                  # mjbuoy-sim --plot: heave, roll and pitch plots
+  clang libclang-rt-14-dev     # libFuzzer (-fsanitize=fuzzer) for tests/fuzz, run by scripts/test.sh
 )
 
 missing=()
