@@ -80,7 +80,13 @@ TEST(Sea, MeanOfSteepSurfaceSitsBelowOrbitCentres) {
 // k depth >> 1 the Airy profile is the deep-water exp(k z) (physics.md 6)
 TEST(Sea, FiniteDepthVelocityHasTheDeepWaterLimit) {
   mjb::Sea deep, fin;
-  deep.waves.push_back(mjb::Wave{0.05, 1.0, 30, 10, 0.5});
+  mjb::Wave w{};
+  w.amp = 0.05;  // m
+  w.len = 1.0;   // m: k = 6.28 rad/m
+  w.dir = 30;    // deg
+  w.phase = 10;  // deg
+  w.steep = 0.5;
+  deep.waves.push_back(w);
   fin = deep;
   fin.depth = 200;
   deep.derive();
