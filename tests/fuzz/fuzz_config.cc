@@ -7,8 +7,9 @@
 // mutations explore valid and invalid names, value counts and values.
 // The model is compiled by MuJoCo from memory (mjVFS) and attached with the
 // cpu backend. Must hold: a failed attach says why (non-empty error); an
-// attached model steps with a finite wrench (every part) and without
-// MuJoCo's bad-qacc/qvel/qpos warnings. Anything else traps.
+// attached model steps 5 times with a finite wrench (every part) and finite
+// qacc while its state stays plausible (|qpos|, |qvel| < 1e6). Anything
+// else traps.
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -67,8 +68,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     return 0;
   }
   mjData* d = mj_makeData(m);
+  // mj_forward + mj_Euler is mj_step without MuJoCo's own divergence check
+  // (a reset at |qacc| > 1e10 would hide a NaN); steps stop once the state
+  // leaves what a boat can do (accepted but absurd values, e.g. a current
+  // of 5e5 m/s, accelerate it past any bound: finite, not our concern)
   for (int s = 0; s < 5; s++) {
-    mj_step(m, d);
+    bool plausible = true;
+    for (int i = 0; i < m->nq; i++) plausible = plausible && std::fabs(d->qpos[i]) < 1e6;
+    for (int i = 0; i < m->nv; i++) plausible = plausible && std::fabs(d->qvel[i]) < 1e6;
+    if (!plausible) break;
+    mj_forward(m, d);
     for (int p = -1; p < mjbNPART; p++) {
       const mjtNum* w = p < 0 ? mjb_wrench(b, d) : mjb_wrenchPart(b, d, p);
       // without hulls mjbuoy adds no force and may never see d
@@ -78,10 +87,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         REQUIRE(std::isfinite(w[i]), "wrench part " + std::to_string(p) + "\n" + xml);
       }
     }
-    for (int i = 0; i < m->nv; i++) REQUIRE(std::isfinite(d->qacc[i]), xml);
-    REQUIRE(d->warning[mjWARN_BADQACC].number == 0, "bad qacc\n" + xml);
-    REQUIRE(d->warning[mjWARN_BADQVEL].number == 0, "bad qvel\n" + xml);
-    REQUIRE(d->warning[mjWARN_BADQPOS].number == 0, "bad qpos\n" + xml);
+    for (int i = 0; i < m->nv; i++) REQUIRE(std::isfinite(d->qacc[i]), "qacc\n" + xml);
+    mj_Euler(m, d);
   }
   mj_deleteData(d);
   mjb_detach(b);
