@@ -140,7 +140,8 @@ void kernels(FuzzedDataProvider& in) {
   REQUIRE(finite(f, 3));
   // along n: pushes back on an advancing face, pulls on a retreating one
   double fn = dot(f, w.n);
-  REQUIRE(std::fabs(norm(f) - std::fabs(fn)) <= 1e-9 * norm(f) + 1e-300);
+  // componentwise, since |f|^2 underflows for forces below 1e-154 N
+  for (int j = 0; j < 3; j++) REQUIRE(std::fabs(f[j] - fn * w.n[j]) <= 1e-9 * std::fabs(fn) + 1e-300);
   REQUIRE(!(vn > 0) || fn <= 0);
   REQUIRE(!(vn < 0) || fn >= 0);
 
