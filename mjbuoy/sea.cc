@@ -105,8 +105,16 @@ void Sea::velocityOf(const double a[2], double t, double zb, double v[3]) const 
     if (depth > 0) {
       // finite depth Airy profile, 1 at the surface
       double kd = w.k * depth, kz = w.k * (zb + depth);
-      fh = std::cosh(kz) / std::cosh(kd);
-      fz = std::sinh(kz) / std::sinh(kd);
+      if (kd < 20) {
+        fh = std::cosh(kz) / std::cosh(kd);
+        fz = std::sinh(kz) / std::sinh(kd);
+      } else {
+        // cosh, sinh overflow past 710 (inf / inf = NaN, e.g. 1 m waves in
+        // 200 m of water); the same ratios as e^(kz-kd) (1 +- e^-2kz) / (1 +- e^-2kd)
+        double e = std::exp(kz - kd), z2 = std::exp(-2 * kz), d2 = std::exp(-2 * kd);
+        fh = e * (1 + z2) / (1 + d2);
+        fz = e * (1 - z2) / (1 - d2);
+      }
     } else {
       fh = fz = std::exp(w.k * zb);
     }

@@ -21,6 +21,7 @@ pkgs=(
   libpng-dev                   # mjbuoy-sim --snapshot: PNG stills
   gnuplot-nox                  # mjbuoy-sim --plot: heave, roll and pitch plots
   heaptrack                    # soak.fleet.3600s: records every allocation of the hour-long soak (tests/check_heaptrack.py)
+  clang libclang-rt-14-dev     # libFuzzer (-fsanitize=fuzzer) for tests/fuzz, run by scripts/test.sh
 )
 
 missing=()

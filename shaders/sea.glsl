@@ -54,8 +54,15 @@ vec3 seaVelocity(int b, vec2 a, float zb) {
     float fh, fz;
     if (depth > 0.0) {
       float kd = wave[i].k * depth, kz = wave[i].k * (zb + depth);
-      fh = cosh(kz) / cosh(kd);
-      fz = sinh(kz) / sinh(kd);
+      if (kd < 20.0) {
+        fh = cosh(kz) / cosh(kd);
+        fz = sinh(kz) / sinh(kd);
+      } else {
+        // cosh, sinh overflow in float past 89 (inf / inf); as mjbuoy/sea.cc
+        float e = exp(kz - kd), z2 = exp(-2.0 * kz);
+        fh = e * (1.0 + z2);
+        fz = e * (1.0 - z2);
+      }
     } else {
       fh = fz = exp(wave[i].k * zb);
     }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "sea.h"
 #include "testutil.h"
 
 namespace mjbt {
@@ -73,3 +74,37 @@ TEST(Sea, MeanOfSteepSurfaceSitsBelowOrbitCentres) {
 
 }  // namespace
 }  // namespace mjbt
+
+// regression (tests/fuzz: fuzz_kernel): short waves on deep finite water,
+// k depth = 1257 here, gave cosh(kz) / cosh(kd) = inf / inf = NaN. For
+// k depth >> 1 the Airy profile is the deep-water exp(k z) (physics.md 6)
+TEST(Sea, FiniteDepthVelocityHasTheDeepWaterLimit) {
+  mjb::Sea deep, fin;
+  mjb::Wave w{};
+  w.amp = 0.05;  // m
+  w.len = 1.0;   // m: k = 6.28 rad/m
+  w.dir = 30;    // deg
+  w.phase = 10;  // deg
+  w.steep = 0.5;
+  deep.waves.push_back(w);
+  fin = deep;
+  fin.depth = 200;
+  deep.derive();
+  fin.derive();
+  for (double z : {0.0, -0.05, -0.3, -1.0, -5.0}) {
+    double p[3] = {0.3, -0.7, z}, vd[3], vf[3];
+    deep.velocity(p, 2.1, vd);
+    fin.velocity(p, 2.1, vf);
+    for (int j = 0; j < 3; j++) EXPECT_NEAR(vf[j], vd[j], 1e-12 * (1 + std::fabs(vd[j]))) << z;
+  }
+  // the two forms of the profile meet at k depth = 20
+  mjb::Sea a = fin, b = fin;
+  a.depth = 20 / fin.waves[0].k * (1 - 1e-12);
+  b.depth = 20 / fin.waves[0].k * (1 + 1e-12);
+  a.derive();
+  b.derive();
+  double p[3] = {0.3, -0.7, -0.2}, va[3], vb[3];
+  a.velocity(p, 2.1, va);
+  b.velocity(p, 2.1, vb);
+  for (int j = 0; j < 3; j++) EXPECT_NEAR(va[j], vb[j], 1e-9 * (1 + std::fabs(va[j])));
+}

@@ -105,6 +105,10 @@ struct Scenario {
 // parse and validate a scenario file (throws Invalid)
 Scenario parseScenario(const std::string& file);
 
+// the same for XML text in memory; file names it in errors and is the
+// directory that model and mesh paths are relative to (tests/fuzz)
+Scenario parseScenarioText(const std::string& xml, const std::string& file);
+
 // the model with the scenario applied, attached and initialised
 struct Sim {
   mjModel* m = nullptr;

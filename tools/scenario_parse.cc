@@ -410,14 +410,29 @@ static void parseInit(const El& e, Scenario& s) {
   s.inits.push_back(in);
 }
 
+static Scenario parseDoc(const tinyxml2::XMLDocument& doc, tinyxml2::XMLError err,
+                        const std::string& file);
+
 Scenario parseScenario(const std::string& file) {
-  Scenario s;
-  s.file = file;
   tinyxml2::XMLDocument doc;
   tinyxml2::XMLError err = doc.LoadFile(file.c_str());
   if (err == tinyxml2::XML_ERROR_FILE_NOT_FOUND || err == tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED) {
     throw Invalid(file, 0, "cannot open the scenario file");
   }
+  return parseDoc(doc, err, file);
+}
+
+Scenario parseScenarioText(const std::string& xml, const std::string& file) {
+  tinyxml2::XMLDocument doc;
+  tinyxml2::XMLError err = doc.Parse(xml.data(), xml.size());
+  return parseDoc(doc, err, file);
+}
+
+// the document as loaded or parsed; err: tinyxml2's status
+static Scenario parseDoc(const tinyxml2::XMLDocument& doc, tinyxml2::XMLError err,
+                        const std::string& file) {
+  Scenario s;
+  s.file = file;
   if (err != tinyxml2::XML_SUCCESS) {
     std::string why = doc.ErrorStr();
     // tinyxml2 says "Error=XML_... ErrorID=N (0x..) Line number=L: detail"
