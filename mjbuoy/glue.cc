@@ -243,6 +243,11 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
   std::vector<std::string>& warn = B.cfg.warn;
   for (int g : order) {
     size_t k = std::find(B.cfg.geom.begin(), B.cfg.geom.end(), g) - B.cfg.geom.begin();
+    std::string se = mjb::sizeError(m, g);
+    if (!se.empty()) {
+      copyError(se, error, error_sz);
+      return nullptr;
+    }
     mjb::Mesh mesh = mjb::hullMesh(m, g, &warn);
     mjb::Hull h;
     h.geom = g;

@@ -161,5 +161,39 @@ TEST(RobustLimits, ShortWavesOverDeepFiniteWaterStayFinite) {
   EXPECT_STREQ(mjb_notices(fin.b, fin.d), "");
 }
 
+// a primitive hull too small to have area (issue 11 item 16): the error
+// names the geom, its size and the minimum, not "give it a closed mesh"
+TEST(RobustLimits, TinyPrimitiveNamesItsSizeAndTheMinimum) {
+  auto xml = [](const char* type, const char* size) {
+    return std::string("<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"g\"/></custom>"
+                       "<worldbody><body pos=\"0 0 1\"><freejoint/>"
+                       "<inertial pos=\"0 0 0\" mass=\"1\" diaginertia=\"1 1 1\"/>"
+                       "<geom name=\"g\" type=\"") + type + "\" size=\"" + size +
+           "\" mass=\"0\"/></body></worldbody></mujoco>";
+  };
+  struct Case {
+    const char *type, *size, *what;
+  } bad[] = {{"sphere", "1e-200", "radius is 1e-200 m"},
+             {"box", "1 1e-5 1", "y half-size is 1e-05 m"},
+             {"capsule", "0.5 5e-5", "half-length is 5e-05 m"}};
+  for (const Case& c : bad) {
+    std::string e = attachError(xml(c.type, c.size));
+    EXPECT_NE(e.find("hull geom \"g\""), std::string::npos) << e;
+    EXPECT_NE(e.find(std::string("(") + c.type + ") is too small"), std::string::npos) << e;
+    EXPECT_NE(e.find(c.what), std::string::npos) << e;
+    EXPECT_NE(e.find("minimum 0.0001 m"), std::string::npos) << e;
+    EXPECT_EQ(e.find("closed triangle mesh"), std::string::npos) << e;
+  }
+  // at the minimum: accepted; the sphere fully under water feels
+  // rho g 4/3 pi r^3 (hydrostatics; the tessellation keeps the volume exact)
+  std::string ok = xml("sphere", "1e-4");
+  ok.replace(ok.find("pos=\"0 0 1\""), 11, "pos=\"0 0 -1\"");
+  Scene s(ok);
+  ASSERT_TRUE(s.ok()) << s.err;
+  mj_forward(s.m, s.d);
+  double F = kRho * kG * 4.0 / 3 * M_PI * 1e-12;
+  EXPECT_NEAR(mjb_wrench(s.b, s.d)[6 * 1 + 2], F, 1e-6 * F);
+}
+
 }  // namespace
 }  // namespace mjbt
