@@ -28,6 +28,20 @@ typedef struct mjbInfo_ {
   const char* renderer;  // device it runs on (CPU name or GL renderer)
 } mjbInfo;
 
+// check the mesh files an MJCF file names, before mj_loadXML reads it:
+// MuJoCo 2.2 loads an OBJ face index out of range (reading past its vertex
+// array) and non-finite vertices ("v nan 0 0") without a word, and its
+// compiled mjModel keeps no file names, so mjb_attach cannot check them.
+// Follows <include> and <compiler meshdir/assetdir>; checks every .obj (face
+// indices in range and not 0, vertices finite) and binary .stl (size,
+// vertices finite). Returns 1 if nothing is wrong (a missing or malformed
+// file is left to MuJoCo's loader), else 0 with the file, line and fix in
+// error (error_sz bytes). Every mjbuoy tool calls it before mj_loadXML.
+int mjb_checkModelFile(const char* xmlpath, char* error, int error_sz);
+
+// the same check of one .obj or .stl mesh file (other extensions: 1)
+int mjb_checkMeshFile(const char* path, char* error, int error_sz);
+
 // attach mjbuoy to a compiled model. Reads and validates the "mjbuoy.*"
 // custom entries, builds the hulls and installs the mjcb_passive callback
 // (an mjcb_passive installed before is chained and still called).
