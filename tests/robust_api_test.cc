@@ -181,33 +181,42 @@ TEST(RobustApi, NoticesAreClearedByResetSoALaterFaultIsReported) {
 
 TEST(RobustApi, CopyDataCarriesTheSlammingHistory) {
   // the box dropped from 0.3 m above floating: it meets the water at
-  // t = sqrt(2 * 0.3 / g) = 0.247 s, where slamming acts
+  // t = sqrt(2 * 0.3 / g) = 0.247 s, where slamming acts; both backends
+  // (gl keeps the history in GPU buffers)
   std::string xml = kBox;
   xml.replace(xml.find("pos=\"0 0 0\""), 11, "pos=\"0 0 0.3\"");
-  Scene s(xml);
-  ASSERT_TRUE(s.ok()) << s.err;
-  int body = s.body("box");
-  for (int k = 0; k < 130; k++) mj_step(s.m, s.d);  // 0.26 s: in the water
-  mjData* d1 = mj_makeData(s.m);
-  mjData* d2 = mj_makeData(s.m);
-  mj_copyData(d1, s.m, s.d);
-  ASSERT_EQ(mjb_copyData(s.b, d1, s.d), 1);
-  mj_copyData(d2, s.m, s.d);  // without mjbuoy's state
-  mj_step(s.m, s.d);
-  mj_step(s.m, d1);
-  mj_step(s.m, d2);
-  double slam = mjb_wrenchPart(s.b, s.d, mjbPART_SLAM)[6 * body + 2];
-  EXPECT_GT(slam, 0) << "slamming must act at the copy for the test to show anything";
-  EXPECT_EQ(mjb_wrenchPart(s.b, d1, mjbPART_SLAM)[6 * body + 2], slam);
-  // mj_copyData alone: no history, so no Gamma and no slamming in that step
-  EXPECT_EQ(mjb_wrenchPart(s.b, d2, mjbPART_SLAM)[6 * body + 2], 0);
-  for (int k = 0; k < 100; k++) {
-    mj_step(s.m, s.d);
-    mj_step(s.m, d1);
+  for (const char* backend : {"cpu", "gl"}) {
+    SCOPED_TRACE(backend);
+    mjModel* m = loadXML(xml);
+    ASSERT_TRUE(m);
+    char e[1000];
+    mjbBuoy* b = mjb_attach(m, backend, e, sizeof(e));
+    ASSERT_TRUE(b) << e;
+    mjData* d = mj_makeData(m);
+    const int body = 1;
+    for (int k = 0; k < 130; k++) mj_step(m, d);  // 0.26 s: in the water
+    mjData* d1 = mj_makeData(m);
+    mjData* d2 = mj_makeData(m);
+    mj_copyData(d1, m, d);
+    ASSERT_EQ(mjb_copyData(b, d1, d), 1);
+    mj_copyData(d2, m, d);  // without mjbuoy's state
+    mj_step(m, d);
+    mj_step(m, d1);
+    mj_step(m, d2);
+    double slam = mjb_wrenchPart(b, d, mjbPART_SLAM)[6 * body + 2];
+    EXPECT_GT(slam, 0) << "slamming must act at the copy for the test to show anything";
+    EXPECT_EQ(mjb_wrenchPart(b, d1, mjbPART_SLAM)[6 * body + 2], slam);
+    // mj_copyData alone: no history, so no Gamma and no slamming in that step
+    EXPECT_EQ(mjb_wrenchPart(b, d2, mjbPART_SLAM)[6 * body + 2], 0);
+    for (int k = 0; k < 100; k++) {
+      mj_step(m, d);
+      mj_step(m, d1);
+    }
+    for (int i = 0; i < m->nq; i++) EXPECT_EQ(d1->qpos[i], d->qpos[i]) << i;
+    for (mjData* x : {d, d1, d2}) mj_deleteData(x);
+    mjb_detach(b);
+    mj_deleteModel(m);
   }
-  for (int i = 0; i < s.m->nq; i++) EXPECT_EQ(d1->qpos[i], s.d->qpos[i]) << i;
-  mj_deleteData(d1);
-  mj_deleteData(d2);
 }
 
 TEST(RobustApi, CopiedModelWithoutAttachWarnsOnce) {
