@@ -84,6 +84,12 @@ struct State {
   bool hasPrev = false;
   unsigned slambuf[2] = {0, 0};  // gl backend: history buffers, [slamcur] = this step's
   int slamcur = 0;
+  // stamp of the mjData this state last served (glue.cc, docs/robustness.md):
+  // its buffer and its fwdVelocity count (the stage mjcb_passive runs in)
+  // at the last callback; with tcur above. A count or time below these, or
+  // another buffer, means d is a new mjData at a recycled address or reset
+  const void* buf = nullptr;
+  long vcount = -1;
 };
 
 // slamming clock: kSameStep for another call within the current step,
@@ -108,6 +114,8 @@ bool glMake(Buoy* b, std::string* err);
 void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s);
 void glFree(Buoy* b);
 void glFreeState(Buoy* b, State* s);
+// copy src's slamming history buffers into dst's (created if needed)
+bool glCopyState(Buoy* b, State* dst, const State* src);
 int glStageTimes(Buoy* b, const char** name, double* ms, int n);
 
 }  // namespace mjb

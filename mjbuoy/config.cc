@@ -12,6 +12,9 @@ namespace mjb {
 
 static const char kPre[] = "mjbuoy.";
 
+// gravity magnitude [m/s^2] and the sum of the wave amplitudes [m] accepted
+static const double kMinG = 0.1, kMaxG = 100, kMaxAmp = 30;
+
 // one numeric field: name, value count, accepted range, unit, example
 struct Field {
   const char* name;
@@ -32,48 +35,59 @@ struct Field {
 static const HullParams kHullDefault = {
     {0, 0}, 1.3, {100, 400, 0.5}, {100, 200, 0.5}, 1.0, {1, 100, 2}};
 
+// upper (and some lower) limits: physically meaningful ranges, so that no
+// constant the kernels derive (rho g, k, omega, level + sum A, k depth, the
+// drag at |v| / vref) overflows or cancels; each is justified in docs/mjcf.md
 #define PART(name, lo, hi, open, unit) {name, 1, lo, hi, open, unit, ""}
+static const Field kDampParts[2] = {
+  PART("linear", 0, 1e12, false, "N s/m"),
+  PART("angular", 0, 1e15, false, "N m s/rad"),
+};
 static const Field kDragParts[3] = {
-  PART("linear coefficient", 0, INFINITY, false, "N/m^2"),
-  PART("quadratic coefficient", 0, INFINITY, false, "N/m^2"),
+  PART("linear coefficient", 0, 1e6, false, "N/m^2"),
+  PART("quadratic coefficient", 0, 1e6, false, "N/m^2"),
   PART("exponent", 0, 8, false, "dimensionless"),
 };
 static const Field kSlamParts[3] = {
   PART("gain", 0, 1, false, "dimensionless"),
-  PART("gamma_max", 0, INFINITY, true, "m/s^2"),
+  PART("gamma_max", 0.01, 1e6, false, "m/s^2"),
   PART("power", 0, 16, true, "dimensionless"),
 };
 static const Field kWaveParts[5] = {
-  PART("amplitude", 0, INFINITY, false, "m"),
-  PART("wavelength", 0, INFINITY, true, "m"),
-  PART("direction", -INFINITY, INFINITY, false, "deg"),
-  PART("phase", -INFINITY, INFINITY, false, "deg"),
+  PART("amplitude", 0, kMaxAmp, false, "m"),
+  PART("wavelength", 0.05, 1e6, false, "m"),
+  PART("direction", -360, 360, false, "deg"),
+  PART("phase", -360, 360, false, "deg"),
   PART("steepness", 0, 1, false, "dimensionless"),
+};
+static const Field kCurrentParts[2] = {
+  PART("x", -50, 50, false, "m/s"),
+  PART("y", -50, 50, false, "m/s"),
 };
 #undef PART
 
 // hull parameters
 static const Field kHullFields[] = {
-  {"damping", 2, 0, INFINITY, false, "linear N s/m, angular N m s/rad", "3000 300",
-   offsetof(HullParams, damp)},
+  {"damping", 2, 0, 0, false, "linear N s/m, angular N m s/rad", "3000 300",
+   offsetof(HullParams, damp), kDampParts},
   {"viscous", 1, 0, 3, false, "form factor 1+k, 0 = off", "1.3",
    offsetof(HullParams, viscous)},
   {"drag", 3, 0, 0, false, "C_PD1 N/m^2, C_PD2 N/m^2, f_P", "100 400 0.5",
    offsetof(HullParams, drag), kDragParts},
   {"suction", 3, 0, 0, false, "C_SD1 N/m^2, C_SD2 N/m^2, f_S", "100 200 0.5",
    offsetof(HullParams, suction), kDragParts},
-  {"vref", 1, 0, INFINITY, true, "m/s", "1", offsetof(HullParams, vref)},
+  {"vref", 1, 0.01, 150, false, "m/s", "1", offsetof(HullParams, vref)},
   {"slamming", 3, 0, 0, false, "gain, gamma_max m/s^2, power", "1 100 2",
    offsetof(HullParams, slam), kSlamParts},
 };
 
 // sea fields
 static const Field kSeaFields[] = {
-  {"density", 1, 0, INFINITY, true, "kg/m^3", "1000"},
-  {"level", 1, -INFINITY, INFINITY, false, "m", "0"},
-  {"depth", 1, 0, INFINITY, true, "m (omit for deep water)", "50"},
-  {"viscosity", 1, 0, INFINITY, true, "m^2/s, kinematic", "1e-6"},
-  {"current", 2, -INFINITY, INFINITY, false, "m/s, x and y", "0.5 0"},
+  {"density", 1, 1, 1e5, false, "kg/m^3", "1000"},
+  {"level", 1, -1e4, 1e4, false, "m", "0"},
+  {"depth", 1, 0.01, 11000, false, "m (omit for deep water)", "50"},
+  {"viscosity", 1, 1e-8, 1, false, "m^2/s, kinematic", "1e-6"},
+  {"current", 2, 0, 0, false, "m/s, x and y", "0.5 0", 0, kCurrentParts},
 };
 
 static const Field kWave = {"wave", 5, 0, 0, false,
@@ -215,6 +229,13 @@ std::string parseConfig(const mjModel* m, Config* c) {
            "(the sea surface is z = eta(x, y)), e.g. gravity=\"0 0 -9.81\"";
   }
   c->sea.g = -gv[2];
+  if (c->sea.g < kMinG || c->sea.g > kMaxG) {
+    return "mjbuoy: <option gravity=\"" + fmt(gv[0]) + " " + fmt(gv[1]) + " " + fmt(gv[2]) +
+           "\"> is out of range for mjbuoy: its magnitude g = " + fmt(c->sea.g) +
+           " m/s^2 must be >= " + fmt(kMinG) + " and <= " + fmt(kMaxG) +
+           " (a world with a sea: Titan 1.35, Earth 9.81, Jupiter 24.8); e.g. gravity=\"0 0 "
+           "-9.81\"";
+  }
 
   // hulls first: per-geom overrides refer to them
   std::vector<char> is(m->ngeom, 0);
@@ -351,6 +372,14 @@ std::string parseConfig(const mjModel* m, Config* c) {
     }
   }
 
+  // the highest crest above level, level + sum A, stays a height a sea can have
+  double sumA = 0;
+  for (const Wave& w : c->sea.waves) sumA += w.amp;
+  if (sumA > kMaxAmp) {
+    return "mjbuoy: the waves' amplitudes add up to " + fmt(sumA) + " m, above " +
+           fmt(kMaxAmp) + " m (twice the amplitude of the highest ocean waves measured, about 15 m); lower the "
+           "amplitudes of the mjbuoy.wave.* entries";
+  }
   c->sea.derive();
   double q = c->sea.fold();
   if (!(q < 1)) {

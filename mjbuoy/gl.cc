@@ -261,6 +261,30 @@ void glFreeState(Buoy* b, State* s) {
   s->slambuf[0] = s->slambuf[1] = 0;
 }
 
+bool glCopyState(Buoy* b, State* dst, const State* src) {
+  GlBackend* g = b->gl;
+  if (!g || !src->slambuf[0]) return true;
+  std::lock_guard<std::mutex> lk(g->mu);
+  GlCurrent cur(&g->ctx);
+  if (!cur.ok()) return false;
+  const GladGLContext& gl = g->ctx.gl;
+  GLsizeiptr n = GLsizeiptr(4 * sizeof(float)) * std::max(g->ntri, 1);
+  if (!dst->slambuf[0]) {
+    gl.GenBuffers(2, dst->slambuf);
+    for (GLuint x : dst->slambuf) {
+      gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, x);
+      gl.BufferData(GL_SHADER_STORAGE_BUFFER, n, nullptr, GL_DYNAMIC_COPY);
+    }
+  }
+  for (int i = 0; i < 2; i++) {
+    gl.BindBuffer(GL_COPY_READ_BUFFER, src->slambuf[i]);
+    gl.BindBuffer(GL_COPY_WRITE_BUFFER, dst->slambuf[i]);
+    gl.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, n);
+  }
+  gl.Finish();
+  return true;
+}
+
 void glFree(Buoy* b) {
   GlBackend* g = b->gl;
   if (!g) return;

@@ -24,30 +24,105 @@ struct mjbBuoy_ {
 
 namespace {
 
-// attached models; the callback looks its model up here
+// attached models; the callback looks its model up here. gattached is also
+// the registry of live handles: mjb_detach of anything else is a no-op
 std::shared_mutex gmu;
 std::vector<mjbBuoy*> gattached;
-mjfGeneric gprev = nullptr;  // mjcb_passive found at first attach, chained
+
+// the mjcb_passive chain (docs/robustness.md). Installing pushes the
+// callback found in mjcb_passive, detaching the last model pops it back if
+// mjbuoy's trampoline is still installed. A user's callback installed after
+// mjb_attach that chains to the trampoline stays on top when mjbuoy
+// detaches; a later attach then pushes that user callback, which calls the
+// trampoline again from inside itself. The trampoline counts its nesting
+// per thread: at depth k it calls the k-th callback down the chain, and
+// mjbuoy adds its forces only at depth 1, so no call recurses and each
+// callback runs once per evaluation.
+std::vector<mjfGeneric> gchain;
+thread_local int gdepth = 0;
+
+// models that carry mjbuoy.* entries but were never attached (e.g. a copy
+// from mj_copyModel): warned once each, in a fixed ring (no allocation)
+std::mutex gwmu;
+const mjModel* gwarned[16] = {nullptr};
+int gwnext = 0;
 
 mjbBuoy* find(const mjModel* m) {
   for (mjbBuoy* b : gattached) if (b->b.m == m) return b;
   return nullptr;
 }
 
+bool hasEntries(const mjModel* m) {
+  for (int i = 0; i < m->nnumeric; i++) {
+    if (!std::strncmp(m->names + m->name_numericadr[i], "mjbuoy.", 7)) return true;
+  }
+  for (int i = 0; i < m->ntext; i++) {
+    if (!std::strncmp(m->names + m->name_textadr[i], "mjbuoy.", 7)) return true;
+  }
+  return false;
+}
+
+void warnUnknown(const mjModel* m) {
+  if (!hasEntries(m)) return;
+  {
+    std::lock_guard<std::mutex> lk(gwmu);
+    for (const mjModel* w : gwarned) if (w == m) return;
+    gwarned[gwnext] = m;
+    gwnext = (gwnext + 1) % 16;
+  }
+  mju_warning("mjbuoy: a model with mjbuoy.* entries was stepped without mjb_attach (a copy "
+              "made with mj_copyModel?): it gets no buoyancy. Attach every copy: "
+              "mjb_attach(copy, ...)");
+}
+
+// is s stale for d: d is another mjData at a recycled address or was reset.
+// The callback runs inside fwdVelocity, whose count d->timer[VELOCITY]
+// rises by one when the stage ends: outside a callback, a count at or below
+// the one stamped means that stage never ended for this d (a new mjData, or
+// mj_resetData zeroing the timers). Another buffer, or time below the first
+// call of the current step, says the same.
+bool stale(const State* s, const mjData* d) {
+  long n = d->timer[mjTIMER_VELOCITY].number;
+  // time is compared with the first call of the current step (stepClock):
+  // the stages of one RK4 step move it back and forth
+  return d->buffer != s->buf || (gdepth > 0 ? n < s->vcount : n <= s->vcount) ||
+         (s->key >= 0 && d->time < s->tcur);
+}
+
+// forget what s knew of an earlier mjData or episode
+void renew(State* s, const mjData* d) {
+  std::fill(s->wrench.begin(), s->wrench.end(), 0.0);
+  std::fill(s->part.begin(), s->part.end(), 0.0);
+  std::fill(s->bad.begin(), s->bad.end(), 0);
+  std::fill(s->told.begin(), s->told.end(), 0);
+  s->notices.clear();
+  s->key = -1;
+  s->hasPrev = false;
+  s->buf = d->buffer;
+  s->vcount = -1;
+}
+
+// the state of d, renewed if it is stale; fresh says the state was created
 State* state(mjbBuoy* b, const mjData* d, bool create) {
+  State* s = nullptr;
   {
     std::shared_lock<std::shared_mutex> lk(b->mu);
     auto it = b->data.find(d);
-    if (it != b->data.end()) return it->second.get();
+    if (it != b->data.end()) s = it->second.get();
   }
-  if (!create) return nullptr;
-  std::unique_lock<std::shared_mutex> lk(b->mu);
-  auto& s = b->data[d];
   if (!s) {
-    s = std::make_unique<State>();
-    mjb::makeState(b->b, s.get());
+    if (!create) return nullptr;
+    std::unique_lock<std::shared_mutex> lk(b->mu);
+    auto& u = b->data[d];
+    if (!u) {
+      u = std::make_unique<State>();
+      mjb::makeState(b->b, u.get());
+      u->buf = d->buffer;
+    }
+    s = u.get();
   }
-  return s.get();
+  if (stale(s, d)) renew(s, d);
+  return s;
 }
 
 // mj_applyFT restricted to the dofs that move body: the same J^T [f; tq]
@@ -68,14 +143,8 @@ void applyFT(const mjModel* m, mjData* d, const mjtNum f[3], const mjtNum tq[3],
   }
 }
 
-void passive(const mjModel* m, mjData* d) {
-  if (gprev) gprev(m, d);
-  mjbBuoy* b;
-  {
-    std::shared_lock<std::shared_mutex> lk(gmu);
-    b = find(m);
-  }
-  if (!b || b->b.hull.empty()) return;
+// forces of one evaluation for an attached model
+void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
   State* s = state(b, d, true);
   if (b->b.gl) {
     mjb::glWrench(&b->b, m, d, s);
@@ -86,6 +155,30 @@ void passive(const mjModel* m, mjData* d) {
     const mjtNum* w = s->wrench.data() + 6 * bd;
     applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
   }
+  s->vcount = d->timer[mjTIMER_VELOCITY].number;
+}
+
+// the trampoline installed in mjcb_passive (see gchain)
+void passive(const mjModel* m, mjData* d) {
+  struct Depth {
+    Depth() { gdepth++; }
+    ~Depth() { gdepth--; }
+  } depth;
+  mjfGeneric next = nullptr;
+  mjbBuoy* b;
+  {
+    std::shared_lock<std::shared_mutex> lk(gmu);
+    int k = int(gchain.size()) - gdepth;
+    if (k >= 0) next = gchain[k];
+    b = gdepth == 1 ? find(m) : nullptr;
+  }
+  if (next && next != passive) next(m, d);
+  if (gdepth != 1) return;
+  if (!b) {
+    warnUnknown(m);
+    return;
+  }
+  if (!b->b.hull.empty()) compute(b, m, d);
 }
 
 // cpu threads: mjbuoy.threads, or with 0 (auto) every core (up to
@@ -150,6 +243,11 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
   std::vector<std::string>& warn = B.cfg.warn;
   for (int g : order) {
     size_t k = std::find(B.cfg.geom.begin(), B.cfg.geom.end(), g) - B.cfg.geom.begin();
+    std::string se = mjb::sizeError(m, g);
+    if (!se.empty()) {
+      copyError(se, error, error_sz);
+      return nullptr;
+    }
     mjb::Mesh mesh = mjb::hullMesh(m, g, &warn);
     mjb::Hull h;
     h.geom = g;
@@ -225,7 +323,9 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
   mjbBuoy* out = b.release();
   std::unique_lock<std::shared_mutex> lk(gmu);
   if (gattached.empty() && mjcb_passive != passive) {
-    gprev = mjcb_passive;
+    // nothing can chain to mjbuoy through an empty slot: older entries are gone
+    if (!mjcb_passive) gchain.clear();
+    gchain.push_back(mjcb_passive);
     mjcb_passive = passive;
   }
   gattached.push_back(out);
@@ -236,10 +336,17 @@ void mjb_detach(mjbBuoy* b) {
   if (!b) return;
   {
     std::unique_lock<std::shared_mutex> lk(gmu);
-    gattached.erase(std::remove(gattached.begin(), gattached.end(), b), gattached.end());
-    if (gattached.empty() && mjcb_passive == passive) {
-      mjcb_passive = gprev;
-      gprev = nullptr;
+    auto it = std::find(gattached.begin(), gattached.end(), b);
+    if (it == gattached.end()) {
+      lk.unlock();
+      mju_warning("mjbuoy: mjb_detach was given a handle that is not attached (detached "
+                  "already?); ignored. A handle is invalid after mjb_detach");
+      return;
+    }
+    gattached.erase(it);
+    if (gattached.empty() && mjcb_passive == passive && !gchain.empty()) {
+      mjcb_passive = gchain.back();
+      gchain.pop_back();
     }
   }
   for (auto& kv : b->data) mjb::glFreeState(&b->b, kv.second.get());
@@ -260,6 +367,24 @@ void mjb_unbindData(mjbBuoy* b, const mjData* d) {
   if (it == b->data.end()) return;
   mjb::glFreeState(&b->b, it->second.get());
   b->data.erase(it);
+}
+
+int mjb_copyData(mjbBuoy* b, mjData* dst, const mjData* src) {
+  if (!b || !dst || !src) return 0;
+  if (dst == src) return 1;
+  State* s = state(b, src, false);
+  if (!s) {
+    mjb_unbindData(b, dst);  // src has no history: neither may dst
+    return 1;
+  }
+  State* t = state(b, dst, true);
+  unsigned keep[2] = {t->slambuf[0], t->slambuf[1]};
+  *t = *s;
+  t->slambuf[0] = keep[0];
+  t->slambuf[1] = keep[1];
+  t->notices.reserve(s->notices.capacity());
+  t->buf = dst->buffer;  // dst's counters and time are src's after mj_copyData
+  return mjb::glCopyState(&b->b, t, s) ? 1 : 0;
 }
 
 const mjtNum* mjb_wrench(const mjbBuoy* b, const mjData* d) {

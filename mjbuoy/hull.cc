@@ -414,6 +414,32 @@ static void stepCheck(const mjModel* m, int g, const Mesh& mesh, std::vector<std
                   "(the motion gains energy every step); use timestep <= " + num(T / 20));
 }
 
+std::string sizeError(const mjModel* m, int g) {
+  static const char* kName[] = {"x half-size", "y half-size", "z half-size"};
+  int t = m->geom_type[g], n = 0;
+  const char* const* what = kName;
+  static const char* kRound[] = {"radius", "half-length"};
+  static const char* kEll[] = {"x radius", "y radius", "z radius"};
+  if (t == mjGEOM_BOX) n = 3;
+  if (t == mjGEOM_SPHERE) { n = 1; what = kRound; }
+  if (t == mjGEOM_CYLINDER || t == mjGEOM_CAPSULE) { n = 2; what = kRound; }
+  if (t == mjGEOM_ELLIPSOID) { n = 3; what = kEll; }
+  static const char* kType[] = {"plane", "hfield", "sphere", "capsule", "ellipsoid",
+                                "cylinder", "box", "mesh"};
+  for (int j = 0; j < n; j++) {
+    double v = m->geom_size[3 * g + j];
+    if (v >= kMinSize) continue;
+    char b[512];
+    std::snprintf(b, sizeof(b),
+                  "mjbuoy: hull geom \"%s\" (%s) is too small: its %s is %g m, below the "
+                  "minimum %g m for a hull (below 0.1 mm surface tension, not buoyancy, "
+                  "carries a body); give it a size of at least %g m",
+                  m->names + m->name_geomadr[g], kType[t], what[j], v, kMinSize, kMinSize);
+    return b;
+  }
+  return "";
+}
+
 Mesh hullMesh(const mjModel* m, int g, std::vector<std::string>* warn) {
   Mesh local;
   std::string gname = m->names + m->name_geomadr[g];

@@ -48,6 +48,14 @@ struct Repair {
 };
 Repair repair(Mesh* mesh);
 
+// smallest primitive hull size (half-size, radius, half-length) [m]: below
+// 0.1 mm surface tension, not buoyancy, carries a body, and far below the
+// triangle areas underflow (docs/mjcf.md)
+static const double kMinSize = 1e-4;
+
+// "" if primitive hull geom g is large enough (meshes: always), else the error
+std::string sizeError(const mjModel* m, int g);
+
 // mesh of hull geom g in its body frame; appends load warnings
 Mesh hullMesh(const mjModel* m, int g, std::vector<std::string>* warn);
 

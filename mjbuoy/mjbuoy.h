@@ -28,6 +28,20 @@ typedef struct mjbInfo_ {
   const char* renderer;  // device it runs on (CPU name or GL renderer)
 } mjbInfo;
 
+// check the mesh files an MJCF file names, before mj_loadXML reads it:
+// MuJoCo 2.2 loads an OBJ face index out of range (reading past its vertex
+// array) and non-finite vertices ("v nan 0 0") without a word, and its
+// compiled mjModel keeps no file names, so mjb_attach cannot check them.
+// Follows <include> and <compiler meshdir/assetdir>; checks every .obj (face
+// indices in range and not 0, vertices finite) and binary .stl (size,
+// vertices finite). Returns 1 if nothing is wrong (a missing or malformed
+// file is left to MuJoCo's loader), else 0 with the file, line and fix in
+// error (error_sz bytes). Every mjbuoy tool calls it before mj_loadXML.
+int mjb_checkModelFile(const char* xmlpath, char* error, int error_sz);
+
+// the same check of one .obj or .stl mesh file (other extensions: 1)
+int mjb_checkMeshFile(const char* path, char* error, int error_sz);
+
 // attach mjbuoy to a compiled model. Reads and validates the "mjbuoy.*"
 // custom entries, builds the hulls and installs the mjcb_passive callback
 // (an mjcb_passive installed before is chained and still called).
@@ -38,12 +52,33 @@ typedef struct mjbInfo_ {
 // The model must stay alive and unchanged until mjb_detach.
 mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz);
 
-// detach: stop adding forces to this model and free everything
+// detach: stop adding forces to this model and free everything. The handle
+// is invalid afterwards. mjb_detach(NULL), and a handle that is not attached
+// (already detached) as long as no later mjb_attach returned the same
+// address, are no-ops (the latter with an mju_warning).
+// The callback chain: mjbuoy's one static mjcb_passive trampoline calls the
+// callback it replaced first; a callback the user installs after mjb_attach
+// may chain to it, also across detach and re-attach (docs/robustness.md).
+// mjb_detach of the last model restores the callback it replaced if
+// mjbuoy's trampoline is still installed.
 void mjb_detach(mjbBuoy* b);
 
+// every model needs its own mjb_attach, copies from mj_copyModel included:
+// a model with mjbuoy.* entries stepped without it gets no buoyancy and one
+// mju_warning saying so
+
 // per-mjData state is created on the first callback for d; call this right
-// after mj_makeData to allocate it up front instead (0 on failure)
+// after mj_makeData to allocate it up front instead (0 on failure).
+// The state knows its mjData by address plus a stamp: d->buffer, the
+// fwdVelocity count d->timer[mjTIMER_VELOCITY].number at the last callback
+// and d->time at the first callback of the last step. A new mjData at a recycled address, or d after
+// mj_resetData, starts clean: zero wrench, no notices, no slamming history.
 int mjb_bindData(mjbBuoy* b, const mjData* d);
+
+// copy mjbuoy's state for src (wrench, notices, slamming history) to dst;
+// call right after mj_copyData(dst, m, src), which does not carry it, so
+// that dst continues exactly like src (1 on success, 0 on failure)
+int mjb_copyData(mjbBuoy* b, mjData* dst, const mjData* src);
 
 // forget d's state; call before mj_deleteData if the process will keep
 // stepping other mjData of the same model
@@ -51,8 +86,9 @@ void mjb_unbindData(mjbBuoy* b, const mjData* d);
 
 // the wrench mjbuoy added in the last callback for d: nbody x 6, laid out
 // like xfrc_applied: world-frame force [N], then world-frame torque about
-// the body's centre of mass d->xipos [N m]. Zero for bodies without hulls.
-// NULL if d was never seen.
+// the body's centre of mass d->xipos [N m]. Zero for bodies without hulls,
+// and zero for a new or reset d before its first callback. NULL if d was
+// never seen.
 const mjtNum* mjb_wrench(const mjbBuoy* b, const mjData* d);
 
 // the force families that make up the wrench
@@ -70,7 +106,8 @@ typedef enum mjbPart_ {
 const mjtNum* mjb_wrenchPart(const mjbBuoy* b, const mjData* d, int part);
 
 // run-time notices for d, one line each, each fault reported once (a body
-// whose state is not finite gets no force, and is named here); "" if none
+// whose state is not finite gets no force, and is named here); "" if none.
+// Cleared when d is reset (mj_resetData), so later faults are reported
 const char* mjb_notices(const mjbBuoy* b, const mjData* d);
 
 // sizes and backend of an attached model

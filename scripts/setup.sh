@@ -12,7 +12,7 @@ pkgs=(
   libgtest-dev                 # unit tests
   libcli11-dev                 # command-line parsing of the tools
   python3                      # CSV checks of the command-line tests
-  libtinyxml2-dev              # XML parsing of mjbuoy-scenario (scenario files, model edits, JUnit)
+  libtinyxml2-dev              # XML parsing of mjbuoy-scenario (scenario files, model edits, JUnit) and mjb_checkModelFile
   libegl-dev libegl-mesa0      # headless EGL for the GL compute backend (Mesa's surfaceless platform)
   libgl1-mesa-dri              # Mesa's GL drivers (llvmpipe when there is no GPU)
   python3-glad                 # generates the GL loader at build time (/usr/bin/python3 -m glad)

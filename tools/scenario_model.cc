@@ -243,6 +243,15 @@ static void applyInit(const Scenario& s, const Init& in, const mjModel* m, mjDat
 
 std::unique_ptr<Sim> loadScenario(Scenario& s, const std::string& backend) {
   std::string xml = editModel(s);
+  // mesh files MuJoCo 2.2 would load broken (mjbuoy.h): the model's own,
+  // and those the scenario puts in their place
+  char cerr[1024] = "";
+  if (!mjb_checkModelFile(s.model.c_str(), cerr, sizeof(cerr))) {
+    throw Invalid(s.file, s.line, "cannot load model " + s.model_attr + ": " + cerr);
+  }
+  for (const MeshFile& mf : s.meshes) {
+    if (!mjb_checkMeshFile(mf.file.c_str(), cerr, sizeof(cerr))) throw Invalid(s.file, mf.line, cerr);
+  }
   // compile from memory under a name in the model's directory
   fs::path model(s.model);
   std::string vname = ".mjbuoy-scenario-" + model.filename().string();

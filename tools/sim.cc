@@ -151,6 +151,11 @@ int main(int argc, char** argv) {
   }
 
   char err[1024] = "";
+  // mesh files MuJoCo 2.2 would load broken (mjbuoy.h)
+  if (!mjb_checkModelFile(model.c_str(), err, sizeof(err))) {
+    std::fprintf(stderr, "mjbuoy-sim: cannot load %s: %s\n", model.c_str(), err);
+    return 1;
+  }
   mjModel* m = mj_loadXML(model.c_str(), nullptr, err, sizeof(err));
   if (!m) {
     std::fprintf(stderr, "mjbuoy-sim: cannot load %s: %s\n", model.c_str(), err);
