@@ -7,14 +7,17 @@ check_view.py VIEW MODEL CASE, run inside xvfb-run (CTest does that), CASE:
               pixels where it projects open water between and in front of
               them, the projection computed here from the camera and the
               body poses the viewer prints (no golden image)
+  screenshot_gl  the same with the gl backend: its EGL context (physics
+              thread) and the window's GLX context (main thread) coexist
   perturb     xdotool double-clicks the east barge (selects it) and
               ctrl + right-drags it to the right (mjPERT_TRANSLATE through
               xfrc_applied); compared with a run without interaction to the
               same simulated time, the east barge has moved more than 0.2 m
               and the west barge not at all (the barges do not touch, so it
               must follow the same steps bit for bit)
-  close       ctrl+Q closes the window: exit status 0, final poses printed,
-              no sanitizer report
+  close       started --paused, keys Right x 3, BackSpace, Right x 2 leave
+              the time at 2 timesteps (0.004 s); ctrl+Q closes the window:
+              exit status 0, final poses printed, no sanitizer report
 MODEL is tests/viewer/two_barges.xml: two 2 x 1 x 0.5 m barges at x = -2, 2.
 Waits are generous and poll (xdotool search --sync): the machine is shared
 and the test also runs under ASan.
@@ -141,12 +144,14 @@ def blue_green(p):
     return p[2] > p[0] + 20 and p[1] > p[0] + 10
 
 
-def screenshot(view, model, tmp):
+def screenshot(view, model, tmp, backend="cpu"):
     png = os.path.join(tmp, "shot.png")
     p = subprocess.run([view, model, "--screenshot", "2:" + png, "--exit-after", "2",
-                        "--print-final"], capture_output=True, text=True, timeout=600)
+                        "--print-final", "--backend", backend], capture_output=True, text=True,
+                       timeout=600)
     print(p.stdout + p.stderr)
     check(p.returncode == 0, "mjbuoy-view exits 0 (%d)" % p.returncode)
+    check(": %s on " % backend in p.stdout, "runs the %s backend" % backend)
     cam, t, bodies = parse(p.stdout, "final")
     check(cam is not None and t is not None and set(bodies) == {"west", "east"},
           "camera, time and both barges printed")
@@ -300,15 +305,25 @@ def perturb(view, model, tmp):
 
 
 def close_case(view, model, tmp):
-    v = Viewer([view, model, "--print-final"])
+    # started paused: Right arrow x 3, Backspace (reset), Right arrow x 2
+    # leave the model exactly 2 steps of its timestep (0.002 s) from t = 0
+    v = Viewer([view, model, "--print-final", "--paused"])
     start = v.wait_for(r"start camera:", 300)
     win = window()
     check(bool(start and win), "the window appears")
     if win:
+        xdo("windowfocus", win)
+        time.sleep(1)
+        for k in ["Right"] * 3 + ["BackSpace"] + ["Right"] * 2:
+            xdo("key", k)
+            time.sleep(0.5)
         time.sleep(2)
         close(v, win)
     rc, out, err = v.finish()
     check(rc == 0, "ctrl+Q: exit status 0 (%d)" % rc)
+    _, t, _ = parse(out, "final")
+    check(t is not None and abs(t - 0.004) < 1e-12,
+          "paused, 3 steps, reset, 2 steps: final time %s == 2 x 0.002 s" % t)
     check("final body east" in out, "final poses printed on the way out")
     check("Sanitizer" not in err and "runtime error" not in err,
           "no sanitizer report on stderr")
@@ -320,7 +335,8 @@ def main():
         print("FAIL no DISPLAY: run under xvfb-run")
         return 1
     with tempfile.TemporaryDirectory() as tmp:
-        {"screenshot": screenshot, "perturb": perturb, "close": close_case}[case](view, model, tmp)
+        {"screenshot": screenshot, "perturb": perturb, "close": close_case,
+         "screenshot_gl": lambda *a: screenshot(*a, backend="gl")}[case](view, model, tmp)
     print("FAILED" if failed else "PASSED")
     return 1 if failed else 0
 

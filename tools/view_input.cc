@@ -15,6 +15,7 @@ void key(GLFWwindow* w, int k, int, int act, int mods) {
   switch (k) {
     case GLFW_KEY_SPACE:
       if (act == GLFW_PRESS) v->paused = !v->paused;
+      v->steps = 0;
       break;
     case GLFW_KEY_RIGHT:
       if (v->paused) v->steps++;
@@ -22,6 +23,7 @@ void key(GLFWwindow* w, int k, int, int act, int mods) {
     case GLFW_KEY_BACKSPACE:
       if (act == GLFW_PRESS) {
         v->reset = true;
+        v->steps = 0;  // steps asked for before the reset are void
         v->pert.active = 0;
         v->frame = true;
       }

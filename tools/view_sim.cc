@@ -56,12 +56,12 @@ void physics(View* v) {
       if (v->paused) {
         if (v->steps > 0 && !atStop) {
           stepOnce(v);
+          v->steps--;
           stepped = true;
         } else if (v->pert.active) {
           mjv_applyPerturbPose(m, d, &v->pert, 1);  // paused: move the body itself
           mj_forward(m, d);
         }
-        v->steps = 0;
         synced = false;
       } else if (!atStop) {
         double now = wallClock();
