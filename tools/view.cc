@@ -50,7 +50,7 @@ std::string tempNext(const std::string& path, std::string* err) {
 }
 
 // the window's picture to o.shotFile: temp file, then rename
-bool screenshot(View* v, mjrRect vp) {
+bool screenshot(View* v, mjrRect vp, double t) {
   std::vector<unsigned char> rgb((size_t)3 * vp.width * vp.height);
   mjr_readPixels(rgb.data(), nullptr, vp, &v->con);
   std::string e, tmp = tempNext(v->o.shotFile, &e);
@@ -62,7 +62,7 @@ bool screenshot(View* v, mjrRect vp) {
     return false;
   }
   std::printf("mjbuoy-view: wrote %s (%dx%d, t = %.6g s)\n", v->o.shotFile.c_str(), vp.width,
-              vp.height, v->d->time);
+              vp.height, t);
   return true;
 }
 
@@ -152,7 +152,7 @@ int run(View* v) {
     const double eps = 1e-9 * std::fmax(1.0, v->o.shotTime);
     if (shotPending && t >= v->o.shotTime - eps) {
       shotPending = false;
-      failed |= !screenshot(v, vp);
+      failed |= !screenshot(v, vp, t);
       std::lock_guard<std::mutex> lk(v->mtx);
       v->stopAt = v->o.exitAfter >= 0 ? v->o.exitAfter : 1e300;
     }
