@@ -9,6 +9,8 @@ check_view.py VIEW MODEL CASE, run inside xvfb-run (CTest does that), CASE:
               body poses the viewer prints (no golden image)
   screenshot_gl  the same with the gl backend: its EGL context (physics
               thread) and the window's GLX context (main thread) coexist
+  errors      an unwritable or malformed --screenshot and a missing X server
+              give clear errors before anything is written
   perturb     xdotool double-clicks the east barge (selects it) and
               ctrl + right-drags it to the right (mjPERT_TRANSLATE through
               xfrc_applied); compared with a run without interaction to the
@@ -157,6 +159,7 @@ def screenshot(view, model, tmp, backend="cpu"):
           "camera, time and both barges printed")
     if failed:
         return
+    check(sorted(os.listdir(tmp)) == ["shot.png"], "no temporary file left next to the screenshot")
     check(abs(t - 2) < 1e-6, "final time %.9f s == 2 s (physics holds at the screenshot)" % t)
     w, h, img = read_png(png)
     print("screenshot %dx%d" % (w, h))
@@ -182,6 +185,24 @@ def screenshot(view, model, tmp, backend="cpu"):
             n = sum(blue_green(c) for c in pix)
             check(n == len(pix), "sea point %s: %d of %d pixels sea-coloured (blue-green), e.g. %s"
                   % (q, n, len(pix), pix[len(pix) // 2]))
+
+
+def errors(view, model, tmp):
+    bad = os.path.join(tmp, "no-such-dir", "shot.png")
+    for args, want in ((["--screenshot", "1:" + bad], "cannot write " + bad),
+                       (["--screenshot", "shot.png"], "expected TIME:FILE.png"),
+                       (["--screenshot", "3:" + os.path.join(tmp, "a.png"), "--exit-after", "2"],
+                        "after --exit-after")):
+        p = subprocess.run([view, model] + args, capture_output=True, text=True, timeout=300)
+        print(p.stderr)
+        check(p.returncode != 0 and want in p.stderr,
+              "%s: exit %d with \"%s\"" % (" ".join(args), p.returncode, want))
+    check(os.listdir(tmp) == [], "nothing written into the directory")
+    p = subprocess.run([view, model], capture_output=True, text=True, timeout=300,
+                       env=dict(os.environ, DISPLAY=":99999"))
+    print(p.stderr)
+    check(p.returncode != 0 and "no display" in p.stderr,
+          "no X server: exit %d, says there is no display" % p.returncode)
 
 
 class Viewer:
@@ -336,7 +357,7 @@ def main():
         return 1
     with tempfile.TemporaryDirectory() as tmp:
         {"screenshot": screenshot, "perturb": perturb, "close": close_case,
-         "screenshot_gl": lambda *a: screenshot(*a, backend="gl")}[case](view, model, tmp)
+         "screenshot_gl": lambda *a: screenshot(*a, backend="gl"), "errors": errors}[case](view, model, tmp)
     print("FAILED" if failed else "PASSED")
     return 1 if failed else 0
 
