@@ -187,6 +187,28 @@ void pinLibraries() { dl_iterate_phdr(pin, nullptr); }
 void pinLibraries() {}
 #endif
 
+// the window, its GL context (GLFW's default: a compatibility profile, which
+// MuJoCo 2.2's fixed-function renderer needs), MuJoCo's scene and context
+bool openWindow(View* v) {
+  glfwWindowHint(GLFW_SAMPLES, 4);
+  std::string title = "mjbuoy-view: " + v->o.model;
+  v->win = glfwCreateWindow(v->o.width, v->o.height, title.c_str(), nullptr, nullptr);
+  if (!v->win) return false;
+  glfwMakeContextCurrent(v->win);
+  pinLibraries();
+  glfwSwapInterval(1);  // render at the display's rate
+  mjv_defaultCamera(&v->cam);
+  mjv_defaultOption(&v->opt);
+  mjv_defaultPerturb(&v->pert);
+  mjv_defaultScene(&v->scn);
+  mjr_defaultContext(&v->con);
+  mjv_makeScene(v->m, &v->scn, v->m->ngeom + v->m->nbody + 2000);
+  mjr_makeContext(v->m, &v->con, mjFONTSCALE_100);
+  mjr_setBuffer(mjFB_WINDOW, &v->con);
+  installInput(v);
+  return true;
+}
+
 int parse(int argc, char** argv, Options* o) {
   CLI::App app{"Interactive viewer of an mjbuoy MJCF scene (GLFW window)."};
   std::string shot;
@@ -278,27 +300,15 @@ int main(int argc, char** argv) {
   v.paused = v.o.paused;
   v.stopAt = v.o.shotTime >= 0 ? v.o.shotTime : v.o.exitAfter >= 0 ? v.o.exitAfter : 1e300;
 
-  // MuJoCo 2.2's renderer is fixed-function: GLFW's default (compatibility) context
-  glfwWindowHint(GLFW_SAMPLES, 4);
-  std::string title = "mjbuoy-view: " + v.o.model;
-  v.win = glfwCreateWindow(v.o.width, v.o.height, title.c_str(), nullptr, nullptr);
-  if (!v.win) {
+  if (!mjbview::openWindow(&v)) {
     std::fprintf(stderr, "mjbuoy-view: cannot create an OpenGL window\n");
     glfwTerminate();
+    mjb_unbindData(v.b, v.d);
+    mj_deleteData(v.d);
+    mjb_detach(v.b);
+    mj_deleteModel(v.m);
     return 1;
   }
-  glfwMakeContextCurrent(v.win);
-  mjbview::pinLibraries();
-  glfwSwapInterval(1);  // render at the display's rate
-  mjv_defaultCamera(&v.cam);
-  mjv_defaultOption(&v.opt);
-  mjv_defaultPerturb(&v.pert);
-  mjv_defaultScene(&v.scn);
-  mjr_defaultContext(&v.con);
-  mjv_makeScene(v.m, &v.scn, v.m->ngeom + v.m->nbody + 2000);
-  mjr_makeContext(v.m, &v.con, mjFONTSCALE_100);
-  mjr_setBuffer(mjFB_WINDOW, &v.con);
-  mjbview::installInput(&v);
   if (v.o.printFinal) mjbview::printBodies(&v, "start");
 
   std::thread sim(mjbview::physics, &v);
