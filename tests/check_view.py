@@ -3,7 +3,8 @@
 
 check_view.py VIEW MODEL CASE, run inside xvfb-run (CTest does that), CASE:
   screenshot  --screenshot 2:FILE at t = 2 s: hull-coloured pixels where the
-              camera projects each barge's deck centre and sea-coloured
+              camera projects each barge's deck centre, wet-coloured ones
+              (--show-wet) on its side below the waterline, and sea-coloured
               pixels where it projects open water between and in front of
               them, the projection computed here from the camera and the
               body poses the viewer prints (no golden image)
@@ -149,7 +150,8 @@ def blue_green(p):
 def screenshot(view, model, tmp, backend="cpu"):
     png = os.path.join(tmp, "shot.png")
     p = subprocess.run([view, model, "--screenshot", "2:" + png, "--exit-after", "2",
-                        "--print-final", "--backend", backend], capture_output=True, text=True,
+                        "--print-final", "--backend", backend, "--show-wet"],
+                       capture_output=True, text=True,
                        timeout=600)
     print(p.stdout + p.stderr)
     check(p.returncode == 0, "mjbuoy-view exits 0 (%d)" % p.returncode)
@@ -174,6 +176,21 @@ def screenshot(view, model, tmp, backend="cpu"):
             n = sum(orange(q) for q in pix)
             check(n == len(pix), "%s deck centre: %d of %d pixels hull-coloured (orange), e.g. %s"
                   % (name, n, len(pix), pix[len(pix) // 2]))
+    # --show-wet: each barge floats at its draft (centre at the surface), so
+    # its side facing the camera is wet 0.15 m below the centre (magenta seen
+    # through the water: blue well above green, red near green) and dry
+    # 0.15 m above it
+    magenta = lambda c: c[2] > c[1] + 25 and c[0] > c[1] - 15
+    for name in ("west", "east"):
+        pos, quat = bodies[name]
+        for dz, want in ((-0.15, True), (0.15, False)):
+            off = rotate(quat, (0, -HALF[1], dz))
+            px, py = project([pos[i] + off[i] for i in range(3)])
+            pix = patch(img, w, h, px, py, 2)
+            n = sum(magenta(c) for c in pix)
+            check(n == len(pix) if want else n == 0,
+                  "%s side %+.2f m: %d of %d pixels wet-coloured (want %s), e.g. %s"
+                  % (name, dz, n, len(pix), "all" if want else "none", pix[len(pix) // 2]))
     # open water on the still water level midway between the barges (the
     # gap is 2 m wide), 1.2 m towards the camera and 3 m away from it
     for q in ((0, -1.2, 0), (0, 0, 0), (0, 3, 0)):
