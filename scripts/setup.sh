@@ -16,7 +16,9 @@ pkgs=(
   libegl-dev libegl-mesa0      # headless EGL for the GL compute backend (Mesa's surfaceless platform)
   libgl1-mesa-dri              # Mesa's GL drivers (llvmpipe when there is no GPU)
   python3-glad                 # generates the GL loader at build time (/usr/bin/python3 -m glad)
-  xvfb xauth                   # an X server for the test of GLX context restoring
+  xvfb xauth                   # an X server for the test of GLX context restoring and the viewer tests
+  libglfw3-dev                 # mjbuoy-view: window, compatibility GL context, input (GLFW 3)
+  xdotool                      # the viewer tests: select, perturb and close the window through XTEST
   ffmpeg                       # mjbuoy-sim --render: encodes the clip (H.264 MP4); ffprobe for its test
   libpng-dev                   # mjbuoy-sim --snapshot: PNG stills
   gnuplot-nox                  # mjbuoy-sim --plot: heave, roll and pitch plots

@@ -6,7 +6,9 @@ check_render.py SIM MODELS_DIR CASE, CASE one of:
             count, and the sea moves between frames on a wavy sea
   snapshot  a still of the barge: sea-coloured pixels below the horizon and
             hull-coloured pixels on the deck, in regions computed from the
-            camera that mjbuoy-sim reports (no golden image)
+            camera that mjbuoy-sim reports (no golden image); with
+            --show-wet the hull side below the waterline is wet-coloured
+            and the side above it is not
   errors    missing ffmpeg (PATH = an empty directory) and unwritable outputs
             give clear errors
 Pictures are decoded with the ffmpeg program (raw rgb24), no Python imaging.
@@ -185,6 +187,28 @@ def snapshot(sim, models, tmp):
         check(strip and len(tinted) > 0.8 * len(strip),
               "wet hull side (row %d) seen through the water: %d of %d pixels blue-tinted"
               % (wy, len(tinted), len(strip)))
+    # --show-wet: the same side below the waterline (the barge floats at its
+    # analytic draft, 0.25 m = half its height, so its centre is at the
+    # surface) turns magenta seen through the water (blue well above green,
+    # red near green); 0.15 m above the surface it stays the dry hull colour
+    wpng = os.path.join(tmp, "barge_wet.png")
+    p = run([sim, os.path.join(models, "barge.xml"), "--duration", str(t), "--snapshot",
+             "%g:%s" % (t, wpng), "--width", str(w), "--height", str(h), "--show-wet"])
+    check(p.returncode == 0, "mjbuoy-sim --show-wet exits 0")
+    if p.returncode:
+        return
+    wimg = rgb(wpng, w, h)
+    dry = [corner(sx, -1, sz, 0.7) for sx, sz in ((-1, 0.6), (1, 0.6))]
+    dy = int(sum(p[1] for p in dry) / 2)
+    magenta = lambda p: p[2] > p[1] + 25 and p[0] > p[1] - 15
+    for name, im, row, want in (("--show-wet, wet side", wimg, wy, True),
+                                ("no --show-wet, wet side", img, wy, False),
+                                ("--show-wet, dry side", wimg, dy, False)):
+        strip = [im[row][x] for x in range(max(0, wx0), min(w, wx1))] if 0 <= row < h else []
+        n = len([p for p in strip if magenta(p)])
+        ok = strip and (n > 0.8 * len(strip) if want else n < 0.05 * len(strip))
+        check(ok, "%s (row %d): %d of %d pixels wet-coloured (%s)"
+              % (name, row, n, len(strip), "> 80%" if want else "< 5%"))
 
 
 def errors(sim, models, tmp):

@@ -1,18 +1,13 @@
 // render: headless pictures of an mjbuoy scene for mjbuoy-sim (--render,
-// --snapshot, --show-forces).
+// --snapshot, --show-forces, --show-wet).
 //
 // MuJoCo's own renderer (mjr_render) draws the model into its offscreen
 // buffer, sized to the request, on a GL 4.5 compatibility-profile context of
 // our own on Mesa's surfaceless EGL platform (no window, no X server). Into
-// the same framebuffer, with MuJoCo's projection and depth buffer, we then
-// draw a sky where nothing was drawn and the sea: a graded triangle grid
-// around the camera's point of interest with heights from mjb_seaHeight
-// (the exact Gerstner surface), semi-transparent, so the wet part of each
-// hull shows through it. The model needs no visual elements of its own; two
-// optional <custom> entries override the sea (mjbuoy-sim.* entries are not
-// mjbuoy.* entries, so the library ignores them):
-//   <numeric name="mjbuoy-sim.sea.rgba" data="r g b a"/>   colour, opacity
-//   <numeric name="mjbuoy-sim.sea.extent" data="R"/>      half-size [m]
+// the same framebuffer, seadraw.h (shared with mjbuoy-view) then draws the
+// sky, the sea from the exact surface, and optionally the wet part of each
+// hull; the model needs no visual elements of its own (seadraw.h lists the
+// mjbuoy-sim.sea.* entries that override the sea's look).
 // Without a camera name, a free camera frames all hull bodies and follows
 // them. Frames go to the ffmpeg program through a pipe (H.264 MP4), stills
 // to PNG through libpng.
@@ -34,6 +29,7 @@ struct RenderOptions {
   int width = 1280, height = 720;
   std::string camera;       // model camera name; empty: free camera framing the hulls
   bool showForces = false;  // per-body force arrows (mjb_wrench)
+  bool showWet = false;     // the wet part of each hull in a colour of its own
 };
 
 class Renderer {

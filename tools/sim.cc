@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
   double fps = 30;
   int width = 1280, height = 720;
   std::vector<std::string> snapshots;
-  bool showForces = false;
+  bool showForces = false, showWet = false;
   app.add_option("--render", video, "write a video of the run (H.264 MP4 through ffmpeg)");
   app.add_option("--fps", fps, "video frames per second of simulated time")
       ->check(CLI::Range(1.0, 240.0));
@@ -94,6 +94,8 @@ int main(int argc, char** argv) {
                  "model camera to render from (default: a free camera following the hulls)");
   app.add_option("--snapshot", snapshots, "T:FILE.png: a still picture at simulated time T");
   app.add_flag("--show-forces", showForces, "draw each hull body's mjbuoy force as an arrow");
+  app.add_flag("--show-wet", showWet,
+               "draw the wet part of each hull (below the exact surface) in magenta");
   app.add_option("--plot", plot, "plot heave, roll and pitch of the hull bodies (PNG, gnuplot)");
   app.add_option("--progress", progress,
                  "progress on stderr: auto (bar on a terminal, lines when rendering), bar, "
@@ -184,6 +186,7 @@ int main(int argc, char** argv) {
     ro.height = height;
     ro.camera = camera;
     ro.showForces = showForces;
+    ro.showWet = showWet;
     std::string e;
     renderer = mjbsim::Renderer::create(m, b, ro, &e);
     if (!renderer) {

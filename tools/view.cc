@@ -1,0 +1,333 @@
+// mjbuoy-view: an interactive viewer of an mjbuoy scene (see view.h)
+#include "view.h"
+
+#include <dlfcn.h>
+#include <link.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <thread>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "render.h"
+
+namespace mjbview {
+namespace {
+
+// TIME:FILE.png
+bool parseShot(const std::string& s, Options* o) {
+  size_t c = s.find(':');
+  char* end = nullptr;
+  double t = c == std::string::npos ? -1 : std::strtod(s.c_str(), &end);
+  if (c == std::string::npos || end != s.c_str() + c || !(t >= 0) || c + 1 >= s.size()) {
+    std::fprintf(stderr, "mjbuoy-view: --screenshot %s: expected TIME:FILE.png, e.g. "
+                 "2:shot.png\n", s.c_str());
+    return false;
+  }
+  o->shotTime = t;
+  o->shotFile = s.substr(c + 1);
+  return true;
+}
+
+// a temporary file next to path (same file system, so rename is atomic);
+// "" with the reason in err if the directory is not writable
+std::string tempNext(const std::string& path, std::string* err) {
+  std::string t = path + ".XXXXXX";
+  std::vector<char> buf(t.begin(), t.end());
+  buf.push_back(0);
+  int fd = mkstemp(buf.data());
+  if (fd < 0) {
+    *err = "cannot write " + path + ": " + std::strerror(errno) +
+           " (check that the directory exists and is writable)";
+    return "";
+  }
+  close(fd);
+  return buf.data();
+}
+
+// the window's picture to o.shotFile: temp file, then rename
+bool screenshot(View* v, mjrRect vp, double t) {
+  std::vector<unsigned char> rgb((size_t)3 * vp.width * vp.height);
+  mjr_readPixels(rgb.data(), nullptr, vp, &v->con);
+  std::string e, tmp = tempNext(v->o.shotFile, &e);
+  if (tmp.empty() || !mjbsim::writePng(tmp, rgb, vp.width, vp.height, &e) ||
+      std::rename(tmp.c_str(), v->o.shotFile.c_str()) != 0) {
+    if (e.empty()) e = "cannot rename to " + v->o.shotFile + ": " + std::strerror(errno);
+    if (!tmp.empty()) std::remove(tmp.c_str());
+    std::fprintf(stderr, "mjbuoy-view: --screenshot: %s\n", e.c_str());
+    return false;
+  }
+  std::printf("mjbuoy-view: wrote %s (%dx%d, t = %.6g s)\n", v->o.shotFile.c_str(), vp.width,
+              vp.height, t);
+  return true;
+}
+
+void printCamera(const View* v, const char* when) {
+  const mjvCamera& c = v->cam;
+  std::printf("mjbuoy-view: %s camera: lookat %.6f %.6f %.6f distance %.6f azimuth %.6f "
+              "elevation %.6f fovy %g deg\n", when, c.lookat[0], c.lookat[1], c.lookat[2],
+              c.distance, c.azimuth, c.elevation, v->m->vis.global.fovy);
+}
+
+// positions and orientations of every body (world body excluded), time first
+void printBodies(const View* v, const char* when) {
+  std::printf("mjbuoy-view: %s time %.9f\n", when, v->d->time);
+  for (int i = 1; i < v->m->nbody; i++) {
+    const mjtNum* p = v->d->xpos + 3 * i;
+    const mjtNum* q = v->d->xquat + 4 * i;
+    std::printf("mjbuoy-view: %s body %s pos %.9g %.9g %.9g quat %.9g %.9g %.9g %.9g\n", when,
+                mj_id2name(v->m, mjOBJ_BODY, i), p[0], p[1], p[2], q[0], q[1], q[2], q[3]);
+  }
+}
+
+void overlay(View* v, mjrRect vp, double t, bool paused, int slow) {
+  char val[512];
+  std::snprintf(val, sizeof(val), "%.2f s%s\n%.2fx%s\n%s\n%s\n%s", t, paused ? " (paused)" : "",
+                v->rtf, slow ? (std::string(" (slow motion 1/") + std::to_string((int)kSlow[slow]) +
+                                ")").c_str() : "",
+                v->info.c_str(), v->seaState.c_str(),
+                (std::string(v->forces ? "forces " : "") + (v->wet ? "wet" : "")).c_str());
+  mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, vp, "Time\nReal time\nmjbuoy\nSea\nShowing", val,
+              &v->con);
+  if (v->help) {
+    mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, vp,
+                "Space\nRight arrow\nBackspace\n- / +\nF\nW\nDouble-click\nCtrl + drag\n"
+                "Drag / scroll\nCtrl+Q",
+                "pause\nstep (paused)\nreset\nslower / faster\nforce arrows\nwet hull parts\n"
+                "select body (right: look at)\nperturb selected body (right: move, left: turn)\n"
+                "camera (left: rotate, right: move, middle: zoom)\nquit",
+                &v->con);
+  } else {
+    mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, vp, "H", "help", &v->con);
+  }
+}
+
+// the render loop: one picture per display refresh, until closed or done
+int run(View* v) {
+  bool shotPending = v->o.shotTime >= 0, failed = false;
+  double rtfWall = glfwGetTime(), rtfSim = 0;
+  // without vsync (a virtual X server, a driver that ignores the swap
+  // interval) pace the frames to the refresh rate anyway, so that drawing
+  // never takes more CPU from the physics thread than the display needs
+  const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor());
+  const double period = 1.0 / (mode && mode->refreshRate > 0 ? mode->refreshRate : 60);
+  double lastSwap = glfwGetTime();
+  while (!glfwWindowShouldClose(v->win)) {
+    glfwPollEvents();
+    double t;
+    bool paused;
+    int slow;
+    {
+      std::lock_guard<std::mutex> lk(v->mtx);
+      if (v->frame) {
+        int w, h;
+        glfwGetFramebufferSize(v->win, &w, &h);
+        v->framer.update(v->m, v->b, v->d, h > 0 ? (double)w / h : 1.6, &v->cam);
+        v->frame = false;
+        printCamera(v, "start");
+        std::fflush(stdout);
+      }
+      mjv_updateScene(v->m, v->d, &v->opt, &v->pert, &v->cam, mjCAT_ALL, &v->scn);
+      if (v->forces) mjbsim::addForceArrows(v->m, v->b, v->d, &v->scn);
+      v->sea.capture(v->d);
+      t = v->d->time;
+      paused = v->paused;
+      slow = v->slow;
+    }
+    double now = glfwGetTime();
+    if (now - rtfWall >= 0.5 || t < rtfSim) {
+      v->rtf = t >= rtfSim ? (t - rtfSim) / (now - rtfWall) : 0;
+      rtfWall = now;
+      rtfSim = t;
+    }
+    mjrRect vp = {0, 0, 0, 0};
+    glfwGetFramebufferSize(v->win, &vp.width, &vp.height);
+    mjr_render(vp, &v->scn, &v->con);
+    v->sea.draw(v->scn, v->cam, vp, v->wet);
+    overlay(v, vp, t, paused, slow);
+    const double eps = 1e-9 * std::fmax(1.0, v->o.shotTime);
+    if (shotPending && t >= v->o.shotTime - eps) {
+      shotPending = false;
+      failed |= !screenshot(v, vp, t);
+      std::lock_guard<std::mutex> lk(v->mtx);
+      v->stopAt = v->o.exitAfter >= 0 ? v->o.exitAfter : 1e300;
+    }
+    glfwSwapBuffers(v->win);
+    double wait = lastSwap + period - glfwGetTime();
+    if (wait > 0) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
+    lastSwap = glfwGetTime();
+    if (!shotPending && v->o.exitAfter >= 0 && t >= v->o.exitAfter - 1e-9 * std::fmax(1.0, t)) {
+      break;
+    }
+  }
+  return failed ? 1 : 0;
+}
+
+#if defined(__SANITIZE_ADDRESS__)
+// sanitizer builds: at exit glfwTerminate closes the X display, which
+// unloads Mesa's GL driver (swrast_dri.so) with strings it allocated and
+// still points to; LeakSanitizer then sees them unreachable, from an
+// unloaded "<unknown module>" that no suppression can name. Keeping every
+// loaded library mapped (RTLD_NODELETE) keeps those pointers visible.
+int pin(struct dl_phdr_info* info, size_t, void*) {
+  if (info->dlpi_name && info->dlpi_name[0]) {
+    void* h = dlopen(info->dlpi_name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
+    if (h) dlclose(h);
+  }
+  return 0;
+}
+void pinLibraries() { dl_iterate_phdr(pin, nullptr); }
+#else
+void pinLibraries() {}
+#endif
+
+// the window, its GL context (GLFW's default: a compatibility profile, which
+// MuJoCo 2.2's fixed-function renderer needs), MuJoCo's scene and context
+bool openWindow(View* v) {
+  glfwWindowHint(GLFW_SAMPLES, 4);
+  std::string title = "mjbuoy-view: " + v->o.model;
+  v->win = glfwCreateWindow(v->o.width, v->o.height, title.c_str(), nullptr, nullptr);
+  if (!v->win) return false;
+  glfwMakeContextCurrent(v->win);
+  pinLibraries();
+  glfwSwapInterval(1);  // render at the display's rate
+  mjv_defaultCamera(&v->cam);
+  mjv_defaultOption(&v->opt);
+  mjv_defaultPerturb(&v->pert);
+  mjv_defaultScene(&v->scn);
+  mjr_defaultContext(&v->con);
+  mjv_makeScene(v->m, &v->scn, v->m->ngeom + v->m->nbody + 2000);
+  mjr_makeContext(v->m, &v->con, mjFONTSCALE_100);
+  mjr_setBuffer(mjFB_WINDOW, &v->con);
+  installInput(v);
+  return true;
+}
+
+int parse(int argc, char** argv, Options* o) {
+  CLI::App app{"Interactive viewer of an mjbuoy MJCF scene (GLFW window)."};
+  std::string shot;
+  app.add_option("model", o->model, "MJCF model file")->required()->check(CLI::ExistingFile);
+  app.add_option("--backend", o->backend, "override the model's mjbuoy.backend (default: the "
+                 "model's, else cpu)")->check(CLI::IsMember({"cpu", "gl", "auto"}));
+  app.add_option("--screenshot", shot, "T:FILE.png: write the window's picture at simulated "
+                 "time T (atomically)");
+  app.add_option("--exit-after", o->exitAfter, "close after simulated time T [s]")
+      ->check(CLI::NonNegativeNumber);
+  app.add_flag("--print-final", o->printFinal,
+               "print the camera and every body's position and orientation at start and exit");
+  app.add_flag("--show-forces", o->forces, "start with force arrows on (key F)");
+  app.add_flag("--show-wet", o->wet, "start with the wet hull parts coloured (key W)");
+  app.add_flag("--paused", o->paused, "start paused (key Space)");
+  app.add_option("--width", o->width, "window width [pixels]")->check(CLI::Range(64, 8192));
+  app.add_option("--height", o->height, "window height [pixels]")->check(CLI::Range(64, 8192));
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  if (!shot.empty() && !parseShot(shot, o)) return 2;
+  if (o->shotTime >= 0 && o->exitAfter >= 0 && o->shotTime > o->exitAfter + 1e-9) {
+    std::fprintf(stderr, "mjbuoy-view: --screenshot at %g s is after --exit-after %g s\n",
+                 o->shotTime, o->exitAfter);
+    return 2;
+  }
+  return -1;
+}
+
+}  // namespace
+}  // namespace mjbview
+
+using mjbview::View;
+
+int main(int argc, char** argv) {
+  View v;
+  int rc = mjbview::parse(argc, argv, &v.o);
+  if (rc >= 0) return rc;
+  if (!v.o.shotFile.empty()) {
+    std::string e, tmp = mjbview::tempNext(v.o.shotFile, &e);  // check before simulating
+    if (tmp.empty()) {
+      std::fprintf(stderr, "mjbuoy-view: --screenshot: %s\n", e.c_str());
+      return 1;
+    }
+    std::remove(tmp.c_str());
+  }
+  char err[1024] = "";
+  v.m = mj_loadXML(v.o.model.c_str(), nullptr, err, sizeof(err));
+  if (!v.m) {
+    std::fprintf(stderr, "mjbuoy-view: cannot load %s: %s\n", v.o.model.c_str(), err);
+    return 1;
+  }
+  v.b = mjb_attach(v.m, v.o.backend.empty() ? nullptr : v.o.backend.c_str(), err, sizeof(err));
+  if (!v.b) {
+    std::fprintf(stderr, "mjbuoy-view: %s: %s\n", v.o.model.c_str(), err);
+    mj_deleteModel(v.m);
+    return 1;
+  }
+  std::fputs(mjb_warnings(v.b), stderr);
+  std::string e;
+  if (!v.sea.init(v.m, v.b, &e)) {
+    std::fprintf(stderr, "mjbuoy-view: %s: %s\n", v.o.model.c_str(), e.c_str());
+    mjb_detach(v.b);
+    mj_deleteModel(v.m);
+    return 1;
+  }
+  if (!glfwInit()) {
+    std::fprintf(stderr, "mjbuoy-view: cannot open a window: no display (set DISPLAY, or run "
+                 "headless under xvfb-run)\n");
+    mjb_detach(v.b);
+    mj_deleteModel(v.m);
+    return 1;
+  }
+  v.d = mj_makeData(v.m);
+  mjb_bindData(v.b, v.d);
+  mj_forward(v.m, v.d);
+  mjbInfo info = mjb_info(v.b);
+  char buf[512];
+  std::snprintf(buf, sizeof(buf), "%s on %s, %d hull%s on %d bod%s, %d triangles", info.backend,
+                info.renderer, info.nhull, info.nhull == 1 ? "" : "s", info.nbody,
+                info.nbody == 1 ? "y" : "ies", info.ntri);
+  v.info = buf;
+  v.seaState = mjbview::describeSea(v.m);
+  std::printf("mjbuoy-view: %s: %s; sea: %s\n", v.o.model.c_str(), buf, v.seaState.c_str());
+  v.forces = v.o.forces;
+  v.wet = v.o.wet;
+  v.paused = v.o.paused;
+  v.stopAt = v.o.shotTime >= 0 ? v.o.shotTime : v.o.exitAfter >= 0 ? v.o.exitAfter : 1e300;
+
+  if (!mjbview::openWindow(&v)) {
+    std::fprintf(stderr, "mjbuoy-view: cannot create an OpenGL window\n");
+    glfwTerminate();
+    mjb_unbindData(v.b, v.d);
+    mj_deleteData(v.d);
+    mjb_detach(v.b);
+    mj_deleteModel(v.m);
+    return 1;
+  }
+  if (v.o.printFinal) mjbview::printBodies(&v, "start");
+
+  std::thread sim(mjbview::physics, &v);
+  rc = mjbview::run(&v);
+  v.quit = true;
+  sim.join();
+
+  if (v.o.printFinal) {
+    mjbview::printCamera(&v, "final");
+    mjbview::printBodies(&v, "final");
+  }
+  std::fflush(stdout);
+  mjr_freeContext(&v.con);
+  mjv_freeScene(&v.scn);
+  glfwDestroyWindow(v.win);
+  glfwTerminate();
+  mjb_unbindData(v.b, v.d);
+  mj_deleteData(v.d);
+  mjb_detach(v.b);
+  mj_deleteModel(v.m);
+  return rc;
+}
