@@ -12,7 +12,10 @@
 #include <CLI/CLI.hpp>
 #include <mujoco/mujoco.h>
 
+#include "cliopt.h"
+#include "guard.h"
 #include "mjbuoy.h"
+#include "outfile.h"
 
 using Clock = std::chrono::steady_clock;
 
@@ -98,9 +101,12 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
   mjbBuoy* b = mjb_attach(m, be.c_str(), err, sizeof(err));
   if (!b) {
     std::fprintf(stderr, "mjbuoy-bench: %s\n", err);
+    mj_deleteData(d);
+    mj_deleteModel(m);
     return false;
   }
   mjb_bindData(b, d);
+  std::string why;  // mj_resetData below clears the bare runs' warnings
   ginner = mjcb_passive;
   mjcb_passive = timed;
   mj_resetData(m, d);
@@ -112,8 +118,19 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
     full.push_back(std::chrono::duration<double>(Clock::now() - t0).count() * 1e3 / steps);
     hydro.push_back(ghydro * 1e3 / steps);
     cpu.push_back(gcpu * 1e3 / steps);
+    // a diverging cell is no measurement: MuJoCo reset it and timed the reset state
+    if (mjbtool::diverged(d, &why)) break;
   }
   mjcb_passive = ginner;
+  if (!why.empty()) {
+    std::fprintf(stderr, "mjbuoy-bench: %d boats x %d triangles on %s diverged: %s\n", boats,
+                 tris, be.c_str(), why.c_str());
+    mjb_unbindData(b, d);
+    mj_deleteData(d);
+    mjb_detach(b);
+    mj_deleteModel(m);
+    return false;
+  }
   const char* sn[8];
   double ms[8];
   int ns = mjb_stageTimes(b, sn, ms, 8);
@@ -142,6 +159,8 @@ static double paper(int boats, int tris) {
 }
 
 int main(int argc, char** argv) {
+  mjbtool::installMujocoHandlers("mjbuoy-bench");
+  using mjbtool::Finite;
   CLI::App app{"Benchmark mjbuoy on the dissertation's grid of Wigley boats."};
   std::string grid = "small", json, meshes = MJB_MODELS "/meshes";
   std::vector<std::string> backends = {"cpu", "gl"};
@@ -151,19 +170,32 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"small", "full"}));
   app.add_option("--backend", backends, "backends to measure")
       ->check(CLI::IsMember({"cpu", "gl"}));
-  app.add_option("--boats", boats, "boat counts (overrides the grid)");
-  app.add_option("--tris", tris, "Wigley resolutions: 64 256 576 2800 7744 (overrides the grid)");
-  app.add_option("--steps", steps, "steps per repetition")->check(CLI::PositiveNumber);
-  app.add_option("--reps", reps, "repetitions (the median is reported)")->check(CLI::PositiveNumber);
+  app.add_option("--boats", boats, "boat counts (overrides the grid)")->check(Finite(1, 100000));
+  app.add_option("--tris", tris, "Wigley resolutions: 64 256 576 2800 7744 (overrides the grid)")
+      ->check(CLI::IsMember({64, 256, 576, 2800, 7744}));
+  app.add_option("--steps", steps, "steps per repetition")->check(Finite(1, 1e9));
+  app.add_option("--reps", reps, "repetitions (the median is reported)")->check(Finite(1, 1e6));
   app.add_option("--threads", gthreads, "cpu threads (mjbuoy.threads; 0 = auto, the default)")
-      ->check(CLI::Range(0, 64));
-  app.add_option("--json", json, "also write the results as JSON");
+      ->check(Finite(0, 64));
+  app.add_option("--json", json, "also write the results as JSON (replaced only when complete)");
   app.add_option("--meshes", meshes, "directory of wigley_N.obj");
   CLI11_PARSE(app, argc, argv);
   if (boats.empty()) boats = grid == "full" ? std::vector<int>{1, 50, 100, 200, 400, 800}
                                             : std::vector<int>{1, 50};
   if (tris.empty()) tris = grid == "full" ? std::vector<int>{64, 256, 576, 2800, 7744}
                                           : std::vector<int>{64, 576};
+  if (!json.empty()) {
+    std::vector<mjbtool::PathUse> uses;
+    for (int t : tris) {
+      uses.push_back({meshes + "/wigley_" + std::to_string(t) + ".obj", "mesh", false});
+    }
+    uses.push_back({json, "--json", true});
+    std::string e;
+    if (!mjbtool::checkWritable(json, "--json", &e) || !mjbtool::checkDistinct(uses, &e)) {
+      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
+      return 1;
+    }
+  }
 
   std::vector<Cell> cells;
   int total = boats.size() * tris.size() * backends.size(), done = 0;
@@ -193,11 +225,13 @@ int main(int argc, char** argv) {
   }
   std::fprintf(stderr, "\n");
   if (!json.empty()) {
-    FILE* f = std::fopen(json.c_str(), "w");
-    if (!f) {
-      std::fprintf(stderr, "mjbuoy-bench: cannot write %s\n", json.c_str());
+    mjbtool::OutFile of;
+    std::string e;
+    if (!of.open(json, "--json", &e)) {
+      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
       return 1;
     }
+    FILE* f = of.file();
     std::fprintf(f, "[\n");
     for (size_t i = 0; i < cells.size(); i++) {
       const Cell& c = cells[i];
@@ -211,7 +245,14 @@ int main(int argc, char** argv) {
       std::fprintf(f, "}}%s\n", i + 1 < cells.size() ? "," : "");
     }
     std::fprintf(f, "]\n");
-    std::fclose(f);
+    if (!of.commit(&e)) {
+      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
+      return 1;
+    }
+  }
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    std::fprintf(stderr, "mjbuoy-bench: cannot write the table to stdout\n");
+    return 1;
   }
   return 0;
 }

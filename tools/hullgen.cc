@@ -8,6 +8,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cliopt.h"
+#include "outfile.h"
+
 // hull dimensions [m]: length, beam, draft, freeboard
 struct Dims {
   double L = 4, B = 0.5, T = 0.25, F = 0.15;
@@ -176,7 +179,7 @@ static bool writeObj(const Mesh& m, const Dims& d, int nx, int nz, FILE* out) {
   for (int k = 0; k < m.nf(); k++) {
     std::fprintf(out, "f %d %d %d\n", m.f[3 * k] + 1, m.f[3 * k + 1] + 1, m.f[3 * k + 2] + 1);
   }
-  return !std::ferror(out);
+  return std::fflush(out) == 0 && !std::ferror(out);
 }
 
 int main(int argc, char** argv) {
@@ -186,12 +189,15 @@ int main(int argc, char** argv) {
   long n = 576;
   std::string file;
   bool print = false;
-  app.add_option("--triangles", n, "target triangle count")->check(CLI::Range(10L, 100000000L));
-  app.add_option("--length", d.L, "length L [m]")->check(CLI::PositiveNumber);
-  app.add_option("--beam", d.B, "beam B [m]")->check(CLI::PositiveNumber);
-  app.add_option("--draft", d.T, "design draft T [m]")->check(CLI::PositiveNumber);
-  app.add_option("--freeboard", d.F, "freeboard F [m]")->check(CLI::PositiveNumber);
-  app.add_option("-o,--output", file, "OBJ file to write (default: stdout)");
+  using mjbtool::Finite;
+  const double big = mjbtool::kInf;
+  app.add_option("--triangles", n, "target triangle count")->check(Finite(10, 1e8));
+  app.add_option("--length", d.L, "length L [m]")->check(Finite(0, big, true));
+  app.add_option("--beam", d.B, "beam B [m]")->check(Finite(0, big, true));
+  app.add_option("--draft", d.T, "design draft T [m]")->check(Finite(0, big, true));
+  app.add_option("--freeboard", d.F, "freeboard F [m]")->check(Finite(0, big, true));
+  app.add_option("-o,--output", file, "OBJ file to write, replaced only when complete "
+                 "(default: stdout)");
   app.add_flag("--print", print, "print grid, triangle count and volumes to stderr");
   CLI11_PARSE(app, argc, argv);
 
@@ -203,17 +209,16 @@ int main(int argc, char** argv) {
                  m.nf(), count(nx, nz));
     return 1;
   }
-  FILE* out = file.empty() ? stdout : std::fopen(file.c_str(), "w");
-  if (!out) {
-    std::fprintf(stderr, "mjbuoy-hullgen: cannot write %s: check the directory exists "
-                 "and is writable\n", file.c_str());
+  mjbtool::OutFile of;
+  std::string e;
+  if (!file.empty() && !of.open(file, "-o", &e)) {
+    std::fprintf(stderr, "mjbuoy-hullgen: %s\n", e.c_str());
     return 1;
   }
-  bool ok = writeObj(m, d, nx, nz, out);
-  if (out != stdout) ok = std::fclose(out) == 0 && ok;
-  if (!ok) {
-    std::fprintf(stderr, "mjbuoy-hullgen: write error on %s\n",
-                 file.empty() ? "stdout" : file.c_str());
+  bool ok = writeObj(m, d, nx, nz, file.empty() ? stdout : of.file());
+  if (!ok || (!file.empty() && !of.commit(&e))) {
+    if (e.empty()) e = std::string("write failed on ") + (file.empty() ? "stdout" : file.c_str());
+    std::fprintf(stderr, "mjbuoy-hullgen: %s\n", e.c_str());
     return 1;
   }
   if (print) {

@@ -8,7 +8,12 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "render.h"  // findProgram, shellQuote, checkWritable
+#include <cerrno>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "render.h"  // findProgram, shellQuote
 
 namespace mjbsim {
 
@@ -28,22 +33,40 @@ static std::string gq(const std::string& s) {
   return q + "'";
 }
 
-bool writePlot(const std::string& png, const std::string& title, const std::vector<double>& t,
-               const std::vector<PlotSeries>& s, std::string* err) {
-  if (!plotAvailable(err) || !checkWritable(png, err)) return false;
-  char dat[] = "/tmp/mjbuoy-plot-XXXXXX";
-  int fd = mkstemp(dat);
-  if (fd < 0) {
-    *err = "cannot create a temporary file for the plot data";
+// a temporary file in $TMPDIR (path in *name), removed by its owner
+static int tmpFile(const char* stem, std::string* name) {
+  const char* td = std::getenv("TMPDIR");
+  std::string t = std::string(td && *td ? td : "/tmp") + "/" + stem + "-XXXXXX";
+  std::vector<char> buf(t.begin(), t.end());
+  buf.push_back(0);
+  int fd = mkstemp(buf.data());
+  if (fd >= 0) *name = buf.data();
+  return fd;
+}
+
+bool writePlot(const std::string& png, const std::string& name, const std::string& title,
+               const std::vector<double>& t, const std::vector<PlotSeries>& s, std::string* err) {
+  if (!plotAvailable(err)) return false;
+  std::string dat, log;
+  int fd = tmpFile("mjbuoy-plot", &dat);
+  FILE* f = fd < 0 ? nullptr : fdopen(fd, "w");
+  if (!f) {
+    if (fd >= 0) ::close(fd), std::remove(dat.c_str());
+    *err = std::string("cannot create a temporary file for the plot data: ") + std::strerror(errno);
     return false;
   }
-  FILE* f = fdopen(fd, "w");
   for (size_t i = 0; i < t.size(); i++) {
     std::fprintf(f, "%.6f", t[i]);
     for (const PlotSeries& p : s) std::fprintf(f, " %.6g %.6g %.6g", p.z[i], p.roll[i], p.pitch[i]);
     std::fprintf(f, "\n");
   }
-  std::fclose(f);
+  bool ok = std::fflush(f) == 0 && !std::ferror(f);
+  ok = std::fclose(f) == 0 && ok;
+  if (!ok) {
+    std::remove(dat.c_str());
+    *err = std::string("cannot write the plot data to ") + dat + ": " + std::strerror(errno);
+    return false;
+  }
   std::string script = "set terminal pngcairo size 1200,900 font 'sans,10'\n";
   script += "set output " + gq(png) + "\n";
   script += "set multiplot layout 3,1 title " + gq(title) + "\n";
@@ -62,19 +85,32 @@ bool writePlot(const std::string& png, const std::string& title, const std::vect
     if (s.empty()) script += "0 title 'no bodies'";
     script += "\n";
   }
-  script += "unset multiplot\n";
-  std::string cmd = shellQuote(findProgram("gnuplot") + "/gnuplot") + " 2>&1";
+  script += "unset multiplot\nset output\n";
+  int lfd = tmpFile("mjbuoy-gnuplot", &log);
+  if (lfd >= 0) ::close(lfd);
+  std::string cmd = shellQuote(findProgram("gnuplot") + "/gnuplot") + " >/dev/null 2>" +
+                    (lfd >= 0 ? shellQuote(log) : std::string("&1"));
   FILE* g = popen(cmd.c_str(), "w");
   if (!g) {
-    std::remove(dat);
+    std::remove(dat.c_str());
+    if (lfd >= 0) std::remove(log.c_str());
     *err = "cannot start gnuplot";
     return false;
   }
   std::fputs(script.c_str(), g);
   int st = pclose(g);
-  std::remove(dat);
+  std::remove(dat.c_str());
+  std::string msg;
+  if (lfd >= 0) {
+    std::ifstream in(log);
+    std::string l;
+    while (std::getline(in, l)) {
+      if (!l.empty()) msg = l;  // the last line says why
+    }
+    std::remove(log.c_str());
+  }
   if (st == -1 || !WIFEXITED(st) || WEXITSTATUS(st) != 0) {
-    *err = "gnuplot failed writing " + png;
+    *err = "gnuplot failed writing " + name + (msg.empty() ? "" : ": " + msg);
     return false;
   }
   return true;

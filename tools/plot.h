@@ -16,8 +16,10 @@ struct PlotSeries {
 // checks that gnuplot is on PATH (false with the package to install)
 bool plotAvailable(std::string* err);
 
-// writes png (1200 x 900): three panels sharing the time axis
-bool writePlot(const std::string& png, const std::string& title, const std::vector<double>& t,
+// writes the PNG file png (1200 x 900; name in messages): three panels
+// sharing the time axis; false with gnuplot's reason
+bool writePlot(const std::string& png, const std::string& name, const std::string& title,
+               const std::vector<double>& t,
                const std::vector<PlotSeries>& s, std::string* err);
 
 }  // namespace mjbsim

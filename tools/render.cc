@@ -208,65 +208,67 @@ std::string findProgram(const std::string& name) {
   return "";
 }
 
-bool checkWritable(const std::string& path, std::string* err) {
-  FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) {
-    *err = "cannot write " + path + ": " + std::strerror(errno) +
-           " (check that the directory exists and is writable)";
-    return false;
-  }
-  std::fclose(f);
-  return true;
-}
-
 VideoWriter::~VideoWriter() {
   std::string e;
   if (pipe_) close(&e);
 }
 
-bool VideoWriter::open(const std::string& path, int w, int h, double fps, std::string* err) {
+bool VideoWriter::open(const std::string& path, const std::string& name, int w, int h,
+                       double fps, std::string* err) {
   std::string dir = findProgram("ffmpeg");
   if (dir.empty()) {
     *err = "--render needs the ffmpeg program, which is not on PATH; install the Debian "
            "package ffmpeg (apt-get install ffmpeg)";
     return false;
   }
-  if (!checkWritable(path, err)) return false;
   path_ = path;
+  name_ = name;
   width_ = w;
   height_ = h;
-  char tmpl[] = "/tmp/mjbuoy-ffmpeg-XXXXXX";
-  int fd = mkstemp(tmpl);
+  const char* td = std::getenv("TMPDIR");
+  std::string tmpl = std::string(td && *td ? td : "/tmp") + "/mjbuoy-ffmpeg-XXXXXX";
+  std::vector<char> buf(tmpl.begin(), tmpl.end());
+  buf.push_back(0);
+  int fd = mkstemp(buf.data());
   if (fd < 0) {
-    *err = "cannot create a temporary file for ffmpeg's log";
+    *err = "cannot create a temporary file for ffmpeg's log in " + tmpl.substr(0, tmpl.rfind('/')) +
+           ": " + std::strerror(errno);
     return false;
   }
   ::close(fd);
-  log_ = tmpl;
+  log_ = buf.data();
   char sz[64], rate[32];
   std::snprintf(sz, sizeof(sz), "%dx%d", w, h);
   std::snprintf(rate, sizeof(rate), "%.6g", fps);
-  // H.264 needs even sizes: pad by one pixel if odd
+  // H.264 needs even sizes: pad by one pixel if odd; -f mp4: the container
+  // does not depend on the (temporary) file's name
   std::string cmd = shellQuote(dir + "/ffmpeg") +
                     " -nostdin -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgb24 -s " +
                     sz + " -r " + rate + " -i - -vf " +
                     shellQuote("vflip,pad=ceil(iw/2)*2:ceil(ih/2)*2") +
-                    " -c:v libx264 -preset veryfast -crf 20 -pix_fmt yuv420p -movflags +faststart " +
-                    shellQuote(path) + " 2>" + shellQuote(log_);
+                    " -c:v libx264 -preset veryfast -crf 20 -pix_fmt yuv420p -movflags +faststart "
+                    "-f mp4 " + shellQuote(path) + " 2>" + shellQuote(log_);
   pipe_ = popen(cmd.c_str(), "w");
   if (!pipe_) {
     *err = "cannot start ffmpeg: " + std::string(std::strerror(errno));
+    std::remove(log_.c_str());
+    log_.clear();
     return false;
   }
   return true;
 }
 
+// the last lines of ffmpeg's log (its own reason for failing)
 static std::string readLog(const std::string& f) {
   std::ifstream in(f);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string s = ss.str();
-  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  std::vector<std::string> lines;
+  std::string l;
+  while (std::getline(in, l)) {
+    if (!l.empty()) lines.push_back(l);
+  }
+  std::string s;
+  size_t from = lines.size() > 4 ? lines.size() - 4 : 0;
+  for (size_t i = from; i < lines.size(); i++) s += (s.empty() ? "" : " | ") + lines[i];
   return s;
 }
 
@@ -275,10 +277,11 @@ bool VideoWriter::write(const std::vector<unsigned char>& rgb, std::string* err)
     *err = "video is not open";
     return false;
   }
-  if (std::fwrite(rgb.data(), 1, rgb.size(), pipe_) != rgb.size()) {
+  if (std::fwrite(rgb.data(), 1, rgb.size(), pipe_) != rgb.size() || std::fflush(pipe_) != 0) {
     std::string e;
     close(&e);
-    *err = "ffmpeg stopped taking frames while writing " + path_ + (e.empty() ? "" : ": " + e);
+    *err = "ffmpeg stopped taking frames after " + std::to_string(frames_) + " while writing " +
+           name_ + (e.empty() ? "" : "; " + e);
     return false;
   }
   frames_++;
@@ -287,31 +290,30 @@ bool VideoWriter::write(const std::vector<unsigned char>& rgb, std::string* err)
 
 bool VideoWriter::close(std::string* err) {
   if (!pipe_) return true;
+  std::fflush(pipe_);  // an EPIPE here shows in ffmpeg's status below
   int st = pclose(pipe_);
   pipe_ = nullptr;
   std::string log = readLog(log_);
   std::remove(log_.c_str());
+  log_.clear();
   if (st == -1 || !WIFEXITED(st) || WEXITSTATUS(st) != 0) {
-    *err = "ffmpeg failed writing " + path_ + (log.empty() ? "" : ": " + log);
+    char how[64] = "";
+    if (st != -1 && WIFEXITED(st)) std::snprintf(how, sizeof(how), " (exit status %d)", WEXITSTATUS(st));
+    if (st != -1 && WIFSIGNALED(st)) std::snprintf(how, sizeof(how), " (signal %d)", WTERMSIG(st));
+    *err = "ffmpeg failed writing " + name_ + how +
+           (log.empty() ? std::string(" and gave no reason") : ": " + log);
     return false;
   }
   return true;
 }
 
-bool writePng(const std::string& path, const std::vector<unsigned char>& rgb, int w, int h,
-              std::string* err) {
-  FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) {
-    *err = "cannot write " + path + ": " + std::strerror(errno) +
-           " (check that the directory exists and is writable)";
-    return false;
-  }
+bool writePng(FILE* f, const std::string& name, const std::vector<unsigned char>& rgb, int w,
+              int h, std::string* err) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!png || !info || setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
-    std::fclose(f);
-    *err = "libpng failed writing " + path;
+    *err = "libpng failed writing " + name;
     return false;
   }
   png_init_io(png, f);
@@ -323,8 +325,8 @@ bool writePng(const std::string& path, const std::vector<unsigned char>& rgb, in
   }
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
-  if (std::fclose(f) != 0) {
-    *err = "cannot finish " + path + ": " + std::strerror(errno);
+  if (std::ferror(f)) {
+    *err = "cannot write " + name + ": " + std::strerror(errno);
     return false;
   }
   return true;

@@ -57,12 +57,16 @@ class Renderer {
   Impl* p_;
 };
 
-// H.264 MP4 (or whatever the extension says) through the ffmpeg program
+// H.264 MP4 through the ffmpeg program; its stderr goes to a temporary log
+// in $TMPDIR, whose last lines are the reason given when it fails
 class VideoWriter {
  public:
   ~VideoWriter();
-  // checks that ffmpeg is on PATH and path is writable, then starts ffmpeg
-  bool open(const std::string& path, int width, int height, double fps, std::string* err);
+  // checks that ffmpeg is on PATH, then starts it writing file (the
+  // caller's temporary file); name is the output in messages. SIGPIPE must
+  // be ignored: a failing ffmpeg then makes write() fail with EPIPE
+  bool open(const std::string& file, const std::string& name, int width, int height, double fps,
+            std::string* err);
   // one frame, bottom row first
   bool write(const std::vector<unsigned char>& rgb, std::string* err);
   // waits for ffmpeg; false with its complaint if it failed
@@ -71,19 +75,17 @@ class VideoWriter {
 
  private:
   FILE* pipe_ = nullptr;
-  std::string path_, log_;
+  std::string path_, name_, log_;
   int width_ = 0, height_ = 0, frames_ = 0;
 };
 
 // the directory on PATH holding an executable `name`, or ""
 std::string findProgram(const std::string& name);
 
-// is path creatable/writable (the file is created and left empty)
-bool checkWritable(const std::string& path, std::string* err);
-
-// PNG through libpng; rgb bottom row first, so rows are flipped
-bool writePng(const std::string& path, const std::vector<unsigned char>& rgb, int width,
-              int height, std::string* err);
+// PNG through libpng into f (name for messages); rgb bottom row first, so
+// rows are flipped. f stays open: the caller checks and closes it
+bool writePng(FILE* f, const std::string& name, const std::vector<unsigned char>& rgb,
+              int width, int height, std::string* err);
 
 // shell-quote s for popen
 std::string shellQuote(const std::string& s);

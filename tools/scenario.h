@@ -179,8 +179,9 @@ void runScenario(const Scenario& s, Sim& sim, Report& r);
 // print a report: one line per check, FAIL lines with the measurement
 void printReport(const Report& r, FILE* out);
 
-// write JUnit XML: one <testsuite> per scenario file (false on I/O error)
-bool writeJUnit(const std::vector<Report>& reports, const std::string& path);
+// write JUnit XML to f: one <testsuite> per scenario file (false on I/O
+// error; the caller checks and closes f)
+bool writeJUnit(const std::vector<Report>& reports, FILE* f);
 
 // number formatting shared by the parts: %.6g, "inf" for infinities
 std::string num(double v);

@@ -195,6 +195,10 @@ static std::vector<int> resolveBodies(const Scenario& s, const mjModel* m,
 static void applyInit(const Scenario& s, const Init& in, const mjModel* m, mjData* d) {
   const double deg = M_PI / 180;
   if (!in.body.empty()) {
+    if (in.body.find_first_of("*?[") != std::string::npos) {
+      throw Invalid(s.file, in.line, "<init>: body \"" + in.body + "\": patterns are not "
+                                     "supported in <init body>; name one body per <init>");
+    }
     int b = mj_name2id(m, mjOBJ_BODY, in.body.c_str());
     if (b < 0) resolveBodies(s, m, in.body, in.line);  // throws with the body list
     int j = -1;

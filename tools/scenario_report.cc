@@ -40,7 +40,7 @@ static std::string fixed(double v) {
   return buf;
 }
 
-bool writeJUnit(const std::vector<Report>& reports, const std::string& path) {
+bool writeJUnit(const std::vector<Report>& reports, FILE* f) {
   tinyxml2::XMLDocument doc;
   doc.InsertEndChild(doc.NewDeclaration());
   tinyxml2::XMLElement* all = doc.NewElement("testsuites");
@@ -102,7 +102,7 @@ bool writeJUnit(const std::vector<Report>& reports, const std::string& path) {
   all->SetAttribute("failures", failures);
   all->SetAttribute("errors", errors);
   all->SetAttribute("time", fixed(time).c_str());
-  return doc.SaveFile(path.c_str()) == tinyxml2::XML_SUCCESS;
+  return doc.SaveFile(f) == tinyxml2::XML_SUCCESS && !std::ferror(f);
 }
 
 }  // namespace scn

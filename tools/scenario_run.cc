@@ -8,12 +8,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "guard.h"
 #include "scenario.h"
 
 namespace scn {
-
-static std::string g_warning;  // last MuJoCo warning text
-static void onWarning(const char* msg) { g_warning = msg; }
 
 void runScenario(const Scenario& s, Sim& sim, Report& r) {
   const mjModel* m = sim.m;
@@ -25,31 +23,21 @@ void runScenario(const Scenario& s, Sim& sim, Report& r) {
     Sample smp{m, d, sim.b, t};
     for (auto& e : evals) e->sample(smp);
   };
-  auto bad = [&]() {
-    for (int w : {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC}) {
-      if (d->warning[w].number > 0) return true;
-    }
-    return false;
-  };
-
-  void (*prev)(const char*) = mju_user_warning;
-  mju_user_warning = onWarning;  // MuJoCo would print and write MUJOCO_LOG.TXT
-  g_warning.clear();
   const bool rk4 = m->opt.integrator == mjINT_RK4;
-  const double eps = 1e-6 * dt;
   double diverged = kInf;
   std::string why;
   long steps = 0;
   auto t0 = std::chrono::steady_clock::now();
   mj_forward(m, d);
   if (rk4) sample(d->time);
-  while (d->time < s.duration - eps) {
+  // a fixed number of steps (mjbtool::stepsFor): time alone could stall
+  const long nsteps = mjbtool::stepsFor(s.duration, dt);
+  while (steps < nsteps) {
     double t = d->time;
     mj_step(m, d);
     steps++;
-    if (bad()) {
+    if (mjbtool::diverged(d, &why)) {
       diverged = t;
-      why = "MuJoCo reset the state: " + (g_warning.empty() ? "bad qpos, qvel or qacc" : g_warning);
       break;
     }
     if (rk4) {
@@ -64,7 +52,6 @@ void runScenario(const Scenario& s, Sim& sim, Report& r) {
     sample(d->time);
   }
   double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  mju_user_warning = prev;
 
   for (auto& e : evals) r.results.push_back(e->finish(diverged, why));
   if (!std::isinf(diverged)) {

@@ -1,4 +1,7 @@
 // mjbuoy-sim: run an MJCF boat scene headless and summarise it
+#include <signal.h>
+#include <strings.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -6,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,7 +17,10 @@
 #include <CLI/CLI.hpp>
 #include <mujoco/mujoco.h>
 
+#include "cliopt.h"
+#include "guard.h"
 #include "mjbuoy.h"
+#include "outfile.h"
 #include "plot.h"
 #include "render.h"
 
@@ -67,29 +74,71 @@ struct Progress {
   }
 };
 
+// the model, its data and the attachment, freed on every way out
+struct Scene {
+  mjModel* m = nullptr;
+  mjData* d = nullptr;
+  mjbBuoy* b = nullptr;
+  ~Scene() {
+    if (b && d) mjb_unbindData(b, d);
+    if (d) mj_deleteData(d);
+    if (b) mjb_detach(b);
+    if (m) mj_deleteModel(m);
+  }
+};
+
+// a still picture at simulated time t
+struct Snap {
+  double t;
+  std::string file;
+  bool done = false;
+  mjbtool::OutFile out;
+};
+
+// "mjbuoy-sim: OPT: why", unless why already starts with OPT
+static void fail(const char* opt, const std::string& why) {
+  bool named = why.compare(0, std::strlen(opt), opt) == 0;
+  std::fprintf(stderr, "mjbuoy-sim: %s%s%s\n", named ? "" : opt, named ? "" : ": ", why.c_str());
+}
+
+// an output path that is a regular file (or new), not a device or pipe
+static bool isRegularTarget(const std::string& path) {
+  struct stat st;
+  return stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode);
+}
+
 int main(int argc, char** argv) {
-  CLI::App app{"Simulate an mjbuoy MJCF scene headless and print a summary."};
+  mjbtool::installMujocoHandlers("mjbuoy-sim");
+  // a failing ffmpeg closes its pipe: a write error to report, not a death by SIGPIPE
+  signal(SIGPIPE, SIG_IGN);
+  using mjbtool::Finite;
+  using mjbtool::kInf;
+  CLI::App app{"Simulate an mjbuoy MJCF scene headless and print a summary. Outputs are "
+               "written to a temporary file beside them and renamed into place when the run "
+               "succeeds; an output that is an input or another output is refused."};
   std::string model, csv, backend;
   double duration = 10, interval = 0.01;
   app.add_option("model", model, "MJCF model file")->required()->check(CLI::ExistingFile);
-  app.add_option("--duration", duration, "simulated time [s]")->check(CLI::NonNegativeNumber);
+  app.add_option("--duration", duration, "simulated time [s]")->check(Finite(0, 1e9));
   app.add_option("--csv", csv, "write time and pose of every free body to this CSV file");
   app.add_option("--interval", interval, "CSV output interval [s]")
-      ->check(CLI::PositiveNumber);
+      ->check(Finite(0, kInf, true));
   app.add_option("--backend", backend, "override the model's mjbuoy.backend")
       ->check(CLI::IsMember({"cpu", "gl", "auto"}));
   std::vector<double> ctrl;
-  app.add_option("--ctrl", ctrl, "constant controls, one per actuator in model order");
+  app.add_option("--ctrl", ctrl, "constant controls, one per actuator in model order")
+      ->check(Finite(-kInf, kInf));
   std::string video, camera, plot, progress = "auto";
   double fps = 30;
   int width = 1280, height = 720;
   std::vector<std::string> snapshots;
   bool showForces = false, showWet = false;
-  app.add_option("--render", video, "write a video of the run (H.264 MP4 through ffmpeg)");
+  app.add_option("--render", video, "write a video of the run (H.264 MP4 through ffmpeg; "
+                 "FILE.mp4, or a device such as /dev/null)");
   app.add_option("--fps", fps, "video frames per second of simulated time")
-      ->check(CLI::Range(1.0, 240.0));
-  app.add_option("--width", width, "picture width [pixels]")->check(CLI::Range(16, 8192));
-  app.add_option("--height", height, "picture height [pixels]")->check(CLI::Range(16, 8192));
+      ->check(Finite(1, 240));
+  app.add_option("--width", width, "picture width [pixels]")->check(Finite(16, 8192));
+  app.add_option("--height", height, "picture height [pixels]")->check(Finite(16, 8192));
   app.add_option("--camera", camera,
                  "model camera to render from (default: a free camera following the hulls)");
   app.add_option("--snapshot", snapshots, "T:FILE.png: a still picture at simulated time T");
@@ -103,12 +152,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "bar", "lines", "off"}));
   CLI11_PARSE(app, argc, argv);
 
-  // pictures: check everything that can fail before simulating
-  struct Snap {
-    double t;
-    std::string file;
-    bool done;
-  };
+  // everything that can fail before simulating, nothing written yet
   std::vector<Snap> snaps;
   for (const std::string& s : snapshots) {
     size_t c = s.find(':');
@@ -124,53 +168,77 @@ int main(int argc, char** argv) {
                    "(--duration %g)\n", s.c_str(), t, duration);
       return 1;
     }
-    snaps.push_back(Snap{t, s.substr(c + 1), false});
+    snaps.emplace_back();
+    snaps.back().t = t;
+    snaps.back().file = s.substr(c + 1);
+  }
+  {
+    std::vector<mjbtool::PathUse> uses = {{model, "model", false}};
+    if (!csv.empty()) uses.push_back({csv, "--csv", true});
+    if (!plot.empty()) uses.push_back({plot, "--plot", true});
+    if (!video.empty()) uses.push_back({video, "--render", true});
+    for (const Snap& s : snaps) uses.push_back({s.file, "--snapshot", true});
     std::string e;
-    if (!mjbsim::checkWritable(snaps.back().file, &e)) {
-      std::fprintf(stderr, "mjbuoy-sim: --snapshot: %s\n", e.c_str());
+    for (const mjbtool::PathUse& u : uses) {
+      if (u.output && !mjbtool::checkWritable(u.path, u.what, &e)) {
+        std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
+        return 1;
+      }
+    }
+    if (!mjbtool::checkDistinct(uses, &e)) {
+      std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
       return 1;
     }
   }
   if (!plot.empty()) {
     std::string e;
-    if (!mjbsim::plotAvailable(&e) || !mjbsim::checkWritable(plot, &e)) {
+    if (!mjbsim::plotAvailable(&e)) {
       std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
       return 1;
     }
   }
   mjbsim::VideoWriter writer;
   if (!video.empty()) {
-    std::string e;
-    if (!mjbsim::findProgram("ffmpeg").size()) {
-      writer.open(video, width, height, fps, &e);  // says which package
-      std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
+    // ffmpeg writes H.264 into an MP4 container (-f mp4): the name must say so
+    size_t dot = video.rfind('.');
+    std::string ext = dot == std::string::npos || video.find('/', dot) != std::string::npos
+                          ? "" : video.substr(dot);
+    if (isRegularTarget(video) && strcasecmp(ext.c_str(), ".mp4") != 0) {
+      std::fprintf(stderr, "mjbuoy-sim: --render %s: the video is H.264 in an MP4 container; "
+                   "give a file name ending in .mp4 (got %s)\n", video.c_str(),
+                   ext.empty() ? "no extension" : ("\"" + ext + "\"").c_str());
       return 1;
     }
-    if (!mjbsim::checkWritable(video, &e)) {
-      std::fprintf(stderr, "mjbuoy-sim: --render: %s\n", e.c_str());
+    if (mjbsim::findProgram("ffmpeg").empty()) {
+      std::string e;
+      writer.open(video, video, width, height, fps, &e);  // says which package
+      std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
       return 1;
     }
   }
 
+  Scene sc;
   char err[1024] = "";
   // mesh files MuJoCo 2.2 would load broken (mjbuoy.h)
   if (!mjb_checkModelFile(model.c_str(), err, sizeof(err))) {
     std::fprintf(stderr, "mjbuoy-sim: cannot load %s: %s\n", model.c_str(), err);
     return 1;
   }
-  mjModel* m = mj_loadXML(model.c_str(), nullptr, err, sizeof(err));
-  if (!m) {
+  sc.m = mj_loadXML(model.c_str(), nullptr, err, sizeof(err));
+  if (!sc.m) {
     std::fprintf(stderr, "mjbuoy-sim: cannot load %s: %s\n", model.c_str(), err);
     return 1;
   }
-  mjbBuoy* b = mjb_attach(m, backend.empty() ? nullptr : backend.c_str(), err, sizeof(err));
-  if (!b) {
+  mjModel* m = sc.m;
+  sc.b = mjb_attach(m, backend.empty() ? nullptr : backend.c_str(), err, sizeof(err));
+  if (!sc.b) {
     std::fprintf(stderr, "mjbuoy-sim: %s: %s\n", model.c_str(), err);
-    mj_deleteModel(m);
     return 1;
   }
+  mjbBuoy* b = sc.b;
   std::fputs(mjb_warnings(b), stderr);
-  mjData* d = mj_makeData(m);
+  sc.d = mj_makeData(m);
+  mjData* d = sc.d;
   mjb_bindData(b, d);
   if ((int)ctrl.size() > m->nu) {
     std::fprintf(stderr, "mjbuoy-sim: --ctrl has %zu values but %s has %d actuator(s)\n",
@@ -180,6 +248,7 @@ int main(int argc, char** argv) {
   for (size_t i = 0; i < ctrl.size(); i++) d->ctrl[i] = ctrl[i];
 
   std::unique_ptr<mjbsim::Renderer> renderer;
+  mjbtool::OutFile videoOut;
   if (!video.empty() || !snaps.empty()) {
     mjbsim::RenderOptions ro;
     ro.width = width;
@@ -193,8 +262,9 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "mjbuoy-sim: cannot render: %s\n", e.c_str());
       return 1;
     }
-    if (!video.empty() && !writer.open(video, width, height, fps, &e)) {
-      std::fprintf(stderr, "mjbuoy-sim: --render: %s\n", e.c_str());
+    if (!video.empty() && (!videoOut.open(video, "--render", &e) ||
+                           !writer.open(videoOut.tmpPath(), video, width, height, fps, &e))) {
+      fail("--render", e);
       return 1;
     }
   }
@@ -211,14 +281,15 @@ int main(int argc, char** argv) {
   for (int j = 0; j < m->njnt; j++) {
     if (m->jnt_type[j] == mjJNT_FREE) free.push_back(m->jnt_bodyid[j]);
   }
+  mjbtool::OutFile csvOut;
   FILE* out = nullptr;
   if (!csv.empty()) {
-    out = std::fopen(csv.c_str(), "w");
-    if (!out) {
-      std::fprintf(stderr, "mjbuoy-sim: cannot write %s: check the directory exists "
-                   "and is writable\n", csv.c_str());
+    std::string e;
+    if (!csvOut.open(csv, "--csv", &e)) {
+      std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
       return 1;
     }
+    out = csvOut.file();
     std::fprintf(out, "time");
     for (int bd : free) {
       const char* n = m->names + m->name_bodyadr[bd];
@@ -246,6 +317,7 @@ int main(int argc, char** argv) {
   std::vector<int> hullBodies;
   std::vector<mjbsim::PlotSeries> series;
   std::vector<double> plotT;
+  mjbtool::OutFile plotOut;
   if (!plot.empty()) {
     const mjtNum* w = mjb_wrench(b, d);
     for (int i = 1; w && i < m->nbody; i++) {
@@ -263,6 +335,8 @@ int main(int argc, char** argv) {
     for (int bd : hullBodies) series.push_back({m->names + m->name_bodyadr[bd], {}, {}, {}});
   }
 
+  // a fixed number of steps: time alone could stall or go back (a MuJoCo reset)
+  const long nsteps = mjbtool::stepsFor(duration, m->opt.timestep);
   long steps = 0;
   double next = 0, nextPlot = 0;
   long frame = 0;
@@ -291,44 +365,68 @@ int main(int argc, char** argv) {
       // frames k / fps for k / fps < duration: 2 s at 30 fps are 60 frames
       if (!video.empty() && frame / fps < duration - eps && d->time >= frame / fps - eps) {
         if (!renderer->render(d, &rgb, &e) || !writer.write(rgb, &e)) {
-          std::fprintf(stderr, "mjbuoy-sim: --render: %s\n", e.c_str());
+          fail("--render", e);
           failed = true;
           break;
         }
         frame++;
       }
       for (Snap& s : snaps) {
-        if (s.done || d->time < s.t - eps) continue;
+        if (s.done || (d->time < s.t - eps && steps < nsteps)) continue;
         s.done = true;
-        if (!renderer->render(d, &rgb, &e) ||
-            !mjbsim::writePng(s.file, rgb, renderer->width(), renderer->height(), &e)) {
-          std::fprintf(stderr, "mjbuoy-sim: --snapshot: %s\n", e.c_str());
+        if (!renderer->render(d, &rgb, &e) || !s.out.open(s.file, "--snapshot", &e) ||
+            !mjbsim::writePng(s.out.file(), s.file, rgb, renderer->width(), renderer->height(),
+                              &e)) {
+          fail("--snapshot", e);
           failed = true;
         }
       }
       if (failed) break;
     }
     prog.update(d->time);
-    if (d->time >= duration - eps) break;
+    if (steps >= nsteps) break;
     double before = d->time;
     mj_step(m, d);
-    // MuJoCo resets a diverging state (time back to 0): stop, never loop forever
-    if (d->time < before) {
-      std::fprintf(stderr, "mjbuoy-sim: the simulation diverged at t = %g s and MuJoCo reset "
-                   "it (NaN, Inf or huge value in the state); stopping\n", before);
+    steps++;
+    std::string why;
+    if (mjbtool::diverged(d, &why)) {
+      prog.done();
+      std::fprintf(stderr, "mjbuoy-sim: the simulation diverged in the step from t = %g s: %s; "
+                   "stopping, no output written (a smaller time step, a heavier hull or "
+                   "milder forces may help)\n", before, why.c_str());
       return 1;
     }
-    steps++;
   }
   prog.done();
   std::string verr, camLine;
   if (renderer) camLine = renderer->describeCamera();
   if (!video.empty() && !writer.close(&verr)) {
-    std::fprintf(stderr, "mjbuoy-sim: --render: %s\n", verr.c_str());
+    fail("--render", verr);
     failed = true;
   }
   renderer.reset();
   if (failed) return 1;
+  if (!plot.empty()) {
+    std::string e;
+    if (!plotOut.open(plot, "--plot", &e) ||
+        !mjbsim::writePlot(plotOut.tmpPath(), plot, model + ": heave, roll and pitch", plotT,
+                           series, &e)) {
+      fail("--plot", e);
+      return 1;
+    }
+  }
+  // the run succeeded: every output into place, each write checked
+  {
+    std::string e;
+    bool ok = !out || csvOut.commit(&e);
+    ok = ok && (video.empty() || videoOut.commit(&e));
+    for (Snap& s : snaps) ok = ok && s.out.commit(&e);
+    ok = ok && (plot.empty() || plotOut.commit(&e));
+    if (!ok) {
+      std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
+      return 1;
+    }
+  }
   double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   mjbInfo info = mjb_info(b);
@@ -354,27 +452,17 @@ int main(int argc, char** argv) {
                 m->names + m->name_bodyadr[bd], x[0], x[1], x[2], a[0], a[1], a[2]);
   }
   if (free.size() > 12) std::printf("  ... and %zu more free bodies\n", free.size() - 12);
-  if (out) {
-    std::fclose(out);
-    std::printf("  wrote %s\n", csv.c_str());
-  }
+  if (out) std::printf("  wrote %s\n", csv.c_str());
   if (!video.empty()) {
     std::printf("  wrote %s (%d frames, %dx%d, %g fps)\n", video.c_str(), writer.frames(), width,
                 height, fps);
   }
   for (const Snap& s : snaps) std::printf("  wrote %s (t = %g s)\n", s.file.c_str(), s.t);
   if (!camLine.empty()) std::printf("  last picture: %s\n", camLine.c_str());
-  if (!plot.empty()) {
-    std::string e;
-    if (!mjbsim::writePlot(plot, model + ": heave, roll and pitch", plotT, series, &e)) {
-      std::fprintf(stderr, "mjbuoy-sim: --plot: %s\n", e.c_str());
-      return 1;
-    }
-    std::printf("  wrote %s\n", plot.c_str());
+  if (!plot.empty()) std::printf("  wrote %s\n", plot.c_str());
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    std::fprintf(stderr, "mjbuoy-sim: cannot write the summary to stdout\n");
+    return 1;
   }
-  mjb_unbindData(b, d);
-  mj_deleteData(d);
-  mjb_detach(b);
-  mj_deleteModel(m);
   return 0;
 }

@@ -1,0 +1,277 @@
+#!/usr/bin/env python3
+"""Robustness of the command-line tools (issue 11, docs/robustness.md "Tools").
+
+check_tools.py BUILD_TOOLS_DIR MODELS_DIR CASE, CASE one of:
+  outputs   outputs never replace inputs or each other (also through a link),
+            and a run that fails leaves earlier files of the output names
+            byte-identical (items 1, 2)
+  writes    write errors (/dev/full) give a non-zero exit naming the output,
+            in every tool (item 3)
+  diverge   a hull of 1e-7 kg diverges in its first step: mjbuoy-sim and
+            mjbuoy-scenario stop with a non-zero exit naming it, write no
+            output and no MUJOCO_LOG.TXT (item 10)
+  options   NaN, infinite and out-of-range numbers are refused at parse time
+            with the option, the value and a compact range; clear messages
+            for <init body="pattern"> and a model error after loading
+            (items 11, 16)
+  render    (label render) a failing ffmpeg is reported with its own
+            reason and a non-zero exit (not SIGPIPE), nothing is left
+            behind; a video name that is not .mp4 is refused up front (12)
+Every run works on copies in a temporary directory; after each run the
+directory must hold no temporary files (".NAME.tmp-*").
+"""
+import glob
+import hashlib
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+failed = 0
+
+
+def check(ok, what):
+    global failed
+    print("%s %s" % ("ok  " if ok else "FAIL", what))
+    failed += not ok
+
+
+def run(cmd, cwd=None, env=None, stdout=None):
+    print("$", " ".join(cmd))
+    try:
+        p = subprocess.run(cmd, cwd=cwd, env=env, text=True, stderr=subprocess.PIPE,
+                           stdout=stdout if stdout is not None else subprocess.PIPE, timeout=60)
+    except subprocess.TimeoutExpired:
+        check(False, "finished within 60 s")
+        return subprocess.CompletedProcess(cmd, -9, "", "(killed after 60 s)")
+    if p.stderr:
+        print(p.stderr.rstrip())
+    return p
+
+
+def digest(path):
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def no_temps(d, what):
+    left = [f for f in os.listdir(d) if ".tmp-" in f or f.startswith("mjbuoy-")]
+    check(not left, "%s: no temporary files left in %s (%s)" % (what, d, left))
+
+
+def refused(p, what, *words):
+    """non-zero exit (not a signal) and every word in the message"""
+    msg = p.stderr
+    check(p.returncode > 0, "%s: exit status %d > 0" % (what, p.returncode))
+    for w in words:
+        check(w in msg, "%s: the message names %r" % (what, w))
+
+
+def barge(tmp, models, name="barge.xml", mass=None, z=None):
+    src = open(os.path.join(models, "barge.xml")).read()
+    if mass is not None:
+        src = src.replace('mass="500"', 'mass="%s"' % mass)
+    if z is not None:
+        src = src.replace('pos="0 0 0.3"', 'pos="0 0 %s"' % z)
+    f = os.path.join(tmp, name)
+    open(f, "w").write(src)
+    return f
+
+
+def outputs(tools, models, tmp):
+    sim, scen = os.path.join(tools, "mjbuoy-sim"), os.path.join(tools, "mjbuoy-scenario")
+    model = barge(tmp, models)
+    h = digest(model)
+    # item 1: --snapshot onto the model emptied it before loading
+    p = run([sim, model, "--duration", "0.05", "--snapshot", "0.05:" + model], cwd=tmp)
+    refused(p, "--snapshot 0.05:MODEL", "--snapshot", model, "model")
+    check(digest(model) == h, "the model is byte-identical after --snapshot onto it")
+    # item 2: --csv onto the model, directly and through a symbolic link
+    os.symlink("barge.xml", os.path.join(tmp, "link.xml"))
+    for out in (model, os.path.join(tmp, "link.xml"), "./barge.xml"):
+        p = run([sim, model, "--duration", "0.05", "--csv", out], cwd=tmp)
+        refused(p, "--csv %s" % out, "--csv", "model")
+        check(digest(model) == h, "the model is byte-identical after --csv %s" % out)
+    # --csv and --snapshot to the same file
+    same = os.path.join(tmp, "same.out")
+    p = run([sim, model, "--duration", "0.05", "--csv", same, "--snapshot", "0.01:" + same], cwd=tmp)
+    refused(p, "--csv and --snapshot to one file", "--csv", "--snapshot", "same file")
+    check(not os.path.exists(same), "nothing written to the shared name")
+    # item 1: a run that fails (here: the model does not load) leaves
+    # existing pictures, plots, videos and CSVs of the output names untouched
+    bad = os.path.join(tmp, "bad.xml")
+    open(bad, "w").write("<mujoco><worldbody><body><geom type='nonsense'/></body></worldbody></mujoco>")
+    olds = {}
+    for name in ("old.png", "old_plot.png", "old.mp4", "old.csv"):
+        f = os.path.join(tmp, name)
+        open(f, "wb").write(b"earlier result " + name.encode())
+        olds[f] = digest(f)
+    p = run([sim, bad, "--duration", "0.05", "--snapshot", "0.01:" + os.path.join(tmp, "old.png"),
+             "--plot", os.path.join(tmp, "old_plot.png"), "--render", os.path.join(tmp, "old.mp4"),
+             "--csv", os.path.join(tmp, "old.csv")], cwd=tmp)
+    refused(p, "a model that does not load", "cannot load")
+    for f, d in olds.items():
+        check(digest(f) == d and os.path.getsize(f) > 0,
+              "%s byte-identical after the failed run (not emptied)" % os.path.basename(f))
+    # mjbuoy-scenario: --junit onto the scenario or its model, --print-model with two files
+    sc = os.path.join(tmp, "sc.xml")
+    open(sc, "w").write('<scenario model="barge.xml" duration="0.05"><check kind="finite"/></scenario>')
+    hs = digest(sc)
+    for out, role in ((sc, "scenario"), (model, "model")):
+        p = run([scen, sc, "--junit", out], cwd=tmp)
+        refused(p, "--junit onto the %s" % role, "--junit", role)
+        check(digest(sc) == hs and digest(model) == h,
+              "scenario and model byte-identical after --junit onto the %s" % role)
+    sc2 = os.path.join(tmp, "sc2.xml")
+    shutil.copy(sc, sc2)
+    pm = os.path.join(tmp, "pm.xml")
+    p = run([scen, sc, sc2, "--print-model", pm], cwd=tmp)
+    refused(p, "--print-model with two scenarios", "--print-model", "2 scenario files")
+    check(not os.path.exists(pm), "--print-model with two scenarios writes nothing")
+    p = run([scen, sc, "--print-model", sc], cwd=tmp)
+    refused(p, "--print-model onto the scenario", "--print-model", "scenario")
+    check(digest(sc) == hs, "the scenario is byte-identical after --print-model onto it")
+    # the normal case still works: a CSV written and in place, the old one replaced whole
+    out = os.path.join(tmp, "old.csv")
+    p = run([sim, model, "--duration", "0.05", "--interval", "0.01", "--csv", out], cwd=tmp)
+    check(p.returncode == 0, "--csv to a new name: exit 0")
+    rows = open(out).read().splitlines()
+    check(rows[0].startswith("time,barge.x") and len(rows) == 7,
+          "the CSV replaced the old file: a header and 6 rows (t = 0 .. 0.05 every 0.01 s), got %d lines"
+          % len(rows))
+    no_temps(tmp, "outputs")
+
+
+def writes(tools, models, tmp):
+    if not os.path.exists("/dev/full"):
+        check(False, "/dev/full exists (Linux)")
+        return
+    sim = os.path.join(tools, "mjbuoy-sim")
+    scen = os.path.join(tools, "mjbuoy-scenario")
+    model = barge(tmp, models)
+    sc = os.path.join(tmp, "sc.xml")
+    open(sc, "w").write('<scenario model="barge.xml" duration="0.05"><check kind="finite"/></scenario>')
+    env = dict(os.environ, TMPDIR=tmp)
+    cases = [
+        ("mjbuoy-sim --csv", [sim, model, "--duration", "0.05", "--csv", "/dev/full"]),
+        ("mjbuoy-sim --plot", [sim, model, "--duration", "0.05", "--plot", "/dev/full"]),
+        ("mjbuoy-scenario --junit", [scen, sc, "--junit", "/dev/full"]),
+        ("mjbuoy-scenario --print-model", [scen, sc, "--print-model", "/dev/full"]),
+        ("mjbuoy-bench --json", [os.path.join(tools, "mjbuoy-bench"), "--boats", "1", "--tris", "64",
+                                 "--backend", "cpu", "--steps", "2", "--reps", "1",
+                                 "--json", "/dev/full"]),
+        ("mjbuoy-hullgen -o", [os.path.join(tools, "mjbuoy-hullgen"), "--triangles", "64",
+                               "-o", "/dev/full"]),
+    ]
+    for what, cmd in cases:
+        p = run(cmd, cwd=tmp, env=env)
+        refused(p, what + " /dev/full", "/dev/full", "No space left on device")
+    # stdout on a full disk
+    with open("/dev/full", "w") as full:
+        p = run([os.path.join(tools, "mjbuoy-hullgen"), "--triangles", "64"], cwd=tmp, stdout=full)
+    refused(p, "mjbuoy-hullgen > /dev/full", "stdout")
+    no_temps(tmp, "writes")
+
+
+def diverge(tools, models, tmp):
+    # a 2 x 1 x 0.5 m box of 1e-7 kg with its centre on the surface: half its
+    # volume (0.5 m^3) under water, rho g V = 4905 N of buoyancy accelerate it
+    # at 4.9e10 m/s^2, beyond MuJoCo's bound on a sane qacc (mjMAXVAL =
+    # 1e10), in the first step; MuJoCo resets it
+    model = barge(tmp, models, "light.xml", mass="1e-7", z="0")
+    csv = os.path.join(tmp, "light.csv")
+    p = run([os.path.join(tools, "mjbuoy-sim"), model, "--duration", "0.5", "--csv", csv], cwd=tmp)
+    refused(p, "mjbuoy-sim on a 1e-7 kg hull", "diverged", "MuJoCo reset the state")
+    check(not os.path.exists(csv), "no CSV of the reset state")
+    sc = os.path.join(tmp, "sc.xml")
+    open(sc, "w").write('<scenario model="light.xml" duration="0.5"><check kind="finite"/></scenario>')
+    p = run([os.path.join(tools, "mjbuoy-scenario"), sc], cwd=tmp)
+    check(p.returncode == 1 and "diverged" in p.stdout,
+          "mjbuoy-scenario on a 1e-7 kg hull: exit 1 (a check fails), report says diverged")
+    check(not os.path.exists(os.path.join(tmp, "MUJOCO_LOG.TXT")),
+          "no MUJOCO_LOG.TXT in the working directory (MuJoCo's warnings went to stderr)")
+    no_temps(tmp, "diverge")
+
+
+def options(tools, models, tmp):
+    sim = os.path.join(tools, "mjbuoy-sim")
+    model = barge(tmp, models)
+    for opt, val in (("--duration", "nan"), ("--interval", "nan"), ("--fps", "nan"),
+                     ("--ctrl", "nan"), ("--duration", "inf"), ("--width", "1e9")):
+        p = run([sim, model, opt, val], cwd=tmp)
+        refused(p, "mjbuoy-sim %s %s" % (opt, val), opt, val)
+    p = run([sim, model, "--duration", "-1"], cwd=tmp)
+    refused(p, "mjbuoy-sim --duration -1", "--duration", "-1", "[0, 1e+09]")
+    check(len(p.stderr.splitlines()[0]) < 100,
+          "--duration -1: the message is short (%d characters; DBL_MAX in full made it 362)"
+          % len(p.stderr.splitlines()[0]))
+    hullgen = os.path.join(tools, "mjbuoy-hullgen")
+    obj = os.path.join(tmp, "h.obj")
+    for opt, val in (("--length", "nan"), ("--beam", "inf"), ("--draft", "0"), ("--freeboard", "-1")):
+        p = run([hullgen, opt, val, "-o", obj], cwd=tmp)
+        refused(p, "mjbuoy-hullgen %s %s" % (opt, val), opt, val, "(0, inf)")
+    check(not os.path.exists(obj), "no mesh written for refused dimensions")
+    p = run([os.path.join(tools, "mjbuoy-bench"), "--boats", "0"], cwd=tmp)
+    refused(p, "mjbuoy-bench --boats 0", "--boats", "[1, 100000]")
+    check("h*" not in p.stderr, "mjbuoy-bench --boats 0: no internal hull pattern in the message")
+    # <init body="bar*">: patterns are not supported there (not "no free joint")
+    sc = os.path.join(tmp, "sc.xml")
+    open(sc, "w").write('<scenario model="barge.xml" duration="0.05">\n'
+                        '  <init body="bar*" pos="0 0 0.3"/>\n  <check kind="finite"/>\n</scenario>')
+    p = run([os.path.join(tools, "mjbuoy-scenario"), sc], cwd=tmp)
+    refused(p, "<init body=\"bar*\">", "sc.xml:2", "patterns are not supported")
+    # an error after the model is loaded (more controls than actuators):
+    # a message, and (sanitizer builds) no leak of model, data or attachment
+    p = run([sim, model, "--duration", "0.05", "--ctrl", "1", "2"], cwd=tmp)
+    refused(p, "--ctrl with 2 values for 0 actuators", "--ctrl", "0 actuator")
+    check("LeakSanitizer" not in p.stderr, "no leak on the error exit (LeakSanitizer)")
+    no_temps(tmp, "options")
+
+
+def render(tools, models, tmp):
+    sim = os.path.join(tools, "mjbuoy-sim")
+    model = barge(tmp, models)
+    # a failing ffmpeg: it exits at once, so the frames meet a closed pipe
+    fake = os.path.join(tmp, "fakebin")
+    os.mkdir(fake)
+    with open(os.path.join(fake, "ffmpeg"), "w") as f:
+        f.write("#!/bin/sh\necho 'Error: cannot encode (fake ffmpeg for the test)' >&2\nexit 1\n")
+    os.chmod(os.path.join(fake, "ffmpeg"), 0o755)
+    logs = os.path.join(tmp, "tmpdir")
+    os.mkdir(logs)
+    old = os.path.join(tmp, "clip.mp4")
+    open(old, "wb").write(b"an earlier clip")
+    h = digest(old)
+    env = dict(os.environ, PATH=fake + os.pathsep + os.environ.get("PATH", ""), TMPDIR=logs)
+    p = run([sim, model, "--duration", "0.2", "--render", old, "--width", "64", "--height", "48",
+             "--progress", "off"], cwd=tmp, env=env)
+    refused(p, "a failing ffmpeg", "ffmpeg failed", "cannot encode (fake ffmpeg for the test)")
+    check(p.returncode != 141 and p.returncode >= 0, "not killed by SIGPIPE (%d)" % p.returncode)
+    check(digest(old) == h, "the earlier clip.mp4 is byte-identical")
+    check(not os.listdir(logs), "no ffmpeg log left in $TMPDIR (%s)" % os.listdir(logs))
+    # names ffmpeg cannot or should not write H.264 MP4 to: refused before the run
+    for name in ("video", "clip.gif"):
+        out = os.path.join(tmp, name)
+        p = run([sim, model, "--duration", "0.2", "--render", out], cwd=tmp)
+        refused(p, "--render %s" % name, "--render", ".mp4")
+        check(not os.path.exists(out), "--render %s: nothing written" % name)
+    # the real ffmpeg on a full disk
+    p = run([sim, model, "--duration", "0.1", "--render", "/dev/full", "--width", "64",
+             "--height", "48", "--progress", "off"], cwd=tmp, env=dict(os.environ, TMPDIR=logs))
+    refused(p, "--render /dev/full", "/dev/full", "No space left on device")
+    check(not os.listdir(logs), "no temporary video or log left in $TMPDIR (%s)" % os.listdir(logs))
+    no_temps(tmp, "render")
+
+
+def main():
+    tools, models, case = sys.argv[1:4]
+    tools, models = os.path.abspath(tools), os.path.abspath(models)
+    with tempfile.TemporaryDirectory() as tmp:
+        globals()[case](tools, models, tmp)
+    print("%d check(s) failed" % failed if failed else "all checks passed")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

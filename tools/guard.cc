@@ -1,0 +1,58 @@
+// guard: divergence and MuJoCo's messages in the tools (see guard.h)
+#include "guard.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace mjbtool {
+
+static const char* g_tool = "mjbuoy";
+static std::string g_last;
+static int g_count = 0;
+
+static void onWarning(const char* msg) {
+  g_last = msg;
+  while (!g_last.empty() && (g_last.back() == '.' || g_last.back() == '\n')) g_last.pop_back();
+  if (++g_count <= 20) {
+    std::fprintf(stderr, "%s: MuJoCo warning: %s\n", g_tool, msg);
+  } else if (g_count == 21) {
+    std::fprintf(stderr, "%s: further MuJoCo warnings not shown\n", g_tool);
+  }
+}
+
+static void onError(const char* msg) {
+  std::fprintf(stderr, "%s: MuJoCo error: %s\n", g_tool, msg);
+  std::exit(3);  // MuJoCo's state is undefined after an error
+}
+
+void installMujocoHandlers(const char* tool) {
+  g_tool = tool;
+  mju_user_warning = onWarning;
+  mju_user_error = onError;
+}
+
+std::string lastMujocoWarning() { return g_last; }
+
+bool diverged(const mjData* d, std::string* why) {
+  const int kinds[3] = {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC};
+  const char* names[3] = {"bad qpos", "bad qvel", "bad qacc"};
+  for (int k = 0; k < 3; k++) {
+    if (d->warning[kinds[k]].number > 0) {
+      if (why) {
+        *why = "MuJoCo reset the state: " +
+               (g_last.empty() ? std::string(names[k]) + " (NaN, Inf or a huge value)" : g_last);
+      }
+      return true;
+    }
+  }
+  return false;
+}
+
+long stepsFor(double duration, double dt) {
+  double n = duration / dt;
+  double r = std::round(n);
+  return (long)(std::fabs(n - r) < 1e-6 ? r : std::ceil(n));
+}
+
+}  // namespace mjbtool

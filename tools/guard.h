@@ -1,0 +1,34 @@
+// guard: what every tool does around MuJoCo's simulation. MuJoCo resets a
+// state with a NaN, Inf or huge qpos, qvel or qacc to the initial one and
+// carries on; a tool must stop there and say so rather than report the
+// reset state (or loop on a time that keeps going back). MuJoCo's default
+// warning and error output also appends to MUJOCO_LOG.TXT in the working
+// directory; the tools print to stderr instead.
+#ifndef MJBUOY_TOOLS_GUARD_H_
+#define MJBUOY_TOOLS_GUARD_H_
+
+#include <string>
+
+#include <mujoco/mujoco.h>
+
+namespace mjbtool {
+
+// MuJoCo warnings and errors to stderr as "tool: MuJoCo ...", never to
+// MUJOCO_LOG.TXT; after 20 warnings the rest are only counted. An error
+// is fatal in MuJoCo (it cannot continue): exit status 3
+void installMujocoHandlers(const char* tool);
+
+// the last MuJoCo warning text ("" if none since installMujocoHandlers)
+std::string lastMujocoWarning();
+
+// did MuJoCo reset the state in the steps so far (bad qpos, qvel or qacc
+// counted in d->warning); why: what and MuJoCo's text
+bool diverged(const mjData* d, std::string* why);
+
+// steps of dt that reach duration (rounded to the nearest step within
+// 1e-6 of one; a loop bound independent of d->time)
+long stepsFor(double duration, double dt);
+
+}  // namespace mjbtool
+
+#endif  // MJBUOY_TOOLS_GUARD_H_
