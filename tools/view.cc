@@ -15,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "outfile.h"
 #include "render.h"
 
 namespace mjbview {
@@ -35,31 +36,15 @@ bool parseShot(const std::string& s, Options* o) {
   return true;
 }
 
-// a temporary file next to path (same file system, so rename is atomic);
-// "" with the reason in err if the directory is not writable
-std::string tempNext(const std::string& path, std::string* err) {
-  std::string t = path + ".XXXXXX";
-  std::vector<char> buf(t.begin(), t.end());
-  buf.push_back(0);
-  int fd = mkstemp(buf.data());
-  if (fd < 0) {
-    *err = "cannot write " + path + ": " + std::strerror(errno) +
-           " (check that the directory exists and is writable)";
-    return "";
-  }
-  close(fd);
-  return buf.data();
-}
-
-// the window's picture to o.shotFile: temp file, then rename
+// the window's picture to o.shotFile, atomically (tools/outfile.h)
 bool screenshot(View* v, mjrRect vp, double t) {
   std::vector<unsigned char> rgb((size_t)3 * vp.width * vp.height);
   mjr_readPixels(rgb.data(), nullptr, vp, &v->con);
-  std::string e, tmp = tempNext(v->o.shotFile, &e);
-  if (tmp.empty() || !mjbsim::writePng(tmp, rgb, vp.width, vp.height, &e) ||
-      std::rename(tmp.c_str(), v->o.shotFile.c_str()) != 0) {
-    if (e.empty()) e = "cannot rename to " + v->o.shotFile + ": " + std::strerror(errno);
-    if (!tmp.empty()) std::remove(tmp.c_str());
+  std::string e;
+  mjbtool::OutFile out;
+  if (!out.open(v->o.shotFile, "--screenshot", &e) ||
+      !mjbsim::writePng(out.file(), v->o.shotFile, rgb, vp.width, vp.height, &e) ||
+      !out.commit(&e)) {
     std::fprintf(stderr, "mjbuoy-view: --screenshot: %s\n", e.c_str());
     return false;
   }
@@ -250,12 +235,13 @@ int main(int argc, char** argv) {
   int rc = mjbview::parse(argc, argv, &v.o);
   if (rc >= 0) return rc;
   if (!v.o.shotFile.empty()) {
-    std::string e, tmp = mjbview::tempNext(v.o.shotFile, &e);  // check before simulating
-    if (tmp.empty()) {
-      std::fprintf(stderr, "mjbuoy-view: --screenshot: %s\n", e.c_str());
+    std::string e;  // check before simulating, touching nothing
+    if (!mjbtool::checkWritable(v.o.shotFile, "--screenshot", &e) ||
+        !mjbtool::checkDistinct({{v.o.model, "model"}, {v.o.shotFile, "--screenshot", true}},
+                                &e)) {
+      std::fprintf(stderr, "mjbuoy-view: %s\n", e.c_str());
       return 1;
     }
-    std::remove(tmp.c_str());
   }
   char err[1024] = "";
   v.m = mj_loadXML(v.o.model.c_str(), nullptr, err, sizeof(err));
