@@ -76,22 +76,24 @@ struct State {
   std::vector<char> told;      // per body: already named in notices
   std::string notices;         // capacity reserved up front
   TriState tri;                // this call
-  // slamming history: wet area and velocity per triangle at the first call
-  // of the current step (cur) and of the previous step (prev)
+  // slamming history: wet area and velocity per triangle at the last call
+  // at the current step's time (cur) and at the previous step's (prev)
   std::vector<double> curA, curV, prevA, prevV;
-  long key = -1;               // mjTIMER_STEP count of the current step
-  double tcur = 0, tprev = 0;  // times of those first calls [s]
+  long key = -1;               // mjTIMER_STEP count at the last call (-1: none yet)
+  double tcur = 0, tprev = 0;  // times of those steps [s]
   bool hasPrev = false;
   unsigned slambuf[2] = {0, 0};  // gl backend: history buffers, [slamcur] = this step's
   int slamcur = 0;
 };
 
-// slamming clock: kSameStep for another call within the current step,
-// kNewStep when a step has completed since the last call (the caller moves
-// the current history to the previous), kRestart after mj_resetData or
-// time going backwards (no previous history)
-enum { kSameStep = 0, kNewStep, kRestart };
-int stepClock(const mjData* d, State* s);
+// slamming clock (cpu.cc): kSameStep for another call at the current step's
+// time (it records the history again: the last evaluation at a time wins),
+// kNewStep when time has moved on by a step since (the caller moves the
+// current history to the previous), kRestart after mj_resetData or time
+// going backwards (no previous history), kMidStep for an intermediate RK4
+// stage (records nothing)
+enum { kSameStep = 0, kNewStep, kRestart, kMidStep };
+int stepClock(const mjModel* m, const mjData* d, State* s);
 
 // allocate s for b
 void makeState(const Buoy& b, State* s);

@@ -72,22 +72,26 @@ static void cross(const double* a, const double* b, double* c) {
   c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// advance the slamming history once per completed mj_step: MuJoCo counts
-// steps in timer[mjTIMER_STEP].number, which stays fixed across the four RK4
-// calls of one step and across bare mj_forward calls, and drops to 0 in
-// mj_resetData (time going backwards restarts too)
-int stepClock(const mjData* d, State* s) {
+// advance the slamming history when time has moved on by a step, whatever
+// loop moved it (mj_step, mj_forward + mj_Euler, ...): a call at a time at
+// least 3/4 of opt.timestep past the current step's opens a new step; a
+// call at the current step's time records (the last evaluation at that time
+// is the step's history); a call in between is an RK4 stage (t + h/2) and
+// records nothing. Time going backwards, or the step counter
+// timer[mjTIMER_STEP] dropping (mj_resetData zeroes it), restarts
+int stepClock(const mjModel* m, const mjData* d, State* s) {
   long k = d->timer[mjTIMER_STEP].number;
   int r;
   if (s->key < 0 || k < s->key || d->time < s->tcur) {
     s->hasPrev = false;
     r = kRestart;
-  } else if (k > s->key) {
+  } else if (d->time - s->tcur >= 0.75 * m->opt.timestep) {
     s->tprev = s->tcur;
     s->hasPrev = true;
     r = kNewStep;
   } else {
-    return kSameStep;
+    s->key = k;
+    return d->time == s->tcur ? kSameStep : kMidStep;
   }
   s->key = k;
   s->tcur = d->time;
@@ -286,7 +290,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     }
   }
 
-  // slamming history: this step's first call
+  // slamming history: the last call at this step's time
   if (first) {
     for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
       s->curA[k] = s->tri.area[k];
@@ -357,7 +361,7 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   const int nb6 = 6 * m->nbody;
   std::memset(s->part.data(), 0, s->part.size() * sizeof(double));
   std::memset(s->bad.data(), 0, s->bad.size());
-  int clock = stepClock(d, s);
+  int clock = stepClock(m, d, s);
   if (clock == kNewStep) {
     std::swap(s->prevA, s->curA);
     std::swap(s->prevV, s->curV);
@@ -379,7 +383,7 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   // large scenes: chunks of hulls shared among the pool's threads; a chunk
   // owns whole bodies and each thread its own scratch, so the result does
   // not depend on who runs what. Another mjData holding the pool: serial.
-  Job job{&b, m, d, s, clock != kSameStep};
+  Job job{&b, m, d, s, clock != kMidStep};
   if (!b.pool || !poolRun(b.pool, runChunk, &job, int(b.split.size()) - 1)) {
     hullRange(job, 0, b.hull.size(), 0);
   }

@@ -340,7 +340,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
       gl.BufferData(GL_SHADER_STORAGE_BUFFER, zero.size() * 4, zero.data(), GL_DYNAMIC_COPY);
     }
   }
-  int clock = stepClock(d, s);
+  int clock = stepClock(m, d, s);
   if (clock == kNewStep) s->slamcur ^= 1;
   std::memset(s->bad.data(), 0, s->bad.size());
   bodies(b, m, d, s);
@@ -358,7 +358,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
   gl.ProgramUniform1i(g->prog[kTris], g->uHasprev, s->hasPrev);
-  gl.ProgramUniform1i(g->prog[kTris], g->uFirst, clock != kSameStep);
+  gl.ProgramUniform1i(g->prog[kTris], g->uFirst, clock != kMidStep);
   gl.ProgramUniform1f(g->prog[kTris], g->uSlamdt, float(s->hasPrev ? d->time - s->tprev : 0));
 
   // per-item stages loop (grid-stride) past 65535 groups, GL's guaranteed
