@@ -74,6 +74,9 @@ struct State {
   double crest = 0;            // highest possible surface height [m]
   std::vector<char> bad;       // per body: state not finite in the last call
   std::vector<char> told;      // per body: already named in notices
+  // per body and force family (body-major): non-finite in the last call,
+  // already named in notices
+  std::vector<char> badPart, toldPart;
   std::string notices;         // capacity reserved up front
   TriState tri;                // this call
   // slamming history: wet area and velocity per triangle at the last call
@@ -103,6 +106,11 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s);
 
 // name each body with a non-finite state in s->notices, once
 void noteBad(const Buoy& b, const mjModel* m, const mjData* d, State* s);
+
+// from s->part: leave out (zero) and name once in s->notices each force
+// family that came out non-finite for a body, then sum s->wrench (a body
+// with a non-finite state gets no force at all); both backends end with it
+void finishWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s);
 
 // gl backend (gl.cc): create it for b (false and err if GL is unusable),
 // compute the wrench like cpuWrench, free it with its context

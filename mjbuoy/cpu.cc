@@ -34,6 +34,8 @@ void makeState(const Buoy& b, State* s) {
   s->lab.assign(2 * (b.vert.size() / 3), 0);
   s->bad.assign(b.m->nbody, 0);
   s->told.assign(b.m->nbody, 0);
+  s->badPart.assign(b.m->nbody * mjbNPART, 0);
+  s->toldPart.assign(b.m->nbody * mjbNPART, 0);
   s->notices.clear();
   s->notices.reserve(4096);
   s->tri.area.assign(nt, 0);
@@ -207,6 +209,11 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     for (int e = 0; e < 3; e++) std::memcpy(p[e], s->rel.data() + 3 * fc[e], 3 * sizeof(double));
     Wet wt;
     wetTriangle(p, h, &wt);
+    if (!std::isfinite(wt.area) || !std::isfinite(wt.dA)) {
+      wp[0] += NAN;  // reported by finishWrench, never a silent zero
+      s->tri.area[k] = 0;
+      continue;
+    }
     s->tri.area[k] = wt.area > 0 ? wt.area : 0;
     if (!(wt.area > 0)) continue;
     const double* n = wt.n;
@@ -358,7 +365,6 @@ void noteBad(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
 }
 
 void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
-  const int nb6 = 6 * m->nbody;
   std::memset(s->part.data(), 0, s->part.size() * sizeof(double));
   std::memset(s->bad.data(), 0, s->bad.size());
   int clock = stepClock(m, d, s);
@@ -387,13 +393,30 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   if (!b.pool || !poolRun(b.pool, runChunk, &job, int(b.split.size()) - 1)) {
     hullRange(job, 0, b.hull.size(), 0);
   }
+  finishWrench(b, m, d, s);
+}
+
+void finishWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
+  static const char* kFamily[mjbNPART] = {"pressure", "viscous", "drag", "slamming", "damping"};
   noteBad(b, m, d, s);
-  // total; a body with a non-finite state gets no force at all
+  const int nb6 = 6 * m->nbody;
   std::memset(s->wrench.data(), 0, s->wrench.size() * sizeof(double));
   for (int bd : b.body) {
     for (int p = 0; p < mjbNPART; p++) {
       double* wp = s->part.data() + p * nb6 + 6 * bd;
-      if (s->bad[bd]) std::memset(wp, 0, 6 * sizeof(double));
+      char& bad = s->badPart[mjbNPART * bd + p];
+      bad = !s->bad[bd] && !finite(wp, 6);
+      if (s->bad[bd] || bad) std::memset(wp, 0, 6 * sizeof(double));
+      if (bad && !s->toldPart[mjbNPART * bd + p]) {
+        s->toldPart[mjbNPART * bd + p] = 1;
+        char line[256];
+        std::snprintf(line, sizeof(line),
+                      "body \"%s\": %s force not finite at t = %g s (an intermediate "
+                      "overflowed or was NaN); mjbuoy leaves it out of the wrench\n",
+                      m->names + m->name_bodyadr[bd], kFamily[p], d->time);
+        // within the capacity reserved in makeState: no allocation while stepping
+        if (s->notices.size() + std::strlen(line) < s->notices.capacity()) s->notices += line;
+      }
       for (int j = 0; j < 6; j++) s->wrench[6 * bd + j] += wp[j];
     }
   }

@@ -391,12 +391,10 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     gl.BindTexture(GL_TEXTURE_BUFFER, 0);
   }
   timerFrame(&g->timer);
-  noteBad(*b, m, d, s);
 
   // unpack: part p of slot i at out[40 i + 8 p], force xyz then torque xyz
   const int nb6 = 6 * m->nbody;
   std::memset(s->part.data(), 0, s->part.size() * sizeof(double));
-  std::memset(s->wrench.data(), 0, s->wrench.size() * sizeof(double));
   for (int i = 0; i < g->nslot; i++) {
     int bd = b->body[i];
     if (s->bad[bd]) continue;
@@ -406,11 +404,10 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
       for (int j = 0; j < 3; j++) {
         w[j] = o[j];
         w[3 + j] = o[4 + j];
-        s->wrench[6 * bd + j] += w[j];
-        s->wrench[6 * bd + 3 + j] += w[3 + j];
       }
     }
   }
+  finishWrench(*b, m, d, s);
 }
 
 }  // namespace mjb

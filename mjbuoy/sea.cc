@@ -102,25 +102,29 @@ void Sea::velocityOf(const double a[2], double t, double zb, double v[3]) const 
     double uh = w.steep * w.amp * w.omega * std::cos(th);
     double uz = w.amp * w.omega * std::sin(th);
     double fh, fz;
-    if (depth > 0) {
-      // finite depth Airy profile, 1 at the surface
-      double kd = w.k * depth, kz = w.k * (zb + depth);
-      if (kd < 20) {
-        fh = std::cosh(kz) / std::cosh(kd);
-        fz = std::sinh(kz) / std::sinh(kd);
-      } else {
-        // cosh, sinh overflow past 710 (inf / inf = NaN, e.g. 1 m waves in
-        // 200 m of water); the same ratios as e^(kz-kd) (1 +- e^-2kz) / (1 +- e^-2kd)
-        double e = std::exp(kz - kd), z2 = std::exp(-2 * kz), d2 = std::exp(-2 * kd);
-        fh = e * (1 + z2) / (1 + d2);
-        fz = e * (1 - z2) / (1 - d2);
-      }
-    } else {
-      fh = fz = std::exp(w.k * zb);
-    }
+    depthRatios(w.k, zb, &fh, &fz);
     v[0] += uh * fh * w.dx;
     v[1] += uh * fh * w.dy;
     v[2] += uz * fz;
+  }
+}
+
+void Sea::depthRatios(double k, double zb, double* fh, double* fz) const {
+  if (!(depth > 0)) {
+    *fh = *fz = std::exp(k * zb);
+    return;
+  }
+  // finite depth Airy profile, 1 at the surface
+  double kd = k * depth, kz = k * (zb + depth);
+  if (kd < 20) {
+    *fh = std::cosh(kz) / std::cosh(kd);
+    *fz = std::sinh(kz) / std::sinh(kd);
+  } else {
+    // cosh, sinh overflow past 710 (inf / inf = NaN, e.g. a 7 m chop in
+    // 1000 m of water); the same ratios as e^(kz-kd) (1 +- e^-2kz) / (1 +- e^-2kd)
+    double e = std::exp(kz - kd), z2 = std::exp(-2 * kz), d2 = std::exp(-2 * kd);
+    *fh = e * (1 + z2) / (1 + d2);
+    *fz = e * (1 - z2) / (1 - d2);
   }
 }
 
@@ -257,13 +261,7 @@ void Sea::velocitySC(const WaveNow* w, const double* sc, double zb, double v[3])
     double uh = w[i].qao * sc[2 * i + 1];
     double uz = w[i].ao * sc[2 * i];
     double fh, fz;
-    if (depth > 0) {
-      double kd = w[i].k * depth, kz = w[i].k * (zb + depth);
-      fh = std::cosh(kz) / std::cosh(kd);
-      fz = std::sinh(kz) / std::sinh(kd);
-    } else {
-      fh = fz = std::exp(w[i].k * zb);
-    }
+    depthRatios(w[i].k, zb, &fh, &fz);
     v[0] += uh * fh * w[i].dx;
     v[1] += uh * fh * w[i].dy;
     v[2] += uz * fz;

@@ -31,6 +31,10 @@ uniform int hasprev;   // slamming history exists
 uniform int first;     // first call of this step: record the history
 uniform float slamdt;  // time since the previous step's first call [s]
 
+// a NaN to add to a sum whose intermediate was not finite: the CPU side
+// reports a non-finite family (mjb_notices), never a silent zero
+const float kNaN = uintBitsToFloat(0x7fc00000u);
+
 // per-invocation sums over its triangles (BUOY_NSUM vec4, see pipeline.h)
 vec3 pF, pT, vG, vEG, vCG, vECG, dF, dT, sF, sT;
 vec4 wt;
@@ -85,6 +89,7 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
     piece(pab, c.xyz, pca, 0.0, -c.w, 0.0, n, area, dA, drA, rA);
   }
   if (!(area > 0.0)) {
+    if (!(area <= 0.0)) pF += vec3(kNaN);  // NaN area: heights not finite
     if (first != 0) scur[k] = vec4(0.0);
     return;
   }
@@ -106,6 +111,12 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
   float zb = min(cc.z + zc - seaEta(b, la), 0.0);
   vec3 v = vlin + cross(vang, cc) - seaVelocity(b, la, zb);
   float v2 = dot(v, v), sp = sqrt(v2);
+  if (!(sp <= 3.0e38)) {
+    // |v| not finite in float (NaN water velocity, or overflow)
+    vG += vec3(kNaN);
+    dF += vec3(kNaN);
+    if (hasprev != 0 && hl.slam.x > 0.0 && slamdt > 0.0) sF += vec3(kNaN);
+  }
 
   // viscous: 0.5 rho C_F (1+k_i) (1 + sbar - s_k) A |v|^2 against the
   // tangential flow; here only g = A |v|^2 t / |t| and e_k g

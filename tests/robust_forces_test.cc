@@ -47,5 +47,104 @@ TEST(RobustForces, SlammingActsWhateverLoopStepsTheModel) {
   EXPECT_LE(again, 1e-6 * most) << "a repeated mj_forward moved the slamming history on";
 }
 
+// a 1 m cube of 500 kg afloat (draft 0.5 m) in a 7 m, 0.2 m chop (or still
+// water); depth "" is deep water
+std::string chop(const std::string& depth, bool waves = true) {
+  return "<mujoco><option timestep=\"0.002\"/><custom>"
+         "<text name=\"mjbuoy.hulls\" data=\"hull\"/>" + depth +
+         (waves ? "<numeric name=\"mjbuoy.wave.a\" data=\"0.2 7 30 0 0.5\"/>" : "") +
+         "</custom><worldbody>"
+         "<body name=\"cube\"><freejoint/>"
+         "<geom name=\"hull\" type=\"box\" size=\"0.5 0.5 0.5\" mass=\"500\"/></body>"
+         "</worldbody></mujoco>";
+}
+
+TEST(RobustForces, VeryDeepFiniteDepthIsDeepWater) {
+  // k h = 2 pi / 7 x 1000 = 898 > 710, where cosh and sinh overflow: the
+  // Airy ratios cosh k(z+h) / cosh kh -> exp(k z) (the deep-water limit,
+  // tanh kh = 1 to double precision), so every force family must equal
+  // deep water's to round-off. Before, the water velocity at each wet
+  // centroid was inf / inf = NaN and viscous, drag and slamming were 0
+  for (const char* be : {"cpu", "gl"}) {
+    std::string e;
+    mjModel* md = loadXML(chop(""), &e);
+    mjModel* mf = loadXML(chop("<numeric name=\"mjbuoy.sea.depth\" data=\"1000\"/>"), &e);
+    ASSERT_TRUE(md && mf) << e;
+    char err[1024];
+    mjbBuoy* bd = mjb_attach(md, be, err, sizeof(err));
+    ASSERT_TRUE(bd) << err;
+    mjbBuoy* bf = mjb_attach(mf, be, err, sizeof(err));
+    ASSERT_TRUE(bf) << err;
+    mjData* dd = mj_makeData(md);
+    mjData* df = mj_makeData(mf);
+    for (mjData* d : {dd, df}) {
+      // surging and heaving through the water, two steps so slamming has a history
+      d->qpos[2] = -0.05;
+      d->qvel[0] = 1.5;
+      d->qvel[2] = -0.5;
+      d->qvel[4] = 0.3;
+    }
+    for (int k = 0; k < 3; k++) {
+      mj_step(md, dd);
+      mj_step(mf, df);
+    }
+    // float on gl: the slamming rate |A v - A' v'| cancels digits
+    const double tol = std::string(be) == "gl" ? 1e-4 : 1e-9;
+    for (int p = 0; p < mjbNPART; p++) {
+      const mjtNum* wd = mjb_wrenchPart(bd, dd, p) + 6;
+      const mjtNum* wf = mjb_wrenchPart(bf, df, p) + 6;
+      double scale = 1e-9;
+      for (int j = 0; j < 6; j++) scale = std::fmax(scale, std::fabs(wd[j]));
+      for (int j = 0; j < 6; j++) {
+        EXPECT_NEAR(wf[j], wd[j], tol * scale) << be << " part " << p << " component " << j;
+      }
+      if (p == mjbPART_VISCOUS || p == mjbPART_DRAG) {
+        EXPECT_GT(scale, 1) << be << " part " << p << " barely acts: the test shows nothing";
+      }
+    }
+    EXPECT_STREQ(mjb_notices(bf, df), "") << be;
+    mj_deleteData(dd);
+    mj_deleteData(df);
+    mjb_detach(bd);
+    mjb_detach(bf);
+    mj_deleteModel(md);
+    mj_deleteModel(mf);
+  }
+}
+
+TEST(RobustForces, NonFiniteForceIsANoticeNotASilentZero) {
+  // a finite state whose forces are not: 1e200 m/s squared overflows double
+  // (cpu) and 1e200 is inf in float (gl). The viscous and drag forces of
+  // the wet cube are then not finite: each is named in the notices with the
+  // body and left out, and the wrench stays finite (before, both came out
+  // as exactly 0 with no notice)
+  for (const char* be : {"cpu", "gl"}) {
+    std::string e;
+    mjModel* m = loadXML(chop("", false), &e);
+    ASSERT_TRUE(m) << e;
+    char err[1024];
+    mjbBuoy* b = mjb_attach(m, be, err, sizeof(err));
+    ASSERT_TRUE(b) << err;
+    mjData* d = mj_makeData(m);
+    d->qvel[0] = 1e200;
+    mj_forward(m, d);
+    std::string n = mjb_notices(b, d);
+    for (const char* fam : {"viscous", "drag"}) {
+      EXPECT_NE(n.find(std::string("body \"cube\": ") + fam + " force not finite"),
+                std::string::npos) << be << ": " << n;
+    }
+    EXPECT_EQ(n.find("pressure"), std::string::npos) << be << ": " << n;
+    // the pressure still acts: rho g V at draft 0.5 m, the cube's weight
+    EXPECT_NEAR(mjb_wrenchPart(b, d, mjbPART_PRESSURE)[6 + 2], 500 * kG, 1e-3 * 500 * kG) << be;
+    for (int j = 0; j < 6; j++) EXPECT_TRUE(std::isfinite(mjb_wrench(b, d)[6 + j])) << be;
+    // reported once: a second call adds nothing
+    mj_forward(m, d);
+    EXPECT_EQ(n, mjb_notices(b, d)) << be;
+    mj_deleteData(d);
+    mjb_detach(b);
+    mj_deleteModel(m);
+  }
+}
+
 }  // namespace
 }  // namespace mjbt
