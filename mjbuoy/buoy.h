@@ -21,6 +21,7 @@ struct Hull {
   int t0, nt;         // triangle range in Buoy::face
   double area;        // total surface area S_total [m^2]
   double mass;        // body mass share of this hull (by area) [kg]
+  double share;       // this hull's share (by area) of its rigid group's hulls
   double rad;         // largest vertex distance from the body origin [m]
   HullParams par;
 };

@@ -8,6 +8,7 @@
 #include "hydro.h"
 #include "pool.h"
 #include "pressure.h"
+#include "rigid.h"
 
 namespace mjb {
 
@@ -112,8 +113,8 @@ static void add(double* w, const double* f, const double* c) {
 
 // forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
 // is the body's wrench of force family p; slot picks the thread's scratch
-static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6], bool first,
-                       State* s, int slot, double* const w[]) {
+static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6],
+                       const Rigid& rig, bool first, State* s, int slot, double* const w[]) {
   double* sc = s->scr.data() + s->per * slot;
   const Hull& hl = b.hull[ih];
   const Sea& sea = b.cfg.sea;
@@ -291,8 +292,17 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     dragForce(par.drag, par.suction, par.vref, A, n, v, g);
     add(w[mjbPART_DRAG], g, c);
     if (s->hasPrev) {
-      slamForce(par.slam[0], par.slam[1], par.slam[2], hl.mass, hl.area, b.tarea[k], A, v,
-                s->prevA[k], &s->prevV[3 * k], n, slamdt, g);
+      // the stopping force is sized by the effective mass of the rigid
+      // group at this point along v (docs/physics.md, "Slamming with the
+      // effective mass"), not its mass: it acts off the COM
+      double sp = std::sqrt(dot(v, v)), meff = 0;
+      if (sp > 0) {
+        double u[3] = {v[0] / sp, v[1] / sp, v[2] / sp}, pw[3];
+        for (int j = 0; j < 3; j++) pw[j] = c[j] + com[j];
+        meff = effMass(rig, pw, u);
+      }
+      slamForce(par.slam[0], par.slam[1], par.slam[2], hl.share * meff, hl.area, b.tarea[k], A,
+                v, s->prevA[k], &s->prevV[3 * k], n, slamdt, g);
       add(w[mjbPART_SLAM], g, c);
     }
   }
@@ -342,7 +352,9 @@ static void hullRange(const Job& j, int h0, int h1, int slot) {
     }
     double* w[mjbNPART];
     for (int p = 0; p < mjbNPART; p++) w[p] = s->part.data() + p * nb6 + 6 * bd;
-    hullWrench(b, ih, j.d, vel, j.first, s, slot, w);
+    Rigid rig;
+    rigidGroup(j.m, j.d, bd, &rig);
+    hullWrench(b, ih, j.d, vel, rig, j.first, s, slot, w);
   }
 }
 

@@ -15,6 +15,7 @@
 #include "gltimer.h"
 #include "shared.h"
 #include "pipeline.h"
+#include "rigid.h"
 
 namespace mjb {
 
@@ -141,7 +142,7 @@ bool glMake(Buoy* b, std::string* err) {
     for (int v = 0; v < hl.nv; v += g->vlocal * g->per) {
       vchunk.push_back(GChunk{h, hl.v0 + v, std::min(g->vlocal * g->per, hl.nv - v), 0});
     }
-    hull[h].shape = vec4{float(hl.area), float(hl.mass), float(p.viscous), float(p.vref)};
+    hull[h].shape = vec4{float(hl.area), float(hl.share), float(p.viscous), float(p.vref)};
     hull[h].drag = vec4{float(p.drag[0]), float(p.drag[1]), float(p.drag[2]), 0};
     hull[h].suction = vec4{float(p.suction[0]), float(p.suction[1]), float(p.suction[2]), 0};
     hull[h].slam = vec4{float(p.slam[0]), float(p.slam[1]), float(p.slam[2]), 0};
@@ -301,6 +302,8 @@ static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
       o.r0.x = o.r1.y = o.r2.z = 1;
       o.orig.w = 1e6;
       o.flow.x = 1;
+      o.rig0 = vec4{0, 0, 0, 1};
+      o.rig1 = o.rig2 = vec4{0, 0, 0, 0};
       continue;
     }
     o.r0 = vec4{float(R[0]), float(R[1]), float(R[2]), 0};
@@ -310,6 +313,13 @@ static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
                   float(c[2] - sea.level)};
     o.vlin = vec4{float(vel[3]), float(vel[4]), float(vel[5]), 0};
     o.vang = vec4{float(vel[0]), float(vel[1]), float(vel[2]), 0};
+    // the rigid group's mass and inertia, for the slamming effective mass
+    Rigid rg;
+    rigidGroup(m, d, bd, &rg);
+    o.rig0 = vec4{float(rg.com[0] - c[0]), float(rg.com[1] - c[1]), float(rg.com[2] - c[2]),
+                  float(rg.minv)};
+    o.rig1 = vec4{float(rg.iinv[0]), float(rg.iinv[1]), float(rg.iinv[2]), float(rg.iinv[3])};
+    o.rig2 = vec4{float(rg.iinv[4]), float(rg.iinv[5]), 0, 0};
     // the hull's flow (as cpu.cc): COM velocity relative to the water there
     sea.velocity(c, d->time, uw);
     double vr[3] = {vel[3] - uw[0], vel[4] - uw[1], vel[5] - uw[2]};

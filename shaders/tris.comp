@@ -51,6 +51,17 @@ void piece(vec3 q0, vec3 q1, vec3 q2, float d0, float d1, float d2, vec3 n, inou
   rA += A * sr / 3.0;
 }
 
+// effective mass of body b's rigid group at cc (rel. body COM) along unit
+// u: 1 / (1/m + (r x u) . I^-1 (r x u)) (mjbuoy/rigid.cc effMass)
+float effMass(int b, vec3 cc, vec3 u) {
+  vec4 r0 = body[b].rig0, r1 = body[b].rig1, r2 = body[b].rig2;
+  vec3 w = cross(cc - r0.xyz, u);
+  vec3 Jw = vec3(r1.x * w.x + r1.w * w.y + r2.x * w.z,
+                 r1.w * w.x + r1.y * w.y + r2.y * w.z,
+                 r2.x * w.x + r2.y * w.y + r1.z * w.z);
+  return 1.0 / (r0.w + dot(w, Jw));
+}
+
 void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) {
   ivec4 t = texelFetch(tTri, k);
   vec4 P0 = texelFetch(tVout, t.x), P1 = texelFetch(tVout, t.y), P2 = texelFetch(tVout, t.z);
@@ -141,12 +152,14 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
     dT += cross(cc, s * n);
   }
 
-  // slamming: Gamma = |A v - A' v'| / (S dt), stopping force m v (2A/S_hull) / dt
+  // slamming: Gamma = |A v - A' v'| / (S dt), stopping force
+  // share m_eff v (2A/S_hull) / dt with the effective mass m_eff at cc along v
   if (hasprev != 0 && hl.slam.x > 0.0 && slamdt > 0.0 && cs > 0.0) {
     vec4 pv = sprev[k];
     float gamma = length(A * v - pv.w * pv.xyz) / (0.5 * tlen * slamdt);
     float r = min(gamma / hl.slam.y, 1.0);
-    float s = -hl.slam.x * pow(r, hl.slam.z) * cs * hl.shape.y * 2.0 * A / hl.shape.x / slamdt;
+    float me = hl.shape.y * effMass(b, cc, v / sp);
+    float s = -hl.slam.x * pow(r, hl.slam.z) * cs * me * 2.0 * A / hl.shape.x / slamdt;
     sF += s * v;
     sT += cross(cc, s * v);
   }
