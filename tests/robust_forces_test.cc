@@ -1,6 +1,8 @@
 // issue 11, forces: nothing lost, nothing silently wrong (docs/robustness.md)
 #include <cmath>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -266,6 +268,55 @@ TEST(RobustForces, GlMatchesCpuNearFolding) {
     mj_deleteModel(mc);
     mj_deleteModel(mg);
   }
+}
+
+// one mesh made of axis-aligned boxes (centre x, y, z, half sizes), each a
+// closed outward piece, merged without a union
+std::string boxes(const std::vector<std::vector<double>>& bx) {
+  static const int kF[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                                {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+  static const int kS[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                               {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+  std::ostringstream v, f;
+  for (size_t b = 0; b < bx.size(); b++) {
+    for (const auto& c : kS) {
+      for (int j = 0; j < 3; j++) v << bx[b][j] + c[j] * bx[b][3 + j] << " ";
+    }
+    for (const auto& t : kF) f << 8 * b + t[0] << " " << 8 * b + t[1] << " " << 8 * b + t[2] << " ";
+  }
+  return "<mujoco><asset><mesh name=\"m\" vertex=\"" + v.str() + "\" face=\"" + f.str() +
+         "\"/></asset><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/></custom><worldbody>"
+         "<body name=\"b\"><freejoint/><inertial pos=\"0 0 0\" mass=\"300\" "
+         "diaginertia=\"30 100 120\"/><geom name=\"hull\" type=\"mesh\" mesh=\"m\"/></body>"
+         "</worldbody></mujoco>";
+}
+
+TEST(RobustForces, OverlappingClosedPiecesOfOneMeshWarn) {
+  // a 2 x 1 x 0.5 m hull and a 1 x 0.6 x 0.6 m deckhouse sunk 0.2 m into it,
+  // merged in one mesh: fully submerged, the pressure integrates over both
+  // closed surfaces, rho g (V_hull + V_house) with the 0.12 m^3 overlap
+  // counted twice (1.36 m^3 instead of the union's 1.24: +10%). The load names the geom and the pieces
+  const std::string over = "closed pieces 1 (12 triangles) and 2 (12 triangles) of its mesh overlap";
+  Scene a(boxes({{0, 0, 0, 1, 0.5, 0.25}, {0, 0, 0.35, 0.5, 0.3, 0.3}}));
+  ASSERT_TRUE(a.ok()) << a.err;
+  std::string w = mjb_warnings(a.b);
+  EXPECT_NE(w.find("hull geom \"hull\": " + over), std::string::npos) << w;
+  // a deckhouse sitting on the deck (touching faces, no shared volume), a
+  // catamaran (two hulls apart), and a box wholly inside another (nested:
+  // every point inside) are told apart
+  Scene b(boxes({{0, 0, 0, 1, 0.5, 0.25}, {0, 0, 0.55, 0.5, 0.3, 0.3}}));
+  Scene c(boxes({{0, -1, 0, 1, 0.3, 0.25}, {0, 1, 0, 1, 0.3, 0.25}}));
+  Scene d(boxes({{0, 0, 0, 1, 0.5, 0.25}, {0, 0, 0, 0.5, 0.25, 0.1}}));
+  ASSERT_TRUE(b.ok() && c.ok() && d.ok()) << b.err << c.err << d.err;
+  EXPECT_EQ(std::string(mjb_warnings(b.b)).find("overlap"), std::string::npos) << mjb_warnings(b.b);
+  EXPECT_EQ(std::string(mjb_warnings(c.b)).find("overlap"), std::string::npos) << mjb_warnings(c.b);
+  EXPECT_NE(std::string(mjb_warnings(d.b)).find(over), std::string::npos) << mjb_warnings(d.b);
+  // the double count itself: held 5 m down, the pressure force is
+  // rho g (V_hull + V_house) = 1000 9.81 (1 + 0.36) N, not the union's
+  // 1000 9.81 (1 + 0.36 - 0.12): the warning is about a real error
+  a.d->qpos[2] = -5;
+  mj_forward(a.m, a.d);
+  EXPECT_NEAR(mjb_wrenchPart(a.b, a.d, mjbPART_PRESSURE)[6 + 2], kRho * kG * 1.36, 1e-6 * kRho * kG);
 }
 
 }  // namespace
