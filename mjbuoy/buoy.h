@@ -21,6 +21,7 @@ struct Hull {
   int t0, nt;         // triangle range in Buoy::face
   double area;        // total surface area S_total [m^2]
   double mass;        // body mass share of this hull (by area) [kg]
+  double share;       // this hull's share (by area) of its rigid group's hulls
   double rad;         // largest vertex distance from the body origin [m]
   HullParams par;
 };
@@ -74,13 +75,16 @@ struct State {
   double crest = 0;            // highest possible surface height [m]
   std::vector<char> bad;       // per body: state not finite in the last call
   std::vector<char> told;      // per body: already named in notices
+  // per body and force family (body-major): non-finite in the last call,
+  // already named in notices
+  std::vector<char> badPart, toldPart;
   std::string notices;         // capacity reserved up front
   TriState tri;                // this call
-  // slamming history: wet area and velocity per triangle at the first call
-  // of the current step (cur) and of the previous step (prev)
+  // slamming history: wet area and velocity per triangle at the last call
+  // at the current step's time (cur) and at the previous step's (prev)
   std::vector<double> curA, curV, prevA, prevV;
-  long key = -1;               // mjTIMER_STEP count of the current step
-  double tcur = 0, tprev = 0;  // times of those first calls [s]
+  long key = -1;               // mjTIMER_STEP count at the last call (-1: none yet)
+  double tcur = 0, tprev = 0;  // times of those steps [s]
   bool hasPrev = false;
   unsigned slambuf[2] = {0, 0};  // gl backend: history buffers, [slamcur] = this step's
   int slamcur = 0;
@@ -92,12 +96,14 @@ struct State {
   long vcount = -1;
 };
 
-// slamming clock: kSameStep for another call within the current step,
-// kNewStep when a step has completed since the last call (the caller moves
-// the current history to the previous), kRestart after mj_resetData or
-// time going backwards (no previous history)
-enum { kSameStep = 0, kNewStep, kRestart };
-int stepClock(const mjData* d, State* s);
+// slamming clock (cpu.cc): kSameStep for another call at the current step's
+// time (it records the history again: the last evaluation at a time wins),
+// kNewStep when time has moved on by a step since (the caller moves the
+// current history to the previous), kRestart after mj_resetData or time
+// going backwards (no previous history), kMidStep for an intermediate RK4
+// stage (records nothing)
+enum { kSameStep = 0, kNewStep, kRestart, kMidStep };
+int stepClock(const mjModel* m, const mjData* d, State* s);
 
 // allocate s for b
 void makeState(const Buoy& b, State* s);
@@ -107,6 +113,11 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s);
 
 // name each body with a non-finite state in s->notices, once
 void noteBad(const Buoy& b, const mjModel* m, const mjData* d, State* s);
+
+// from s->part: leave out (zero) and name once in s->notices each force
+// family that came out non-finite for a body, then sum s->wrench (a body
+// with a non-finite state gets no force at all); both backends end with it
+void finishWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s);
 
 // gl backend (gl.cc): create it for b (false and err if GL is unusable),
 // compute the wrench like cpuWrench, free it with its context

@@ -8,6 +8,7 @@
 #include "hydro.h"
 #include "pool.h"
 #include "pressure.h"
+#include "rigid.h"
 
 namespace mjb {
 
@@ -34,6 +35,8 @@ void makeState(const Buoy& b, State* s) {
   s->lab.assign(2 * (b.vert.size() / 3), 0);
   s->bad.assign(b.m->nbody, 0);
   s->told.assign(b.m->nbody, 0);
+  s->badPart.assign(b.m->nbody * mjbNPART, 0);
+  s->toldPart.assign(b.m->nbody * mjbNPART, 0);
   s->notices.clear();
   s->notices.reserve(4096);
   s->tri.area.assign(nt, 0);
@@ -72,22 +75,26 @@ static void cross(const double* a, const double* b, double* c) {
   c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// advance the slamming history once per completed mj_step: MuJoCo counts
-// steps in timer[mjTIMER_STEP].number, which stays fixed across the four RK4
-// calls of one step and across bare mj_forward calls, and drops to 0 in
-// mj_resetData (time going backwards restarts too)
-int stepClock(const mjData* d, State* s) {
+// advance the slamming history when time has moved on by a step, whatever
+// loop moved it (mj_step, mj_forward + mj_Euler, ...): a call at a time at
+// least 3/4 of opt.timestep past the current step's opens a new step; a
+// call at the current step's time records (the last evaluation at that time
+// is the step's history); a call in between is an RK4 stage (t + h/2) and
+// records nothing. Time going backwards, or the step counter
+// timer[mjTIMER_STEP] dropping (mj_resetData zeroes it), restarts
+int stepClock(const mjModel* m, const mjData* d, State* s) {
   long k = d->timer[mjTIMER_STEP].number;
   int r;
   if (s->key < 0 || k < s->key || d->time < s->tcur) {
     s->hasPrev = false;
     r = kRestart;
-  } else if (k > s->key) {
+  } else if (d->time - s->tcur >= 0.75 * m->opt.timestep) {
     s->tprev = s->tcur;
     s->hasPrev = true;
     r = kNewStep;
   } else {
-    return kSameStep;
+    s->key = k;
+    return d->time == s->tcur ? kSameStep : kMidStep;
   }
   s->key = k;
   s->tcur = d->time;
@@ -106,8 +113,8 @@ static void add(double* w, const double* f, const double* c) {
 
 // forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
 // is the body's wrench of force family p; slot picks the thread's scratch
-static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6], bool first,
-                       State* s, int slot, double* const w[]) {
+static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6],
+                       const Rigid& rig, bool first, State* s, int slot, double* const w[]) {
   double* sc = s->scr.data() + s->per * slot;
   const Hull& hl = b.hull[ih];
   const Sea& sea = b.cfg.sea;
@@ -203,6 +210,11 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     for (int e = 0; e < 3; e++) std::memcpy(p[e], s->rel.data() + 3 * fc[e], 3 * sizeof(double));
     Wet wt;
     wetTriangle(p, h, &wt);
+    if (!std::isfinite(wt.area) || !std::isfinite(wt.dA)) {
+      wp[0] += NAN;  // reported by finishWrench, never a silent zero
+      s->tri.area[k] = 0;
+      continue;
+    }
     s->tri.area[k] = wt.area > 0 ? wt.area : 0;
     if (!(wt.area > 0)) continue;
     const double* n = wt.n;
@@ -280,13 +292,22 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     dragForce(par.drag, par.suction, par.vref, A, n, v, g);
     add(w[mjbPART_DRAG], g, c);
     if (s->hasPrev) {
-      slamForce(par.slam[0], par.slam[1], par.slam[2], hl.mass, hl.area, b.tarea[k], A, v,
-                s->prevA[k], &s->prevV[3 * k], n, slamdt, g);
+      // the stopping force is sized by the effective mass of the rigid
+      // group at this point along v (docs/physics.md, "Slamming with the
+      // effective mass"), not its mass: it acts off the COM
+      double sp = std::sqrt(dot(v, v)), meff = 0;
+      if (sp > 0) {
+        double u[3] = {v[0] / sp, v[1] / sp, v[2] / sp}, pw[3];
+        for (int j = 0; j < 3; j++) pw[j] = c[j] + com[j];
+        meff = effMass(rig, pw, u);
+      }
+      slamForce(par.slam[0], par.slam[1], par.slam[2], hl.share * meff, hl.area, b.tarea[k], A,
+                v, s->prevA[k], &s->prevV[3 * k], n, slamdt, g);
       add(w[mjbPART_SLAM], g, c);
     }
   }
 
-  // slamming history: this step's first call
+  // slamming history: the last call at this step's time
   if (first) {
     for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
       s->curA[k] = s->tri.area[k];
@@ -331,7 +352,9 @@ static void hullRange(const Job& j, int h0, int h1, int slot) {
     }
     double* w[mjbNPART];
     for (int p = 0; p < mjbNPART; p++) w[p] = s->part.data() + p * nb6 + 6 * bd;
-    hullWrench(b, ih, j.d, vel, j.first, s, slot, w);
+    Rigid rig;
+    rigidGroup(j.m, j.d, bd, &rig);
+    hullWrench(b, ih, j.d, vel, rig, j.first, s, slot, w);
   }
 }
 
@@ -354,10 +377,9 @@ void noteBad(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
 }
 
 void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
-  const int nb6 = 6 * m->nbody;
   std::memset(s->part.data(), 0, s->part.size() * sizeof(double));
   std::memset(s->bad.data(), 0, s->bad.size());
-  int clock = stepClock(d, s);
+  int clock = stepClock(m, d, s);
   if (clock == kNewStep) {
     std::swap(s->prevA, s->curA);
     std::swap(s->prevV, s->curV);
@@ -379,17 +401,34 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   // large scenes: chunks of hulls shared among the pool's threads; a chunk
   // owns whole bodies and each thread its own scratch, so the result does
   // not depend on who runs what. Another mjData holding the pool: serial.
-  Job job{&b, m, d, s, clock != kSameStep};
+  Job job{&b, m, d, s, clock != kMidStep};
   if (!b.pool || !poolRun(b.pool, runChunk, &job, int(b.split.size()) - 1)) {
     hullRange(job, 0, b.hull.size(), 0);
   }
+  finishWrench(b, m, d, s);
+}
+
+void finishWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
+  static const char* kFamily[mjbNPART] = {"pressure", "viscous", "drag", "slamming", "damping"};
   noteBad(b, m, d, s);
-  // total; a body with a non-finite state gets no force at all
+  const int nb6 = 6 * m->nbody;
   std::memset(s->wrench.data(), 0, s->wrench.size() * sizeof(double));
   for (int bd : b.body) {
     for (int p = 0; p < mjbNPART; p++) {
       double* wp = s->part.data() + p * nb6 + 6 * bd;
-      if (s->bad[bd]) std::memset(wp, 0, 6 * sizeof(double));
+      char& bad = s->badPart[mjbNPART * bd + p];
+      bad = !s->bad[bd] && !finite(wp, 6);
+      if (s->bad[bd] || bad) std::memset(wp, 0, 6 * sizeof(double));
+      if (bad && !s->toldPart[mjbNPART * bd + p]) {
+        s->toldPart[mjbNPART * bd + p] = 1;
+        char line[256];
+        std::snprintf(line, sizeof(line),
+                      "body \"%s\": %s force not finite at t = %g s (an intermediate "
+                      "overflowed or was NaN); mjbuoy leaves it out of the wrench\n",
+                      m->names + m->name_bodyadr[bd], kFamily[p], d->time);
+        // within the capacity reserved in makeState: no allocation while stepping
+        if (s->notices.size() + std::strlen(line) < s->notices.capacity()) s->notices += line;
+      }
       for (int j = 0; j < 6; j++) s->wrench[6 * bd + j] += wp[j];
     }
   }

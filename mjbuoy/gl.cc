@@ -15,6 +15,7 @@
 #include "gltimer.h"
 #include "shared.h"
 #include "pipeline.h"
+#include "rigid.h"
 
 namespace mjb {
 
@@ -141,7 +142,7 @@ bool glMake(Buoy* b, std::string* err) {
     for (int v = 0; v < hl.nv; v += g->vlocal * g->per) {
       vchunk.push_back(GChunk{h, hl.v0 + v, std::min(g->vlocal * g->per, hl.nv - v), 0});
     }
-    hull[h].shape = vec4{float(hl.area), float(hl.mass), float(p.viscous), float(p.vref)};
+    hull[h].shape = vec4{float(hl.area), float(hl.share), float(p.viscous), float(p.vref)};
     hull[h].drag = vec4{float(p.drag[0]), float(p.drag[1]), float(p.drag[2]), 0};
     hull[h].suction = vec4{float(p.suction[0]), float(p.suction[1]), float(p.suction[2]), 0};
     hull[h].slam = vec4{float(p.slam[0]), float(p.slam[1]), float(p.slam[2]), 0};
@@ -325,6 +326,8 @@ static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
       o.r0.x = o.r1.y = o.r2.z = 1;
       o.orig.w = 1e6;
       o.flow.x = 1;
+      o.rig0 = vec4{0, 0, 0, 1};
+      o.rig1 = o.rig2 = vec4{0, 0, 0, 0};
       continue;
     }
     o.r0 = vec4{float(R[0]), float(R[1]), float(R[2]), 0};
@@ -334,6 +337,13 @@ static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
                   float(c[2] - sea.level)};
     o.vlin = vec4{float(vel[3]), float(vel[4]), float(vel[5]), 0};
     o.vang = vec4{float(vel[0]), float(vel[1]), float(vel[2]), 0};
+    // the rigid group's mass and inertia, for the slamming effective mass
+    Rigid rg;
+    rigidGroup(m, d, bd, &rg);
+    o.rig0 = vec4{float(rg.com[0] - c[0]), float(rg.com[1] - c[1]), float(rg.com[2] - c[2]),
+                  float(rg.minv)};
+    o.rig1 = vec4{float(rg.iinv[0]), float(rg.iinv[1]), float(rg.iinv[2]), float(rg.iinv[3])};
+    o.rig2 = vec4{float(rg.iinv[4]), float(rg.iinv[5]), 0, 0};
     // the hull's flow (as cpu.cc): COM velocity relative to the water there
     sea.velocity(c, d->time, uw);
     double vr[3] = {vel[3] - uw[0], vel[4] - uw[1], vel[5] - uw[2]};
@@ -364,7 +374,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
       gl.BufferData(GL_SHADER_STORAGE_BUFFER, zero.size() * 4, zero.data(), GL_DYNAMIC_COPY);
     }
   }
-  int clock = stepClock(d, s);
+  int clock = stepClock(m, d, s);
   if (clock == kNewStep) s->slamcur ^= 1;
   std::memset(s->bad.data(), 0, s->bad.size());
   bodies(b, m, d, s);
@@ -382,7 +392,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
   gl.ProgramUniform1i(g->prog[kTris], g->uHasprev, s->hasPrev);
-  gl.ProgramUniform1i(g->prog[kTris], g->uFirst, clock != kSameStep);
+  gl.ProgramUniform1i(g->prog[kTris], g->uFirst, clock != kMidStep);
   gl.ProgramUniform1f(g->prog[kTris], g->uSlamdt, float(s->hasPrev ? d->time - s->tprev : 0));
 
   // per-item stages loop (grid-stride) past 65535 groups, GL's guaranteed
@@ -415,12 +425,10 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     gl.BindTexture(GL_TEXTURE_BUFFER, 0);
   }
   timerFrame(&g->timer);
-  noteBad(*b, m, d, s);
 
   // unpack: part p of slot i at out[40 i + 8 p], force xyz then torque xyz
   const int nb6 = 6 * m->nbody;
   std::memset(s->part.data(), 0, s->part.size() * sizeof(double));
-  std::memset(s->wrench.data(), 0, s->wrench.size() * sizeof(double));
   for (int i = 0; i < g->nslot; i++) {
     int bd = b->body[i];
     if (s->bad[bd]) continue;
@@ -430,11 +438,10 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
       for (int j = 0; j < 3; j++) {
         w[j] = o[j];
         w[3 + j] = o[4 + j];
-        s->wrench[6 * bd + j] += w[j];
-        s->wrench[6 * bd + 3 + j] += w[3 + j];
       }
     }
   }
+  finishWrench(*b, m, d, s);
 }
 
 }  // namespace mjb

@@ -293,7 +293,8 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     for (const mjb::Hull& o : B.hull) {
       if (m->body_weldid[o.body] == m->body_weldid[h.body]) s += o.area;
     }
-    h.mass *= h.area / s;
+    h.share = h.area / s;
+    h.mass *= h.share;
   }
   // bounding radius of each hull about its body origin (vertices are in the
   // body frame), for skipping hulls entirely above the waves

@@ -1,5 +1,6 @@
 // hull meshes: mesh geoms as compiled, primitives tessellated
 #include "hull.h"
+#include "overlap.h"
 
 #include <algorithm>
 #include <array>
@@ -486,6 +487,7 @@ Mesh hullMesh(const mjModel* m, int g, std::vector<std::string>* warn) {
                       "stays exact while the holes are dry and misses the pressure on any "
                       "missing surface under water");
     }
+    checkOverlap(local, gname, warn);
   } else {
     double s[3] = {m->geom_size[3 * g], m->geom_size[3 * g + 1], m->geom_size[3 * g + 2]};
     local = tessellate(m->geom_type[g], s);

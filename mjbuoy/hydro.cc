@@ -9,6 +9,12 @@ static double dot(const double a[3], const double b[3]) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
+// a non-finite input (a NaN water velocity, |v|^2 overflowing) gives a NaN
+// force, never a zero: the caller reports it (mjb_notices)
+static void nan3(double f[3]) {
+  f[0] = f[1] = f[2] = NAN;
+}
+
 // pow(x, p) for x >= 0, with the exponents of the defaults (0.5, 1, 2)
 // done without the general pow, which is slow; same value to round-off
 static double powp(double x, double p) {
@@ -28,6 +34,7 @@ void viscousForce(double rho, double cf, double ff, double A, const double n[3],
   double vn = dot(v, n), t[3];
   for (int j = 0; j < 3; j++) t[j] = v[j] - vn * n[j];
   double v2 = dot(v, v), tl = std::sqrt(dot(t, t));
+  if (!std::isfinite(v2) || !std::isfinite(A)) return nan3(f);
   // flow normal to the face (or no flow): no tangential shear
   if (!(tl > 1e-12 * std::sqrt(v2))) {
     f[0] = f[1] = f[2] = 0;
@@ -41,6 +48,7 @@ void dragForce(const double drag[3], const double suction[3], double vr, double 
                const double n[3], const double v[3], double f[3]) {
   double sp = std::sqrt(dot(v, v));
   f[0] = f[1] = f[2] = 0;
+  if (!std::isfinite(sp) || !std::isfinite(A)) return nan3(f);
   if (!(sp > 0)) return;
   double c = dot(v, n) / sp, u = sp / vr, s;
   if (c > 0) {
@@ -58,7 +66,9 @@ void slamForce(double gain, double gmax, double p, double mass, double shull, do
                const double n[3], double dt, double f[3]) {
   f[0] = f[1] = f[2] = 0;
   double sp = std::sqrt(dot(v, v));
-  if (!(gain > 0) || !(dt > 0) || !(sp > 0) || !(A > 0)) return;
+  if (!(gain > 0) || !(dt > 0)) return;
+  if (!std::isfinite(sp) || !std::isfinite(A)) return nan3(f);
+  if (!(sp > 0) || !(A > 0)) return;
   double c = dot(v, n) / sp;
   if (!(c > 0)) return;
   double dq[3];

@@ -34,8 +34,12 @@ void dragForce(const double drag[3], const double suction[3], double vr, double 
 //   F = -clamp(Gamma / gmax, 0, 1)^p cos F_stop,  F_stop = m v (2 A_wet / S_hull) / dt
 // for advancing faces (cos > 0). Kerner's F_stop = m v 2A/S is a momentum;
 // we divide by the step dt so the force stops the motion in one step at
-// most. Summed over a closed hull (sum of A cos over advancing faces is at
-// most S_hull / 2) the impulse never exceeds m |v|: it never reverses motion.
+// most. mass is the effective mass of the rigid group at the centroid
+// along v times the hull's share (rigid.h; docs/physics.md "Slamming with
+// the effective mass"): summed over a closed hull (sum of A cos over
+// advancing faces is at most S_hull / 2) the impulses are a convex
+// combination of point stops, so they never reverse a point's motion nor
+// raise the kinetic energy.
 // gain scales the result (1: Kerner's model, 0: off).
 void slamForce(double gain, double gmax, double p, double mass, double shull, double S,
                double A, const double v[3], double Aprev, const double vprev[3],

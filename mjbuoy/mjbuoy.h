@@ -106,8 +106,10 @@ typedef enum mjbPart_ {
 const mjtNum* mjb_wrenchPart(const mjbBuoy* b, const mjData* d, int part);
 
 // run-time notices for d, one line each, each fault reported once (a body
-// whose state is not finite gets no force, and is named here); "" if none.
-// Cleared when d is reset (mj_resetData), so later faults are reported
+// whose state is not finite gets no force, and is named here; so is a force
+// family that came out non-finite for a body, which is left out of its
+// wrench); "" if none. Cleared when d is reset (mj_resetData), so later
+// faults are reported
 const char* mjb_notices(const mjbBuoy* b, const mjData* d);
 
 // sizes and backend of an attached model

@@ -91,27 +91,6 @@ void Sea::velocity(const double p[3], double t, double v[3]) const {
   velocityOf(a, t, std::fmin(p[2] - heightOf(a, t), 0.0), v);
 }
 
-// decay of the orbital velocity at depth zb <= 0 below the surface for wave
-// number k: horizontal fh, vertical fz (deep water when depth is 0)
-static void profile(double k, double zb, double depth, double* fh, double* fz) {
-  if (!(depth > 0)) {
-    *fh = *fz = std::exp(k * zb);
-    return;
-  }
-  // finite depth Airy profile, 1 at the surface
-  double kd = k * depth, kz = k * (zb + depth);
-  if (kd < 20) {
-    *fh = std::cosh(kz) / std::cosh(kd);
-    *fz = std::sinh(kz) / std::sinh(kd);
-  } else {
-    // cosh, sinh overflow past 710 (inf / inf = NaN, e.g. 1 m waves in
-    // 200 m of water); the same ratios as e^(kz-kd) (1 +- e^-2kz) / (1 +- e^-2kd)
-    double e = std::exp(kz - kd), z2 = std::exp(-2 * kz), d2 = std::exp(-2 * kd);
-    *fh = e * (1 + z2) / (1 + d2);
-    *fz = e * (1 - z2) / (1 - d2);
-  }
-}
-
 void Sea::velocityOf(const double a[2], double t, double zb, double v[3]) const {
   v[0] = current[0];
   v[1] = current[1];
@@ -123,10 +102,29 @@ void Sea::velocityOf(const double a[2], double t, double zb, double v[3]) const 
     double uh = w.steep * w.amp * w.omega * std::cos(th);
     double uz = w.amp * w.omega * std::sin(th);
     double fh, fz;
-    profile(w.k, zb, depth, &fh, &fz);
+    depthRatios(w.k, zb, &fh, &fz);
     v[0] += uh * fh * w.dx;
     v[1] += uh * fh * w.dy;
     v[2] += uz * fz;
+  }
+}
+
+void Sea::depthRatios(double k, double zb, double* fh, double* fz) const {
+  if (!(depth > 0)) {
+    *fh = *fz = std::exp(k * zb);
+    return;
+  }
+  // finite depth Airy profile, 1 at the surface
+  double kd = k * depth, kz = k * (zb + depth);
+  if (kd < 20) {
+    *fh = std::cosh(kz) / std::cosh(kd);
+    *fz = std::sinh(kz) / std::sinh(kd);
+  } else {
+    // cosh, sinh overflow past 710 (inf / inf = NaN, e.g. a 7 m chop in
+    // 1000 m of water); the same ratios as e^(kz-kd) (1 +- e^-2kz) / (1 +- e^-2kd)
+    double e = std::exp(kz - kd), z2 = std::exp(-2 * kz), d2 = std::exp(-2 * kd);
+    *fh = e * (1 + z2) / (1 + d2);
+    *fz = e * (1 - z2) / (1 - d2);
   }
 }
 
@@ -263,7 +261,7 @@ void Sea::velocitySC(const WaveNow* w, const double* sc, double zb, double v[3])
     double uh = w[i].qao * sc[2 * i + 1];
     double uz = w[i].ao * sc[2 * i];
     double fh, fz;
-    profile(w[i].k, zb, depth, &fh, &fz);
+    depthRatios(w[i].k, zb, &fh, &fz);
     v[0] += uh * fh * w[i].dx;
     v[1] += uh * fh * w[i].dy;
     v[2] += uz * fz;

@@ -79,6 +79,12 @@ struct Sea {
   // as solve's sc); tmp is scratch of 2 per wave
   void solveMany(const WaveNow* w, int m, const double* x, const double* y, double* a0,
                  double* a1, double* z, double* sc, double* tmp) const;
+  // Airy decay of the horizontal and vertical orbital velocity at depth
+  // zb <= 0 (not below the sea bed) of a component of wave number k, 1 at
+  // the surface: cosh k(z+h) / cosh kh and sinh k(z+h) / sinh kh, exp(k z)
+  // in deep water; overflow-safe for any k h (the one copy both velocity
+  // functions use)
+  void depthRatios(double k, double zb, double* fh, double* fz) const;
   // velocityOf() from the phases solve() left in sc
   void velocitySC(const WaveNow* w, const double* sc, double zb, double v[3]) const;
 };

@@ -71,7 +71,7 @@ struct GHull {
   int c0;          // first chunk
   int nc;          // chunks
   int nt;          // triangles
-  vec4 shape;      // area S [m^2], mass share [kg], form factor 1+k, vref [m/s]
+  vec4 shape;      // area S [m^2], share of the rigid group's hulls, form factor 1+k, vref [m/s]
   vec4 drag;       // C_PD1, C_PD2, f_P
   vec4 suction;    // C_SD1, C_SD2, f_S
   vec4 slam;       // gain, Gamma_max, p
@@ -90,6 +90,9 @@ struct GBody {
   int nt;          // triangles of the body
   int h0;          // first hull of the body
   int nh;          // hulls of the body
+  vec4 rig0;       // rigid group (mjbuoy/rigid.h): COM minus body COM (xyz) [m], w: 1 / mass [1/kg]
+  vec4 rig1;       // inverse inertia about the group COM, world: xx yy zz xy [1/(kg m^2)]
+  vec4 rig2;       // xz yz (xy), 0 0
 };
 
 struct GWave {
@@ -114,7 +117,7 @@ struct GChunk {
 static_assert(sizeof(GVert) == 16, "std430 stride of GVert");
 static_assert(sizeof(GTri) == 16, "std430 stride of GTri");
 static_assert(sizeof(GHull) == 96, "std430 stride of GHull");
-static_assert(sizeof(GBody) == 128, "std430 stride of GBody");
+static_assert(sizeof(GBody) == 176, "std430 stride of GBody");
 static_assert(sizeof(GWave) == 32, "std430 stride of GWave");
 static_assert(sizeof(GChunk) == 16, "std430 stride of GChunk");
 }  // namespace glsl

@@ -13,25 +13,51 @@ float theta(int b, int i, vec2 a) {
   return phase[b * nwave + i] + wave[i].k * (wave[i].dx * a.x + wave[i].dy * a.y);
 }
 
-// particle label (rel. COM) whose displaced position is x, Newton from a
+// residual f = a - Q A D sin(theta(a)) - x and the upper triangle of its
+// Jacobian J = I - sum Q A k cos(theta) D D^T (j00, j01, j11)
+vec2 seaResidual(int b, vec2 x, vec2 a, out vec3 J) {
+  vec2 f = a - x;
+  J = vec3(1.0, 0.0, 1.0);
+  for (int i = 0; i < nwave; i++) {
+    float th = theta(b, i, a), s = sin(th), c = cos(th);
+    float qa = wave[i].steep * wave[i].amp, jc = qa * wave[i].k * c;
+    f -= qa * s * vec2(wave[i].dx, wave[i].dy);
+    J -= jc * vec3(wave[i].dx * wave[i].dx, wave[i].dx * wave[i].dy, wave[i].dy * wave[i].dy);
+  }
+  return f;
+}
+
+// particle label (rel. COM) whose displaced position is x, Newton from a,
+// safeguarded as mjbuoy/sea.cc label(): J stays positive definite below
+// folding, so the Newton step is a descent direction of |f|^2 and is
+// halved until |f| drops (near folding, sum Q k A -> 1, J is nearly
+// singular and full steps overshoot); stops when the step is below 0.1 mm
+// or |f| no longer drops in float
 vec2 seaLabel(int b, vec2 x, vec2 a) {
-  for (int it = 0; it < 16 && nwave > 0; it++) {
-    vec2 f = a - x;
-    float j00 = 1.0, j01 = 0.0, j11 = 1.0;
-    for (int i = 0; i < nwave; i++) {
-      float th = theta(b, i, a), s = sin(th), c = cos(th);
-      float qa = wave[i].steep * wave[i].amp, jc = qa * wave[i].k * c;
-      f -= qa * s * vec2(wave[i].dx, wave[i].dy);
-      j00 -= jc * wave[i].dx * wave[i].dx;
-      j01 -= jc * wave[i].dx * wave[i].dy;
-      j11 -= jc * wave[i].dy * wave[i].dy;
+  if (nwave == 0) return a;
+  vec3 J;
+  vec2 f = seaResidual(b, x, a, J);
+  for (int it = 0; it < 40; it++) {
+    float r2 = dot(f, f);
+    if (r2 == 0.0) break;
+    float det = J.x * J.z - J.y * J.y;
+    vec2 st = vec2(J.z * f.x - J.y * f.y, J.x * f.y - J.y * f.x) / det;
+    vec2 an = a, fn = f;
+    vec3 Jn = J;
+    bool down = false;
+    for (int h = 0; h < 24 && !down; h++) {
+      an = a - st;
+      fn = seaResidual(b, x, an, Jn);
+      down = dot(fn, fn) < r2;
+      st *= 0.5;
     }
-    float det = j00 * j11 - j01 * j01;
-    vec2 st = vec2(j11 * f.x - j01 * f.y, j00 * f.y - j01 * f.x) / det;
-    a -= st;
-    // a 0.1 mm step: Newton's next error is ~k (k Q A) |st|^2 < 1e-8 m, below
-    // float's resolution of the label; 1e-7 m would never be reached in float
-    if (dot(st, st) < 1e-8) break;
+    if (!down) break;  // no further progress in float
+    a = an;
+    f = fn;
+    J = Jn;
+    // a 0.1 mm step: Newton's next error is ~k (k Q A) |st|^2 / det, below
+    // float's resolution of the label away from folding
+    if (dot(st, st) < 0.25e-8) break;  // st was halved once past the step taken
   }
   return a;
 }

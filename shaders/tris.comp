@@ -31,6 +31,10 @@ uniform int hasprev;   // slamming history exists
 uniform int first;     // first call of this step: record the history
 uniform float slamdt;  // time since the previous step's first call [s]
 
+// a NaN to add to a sum whose intermediate was not finite: the CPU side
+// reports a non-finite family (mjb_notices), never a silent zero
+const float kNaN = uintBitsToFloat(0x7fc00000u);
+
 // per-invocation sums over its triangles (BUOY_NSUM vec4, see pipeline.h)
 vec3 pF, pT, vG, vEG, vCG, vECG, dF, dT, sF, sT;
 vec4 wt;
@@ -45,6 +49,17 @@ void piece(vec3 q0, vec3 q1, vec3 q2, float d0, float d1, float d2, vec3 n, inou
   dA += A * sd / 3.0;
   drA += A / 12.0 * (d0 * q0 + d1 * q1 + d2 * q2 + sd * sr);
   rA += A * sr / 3.0;
+}
+
+// effective mass of body b's rigid group at cc (rel. body COM) along unit
+// u: 1 / (1/m + (r x u) . I^-1 (r x u)) (mjbuoy/rigid.cc effMass)
+float effMass(int b, vec3 cc, vec3 u) {
+  vec4 r0 = body[b].rig0, r1 = body[b].rig1, r2 = body[b].rig2;
+  vec3 w = cross(cc - r0.xyz, u);
+  vec3 Jw = vec3(r1.x * w.x + r1.w * w.y + r2.x * w.z,
+                 r1.w * w.x + r1.y * w.y + r2.y * w.z,
+                 r2.x * w.x + r2.y * w.y + r1.z * w.z);
+  return 1.0 / (r0.w + dot(w, Jw));
 }
 
 void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) {
@@ -85,6 +100,7 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
     piece(pab, c.xyz, pca, 0.0, -c.w, 0.0, n, area, dA, drA, rA);
   }
   if (!(area > 0.0)) {
+    if (!(area <= 0.0)) pF += vec3(kNaN);  // NaN area: heights not finite
     if (first != 0) scur[k] = vec4(0.0);
     return;
   }
@@ -106,6 +122,12 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
   float zb = min(cc.z + zc - seaEta(b, la), 0.0);
   vec3 v = vlin + cross(vang, cc) - seaVelocity(b, la, zb);
   float v2 = dot(v, v), sp = sqrt(v2);
+  if (!(sp <= 3.0e38)) {
+    // |v| not finite in float (NaN water velocity, or overflow)
+    vG += vec3(kNaN);
+    dF += vec3(kNaN);
+    if (hasprev != 0 && hl.slam.x > 0.0 && slamdt > 0.0) sF += vec3(kNaN);
+  }
 
   // viscous: 0.5 rho C_F (1+k_i) (1 + sbar - s_k) A |v|^2 against the
   // tangential flow; here only g = A |v|^2 t / |t| and e_k g
@@ -130,12 +152,14 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
     dT += cross(cc, s * n);
   }
 
-  // slamming: Gamma = |A v - A' v'| / (S dt), stopping force m v (2A/S_hull) / dt
+  // slamming: Gamma = |A v - A' v'| / (S dt), stopping force
+  // share m_eff v (2A/S_hull) / dt with the effective mass m_eff at cc along v
   if (hasprev != 0 && hl.slam.x > 0.0 && slamdt > 0.0 && cs > 0.0) {
     vec4 pv = sprev[k];
     float gamma = length(A * v - pv.w * pv.xyz) / (0.5 * tlen * slamdt);
     float r = min(gamma / hl.slam.y, 1.0);
-    float s = -hl.slam.x * pow(r, hl.slam.z) * cs * hl.shape.y * 2.0 * A / hl.shape.x / slamdt;
+    float me = hl.shape.y * effMass(b, cc, v / sp);
+    float s = -hl.slam.x * pow(r, hl.slam.z) * cs * me * 2.0 * A / hl.shape.x / slamdt;
     sF += s * v;
     sT += cross(cc, s * v);
   }

@@ -173,9 +173,16 @@ TEST(RobustModel, SlammingStopsTheWholeRigidGroup) {
                        " mass=\"300\"/></body>");
   ASSERT_GT(direct, 0);
   for (const char* child : {"0", "100"}) {
+    // the same mass distribution: the parent carries the rest of the solid
+    // box's mass and inertia (m (b^2 + c^2) / 12 per axis: 31.25 106.25 125
+    // kg m^2 at 300 kg), since slamming is sized by the effective mass at
+    // each wet point, which depends on the inertia as well
+    const double f = (300 - std::atoi(child)) / 300.0;
     std::string parent = std::to_string(300 - std::atoi(child));
+    std::string I = std::to_string(31.25 * f) + " " + std::to_string(106.25 * f) + " " +
+                    std::to_string(125 * f);
     double welded = peak("<body name=\"b\" pos=\"0 0 3\"><freejoint/>" + inert + parent +
-                         "\" diaginertia=\"20 70 80\"/><body name=\"c\"><geom name=\"hull\" " +
+                         "\" diaginertia=\"" + I + "\"/><body name=\"c\"><geom name=\"hull\" " +
                          box + " mass=\"" + child + "\"/></body></body>");
     EXPECT_NEAR(welded, direct, 0.05 * direct) << "child mass " << child;
   }
