@@ -41,12 +41,6 @@ std::vector<mjbBuoy*> gattached;
 std::vector<mjfGeneric> gchain;
 thread_local int gdepth = 0;
 
-// models that carry mjbuoy.* entries but were never attached (e.g. a copy
-// from mj_copyModel): warned once each, in a fixed ring (no allocation)
-std::mutex gwmu;
-const mjModel* gwarned[16] = {nullptr};
-int gwnext = 0;
-
 mjbBuoy* find(const mjModel* m) {
   for (mjbBuoy* b : gattached) if (b->b.m == m) return b;
   return nullptr;
@@ -62,14 +56,11 @@ bool hasEntries(const mjModel* m) {
   return false;
 }
 
-void warnUnknown(const mjModel* m) {
-  if (!hasEntries(m)) return;
-  {
-    std::lock_guard<std::mutex> lk(gwmu);
-    for (const mjModel* w : gwarned) if (w == m) return;
-    gwarned[gwnext] = m;
-    gwnext = (gwnext + 1) % 16;
-  }
+// once per mjData episode: the callback runs inside fwdVelocity, whose
+// count is 0 until the first evaluation of a new (or reset) mjData ends.
+// Keyed on the data, not on model addresses, which a deleted model recycles
+void warnUnknown(const mjModel* m, const mjData* d) {
+  if (d->timer[mjTIMER_VELOCITY].number != 0 || !hasEntries(m)) return;
   mju_warning("mjbuoy: a model with mjbuoy.* entries was stepped without mjb_attach (a copy "
               "made with mj_copyModel?): it gets no buoyancy. Attach every copy: "
               "mjb_attach(copy, ...)");
@@ -175,7 +166,7 @@ void passive(const mjModel* m, mjData* d) {
   if (next && next != passive) next(m, d);
   if (gdepth != 1) return;
   if (!b) {
-    warnUnknown(m);
+    warnUnknown(m, d);
     return;
   }
   if (!b->b.hull.empty()) compute(b, m, d);
