@@ -12,6 +12,20 @@
 
 #include <mujoco/mujoco.h>
 
+#include "mjbuoy_version.h"
+
+// MJB_API marks the public C API: the shared library is built with hidden
+// symbols and exports only what is declared with it. Start every function
+// declared in this header with MJB_API (the test install.exports checks
+// that libmjbuoy.so exports exactly the mjb_ functions declared here).
+#ifndef MJB_API
+#if defined(__GNUC__) || defined(__clang__)
+#define MJB_API __attribute__((visibility("default")))
+#else
+#define MJB_API
+#endif
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -36,24 +50,24 @@ typedef struct mjbInfo_ {
 // a warning).
 // Returns NULL on invalid input with the reason in error (error_sz bytes).
 // The model must stay alive and unchanged until mjb_detach.
-mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz);
+MJB_API mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz);
 
 // detach: stop adding forces to this model and free everything
-void mjb_detach(mjbBuoy* b);
+MJB_API void mjb_detach(mjbBuoy* b);
 
 // per-mjData state is created on the first callback for d; call this right
 // after mj_makeData to allocate it up front instead (0 on failure)
-int mjb_bindData(mjbBuoy* b, const mjData* d);
+MJB_API int mjb_bindData(mjbBuoy* b, const mjData* d);
 
 // forget d's state; call before mj_deleteData if the process will keep
 // stepping other mjData of the same model
-void mjb_unbindData(mjbBuoy* b, const mjData* d);
+MJB_API void mjb_unbindData(mjbBuoy* b, const mjData* d);
 
 // the wrench mjbuoy added in the last callback for d: nbody x 6, laid out
 // like xfrc_applied: world-frame force [N], then world-frame torque about
 // the body's centre of mass d->xipos [N m]. Zero for bodies without hulls.
 // NULL if d was never seen.
-const mjtNum* mjb_wrench(const mjbBuoy* b, const mjData* d);
+MJB_API const mjtNum* mjb_wrench(const mjbBuoy* b, const mjData* d);
 
 // the force families that make up the wrench
 typedef enum mjbPart_ {
@@ -67,26 +81,31 @@ typedef enum mjbPart_ {
 
 // one force family's share of mjb_wrench, same layout; NULL if d was never
 // seen or part is out of range
-const mjtNum* mjb_wrenchPart(const mjbBuoy* b, const mjData* d, int part);
+MJB_API const mjtNum* mjb_wrenchPart(const mjbBuoy* b, const mjData* d, int part);
 
 // run-time notices for d, one line each, each fault reported once (a body
 // whose state is not finite gets no force, and is named here); "" if none
-const char* mjb_notices(const mjbBuoy* b, const mjData* d);
+MJB_API const char* mjb_notices(const mjbBuoy* b, const mjData* d);
 
 // sizes and backend of an attached model
-mjbInfo mjb_info(const mjbBuoy* b);
+MJB_API mjbInfo mjb_info(const mjbBuoy* b);
 
 // gl backend: mean GPU time per call of each pipeline stage [ms], from GL
 // timer queries; fills up to n names and times, returns the number of
 // stages (0 for the cpu backend)
-int mjb_stageTimes(const mjbBuoy* b, const char** name, double* ms, int n);
+MJB_API int mjb_stageTimes(const mjbBuoy* b, const char** name, double* ms, int n);
 
 // load-time warnings (open meshes, double-counted fluid forces, ...), one
 // per line; empty string when there are none
-const char* mjb_warnings(const mjbBuoy* b);
+MJB_API const char* mjb_warnings(const mjbBuoy* b);
 
 // the exact sea surface height eta(x, y, t) [m] of an attached model
-mjtNum mjb_seaHeight(const mjbBuoy* b, mjtNum x, mjtNum y, mjtNum t);
+MJB_API mjtNum mjb_seaHeight(const mjbBuoy* b, mjtNum x, mjtNum y, mjtNum t);
+
+// library version: 10000 major + 100 minor + patch (compare with
+// MJBUOY_VERSION of the header compiled against), and as "major.minor.patch"
+MJB_API int mjb_version(void);
+MJB_API const char* mjb_versionString(void);
 
 #ifdef __cplusplus
 }

@@ -10,6 +10,8 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "mjbuoy_version.h"
 #include <mujoco/mujoco.h>
 
 #include "mjbuoy.h"
@@ -143,6 +145,7 @@ static double paper(int boats, int tris) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Benchmark mjbuoy on the dissertation's grid of Wigley boats."};
+  app.set_version_flag("--version", std::string("mjbuoy-bench ") + MJBUOY_VERSION_STRING);
   std::string grid = "small", json, meshes = MJB_MODELS "/meshes";
   std::vector<std::string> backends = {"cpu", "gl"};
   std::vector<int> boats, tris;

@@ -8,6 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "mjbuoy_version.h"
+
 // hull dimensions [m]: length, beam, draft, freeboard
 struct Dims {
   double L = 4, B = 0.5, T = 0.25, F = 0.15;
@@ -182,6 +184,7 @@ static bool writeObj(const Mesh& m, const Dims& d, int nx, int nz, FILE* out) {
 int main(int argc, char** argv) {
   CLI::App app{"Write a closed Wigley hull triangle mesh (z up, x along the length, origin "
                "at midships on the design waterline) as Wavefront OBJ."};
+  app.set_version_flag("--version", std::string("mjbuoy-hullgen ") + MJBUOY_VERSION_STRING);
   Dims d;
   long n = 576;
   std::string file;

@@ -9,12 +9,15 @@
 
 #include <CLI/CLI.hpp>
 
+#include "mjbuoy_version.h"
+
 #include "scenario.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Run mjbuoy scenario files (docs/scenarios.md): load the model with the "
                "scenario's sea and initial state, simulate and evaluate the checks. Exit status "
                "0: all pass, 1: a check fails, 2: an invalid scenario."};
+  app.set_version_flag("--version", std::string("mjbuoy-scenario ") + MJBUOY_VERSION_STRING);
   std::vector<std::string> files;
   std::string junit, backend, print;
   app.add_option("scenario", files, "scenario XML file(s)")->required();

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "mjbuoy_version.h"
 #include <mujoco/mujoco.h>
 
 #include "mjbuoy.h"
@@ -69,6 +71,7 @@ struct Progress {
 
 int main(int argc, char** argv) {
   CLI::App app{"Simulate an mjbuoy MJCF scene headless and print a summary."};
+  app.set_version_flag("--version", std::string("mjbuoy-sim ") + MJBUOY_VERSION_STRING);
   std::string model, csv, backend;
   double duration = 10, interval = 0.01;
   app.add_option("model", model, "MJCF model file")->required()->check(CLI::ExistingFile);
