@@ -28,6 +28,7 @@ namespace {
 std::shared_mutex gmu;
 std::vector<mjbBuoy*> gattached;
 mjfGeneric gprev = nullptr;  // mjcb_passive found at first attach, chained
+mjfSensor gprevSensor = nullptr;  // mjcb_sensor found then, chained too
 
 mjbBuoy* find(const mjModel* m) {
   for (mjbBuoy* b : gattached) if (b->b.m == m) return b;
@@ -86,6 +87,19 @@ void passive(const mjModel* m, mjData* d) {
     const mjtNum* w = s->wrench.data() + 6 * bd;
     applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
   }
+}
+
+// user sensors: the user's callback first, then the ones mjbuoy binds
+// (sensor.cc), so a sensor bound to mjbuoy gets mjbuoy's value
+void sensorcb(const mjModel* m, mjData* d, int stage) {
+  if (gprevSensor) gprevSensor(m, d, stage);
+  mjbBuoy* b;
+  {
+    std::shared_lock<std::shared_mutex> lk(gmu);
+    b = find(m);
+  }
+  if (!b || b->b.sensor.empty()) return;
+  mjb::fillSensors(b->b, m, d, state(b, d, false), stage);
 }
 
 // cpu threads: mjbuoy.threads, or with 0 (auto) every core (up to
@@ -221,12 +235,23 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
   }
   for (const std::string& w : warn) B.warnings += "mjbuoy: warning: " + w + "\n";
   if (B.cfg.backend == "cpu") threads(&B);
+  e = mjb::parseSensors(&B);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    mjb::glFree(&B);
+    mjb::poolFree(B.pool);
+    return nullptr;
+  }
 
   mjbBuoy* out = b.release();
   std::unique_lock<std::shared_mutex> lk(gmu);
   if (gattached.empty() && mjcb_passive != passive) {
     gprev = mjcb_passive;
     mjcb_passive = passive;
+  }
+  if (gattached.empty() && mjcb_sensor != sensorcb) {
+    gprevSensor = mjcb_sensor;
+    mjcb_sensor = sensorcb;
   }
   gattached.push_back(out);
   return out;
@@ -240,6 +265,10 @@ void mjb_detach(mjbBuoy* b) {
     if (gattached.empty() && mjcb_passive == passive) {
       mjcb_passive = gprev;
       gprev = nullptr;
+    }
+    if (gattached.empty() && mjcb_sensor == sensorcb) {
+      mjcb_sensor = gprevSensor;
+      gprevSensor = nullptr;
     }
   }
   for (auto& kv : b->data) mjb::glFreeState(&b->b, kv.second.get());
