@@ -16,7 +16,7 @@
 
 // MJB_API marks the public C API: the shared library is built with hidden
 // symbols and exports only what is declared with it. Start every function
-// declared in this header with MJB_API (the test install.exports checks
+// declared in this header with MJB_API (the test install.tree checks
 // that libmjbuoy.so exports exactly the mjb_ functions declared here).
 #ifndef MJB_API
 #if defined(__GNUC__) || defined(__clang__)

@@ -11,10 +11,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "mjbuoy_version.h"
 #include <mujoco/mujoco.h>
 
-#include "mjbuoy.h"
+#include "mjbuoy.h"  // and mjbuoy_version.h
 
 using Clock = std::chrono::steady_clock;
 

@@ -10,7 +10,6 @@
 #include <CLI/CLI.hpp>
 
 #include "mjbuoy_version.h"
-
 #include "scenario.h"
 
 int main(int argc, char** argv) {

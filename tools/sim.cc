@@ -12,10 +12,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "mjbuoy_version.h"
 #include <mujoco/mujoco.h>
 
-#include "mjbuoy.h"
+#include "mjbuoy.h"  // and mjbuoy_version.h
 #include "plot.h"
 #include "render.h"
 
