@@ -9,6 +9,7 @@
 
 #include "config.h"
 #include "mjbuoy.h"
+#include "sensor.h"
 
 namespace mjb {
 
@@ -35,6 +36,7 @@ struct Buoy {
   std::vector<int> face;       // 3 global vertex indices per triangle
   std::vector<double> tarea;   // area of each triangle [m^2]
   std::vector<int> body;       // bodies carrying hulls, ascending
+  std::vector<Sensor> sensor;  // user sensors mjbuoy fills (sensor.h)
   std::string warnings;        // newline-separated
   std::string renderer;
   GlBackend* gl = nullptr;     // gl backend, when it runs

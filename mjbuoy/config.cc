@@ -252,9 +252,12 @@ std::string parseConfig(const mjModel* m, Config* c) {
     } else if (!std::strcmp(key, "backend")) {
       std::string e = setBackend(text, tag("text", name), c);
       if (!e.empty()) return e;
+    } else if (!std::strncmp(key, "sensor.", 7)) {
+      continue;  // sensor bindings: sensor.cc, once the hulls are built
     } else {
       return "mjbuoy: unknown entry " + tag("text", name) +
-             "; text entries are mjbuoy.hulls and mjbuoy.backend (numeric entries: " +
+             "; text entries are mjbuoy.hulls, mjbuoy.backend and mjbuoy.sensor.<sensor> "
+             "(numeric entries: " +
              kNumericNames + "; see docs/mjcf.md)";
     }
   }

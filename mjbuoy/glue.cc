@@ -40,6 +40,7 @@ std::vector<mjbBuoy*> gattached;
 // callback runs once per evaluation.
 std::vector<mjfGeneric> gchain;
 thread_local int gdepth = 0;
+mjfSensor gprevSensor = nullptr;  // mjcb_sensor found then, chained too
 
 mjbBuoy* find(const mjModel* m) {
   for (mjbBuoy* b : gattached) if (b->b.m == m) return b;
@@ -170,6 +171,19 @@ void passive(const mjModel* m, mjData* d) {
     return;
   }
   if (!b->b.hull.empty()) compute(b, m, d);
+}
+
+// user sensors: the user's callback first, then the ones mjbuoy binds
+// (sensor.cc), so a sensor bound to mjbuoy gets mjbuoy's value
+void sensorcb(const mjModel* m, mjData* d, int stage) {
+  if (gprevSensor) gprevSensor(m, d, stage);
+  mjbBuoy* b;
+  {
+    std::shared_lock<std::shared_mutex> lk(gmu);
+    b = find(m);
+  }
+  if (!b || b->b.sensor.empty()) return;
+  mjb::fillSensors(b->b, m, d, state(b, d, false), stage);
 }
 
 // cpu threads: mjbuoy.threads, or with 0 (auto) every core (up to
@@ -311,6 +325,13 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
   }
   for (const std::string& w : warn) B.warnings += "mjbuoy: warning: " + w + "\n";
   if (B.cfg.backend == "cpu") threads(&B);
+  e = mjb::parseSensors(&B);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    mjb::glFree(&B);
+    mjb::poolFree(B.pool);
+    return nullptr;
+  }
 
   mjbBuoy* out = b.release();
   std::unique_lock<std::shared_mutex> lk(gmu);
@@ -319,6 +340,10 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     if (!mjcb_passive) gchain.clear();
     gchain.push_back(mjcb_passive);
     mjcb_passive = passive;
+  }
+  if (gattached.empty() && mjcb_sensor != sensorcb) {
+    gprevSensor = mjcb_sensor;
+    mjcb_sensor = sensorcb;
   }
   gattached.push_back(out);
   return out;
@@ -339,6 +364,10 @@ void mjb_detach(mjbBuoy* b) {
     if (gattached.empty() && mjcb_passive == passive && !gchain.empty()) {
       mjcb_passive = gchain.back();
       gchain.pop_back();
+    }
+    if (gattached.empty() && mjcb_sensor == sensorcb) {
+      mjcb_sensor = gprevSensor;
+      gprevSensor = nullptr;
     }
   }
   for (auto& kv : b->data) mjb::glFreeState(&b->b, kv.second.get());

@@ -12,6 +12,20 @@
 
 #include <mujoco/mujoco.h>
 
+#include "mjbuoy_version.h"
+
+// MJB_API marks the public C API: the shared library is built with hidden
+// symbols and exports only what is declared with it. Start every function
+// declared in this header with MJB_API (the test install.tree checks
+// that libmjbuoy.so exports exactly the mjb_ functions declared here).
+#ifndef MJB_API
+#if defined(__GNUC__) || defined(__clang__)
+#define MJB_API __attribute__((visibility("default")))
+#else
+#define MJB_API
+#endif
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -37,10 +51,10 @@ typedef struct mjbInfo_ {
 // vertices finite). Returns 1 if nothing is wrong (a missing or malformed
 // file is left to MuJoCo's loader), else 0 with the file, line and fix in
 // error (error_sz bytes). Every mjbuoy tool calls it before mj_loadXML.
-int mjb_checkModelFile(const char* xmlpath, char* error, int error_sz);
+MJB_API int mjb_checkModelFile(const char* xmlpath, char* error, int error_sz);
 
 // the same check of one .obj or .stl mesh file (other extensions: 1)
-int mjb_checkMeshFile(const char* path, char* error, int error_sz);
+MJB_API int mjb_checkMeshFile(const char* path, char* error, int error_sz);
 
 // attach mjbuoy to a compiled model. Reads and validates the "mjbuoy.*"
 // custom entries, builds the hulls and installs the mjcb_passive callback
@@ -50,7 +64,7 @@ int mjb_checkMeshFile(const char* path, char* error, int error_sz);
 // a warning).
 // Returns NULL on invalid input with the reason in error (error_sz bytes).
 // The model must stay alive and unchanged until mjb_detach.
-mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz);
+MJB_API mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz);
 
 // detach: stop adding forces to this model and free everything. The handle
 // is invalid afterwards. mjb_detach(NULL), and a handle that is not attached
@@ -61,7 +75,7 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
 // may chain to it, also across detach and re-attach (docs/robustness.md).
 // mjb_detach of the last model restores the callback it replaced if
 // mjbuoy's trampoline is still installed.
-void mjb_detach(mjbBuoy* b);
+MJB_API void mjb_detach(mjbBuoy* b);
 
 // every model needs its own mjb_attach, copies from mj_copyModel included:
 // a model with mjbuoy.* entries stepped without it gets no buoyancy and one
@@ -73,23 +87,23 @@ void mjb_detach(mjbBuoy* b);
 // fwdVelocity count d->timer[mjTIMER_VELOCITY].number at the last callback
 // and d->time at the first callback of the last step. A new mjData at a recycled address, or d after
 // mj_resetData, starts clean: zero wrench, no notices, no slamming history.
-int mjb_bindData(mjbBuoy* b, const mjData* d);
+MJB_API int mjb_bindData(mjbBuoy* b, const mjData* d);
 
 // copy mjbuoy's state for src (wrench, notices, slamming history) to dst;
 // call right after mj_copyData(dst, m, src), which does not carry it, so
 // that dst continues exactly like src (1 on success, 0 on failure)
-int mjb_copyData(mjbBuoy* b, mjData* dst, const mjData* src);
+MJB_API int mjb_copyData(mjbBuoy* b, mjData* dst, const mjData* src);
 
 // forget d's state; call before mj_deleteData if the process will keep
 // stepping other mjData of the same model
-void mjb_unbindData(mjbBuoy* b, const mjData* d);
+MJB_API void mjb_unbindData(mjbBuoy* b, const mjData* d);
 
 // the wrench mjbuoy added in the last callback for d: nbody x 6, laid out
 // like xfrc_applied: world-frame force [N], then world-frame torque about
 // the body's centre of mass d->xipos [N m]. Zero for bodies without hulls,
 // and zero for a new or reset d before its first callback. NULL if d was
 // never seen.
-const mjtNum* mjb_wrench(const mjbBuoy* b, const mjData* d);
+MJB_API const mjtNum* mjb_wrench(const mjbBuoy* b, const mjData* d);
 
 // the force families that make up the wrench
 typedef enum mjbPart_ {
@@ -103,29 +117,34 @@ typedef enum mjbPart_ {
 
 // one force family's share of mjb_wrench, same layout; NULL if d was never
 // seen or part is out of range
-const mjtNum* mjb_wrenchPart(const mjbBuoy* b, const mjData* d, int part);
+MJB_API const mjtNum* mjb_wrenchPart(const mjbBuoy* b, const mjData* d, int part);
 
 // run-time notices for d, one line each, each fault reported once (a body
 // whose state is not finite gets no force, and is named here; so is a force
 // family that came out non-finite for a body, which is left out of its
 // wrench); "" if none. Cleared when d is reset (mj_resetData), so later
 // faults are reported
-const char* mjb_notices(const mjbBuoy* b, const mjData* d);
+MJB_API const char* mjb_notices(const mjbBuoy* b, const mjData* d);
 
 // sizes and backend of an attached model
-mjbInfo mjb_info(const mjbBuoy* b);
+MJB_API mjbInfo mjb_info(const mjbBuoy* b);
 
 // gl backend: mean GPU time per call of each pipeline stage [ms], from GL
 // timer queries; fills up to n names and times, returns the number of
 // stages (0 for the cpu backend)
-int mjb_stageTimes(const mjbBuoy* b, const char** name, double* ms, int n);
+MJB_API int mjb_stageTimes(const mjbBuoy* b, const char** name, double* ms, int n);
 
 // load-time warnings (open meshes, double-counted fluid forces, ...), one
 // per line; empty string when there are none
-const char* mjb_warnings(const mjbBuoy* b);
+MJB_API const char* mjb_warnings(const mjbBuoy* b);
 
 // the exact sea surface height eta(x, y, t) [m] of an attached model
-mjtNum mjb_seaHeight(const mjbBuoy* b, mjtNum x, mjtNum y, mjtNum t);
+MJB_API mjtNum mjb_seaHeight(const mjbBuoy* b, mjtNum x, mjtNum y, mjtNum t);
+
+// library version: 10000 major + 100 minor + patch (compare with
+// MJBUOY_VERSION of the header compiled against), and as "major.minor.patch"
+MJB_API int mjb_version(void);
+MJB_API const char* mjb_versionString(void);
 
 #ifdef __cplusplus
 }

@@ -1,5 +1,5 @@
 // rigid: mass and inertia of the group of bodies a hull moves rigidly with,
-// for the slamming bound (docs/physics.md, "Slamming with the effective mass")
+// for the slamming bound (docs/physics.md section 10)
 #ifndef MJBUOY_RIGID_H_
 #define MJBUOY_RIGID_H_
 

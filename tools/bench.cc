@@ -10,11 +10,12 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
 #include <mujoco/mujoco.h>
 
 #include "cliopt.h"
 #include "guard.h"
-#include "mjbuoy.h"
+#include "mjbuoy.h"  // and mjbuoy_version.h
 #include "outfile.h"
 
 using Clock = std::chrono::steady_clock;
@@ -162,6 +163,7 @@ int main(int argc, char** argv) {
   mjbtool::installMujocoHandlers("mjbuoy-bench");
   using mjbtool::Finite;
   CLI::App app{"Benchmark mjbuoy on the dissertation's grid of Wigley boats."};
+  app.set_version_flag("--version", std::string("mjbuoy-bench ") + MJBUOY_VERSION_STRING);
   std::string grid = "small", json, meshes = MJB_MODELS "/meshes";
   std::vector<std::string> backends = {"cpu", "gl"};
   std::vector<int> boats, tris;

@@ -10,6 +10,7 @@
 
 #include "cliopt.h"
 #include "outfile.h"
+#include "mjbuoy_version.h"
 
 // hull dimensions [m]: length, beam, draft, freeboard
 struct Dims {
@@ -185,6 +186,7 @@ static bool writeObj(const Mesh& m, const Dims& d, int nx, int nz, FILE* out) {
 int main(int argc, char** argv) {
   CLI::App app{"Write a closed Wigley hull triangle mesh (z up, x along the length, origin "
                "at midships on the design waterline) as Wavefront OBJ."};
+  app.set_version_flag("--version", std::string("mjbuoy-hullgen ") + MJBUOY_VERSION_STRING);
   Dims d;
   long n = 576;
   std::string file;

@@ -12,6 +12,7 @@
 
 #include "guard.h"
 #include "outfile.h"
+#include "mjbuoy_version.h"
 #include "scenario.h"
 
 // the files a run reads: the scenario files, and of those that parse, their
@@ -57,6 +58,7 @@ int main(int argc, char** argv) {
                "scenario's sea and initial state, simulate and evaluate the checks. Exit status "
                "0: all pass, 1: a check fails, 2: an invalid scenario or an output that cannot "
                "be written."};
+  app.set_version_flag("--version", std::string("mjbuoy-scenario ") + MJBUOY_VERSION_STRING);
   std::vector<std::string> files;
   std::string junit, backend, print;
   app.add_option("scenario", files, "scenario XML file(s)")->required();

@@ -15,11 +15,12 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
 #include <mujoco/mujoco.h>
 
 #include "cliopt.h"
 #include "guard.h"
-#include "mjbuoy.h"
+#include "mjbuoy.h"  // and mjbuoy_version.h
 #include "outfile.h"
 #include "plot.h"
 #include "render.h"
@@ -74,6 +75,13 @@ struct Progress {
   }
 };
 
+// CSV column name of object i: its MJCF name, or <kind><id> if unnamed
+static std::string csvName(const mjModel* m, int type, int i) {
+  const char* n = mj_id2name(m, type, i);
+  if (n && *n) return n;
+  return std::string(type == mjOBJ_JOINT ? "joint" : "sensor") + std::to_string(i);
+}
+
 // the model, its data and the attachment, freed on every way out
 struct Scene {
   mjModel* m = nullptr;
@@ -116,6 +124,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Simulate an mjbuoy MJCF scene headless and print a summary. Outputs are "
                "written to a temporary file beside them and renamed into place when the run "
                "succeeds; an output that is an input or another output is refused."};
+  app.set_version_flag("--version", std::string("mjbuoy-sim ") + MJBUOY_VERSION_STRING);
   std::string model, csv, backend;
   double duration = 10, interval = 0.01;
   app.add_option("model", model, "MJCF model file")->required()->check(CLI::ExistingFile);
@@ -297,16 +306,52 @@ int main(int argc, char** argv) {
         std::fprintf(out, ",%s.%s", n, c);
       }
     }
+    // every other joint by name (README "Use"): slide [m], hinge [deg],
+    // ball as its quaternion w, x, y, z; then every sensor by name, one
+    // column per value (<sensor>.<i> when it has several)
+    for (int j = 0; j < m->njnt; j++) {
+      std::string n = csvName(m, mjOBJ_JOINT, j);
+      if (m->jnt_type[j] == mjJNT_BALL) {
+        std::fprintf(out, ",%s.qw,%s.qx,%s.qy,%s.qz", n.c_str(), n.c_str(), n.c_str(), n.c_str());
+      } else if (m->jnt_type[j] != mjJNT_FREE) {
+        std::fprintf(out, ",%s", n.c_str());
+      }
+    }
+    for (int i = 0; i < m->nsensor; i++) {
+      std::string n = csvName(m, mjOBJ_SENSOR, i);
+      for (int k = 0; k < m->sensor_dim[i]; k++) {
+        if (m->sensor_dim[i] == 1) std::fprintf(out, ",%s", n.c_str());
+        else std::fprintf(out, ",%s.%d", n.c_str(), k);
+      }
+    }
     std::fprintf(out, "\n");
   }
 
   auto row = [&]() {
+    // sensors as of this row's state: mj_step leaves those of the state it
+    // started from
+    if (m->nsensor) mj_forward(m, d);
     std::fprintf(out, "%.6f", d->time);
     for (int bd : free) {
       double a[3];
       rpy(d->xmat + 9 * bd, a);
       const mjtNum* x = d->xpos + 3 * bd;
       std::fprintf(out, ",%.9g,%.9g,%.9g,%.6g,%.6g,%.6g", x[0], x[1], x[2], a[0], a[1], a[2]);
+    }
+    for (int j = 0; j < m->njnt; j++) {
+      const mjtNum* q = d->qpos + m->jnt_qposadr[j];
+      if (m->jnt_type[j] == mjJNT_BALL) {
+        std::fprintf(out, ",%.9g,%.9g,%.9g,%.9g", q[0], q[1], q[2], q[3]);
+      } else if (m->jnt_type[j] == mjJNT_HINGE) {
+        std::fprintf(out, ",%.9g", q[0] * 180 / M_PI);
+      } else if (m->jnt_type[j] == mjJNT_SLIDE) {
+        std::fprintf(out, ",%.9g", q[0]);
+      }
+    }
+    for (int i = 0; i < m->nsensor; i++) {
+      for (int k = 0; k < m->sensor_dim[i]; k++) {
+        std::fprintf(out, ",%.9g", d->sensordata[m->sensor_adr[i] + k]);
+      }
     }
     std::fprintf(out, "\n");
   };

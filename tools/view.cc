@@ -236,9 +236,11 @@ int main(int argc, char** argv) {
   if (rc >= 0) return rc;
   if (!v.o.shotFile.empty()) {
     std::string e;  // check before simulating, touching nothing
+    std::vector<mjbtool::PathUse> uses(2);
+    uses[0] = {v.o.model, "model", false};
+    uses[1] = {v.o.shotFile, "--screenshot", true};
     if (!mjbtool::checkWritable(v.o.shotFile, "--screenshot", &e) ||
-        !mjbtool::checkDistinct({{v.o.model, "model"}, {v.o.shotFile, "--screenshot", true}},
-                                &e)) {
+        !mjbtool::checkDistinct(uses, &e)) {
       std::fprintf(stderr, "mjbuoy-view: %s\n", e.c_str());
       return 1;
     }
