@@ -79,6 +79,10 @@ static const Field kSeaFields[] = {
 static const Field kWave = {"wave", 5, 0, 0, false,
                             "amplitude m, wavelength m, direction deg, phase deg, steepness",
                             "0.5 20 0 0 0.6", 0, kWaveParts};
+// a linear (Airy) component: the wave's parts without the steepness
+static const Field kAiry = {"airy", 4, 0, 0, false,
+                            "amplitude m, wavelength m, direction deg, phase deg",
+                            "0.5 20 0 0", 0, kWaveParts};
 
 // cpu backend threads: 0 picks them from the scene size and the cores
 static const Field kThreads = {"threads", 1, 0, 64, false, "threads, 0 = auto", "0"};
@@ -151,7 +155,7 @@ static std::string fieldList(const Field* fs, int n) {
 }
 
 static const char kNumericNames[] =
-    "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.hull.<param>, "
+    "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.airy.<label>, mjbuoy.hull.<param>, "
     "mjbuoy.geom.<geom>.<param>, mjbuoy.threads";
 
 // hull geom list: whitespace-separated geom names or fnmatch patterns. A
@@ -231,9 +235,20 @@ std::string parseConfig(const mjModel* m, Config* c) {
     } else if (!std::strcmp(key, "backend")) {
       std::string e = setBackend(text, tag("text", name), c);
       if (!e.empty()) return e;
+    } else if (!std::strcmp(key, "sea.pressure")) {
+      if (!std::strcmp(text, "kerner")) {
+        c->sea.kerner = true;
+      } else if (!std::strcmp(text, "linear")) {
+        c->sea.kerner = false;
+      } else {
+        return "mjbuoy: " + tag("text", name) + " data = \"" + text +
+               "\" is not a pressure model; give \"linear\" (linear wave theory, the "
+               "default) or \"kerner\" (rho g (eta - z)), e.g. data=\"linear\"";
+      }
     } else {
       return "mjbuoy: unknown entry " + tag("text", name) +
-             "; text entries are mjbuoy.hulls and mjbuoy.backend (numeric entries: " +
+             "; text entries are mjbuoy.hulls, mjbuoy.backend and mjbuoy.sea.pressure "
+             "(numeric entries: " +
              kNumericNames + "; see docs/mjcf.md)";
     }
   }
@@ -287,6 +302,12 @@ std::string parseConfig(const mjModel* m, Config* c) {
       std::string e = checkNumeric(m, i, kWave);
       if (!e.empty()) return e;
       c->sea.waves.push_back(Wave{v[0], v[1], v[2], v[3], v[4], 0, 0, 0, 0, 0});
+    } else if (!std::strncmp(key, "airy.", 5) && key[5]) {
+      std::string e = checkNumeric(m, i, kAiry);
+      if (!e.empty()) return e;
+      Wave w{v[0], v[1], v[2], v[3], 0, 0, 0, 0, 0, 0};
+      w.kind = 1;
+      c->sea.waves.push_back(w);
     } else if (!std::strncmp(key, "hull.", 5)) {
       const Field* f = findField(kHullFields, nhf, key + 5);
       if (!f) {
@@ -336,8 +357,8 @@ std::string parseConfig(const mjModel* m, Config* c) {
              (key[0] == 'h' ? "hull" : "cpu") + "\"/>";
     } else {
       return "mjbuoy: unknown entry " + tag("numeric", name) + "; numeric entries are " +
-             kNumericNames + ", text entries mjbuoy.hulls and mjbuoy.backend "
-             "(see docs/mjcf.md)";
+             kNumericNames + ", text entries mjbuoy.hulls, mjbuoy.backend and "
+             "mjbuoy.sea.pressure (see docs/mjcf.md)";
     }
   }
 

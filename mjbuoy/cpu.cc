@@ -8,6 +8,7 @@
 #include "hydro.h"
 #include "pool.h"
 #include "pressure.h"
+#include "wavepress.h"
 
 namespace mjb {
 
@@ -182,15 +183,18 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
       s->hoffNew[2 * ih] = a[0] - com[0];
       s->hoffNew[2 * ih + 1] = a[1] - com[1];
     }
-    sea.velocitySC(wn, sc, std::fmin(com[2] - hz, 0.0), uw);
+    sea.velocitySC(wn, sc, com[2] - sea.level, hz - sea.level, uw);
   }
   for (int j = 0; j < 3; j++) vr[j] = vel[3 + j] - uw[j];
   double speed = std::sqrt(dot(vr, vr));
   for (int j = 0; j < 3; j++) dir[j] = speed > 1e-9 ? vr[j] / speed : R[3 * j];
   double lo = INFINITY, hi = -INFINITY;
 
-  // pass 1: cut, exact pressure force -rho g dA n and torque -rho g drA x n;
+  // pass 1: cut, pressure force and torque: Kerner's rho g (eta - z), linear
+  // in the cut's depth, exactly (-rho g dA n, -rho g drA x n); or linear
+  // wave theory (wavepress.h), which flat water reduces to the same;
   // a triangle with no vertex below the surface has no wet part
+  const bool linear = !sea.kerner && nw > 0;
   double* wp = w[mjbPART_PRESSURE];
   double wet = 0;
   for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
@@ -206,11 +210,19 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     s->tri.area[k] = wt.area > 0 ? wt.area : 0;
     if (!(wt.area > 0)) continue;
     const double* n = wt.n;
-    double mo[3];
-    cross(wt.drA, n, mo);
+    double mo[3], P = rg * wt.dA, Pr[3] = {rg * wt.drA[0], rg * wt.drA[1], rg * wt.drA[2]};
+    if (linear) {
+      // label guess: the vertices' mean label offset
+      double off[2] = {0, 0};
+      for (int e = 0; e < 3; e++) {
+        for (int j = 0; j < 2; j++) off[j] += (s->lab[2 * fc[e] + j] - p[e][j] - com[j]) / 3;
+      }
+      linearPressure(sea, wn, wt, com, off, sc, tmp, &P, Pr);
+    }
+    cross(Pr, n, mo);
     for (int j = 0; j < 3; j++) {
-      wp[j] -= rg * wt.dA * n[j];
-      wp[3 + j] -= rg * mo[j];
+      wp[j] -= P * n[j];
+      wp[3 + j] -= mo[j];
       s->tri.c[3 * k + j] = wt.rA[j] / wt.area;
       s->tri.n[3 * k + j] = n[j];
     }
@@ -267,7 +279,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     const double* c = &s->tri.c[3 * k];
     const double* n = &s->tri.n[3 * k];
     double wc[3];
-    sea.velocitySC(wn, SC + 2 * nw * q, std::fmin(c[2] + com[2] - Z[q], 0.0), uw);
+    sea.velocitySC(wn, SC + 2 * nw * q, c[2] + com[2] - sea.level, Z[q] - sea.level, uw);
     cross(vel, c, wc);
     for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uw[j];
 
