@@ -36,31 +36,29 @@ double Sea::fold() const {
 }
 
 // Wheeler (1970) stretching of a point at height z above the level under a
-// surface at eta: the height zs <= 0 at which the linear profiles are
+// surface at eta: the height zs in [-h, 0] at which the linear profiles are
 // evaluated, so the surface maps to zs = 0. Deep water: zs = z - eta; depth
-// h: zs + h = (z + h) h / (h + eta), returned as zs + h in [0, h]
+// h: zs = (z - eta) h / (h + eta)
 static double stretch(double depth, double z, double eta) {
   if (!(depth > 0)) return std::fmin(z - eta, 0.0);
-  if (!(depth + eta > 0)) return 0;  // surface at or below the bed: all at the bed
-  return std::fmin(std::fmax((z + depth) * depth / (depth + eta), 0.0), depth);
+  if (!(depth + eta > 0)) return -depth;  // surface at or below the bed: all at the bed
+  return std::fmin(std::fmax((z - eta) * depth / (depth + eta), -depth), 0.0);
 }
 
 // linear-theory depth profiles of one component (Dean & Dalrymple 1991,
 // ch. 4): ch = cosh(s)/sinh(D), sh = sinh(s)/sinh(D), cc = cosh(s)/cosh(D)
 // with s = k (zs + h), D = k h; deep water all three are e^(k zs). Written
-// as e^(s - D) times factors in [0, 2] (expm1 keeps 1 - e^-2D exact for
-// small D), so nothing overflows at any k h (cosh overflows past 710)
+// as e^(k zs) = e^(s - D) times factors in [0, 2] (expm1 keeps 1 - e^-2D
+// exact for small D), so nothing overflows at any k h (cosh overflows past
+// 710) and nothing cancels at large k h
 struct Prof {
   double ch, sh, cc;
 };
 static inline Prof profile(double k, double depth, double zs) {
-  if (!(depth > 0)) {
-    double e = std::exp(k * zs);
-    return Prof{e, e, e};
-  }
-  double s = k * zs, D = k * depth;  // zs is zs + h here (stretch)
-  double e = std::exp(s - D), e2s = std::exp(-2 * s), e2d = std::exp(-2 * D);
-  double sd = -std::expm1(-2 * D);
+  double e = std::exp(k * zs);
+  if (!(depth > 0)) return Prof{e, e, e};
+  double s = k * (zs + depth), D = k * depth;
+  double e2s = std::exp(-2 * s), e2d = std::exp(-2 * D), sd = -std::expm1(-2 * D);
   return Prof{e * (1 + e2s) / sd, e * -std::expm1(-2 * s) / sd, e * (1 + e2s) / (1 + e2d)};
 }
 
