@@ -202,6 +202,27 @@ TEST(WavePressure, FroudeKrylovHeaveOfAWallSidedBox) {
   }
 }
 
+// the same on the gl backend (float), kL 0.5 to 6; A = 1 cm so F3 (3.8 N at
+// kL = 6) stands well above float round-off of the 5900 N buoyancy
+TEST(WavePressure, FroudeKrylovHeaveOfAWallSidedBoxOnGl) {
+  const double Lb = 2, B = 1, T = 0.3, H = 1, A = 0.01;
+  for (double kL : {0.5, 2.0, 4.0, 6.0}) {
+    const double k = kL / Lb, len = 2 * M_PI / k;
+    std::ostringstream sea;
+    sea << "<text name=\"mjbuoy.backend\" data=\"gl\"/>"
+        << "<numeric name=\"mjbuoy.airy.a\" data=\"" << A << " " << len << " 0 0\"/>";
+    Scene s(boxScene(Lb / 2, B / 2, H / 2, H / 2 - T, sea.str()));
+    ASSERT_TRUE(s.ok()) << s.err;
+    const int b = s.body("b");
+    const double om = std::sqrt(kG * k);
+    double amp = 0.5 * (heave(s, b, 0) - heave(s, b, M_PI / om));
+    // A = 1 cm: k A <= 0.02, Wheeler's second-order change cosh(k A) - 1 < 2e-4
+    double want = kRho * kG * A * B * Lb * std::sin(kL / 2) / (kL / 2) * std::exp(-k * T);
+    std::printf("[fk] box gl kL %.1f: F3 %.6g N, closed form %.6g N\n", kL, amp, want);
+    EXPECT_NEAR(amp, want, 0.01 * std::fabs(want)) << "kL " << kL;
+  }
+}
+
 // flat water (an Airy component of zero amplitude, which runs the linear
 // pressure path): the same exact hydrostatics as the Kerner path and as no
 // waves at all (which hydrostatics_test checks against tetrahedral
