@@ -212,12 +212,15 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     const double* n = wt.n;
     double mo[3], P = rg * wt.dA, Pr[3] = {rg * wt.drA[0], rg * wt.drA[1], rg * wt.drA[2]};
     if (linear) {
-      // label guess: the vertices' mean label offset
-      double off[2] = {0, 0};
+      // the surface the cut used: the vertices' heights and labels
+      Surf sf;
       for (int e = 0; e < 3; e++) {
-        for (int j = 0; j < 2; j++) off[j] += (s->lab[2 * fc[e] + j] - p[e][j] - com[j]) / 3;
+        std::memcpy(sf.p[e], p[e], sizeof(p[e]));
+        sf.eta[e] = p[e][2] + com[2] - h[e] - sea.level;
+        sf.lab[e][0] = s->lab[2 * fc[e]];
+        sf.lab[e][1] = s->lab[2 * fc[e] + 1];
       }
-      linearPressure(sea, wn, wt, com, off, sc, tmp, &P, Pr);
+      linearPressure(sea, wn, wt, sf, com, &P, Pr);
     }
     cross(Pr, n, mo);
     for (int j = 0; j < 3; j++) {

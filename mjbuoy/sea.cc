@@ -323,4 +323,24 @@ double Sea::dynamicSC(const WaveNow* w, const double* sc, double z, double eta) 
   return rho * g * pd;
 }
 
+double Sea::dynamicAt(const WaveNow* w, double x, double y, const double a[2], double z,
+                      double eta) const {
+  const double zs = stretch(depth, z, eta);
+  double pd = 0;
+  for (size_t i = 0; i < order.size(); i++) {
+    const double kz = w[i].k * zs;
+    if (kz < -40) continue;
+    const bool ger = (int)i < ng;
+    const double px = ger ? a[0] : x, py = ger ? a[1] : y;
+    const double th = w[i].k * (w[i].dx * px + w[i].dy * py) - w[i].wt + w[i].ph;
+    const double c = std::cos(th);
+    if (!(depth > 0)) {
+      pd += w[i].amp * std::exp(kz) * c;
+    } else {
+      pd += w[i].amp * profile(w[i].k, depth, zs).cc * c;
+    }
+  }
+  return rho * g * pd;
+}
+
 }  // namespace mjb

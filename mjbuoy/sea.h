@@ -102,6 +102,13 @@ struct Sea {
                   double acc[3] = nullptr) const;
   // dynamic() from the phases solve() left in sc, z and eta as velocitySC
   double dynamicSC(const WaveNow* w, const double* sc, double z, double eta) const;
+  // dynamic() at a point whose surface height eta and Gerstner label a are
+  // already known (wavepress.cc interpolates them): x, y its position [m],
+  // z its height above the level [m]; one cos and one exp per component,
+  // none for a component with k z' < -40 (Wheeler z' <= 0), whose
+  // e^(k z') < 5e-18 is below double round-off of its amplitude
+  double dynamicAt(const WaveNow* w, double x, double y, const double a[2], double z,
+                   double eta) const;
 };
 
 }  // namespace mjb

@@ -247,17 +247,38 @@ TEST(WavePressure, FlatWaterIsExactHydrostaticsInBothModels) {
   }
 }
 
+// the surface over triangle a b c solved exactly at its corners (height
+// above the level and Gerstner label), as the cpu backend does at vertices
+mjb::Surf cornerSurf(const mjb::Sea& sea, const double* a, const double* b, const double* c,
+                     double t) {
+  mjb::Surf sf;
+  const double* q[3] = {a, b, c};
+  for (int e = 0; e < 3; e++) {
+    for (int j = 0; j < 3; j++) sf.p[e][j] = q[e][j];
+    double l[2] = {q[e][0], q[e][1]};
+    if (sea.ng > 0) sea.label(q[e][0], q[e][1], t, l);
+    sf.eta[e] = sea.heightOf(l, q[e][0], q[e][1], t) - sea.level;
+    sf.lab[e][0] = l[0];
+    sf.lab[e][1] = l[1];
+  }
+  return sf;
+}
+
 // the degree-5 rule on one triangle of side s against the same rule on
-// 4^6 sub-triangles (converged to 1e-14 relative), for the dynamic
-// pressure of a deep Airy wave and of a finite-depth mixed sea; the
-// error of a degree-5 rule scales as (k s)^6: measured below 2e-6 (k s)^6
-// of the integral's scale rho g A area, both force and moment
-void subdivide(const mjb::Sea& sea, const mjb::WaveNow* wn, const double* a, const double* b,
-               const double* c, const double n[3], int lev, double* sc, double* tmp, double* P,
-               double Pr[3]) {
-  const double com[3] = {0, 0, 0}, off[2] = {0, 0};
+// 4^lev sub-triangles: exact=false keeps the parent's linear surface at
+// the sub-vertices (the same integrand: the rule's own error), exact=true
+// solves the surface at each sub-vertex (converges to the integral under
+// the exact surface)
+void subdivide(const mjb::Sea& sea, const mjb::WaveNow* wn, const mjb::Surf& par, bool exact,
+               double t, const double* a, const double* b, const double* c, const double n[3],
+               int lev, double* P, double Pr[3]) {
+  const double com[3] = {0, 0, 0};
   if (lev == 0) {
-    mjb::dynamicPiece(sea, wn, a, b, c, n, com, off, sc, tmp, P, Pr);
+    double e[3], l[3][2];
+    mjb::Surf sf = exact ? cornerSurf(sea, a, b, c, t) : par;
+    const double* q[3] = {a, b, c};
+    for (int i = 0; i < 3; i++) sf.at(q[i], e + i, l[i]);
+    mjb::dynamicPiece(sea, wn, a, b, c, n, com, e, l, P, Pr);
     return;
   }
   double ab[3], bc[3], ca[3];
@@ -266,13 +287,39 @@ void subdivide(const mjb::Sea& sea, const mjb::WaveNow* wn, const double* a, con
     bc[j] = 0.5 * (b[j] + c[j]);
     ca[j] = 0.5 * (c[j] + a[j]);
   }
-  subdivide(sea, wn, a, ab, ca, n, lev - 1, sc, tmp, P, Pr);
-  subdivide(sea, wn, ab, b, bc, n, lev - 1, sc, tmp, P, Pr);
-  subdivide(sea, wn, ca, bc, c, n, lev - 1, sc, tmp, P, Pr);
-  subdivide(sea, wn, ab, bc, ca, n, lev - 1, sc, tmp, P, Pr);
+  subdivide(sea, wn, par, exact, t, a, ab, ca, n, lev - 1, P, Pr);
+  subdivide(sea, wn, par, exact, t, ab, b, bc, n, lev - 1, P, Pr);
+  subdivide(sea, wn, par, exact, t, ca, bc, c, n, lev - 1, P, Pr);
+  subdivide(sea, wn, par, exact, t, ab, bc, ca, n, lev - 1, P, Pr);
 }
 
+// a tilted triangle 0.4 m below the level, sides about sd [m]
+struct Tri {
+  double a[3], b[3], c[3], n[3], area;
+  explicit Tri(double sd)
+      : a{0.3, -0.2, -0.4}, b{0.3 + sd, 0.1 * sd, -0.4 - 0.3 * sd},
+        c{0.3 + 0.4 * sd, 0.9 * sd - 0.2, -0.4 - 0.5 * sd} {
+    double u[3], v[3];
+    for (int j = 0; j < 3; j++) {
+      u[j] = b[j] - a[j];
+      v[j] = c[j] - a[j];
+    }
+    n[0] = u[1] * v[2] - u[2] * v[1];
+    n[1] = u[2] * v[0] - u[0] * v[2];
+    n[2] = u[0] * v[1] - u[1] * v[0];
+    double nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    area = 0.5 * nl;
+    for (double& x : n) x /= nl;
+  }
+};
+
+// the rule's own error under the surface the cut assumes (linear between
+// the corners): against 4^6 sub-triangles (converged to 1e-14 relative),
+// for a deep Airy wave and a finite-depth mixed sea; the error of a
+// degree-5 rule scales as (k s)^6: measured below 2e-6 (k s)^6 of the
+// integral's scale rho g A area, both force and moment
 TEST(WavePressure, QuadratureErrorAgainstFineSubdivision) {
+  const double t = 1.7;
   for (int seaKind = 0; seaKind < 2; seaKind++) {
     mjb::Sea sea = airySea(0.2, 6, 0);
     if (seaKind == 1) {
@@ -281,34 +328,63 @@ TEST(WavePressure, QuadratureErrorAgainstFineSubdivision) {
       sea.derive();
     }
     std::vector<mjb::WaveNow> wn(sea.waves.size());
-    sea.now(1.7, wn.data());
-    std::vector<double> sc(2 * wn.size()), tmp(2 * wn.size());
+    sea.now(t, wn.data());
     const double k = 2 * M_PI / 6;
     for (double ks : {0.25, 0.5, 1.0}) {
       const double sd = ks / k;  // side [m]
-      // a tilted triangle 0.4 m below the level, sides about sd
-      double a[3] = {0.3, -0.2, -0.4}, b[3] = {0.3 + sd, 0.1 * sd, -0.4 - 0.3 * sd},
-             c[3] = {0.3 + 0.4 * sd, 0.9 * sd - 0.2, -0.4 - 0.5 * sd};
-      double u[3], v[3], n[3];
-      for (int j = 0; j < 3; j++) {
-        u[j] = b[j] - a[j];
-        v[j] = c[j] - a[j];
-      }
-      n[0] = u[1] * v[2] - u[2] * v[1];
-      n[1] = u[2] * v[0] - u[0] * v[2];
-      n[2] = u[0] * v[1] - u[1] * v[0];
-      double nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), area = 0.5 * nl;
-      for (double& x : n) x /= nl;
+      Tri tr(sd);
+      mjb::Surf sf = cornerSurf(sea, tr.a, tr.b, tr.c, t);
       double P1 = 0, R1[3] = {0, 0, 0}, P6 = 0, R6[3] = {0, 0, 0};
-      subdivide(sea, wn.data(), a, b, c, n, 0, sc.data(), tmp.data(), &P1, R1);
-      subdivide(sea, wn.data(), a, b, c, n, 6, sc.data(), tmp.data(), &P6, R6);
-      const double scale = kRho * kG * 0.2 * area, bound = 2e-6 * std::pow(ks, 6);
+      subdivide(sea, wn.data(), sf, false, t, tr.a, tr.b, tr.c, tr.n, 0, &P1, R1);
+      subdivide(sea, wn.data(), sf, false, t, tr.a, tr.b, tr.c, tr.n, 6, &P6, R6);
+      const double scale = kRho * kG * 0.2 * tr.area, bound = 2e-6 * std::pow(ks, 6);
       std::printf("[quadrature] sea %d k s %.2f: force error %.2e, moment error %.2e (x rho g A area)\n",
                   seaKind, ks, std::fabs(P1 - P6) / scale,
                   std::fabs(R1[0] - R6[0]) / (scale * (1 + sd)));
       EXPECT_LT(std::fabs(P1 - P6), bound * scale) << ks;
       for (int j = 0; j < 3; j++) EXPECT_LT(std::fabs(R1[j] - R6[j]), bound * scale * (1 + sd));
     }
+  }
+}
+
+// the surface interpolated linearly from the corners instead of solved at
+// each quadrature point (docs/physics.md, "Cost"): deep Airy wave, p_d =
+// rho g A e^{k (z - eta)} cos th depends on eta only through the stretch,
+// |dp_d / d eta| <= rho g k A; linear interpolation of eta on a triangle
+// errs by at most R^2 / 2 max|D^2 eta| (Waldron 1998, R the radius of the
+// smallest enclosing circle, <= s / sqrt 3 for longest side s) with
+// |D^2 eta| <= k^2 A: |error| <= rho g A area (k A) (k s)^2 / 6, force and
+// moment (times the largest |r|), against the exact surface at 4^6
+// sub-triangles (its own interpolation error (k s)^2 / 4^12 smaller)
+TEST(WavePressure, SurfaceInterpolationErrorIsSecondOrder) {
+  const double t = 0.9, A = 0.2, L = 6, k = 2 * M_PI / L;
+  mjb::Sea sea = airySea(A, L, 0);
+  std::vector<mjb::WaveNow> wn(sea.waves.size());
+  sea.now(t, wn.data());
+  for (double ks : {0.25, 0.5, 1.0}) {
+    const double sd = ks / k;
+    Tri tr(sd);
+    // longest side
+    double s2 = 0;
+    const double* q[3] = {tr.a, tr.b, tr.c};
+    for (int i = 0; i < 3; i++) {
+      double d2 = 0;
+      for (int j = 0; j < 3; j++) d2 += std::pow(q[(i + 1) % 3][j] - q[i][j], 2);
+      s2 = std::fmax(s2, d2);
+    }
+    mjb::Surf sf = cornerSurf(sea, tr.a, tr.b, tr.c, t);
+    double P1 = 0, R1[3] = {0, 0, 0}, Pe = 0, Re[3] = {0, 0, 0};
+    subdivide(sea, wn.data(), sf, false, t, tr.a, tr.b, tr.c, tr.n, 0, &P1, R1);
+    subdivide(sea, wn.data(), sf, true, t, tr.a, tr.b, tr.c, tr.n, 6, &Pe, Re);
+    const double scale = kRho * kG * A * tr.area, bound = k * A * k * k * s2 / 6;
+    double rmax = 0;
+    for (int i = 0; i < 3; i++) rmax = std::fmax(rmax, std::sqrt(q[i][0] * q[i][0] + q[i][1] * q[i][1] + q[i][2] * q[i][2]));
+    std::printf("[interpolation] k s %.2f: force error %.2e of bound %.2e (x rho g A area)\n", ks,
+                std::fabs(P1 - Pe) / scale, bound);
+    EXPECT_LT(std::fabs(P1 - Pe), bound * scale) << ks;
+    // and it is not zero: the exact surface does differ
+    EXPECT_GT(std::fabs(P1 - Pe), 1e-12 * scale) << ks;
+    for (int j = 0; j < 3; j++) EXPECT_LT(std::fabs(R1[j] - Re[j]), bound * scale * rmax) << ks;
   }
 }
 
