@@ -93,6 +93,10 @@ static const Field kSeaFields[] = {
 static const Field kWave = {"wave", 5, 0, 0, false,
                             "amplitude m, wavelength m, direction deg, phase deg, steepness",
                             "0.5 20 0 0 0.6", 0, kWaveParts};
+// a linear (Airy) component: the wave's parts without the steepness
+static const Field kAiry = {"airy", 4, 0, 0, false,
+                            "amplitude m, wavelength m, direction deg, phase deg",
+                            "0.5 20 0 0", 0, kWaveParts};
 
 // cpu backend threads: 0 picks them from the scene size and the cores
 static const Field kThreads = {"threads", 1, 0, 64, false, "threads, 0 = auto", "0"};
@@ -165,7 +169,7 @@ static std::string fieldList(const Field* fs, int n) {
 }
 
 static const char kNumericNames[] =
-    "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.hull.<param>, "
+    "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.airy.<label>, mjbuoy.hull.<param>, "
     "mjbuoy.geom.<geom>.<param>, mjbuoy.threads";
 
 // hull geom list: whitespace-separated geom names or fnmatch patterns. A
@@ -254,9 +258,20 @@ std::string parseConfig(const mjModel* m, Config* c) {
       if (!e.empty()) return e;
     } else if (!std::strncmp(key, "sensor.", 7)) {
       continue;  // sensor bindings: sensor.cc, once the hulls are built
+    } else if (!std::strcmp(key, "sea.pressure")) {
+      if (!std::strcmp(text, "kerner")) {
+        c->sea.kerner = true;
+      } else if (!std::strcmp(text, "linear")) {
+        c->sea.kerner = false;
+      } else {
+        return "mjbuoy: " + tag("text", name) + " data = \"" + text +
+               "\" is not a pressure model; give \"linear\" (linear wave theory, the "
+               "default) or \"kerner\" (rho g (eta - z)), e.g. data=\"linear\"";
+      }
     } else {
       return "mjbuoy: unknown entry " + tag("text", name) +
-             "; text entries are mjbuoy.hulls, mjbuoy.backend and mjbuoy.sensor.<sensor> "
+             "; text entries are mjbuoy.hulls, mjbuoy.backend, mjbuoy.sea.pressure and "
+             "mjbuoy.sensor.<sensor> "
              "(numeric entries: " +
              kNumericNames + "; see docs/mjcf.md)";
     }
@@ -311,6 +326,12 @@ std::string parseConfig(const mjModel* m, Config* c) {
       std::string e = checkNumeric(m, i, kWave);
       if (!e.empty()) return e;
       c->sea.waves.push_back(Wave{v[0], v[1], v[2], v[3], v[4], 0, 0, 0, 0, 0});
+    } else if (!std::strncmp(key, "airy.", 5) && key[5]) {
+      std::string e = checkNumeric(m, i, kAiry);
+      if (!e.empty()) return e;
+      Wave w{v[0], v[1], v[2], v[3], 0, 0, 0, 0, 0, 0};
+      w.kind = 1;
+      c->sea.waves.push_back(w);
     } else if (!std::strncmp(key, "hull.", 5)) {
       const Field* f = findField(kHullFields, nhf, key + 5);
       if (!f) {
@@ -360,8 +381,8 @@ std::string parseConfig(const mjModel* m, Config* c) {
              (key[0] == 'h' ? "hull" : "cpu") + "\"/>";
     } else {
       return "mjbuoy: unknown entry " + tag("numeric", name) + "; numeric entries are " +
-             kNumericNames + ", text entries mjbuoy.hulls and mjbuoy.backend "
-             "(see docs/mjcf.md)";
+             kNumericNames + ", text entries mjbuoy.hulls, mjbuoy.backend and "
+             "mjbuoy.sea.pressure (see docs/mjcf.md)";
     }
   }
 

@@ -9,6 +9,7 @@
 #include "pool.h"
 #include "pressure.h"
 #include "rigid.h"
+#include "wavepress.h"
 
 namespace mjb {
 
@@ -189,15 +190,18 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
       s->hoffNew[2 * ih] = a[0] - com[0];
       s->hoffNew[2 * ih + 1] = a[1] - com[1];
     }
-    sea.velocitySC(wn, sc, std::fmin(com[2] - hz, 0.0), uw);
+    sea.velocitySC(wn, sc, com[2] - sea.level, hz - sea.level, uw);
   }
   for (int j = 0; j < 3; j++) vr[j] = vel[3 + j] - uw[j];
   double speed = std::sqrt(dot(vr, vr));
   for (int j = 0; j < 3; j++) dir[j] = speed > 1e-9 ? vr[j] / speed : R[3 * j];
   double lo = INFINITY, hi = -INFINITY;
 
-  // pass 1: cut, exact pressure force -rho g dA n and torque -rho g drA x n;
+  // pass 1: cut, pressure force and torque: Kerner's rho g (eta - z), linear
+  // in the cut's depth, exactly (-rho g dA n, -rho g drA x n); or linear
+  // wave theory (wavepress.h), which flat water reduces to the same;
   // a triangle with no vertex below the surface has no wet part
+  const bool linear = !sea.kerner && nw > 0;
   double* wp = w[mjbPART_PRESSURE];
   double wet = 0;
   for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
@@ -218,11 +222,22 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     s->tri.area[k] = wt.area > 0 ? wt.area : 0;
     if (!(wt.area > 0)) continue;
     const double* n = wt.n;
-    double mo[3];
-    cross(wt.drA, n, mo);
+    double mo[3], P = rg * wt.dA, Pr[3] = {rg * wt.drA[0], rg * wt.drA[1], rg * wt.drA[2]};
+    if (linear) {
+      // the surface the cut used: the vertices' heights and labels
+      Surf sf;
+      for (int e = 0; e < 3; e++) {
+        std::memcpy(sf.p[e], p[e], sizeof(p[e]));
+        sf.eta[e] = p[e][2] + com[2] - h[e] - sea.level;
+        sf.lab[e][0] = s->lab[2 * fc[e]];
+        sf.lab[e][1] = s->lab[2 * fc[e] + 1];
+      }
+      linearPressure(sea, wn, wt, sf, com, &P, Pr);
+    }
+    cross(Pr, n, mo);
     for (int j = 0; j < 3; j++) {
-      wp[j] -= rg * wt.dA * n[j];
-      wp[3 + j] -= rg * mo[j];
+      wp[j] -= P * n[j];
+      wp[3 + j] -= mo[j];
       s->tri.c[3 * k + j] = wt.rA[j] / wt.area;
       s->tri.n[3 * k + j] = n[j];
     }
@@ -279,7 +294,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     const double* c = &s->tri.c[3 * k];
     const double* n = &s->tri.n[3 * k];
     double wc[3];
-    sea.velocitySC(wn, SC + 2 * nw * q, std::fmin(c[2] + com[2] - Z[q], 0.0), uw);
+    sea.velocitySC(wn, SC + 2 * nw * q, c[2] + com[2] - sea.level, Z[q] - sea.level, uw);
     cross(vel, c, wc);
     for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uw[j];
 

@@ -160,8 +160,9 @@ bool glMake(Buoy* b, std::string* err) {
   g->nwave = sea.waves.size();
   std::vector<GWave> wave;
   for (const Wave& w : sea.waves) {
-    wave.push_back(GWave{float(w.amp), float(w.k), float(w.omega), float(w.steep),
-                         float(w.dx), float(w.dy), 0, 0});
+    wave.push_back(GWave{float(w.amp), float(w.k), float(w.omega),
+                         float(w.kind == 0 ? w.steep : 0), float(w.dx), float(w.dy),
+                         float(w.kind), 0});
   }
   g->phase.assign(g->nslot * std::max(g->nwave, 1), 0);
   g->out.assign(g->nslot * 40, 0);
@@ -236,11 +237,14 @@ bool glMake(Buoy* b, std::string* err) {
   gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "nchunk"), g->nchunk);
   gl.ProgramUniform1f(g->prog[kTris], loc(g, kTris, "rhog"), float(sea.rho * sea.g));
   gl.ProgramUniform1f(g->prog[kTris], loc(g, kTris, "rho"), float(sea.rho));
+  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "linear"),
+                      !sea.kerner && !sea.waves.empty());
   gl.ProgramUniform1i(g->prog[kBodies], loc(g, kBodies, "nslot"), g->nslot);
   gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "nu"), float(sea.nu));
   gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "rho"), float(sea.rho));
   for (int st : {kVerts, kTris}) {
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "nwave"), g->nwave);
+    gl.ProgramUniform1i(g->prog[st], loc(g, st, "ngerst"), sea.ng);
     gl.ProgramUniform1f(g->prog[st], loc(g, st, "depth"), float(sea.depth));
     gl.ProgramUniform2f(g->prog[st], loc(g, st, "current"), float(sea.current[0]),
                         float(sea.current[1]));

@@ -1,4 +1,5 @@
-// sea surface: Gerstner height by inverting the horizontal displacement
+// sea surface: Gerstner height by inverting the horizontal displacement,
+// Airy height as a direct sum; linear kinematics and pressure below it
 #include "sea.h"
 
 #include <cmath>
@@ -10,6 +11,13 @@ namespace mjb {
 static const double kDeg = M_PI / 180;
 
 void Sea::derive() {
+  order.clear();
+  for (int kind = 0; kind < 2; kind++) {
+    for (size_t i = 0; i < waves.size(); i++) {
+      if ((waves[i].kind != 0) == (kind != 0)) order.push_back(i);
+    }
+    if (kind == 0) ng = order.size();
+  }
   for (Wave& w : waves) {
     w.k = 2 * M_PI / w.len;
     // dispersion: omega^2 = g k tanh(k h), deep water when h is 0
@@ -23,8 +31,51 @@ void Sea::derive() {
 
 double Sea::fold() const {
   double s = 0;
-  for (const Wave& w : waves) s += w.steep * w.k * w.amp;
+  for (const Wave& w : waves) if (w.kind == 0) s += w.steep * w.k * w.amp;
   return s;
+}
+
+// Wheeler (1970) stretching of a point at height z above the level under a
+// surface at eta: the height zs in [-h, 0] at which the linear profiles are
+// evaluated, so the surface maps to zs = 0. Deep water: zs = z - eta; depth
+// h: zs = (z - eta) h / (h + eta)
+static double stretch(double depth, double z, double eta) {
+  if (!(depth > 0)) return std::fmin(z - eta, 0.0);
+  if (!(depth + eta > 0)) return -depth;  // surface at or below the bed: all at the bed
+  return std::fmin(std::fmax((z - eta) * depth / (depth + eta), -depth), 0.0);
+}
+
+// linear-theory depth profiles of one component (Dean & Dalrymple 1991,
+// ch. 4): ch = cosh(s)/sinh(D), sh = sinh(s)/sinh(D), cc = cosh(s)/cosh(D)
+// with s = k (zs + h), D = k h; deep water all three are e^(k zs). Written
+// as e^(k zs) = e^(s - D) times factors in [0, 2] (expm1 keeps 1 - e^-2D
+// exact for small D), so nothing overflows at any k h (cosh overflows past
+// 710) and nothing cancels at large k h
+struct Prof {
+  double ch, sh, cc;
+};
+static inline Prof profile(double k, double depth, double zs) {
+  double e = std::exp(k * zs);
+  if (!(depth > 0)) return Prof{e, e, e};
+  double s = k * (zs + depth), D = k * depth;
+  double e2s = std::exp(-2 * s), e2d = std::exp(-2 * D), sd = -std::expm1(-2 * D);
+  return Prof{e * (1 + e2s) / sd, e * -std::expm1(-2 * s) / sd, e * (1 + e2s) / (1 + e2d)};
+}
+
+// one component's linear velocity A w (ch cos, sh sin) and local
+// acceleration A w^2 (ch sin, -sh cos) added to v and acc (theta's sin s, cos c)
+static inline void addFlow(const Prof& f, double ao, double aoo, double dx, double dy, double s,
+                           double c, double* v, double* acc) {
+  double uh = ao * f.ch * c;
+  v[0] += uh * dx;
+  v[1] += uh * dy;
+  v[2] += ao * f.sh * s;
+  if (acc) {
+    double ah = aoo * f.ch * s;
+    acc[0] += ah * dx;
+    acc[1] += ah * dy;
+    acc[2] -= aoo * f.sh * c;
+  }
 }
 
 void Sea::label(double x, double y, double t, double a[2]) const {
@@ -38,7 +89,7 @@ void Sea::label(double x, double y, double t, double a[2]) const {
     f1 = p[1] - y;
     j00 = 1; j01 = 0; j11 = 1;
     for (const Wave& w : waves) {
-      if (w.steep == 0 || w.amp == 0) continue;
+      if (w.kind != 0 || w.steep == 0 || w.amp == 0) continue;
       double th = w.k * (w.dx * p[0] + w.dy * p[1]) - w.omega * t + w.ph;
       double s = std::sin(th), c = std::cos(th), qa = w.steep * w.amp;
       f0 -= qa * w.dx * s;
@@ -69,10 +120,11 @@ void Sea::label(double x, double y, double t, double a[2]) const {
   }
 }
 
-double Sea::heightOf(const double a[2], double t) const {
+double Sea::heightOf(const double a[2], double x, double y, double t) const {
   double z = level;
   for (const Wave& w : waves) {
-    double th = w.k * (w.dx * a[0] + w.dy * a[1]) - w.omega * t + w.ph;
+    double px = w.kind == 0 ? a[0] : x, py = w.kind == 0 ? a[1] : y;
+    double th = w.k * (w.dx * px + w.dy * py) - w.omega * t + w.ph;
     z += w.amp * std::cos(th);
   }
   return z;
@@ -82,58 +134,45 @@ double Sea::height(double x, double y, double t) const {
   if (waves.empty()) return level;
   double a[2] = {x, y};
   label(x, y, t, a);
-  return heightOf(a, t);
+  return heightOf(a, x, y, t);
 }
 
-void Sea::velocity(const double p[3], double t, double v[3]) const {
+void Sea::velocity(const double p[3], double t, double v[3], double acc[3]) const {
   double a[2] = {p[0], p[1]};
   if (!waves.empty()) label(p[0], p[1], t, a);
-  velocityOf(a, t, std::fmin(p[2] - heightOf(a, t), 0.0), v);
-}
-
-void Sea::velocityOf(const double a[2], double t, double zb, double v[3]) const {
+  double eta = heightOf(a, p[0], p[1], t) - level;
+  double zs = stretch(depth, p[2] - level, eta);
   v[0] = current[0];
   v[1] = current[1];
   v[2] = 0;
-  if (depth > 0) zb = std::fmax(zb, -depth);  // not below the sea bed
+  if (acc) acc[0] = acc[1] = acc[2] = 0;
   for (const Wave& w : waves) {
-    double th = w.k * (w.dx * a[0] + w.dy * a[1]) - w.omega * t + w.ph;
-    // particle velocity: d/dt of x = a - Q A D sin(theta), z = A cos(theta)
-    double uh = w.steep * w.amp * w.omega * std::cos(th);
-    double uz = w.amp * w.omega * std::sin(th);
-    double fh, fz;
-    depthRatios(w.k, zb, &fh, &fz);
-    v[0] += uh * fh * w.dx;
-    v[1] += uh * fh * w.dy;
-    v[2] += uz * fz;
+    double px = w.kind == 0 ? a[0] : p[0], py = w.kind == 0 ? a[1] : p[1];
+    double th = w.k * (w.dx * px + w.dy * py) - w.omega * t + w.ph;
+    addFlow(profile(w.k, depth, zs), w.amp * w.omega, w.amp * w.omega * w.omega, w.dx, w.dy,
+            std::sin(th), std::cos(th), v, acc);
   }
 }
 
-void Sea::depthRatios(double k, double zb, double* fh, double* fz) const {
-  if (!(depth > 0)) {
-    *fh = *fz = std::exp(k * zb);
-    return;
+double Sea::dynamic(const double p[3], double t) const {
+  double a[2] = {p[0], p[1]};
+  if (!waves.empty()) label(p[0], p[1], t, a);
+  double eta = heightOf(a, p[0], p[1], t) - level;
+  double zs = stretch(depth, p[2] - level, eta), pd = 0;
+  for (const Wave& w : waves) {
+    double px = w.kind == 0 ? a[0] : p[0], py = w.kind == 0 ? a[1] : p[1];
+    double th = w.k * (w.dx * px + w.dy * py) - w.omega * t + w.ph;
+    pd += w.amp * profile(w.k, depth, zs).cc * std::cos(th);
   }
-  // finite depth Airy profile, 1 at the surface
-  double kd = k * depth, kz = k * (zb + depth);
-  if (kd < 20) {
-    *fh = std::cosh(kz) / std::cosh(kd);
-    *fz = std::sinh(kz) / std::sinh(kd);
-  } else {
-    // cosh, sinh overflow past 710 (inf / inf = NaN, e.g. a 7 m chop in
-    // 1000 m of water); the same ratios as e^(kz-kd) (1 +- e^-2kz) / (1 +- e^-2kd)
-    double e = std::exp(kz - kd), z2 = std::exp(-2 * kz), d2 = std::exp(-2 * kd);
-    *fh = e * (1 + z2) / (1 + d2);
-    *fz = e * (1 - z2) / (1 - d2);
-  }
+  return rho * g * pd;
 }
 
 void Sea::now(double t, WaveNow* w) const {
-  for (size_t i = 0; i < waves.size(); i++) {
-    const Wave& W = waves[i];
-    double qa = W.steep * W.amp;
+  for (size_t i = 0; i < order.size(); i++) {
+    const Wave& W = waves[order[i]];
+    double qa = W.kind == 0 ? W.steep * W.amp : 0;
     w[i] = WaveNow{W.k, W.dx, W.dy, W.omega * t, W.ph, qa * W.dx, qa * W.dy, qa * W.k,
-                   W.amp, qa * W.omega, W.amp * W.omega};
+                   W.amp, qa * W.omega, W.amp * W.omega, W.amp * W.omega * W.omega};
   }
 }
 
@@ -227,15 +266,25 @@ static double solveN(const WaveNow* w, int n, double level, double x, double y, 
 
 double Sea::solve(const WaveNow* w, double x, double y, double a[2], double* sc,
                   double* tmp) const {
-  const int n = waves.size();
-  switch (n) {
-    case 0: return level;
-    case 1: return solveN<1>(w, n, level, x, y, a, sc, tmp);
-    case 2: return solveN<2>(w, n, level, x, y, a, sc, tmp);
-    case 3: return solveN<3>(w, n, level, x, y, a, sc, tmp);
-    case 4: return solveN<4>(w, n, level, x, y, a, sc, tmp);
-    default: return solveN<0>(w, n, level, x, y, a, sc, tmp);
+  double z;
+  switch (ng) {
+    case 0: a[0] = x; a[1] = y; z = level; break;
+    case 1: z = solveN<1>(w, ng, level, x, y, a, sc, tmp); break;
+    case 2: z = solveN<2>(w, ng, level, x, y, a, sc, tmp); break;
+    case 3: z = solveN<3>(w, ng, level, x, y, a, sc, tmp); break;
+    case 4: z = solveN<4>(w, ng, level, x, y, a, sc, tmp); break;
+    default: z = solveN<0>(w, ng, level, x, y, a, sc, tmp);
   }
+  // Airy components: a direct sum at the physical point
+  const int n = order.size();
+  for (int i = ng; i < n; i++) {
+    double th = w[i].k * (w[i].dx * x + w[i].dy * y) - w[i].wt + w[i].ph;
+    double s = std::sin(th), c = std::cos(th);
+    sc[2 * i] = s;
+    sc[2 * i + 1] = c;
+    z += w[i].amp * c;
+  }
+  return z;
 }
 
 void Sea::solveMany(const WaveNow* w, int m, const double* x, const double* y, double* a0,
@@ -252,20 +301,46 @@ void Sea::solveMany(const WaveNow* w, int m, const double* x, const double* y, d
   }
 }
 
-void Sea::velocitySC(const WaveNow* w, const double* sc, double zb, double v[3]) const {
+void Sea::velocitySC(const WaveNow* w, const double* sc, double z, double eta, double v[3],
+                     double acc[3]) const {
   v[0] = current[0];
   v[1] = current[1];
   v[2] = 0;
-  if (depth > 0) zb = std::fmax(zb, -depth);
-  for (size_t i = 0; i < waves.size(); i++) {
-    double uh = w[i].qao * sc[2 * i + 1];
-    double uz = w[i].ao * sc[2 * i];
-    double fh, fz;
-    depthRatios(w[i].k, zb, &fh, &fz);
-    v[0] += uh * fh * w[i].dx;
-    v[1] += uh * fh * w[i].dy;
-    v[2] += uz * fz;
+  if (acc) acc[0] = acc[1] = acc[2] = 0;
+  const double zs = stretch(depth, z, eta);
+  for (size_t i = 0; i < order.size(); i++) {
+    addFlow(profile(w[i].k, depth, zs), w[i].ao, w[i].aoo, w[i].dx, w[i].dy, sc[2 * i],
+            sc[2 * i + 1], v, acc);
   }
+}
+
+double Sea::dynamicSC(const WaveNow* w, const double* sc, double z, double eta) const {
+  const double zs = stretch(depth, z, eta);
+  double pd = 0;
+  for (size_t i = 0; i < order.size(); i++) {
+    pd += w[i].amp * profile(w[i].k, depth, zs).cc * sc[2 * i + 1];
+  }
+  return rho * g * pd;
+}
+
+double Sea::dynamicAt(const WaveNow* w, double x, double y, const double a[2], double z,
+                      double eta) const {
+  const double zs = stretch(depth, z, eta);
+  double pd = 0;
+  for (size_t i = 0; i < order.size(); i++) {
+    const double kz = w[i].k * zs;
+    if (kz < -40) continue;
+    const bool ger = (int)i < ng;
+    const double px = ger ? a[0] : x, py = ger ? a[1] : y;
+    const double th = w[i].k * (w[i].dx * px + w[i].dy * py) - w[i].wt + w[i].ph;
+    const double c = std::cos(th);
+    if (!(depth > 0)) {
+      pd += w[i].amp * std::exp(kz) * c;
+    } else {
+      pd += w[i].amp * profile(w[i].k, depth, zs).cc * c;
+    }
+  }
+  return rho * g * pd;
 }
 
 }  // namespace mjb

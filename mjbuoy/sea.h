@@ -6,7 +6,11 @@
 
 namespace mjb {
 
-// one Gerstner component, as given in MJCF plus derived constants
+// one wave component, as given in MJCF plus derived constants: Gerstner
+// (trochoidal: height by inverting the particle labels) or Airy (linear:
+// height a direct sum at the physical point); both have the linear-theory
+// kinematics and pressure below the surface (docs/physics.md, "Linear wave
+// kinematics and pressure")
 struct Wave {
   double amp;      // amplitude A [m]
   double len;      // wavelength lambda [m]
@@ -17,6 +21,7 @@ struct Wave {
   double omega;    // angular frequency from the dispersion relation [rad/s]
   double dx, dy;   // unit direction
   double ph;       // phase [rad]
+  int kind = 0;      // 0 Gerstner (trochoidal), 1 Airy (linear)
 };
 
 // per-call constants of one component at a fixed time t (Sea::now), so the
@@ -29,6 +34,7 @@ struct WaveNow {
   double qk;         // Q A k [1]
   double amp;        // A [m]
   double qao, ao;    // Q A omega, A omega [m/s]
+  double aoo;        // A omega^2 [m/s^2]
 };
 
 struct Sea {
@@ -38,9 +44,15 @@ struct Sea {
   double nu = 1.0e-6;       // kinematic viscosity [m^2/s]
   double current[2] = {0, 0};  // uniform current [m/s]
   double g = 9.81;          // gravity magnitude [m/s^2], from opt.gravity
+  bool kerner = false;      // pressure rho g (eta - z) (Kerner) instead of linear theory
   std::vector<Wave> waves;
+  // derived: the order of components in now(), Gerstner first, and how
+  // many are Gerstner (the rest are Airy)
+  std::vector<int> order;
+  int ng = 0;
 
-  // fill k, omega, unit direction and phase in radians of every wave
+  // fill k, omega, unit direction and phase in radians of every wave, and
+  // order, ng
   void derive();
 
   // sum over waves of Q k A; the surface folds (height stops being a
@@ -48,24 +60,28 @@ struct Sea {
   double fold() const;
 
   // exact surface height at a fixed horizontal point [m]: solves for the
-  // particle label a with x(a) = (x, y) to 1e-9 m, then sums A cos(theta(a))
+  // Gerstner particle label a with x(a) = (x, y) to 1e-9 m, then sums
+  // A cos(theta(a)) over the Gerstner components and A cos(theta(x, y))
+  // over the Airy ones
   double height(double x, double y, double t) const;
 
-  // water velocity at point p [m/s]: current plus the orbital velocity of
-  // every component, decaying below the surface (Airy; exp(k z) in deep
-  // water). Above the surface the surface value is used.
-  void velocity(const double p[3], double t, double v[3]) const;
+  // water velocity [m/s] and acceleration [m/s^2] (acc may be null) at
+  // point p: current plus linear theory of every component, Wheeler
+  // stretched to the instantaneous surface; above the surface the surface
+  // value is used
+  void velocity(const double p[3], double t, double v[3], double acc[3] = nullptr) const;
+  // dynamic pressure sum_i p_d,i at p [Pa] (Wheeler stretched; the total
+  // pressure below the surface is rho g (level - z) + this)
+  double dynamic(const double p[3], double t) const;
 
-  // the same in steps, for callers that keep labels: the particle label a
-  // whose displaced horizontal position is (x, y), by Newton from the guess
-  // in a; the surface height of particle a; the water velocity at depth
-  // zb <= 0 below particle a
+  // the same in steps, for callers that keep labels: the Gerstner particle
+  // label a whose displaced horizontal position is (x, y), by Newton from
+  // the guess in a; the surface height of particle a above x, y
   void label(double x, double y, double t, double a[2]) const;
-  double heightOf(const double a[2], double t) const;
-  void velocityOf(const double a[2], double t, double zb, double v[3]) const;
+  double heightOf(const double a[2], double x, double y, double t) const;
 
   // fast path for the cpu backend: the constants of every component at t
-  // (w holds waves.size())
+  // (w holds waves.size()), in the order of order[]: Gerstner first
   void now(double t, WaveNow* w) const;
   // label() from the guess in a, to the same tolerance, returning the
   // surface height of the particle found (heightOf); sc gets sin and cos of
@@ -79,14 +95,20 @@ struct Sea {
   // as solve's sc); tmp is scratch of 2 per wave
   void solveMany(const WaveNow* w, int m, const double* x, const double* y, double* a0,
                  double* a1, double* z, double* sc, double* tmp) const;
-  // Airy decay of the horizontal and vertical orbital velocity at depth
-  // zb <= 0 (not below the sea bed) of a component of wave number k, 1 at
-  // the surface: cosh k(z+h) / cosh kh and sinh k(z+h) / sinh kh, exp(k z)
-  // in deep water; overflow-safe for any k h (the one copy both velocity
-  // functions use)
-  void depthRatios(double k, double zb, double* fh, double* fz) const;
-  // velocityOf() from the phases solve() left in sc
-  void velocitySC(const WaveNow* w, const double* sc, double zb, double v[3]) const;
+  // velocity() and acceleration (acc may be null) from the phases solve()
+  // left in sc, at height z above the level of a point whose surface is at
+  // eta above the level [m]
+  void velocitySC(const WaveNow* w, const double* sc, double z, double eta, double v[3],
+                  double acc[3] = nullptr) const;
+  // dynamic() from the phases solve() left in sc, z and eta as velocitySC
+  double dynamicSC(const WaveNow* w, const double* sc, double z, double eta) const;
+  // dynamic() at a point whose surface height eta and Gerstner label a are
+  // already known (wavepress.cc interpolates them): x, y its position [m],
+  // z its height above the level [m]; one cos and one exp per component,
+  // none for a component with k z' < -40 (Wheeler z' <= 0), whose
+  // e^(k z') < 5e-18 is below double round-off of its amplitude
+  double dynamicAt(const WaveNow* w, double x, double y, const double a[2], double z,
+                   double eta) const;
 };
 
 }  // namespace mjb

@@ -102,7 +102,7 @@ struct GWave {
   float steep;
   float dx;
   float dy;
-  float pad0;
+  float kind;      // 0 Gerstner, 1 Airy (whose steep is 0 here)
   float pad1;
 };
 

@@ -1,4 +1,4 @@
-// sea.glsl: Gerstner surface in each body's frame (same maths as
+// sea.glsl: Gerstner and Airy surface and linear kinematics in each body's frame (same maths as
 // mjbuoy/sea.cc, in positions relative to the body's COM; the per-body
 // phases come from the CPU in double). Needs shared.h and buoy.h first.
 
@@ -6,6 +6,7 @@ layout(std430, binding = B_PHASE) readonly buffer Phases { float phase[]; };
 layout(std430, binding = B_WAVE) readonly buffer Waves { GWave wave[]; };
 
 uniform int nwave;
+uniform int ngerst;      // Gerstner components among them (steep > 0 ones matter)
 uniform float depth;     // water depth [m], 0 = deep
 uniform vec2 current;    // [m/s]
 
@@ -13,14 +14,22 @@ float theta(int b, int i, vec2 a) {
   return phase[b * nwave + i] + wave[i].k * (wave[i].dx * a.x + wave[i].dy * a.y);
 }
 
+// the phase of component i at the point x whose Gerstner label is a:
+// Gerstner components at the label, Airy ones (kind 1) at x
+float thetaAt(int b, int i, vec2 a, vec2 x) {
+  return theta(b, i, wave[i].kind != 0.0 ? x : a);
+}
+
 // residual f = a - Q A D sin(theta(a)) - x and the upper triangle of its
-// Jacobian J = I - sum Q A k cos(theta) D D^T (j00, j01, j11)
+// Jacobian J = I - sum Q A k cos(theta) D D^T (j00, j01, j11); Airy
+// components have steep 0 here (gl.cc) and drop out
 vec2 seaResidual(int b, vec2 x, vec2 a, out vec3 J) {
   vec2 f = a - x;
   J = vec3(1.0, 0.0, 1.0);
   for (int i = 0; i < nwave; i++) {
-    float th = theta(b, i, a), s = sin(th), c = cos(th);
-    float qa = wave[i].steep * wave[i].amp, jc = qa * wave[i].k * c;
+    float qa = wave[i].steep * wave[i].amp;
+    if (qa == 0.0) continue;
+    float th = theta(b, i, a), s = sin(th), c = cos(th), jc = qa * wave[i].k * c;
     f -= qa * s * vec2(wave[i].dx, wave[i].dy);
     J -= jc * vec3(wave[i].dx * wave[i].dx, wave[i].dx * wave[i].dy, wave[i].dy * wave[i].dy);
   }
@@ -34,7 +43,7 @@ vec2 seaResidual(int b, vec2 x, vec2 a, out vec3 J) {
 // singular and full steps overshoot); stops when the step is below 0.1 mm
 // or |f| no longer drops in float
 vec2 seaLabel(int b, vec2 x, vec2 a) {
-  if (nwave == 0) return a;
+  if (ngerst == 0) return x;
   vec3 J;
   vec2 f = seaResidual(b, x, a, J);
   for (int it = 0; it < 40; it++) {
@@ -62,37 +71,53 @@ vec2 seaLabel(int b, vec2 x, vec2 a) {
   return a;
 }
 
-// surface height of particle a relative to the still level [m]
-float seaEta(int b, vec2 a) {
+// surface height relative to the still level [m] above x, whose label is a
+float seaEta(int b, vec2 a, vec2 x) {
   float z = 0.0;
-  for (int i = 0; i < nwave; i++) z += wave[i].amp * cos(theta(b, i, a));
+  for (int i = 0; i < nwave; i++) z += wave[i].amp * cos(thetaAt(b, i, a, x));
   return z;
 }
 
-// water velocity at depth zb <= 0 below particle a [m/s]
-vec3 seaVelocity(int b, vec2 a, float zb) {
+// Wheeler stretch (as mjbuoy/sea.cc): the profile height zs in [-h, 0] of a
+// point z above the level under the surface eta
+float seaStretch(float z, float eta) {
+  if (depth <= 0.0) return min(z - eta, 0.0);
+  if (depth + eta <= 0.0) return -depth;
+  return clamp((z - eta) * depth / (depth + eta), -depth, 0.0);
+}
+
+// 1 - e^(-2 x) for x >= 0 without cancellation (GLSL has no expm1)
+float seaOm2(float x) {
+  return x < 0.01 ? 2.0 * x * (1.0 - x * (1.0 - x * 2.0 / 3.0)) : 1.0 - exp(-2.0 * x);
+}
+
+// linear depth profiles (ch, sh, cc) = (cosh s / sinh D, sinh s / sinh D,
+// cosh s / cosh D), s = k (zs + h), D = k h, as e^(k zs) times bounded
+// factors so nothing overflows (float cosh overflows past 89); deep: e^(k zs)
+vec3 seaProfile(int i, float zs) {
+  float k = wave[i].k, e = exp(k * zs);
+  if (depth <= 0.0) return vec3(e);
+  float s = k * (zs + depth), D = k * depth, e2s = exp(-2.0 * s), sd = seaOm2(D);
+  return vec3(e * (1.0 + e2s) / sd, e * seaOm2(s) / sd, e * (1.0 + e2s) / (1.0 + exp(-2.0 * D)));
+}
+
+// water velocity [m/s] at the point (x, z above the level), label a,
+// under the surface eta: linear theory of every component
+vec3 seaVelocity(int b, vec2 a, vec2 x, float z, float eta) {
   vec3 v = vec3(current, 0.0);
-  if (depth > 0.0) zb = max(zb, -depth);
+  float zs = seaStretch(z, eta);
   for (int i = 0; i < nwave; i++) {
-    float th = theta(b, i, a), w = wave[i].omega;
-    float uh = wave[i].steep * wave[i].amp * w * cos(th);
-    float uz = wave[i].amp * w * sin(th);
-    float fh, fz;
-    if (depth > 0.0) {
-      float kd = wave[i].k * depth, kz = wave[i].k * (zb + depth);
-      if (kd < 20.0) {
-        fh = cosh(kz) / cosh(kd);
-        fz = sinh(kz) / sinh(kd);
-      } else {
-        // cosh, sinh overflow in float past 89 (inf / inf); as mjbuoy/sea.cc
-        float e = exp(kz - kd), z2 = exp(-2.0 * kz);
-        fh = e * (1.0 + z2);
-        fz = e * (1.0 - z2);
-      }
-    } else {
-      fh = fz = exp(wave[i].k * zb);
-    }
-    v += vec3(uh * fh * wave[i].dx, uh * fh * wave[i].dy, uz * fz);
+    float th = thetaAt(b, i, a, x), ao = wave[i].amp * wave[i].omega;
+    vec3 f = seaProfile(i, zs);
+    float uh = ao * f.x * cos(th);
+    v += vec3(uh * wave[i].dx, uh * wave[i].dy, ao * f.y * sin(th));
   }
   return v;
+}
+
+// dynamic pressure over rho g [m] at the same point
+float seaDynamic(int b, vec2 a, vec2 x, float z, float eta) {
+  float zs = seaStretch(z, eta), p = 0.0;
+  for (int i = 0; i < nwave; i++) p += wave[i].amp * seaProfile(i, zs).z * cos(thetaAt(b, i, a, x));
+  return p;
 }

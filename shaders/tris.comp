@@ -30,6 +30,7 @@ uniform float rho;     // [kg/m^3]
 uniform int hasprev;   // slamming history exists
 uniform int first;     // first call of this step: record the history
 uniform float slamdt;  // time since the previous step's first call [s]
+uniform int linear;    // linear wave pressure (mjbuoy/wavepress.cc), else Kerner's
 
 // a NaN to add to a sum whose intermediate was not finite: the CPU side
 // reports a non-finite family (mjb_notices), never a silent zero
@@ -62,6 +63,33 @@ float effMass(int b, vec3 cc, vec3 u) {
   return 1.0 / (r0.w + dot(w, Jw));
 }
 
+// Radon's degree-5 7-point rule (as mjbuoy/wavepress.cc): barycentric
+// points and weights
+const float RA = 0.10128650732345634, RB = 0.47014206410511511;
+const float WA = 0.12593918054482715, WB = 0.13239415278850619;
+
+// the dynamic pressure over rho g [m] integrated over piece q (+= into dA
+// and drA, as the hydrostatic depth); e, l: the surface height above the
+// level and Gerstner label at its corners, linear in between (as the cut
+// assumes), so no label search at the quadrature points
+void dynPiece(int b, vec3 q0, vec3 q1, vec3 q2, vec3 e, vec2 l0, vec2 l1, vec2 l2, vec3 n,
+              float zc, inout float dA, inout vec3 drA) {
+  float A = 0.5 * dot(cross(q1 - q0, q2 - q0), n);
+  if (!(A > 0.0)) return;
+  for (int i = 0; i < 7; i++) {
+    vec3 bc = i == 0 ? vec3(1.0 / 3.0) : i < 4 ? vec3(RA) : vec3(RB);
+    float o = i == 0 ? 1.0 / 3.0 : i < 4 ? 1.0 - 2.0 * RA : 1.0 - 2.0 * RB;
+    int j = (i - 1) % 3;
+    if (i > 0) bc[j] = o;
+    float w = i == 0 ? 0.225 : i < 4 ? WA : WB;
+    vec3 r = bc.x * q0 + bc.y * q1 + bc.z * q2;
+    vec2 a = bc.x * l0 + bc.y * l1 + bc.z * l2;
+    float p = w * A * seaDynamic(b, a, r.xy, r.z + zc, dot(bc, e));
+    dA += p;
+    drA += p * r;
+  }
+}
+
 void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) {
   ivec4 t = texelFetch(tTri, k);
   vec4 P0 = texelFetch(tVout, t.x), P1 = texelFetch(tVout, t.y), P2 = texelFetch(tVout, t.z);
@@ -88,16 +116,41 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
   float area = 0.0, dA = 0.0;
   vec3 drA = vec3(0.0), rA = vec3(0.0);
   vec3 q0, q1, q2;
+  // depths: Kerner's below the surface, -h (0 on the cut); linear theory's
+  // hydrostatic part below the still level, -(z + zc), plus the dynamic
+  // pressure by quadrature
+  bool lin = linear != 0;
+  float d0 = lin ? -(P0.z + zc) : -P0.w, d1 = lin ? -(P1.z + zc) : -P1.w;
+  float d2 = lin ? -(P2.z + zc) : -P2.w, da = lin ? -(a.z + zc) : -a.w;
+  float db = lin ? -(bq.z + zc) : -bq.w, dc = lin ? -(c.z + zc) : -c.w;
+  float dab = lin ? -(pab.z + zc) : 0.0, dca = lin ? -(pca.z + zc) : 0.0;
+  vec2 L0 = texelFetch(tLab, t.x).xy, L1 = texelFetch(tLab, t.y).xy, L2 = texelFetch(tLab, t.z).xy;
+  vec2 l3 = L0 + L1 + L2;
+  // surface height above the level (z - h) and label at the corners and
+  // cut points, the labels cut with the same fractions as the positions
+  vec2 ma = o0 ? L0 : o1 ? L1 : L2, mb = o0 ? L1 : o1 ? L2 : L0, mc = o0 ? L2 : o1 ? L0 : L1;
+  vec2 mab = ma + a.w / (a.w - bq.w) * (mb - ma), mca = ma + a.w / (a.w - c.w) * (mc - ma);
+  float ea = a.z + zc - a.w, eb = bq.z + zc - bq.w, ec = c.z + zc - c.w;
+  float eab = pab.z + zc, eca = pca.z + zc;
   if (nw == 3) {
     q0 = P0.xyz; q1 = P1.xyz; q2 = P2.xyz;
-    piece(q0, q1, q2, -P0.w, -P1.w, -P2.w, n, area, dA, drA, rA);
+    piece(q0, q1, q2, d0, d1, d2, n, area, dA, drA, rA);
+    if (lin) {
+      vec3 e = vec3(P0.z - P0.w, P1.z - P1.w, P2.z - P2.w) + zc;
+      dynPiece(b, q0, q1, q2, e, L0, L1, L2, n, zc, dA, drA);
+    }
   } else if (nw == 1) {
     q0 = a.xyz; q1 = pab; q2 = pca;
-    piece(q0, q1, q2, -a.w, 0.0, 0.0, n, area, dA, drA, rA);
+    piece(q0, q1, q2, da, dab, dca, n, area, dA, drA, rA);
+    if (lin) dynPiece(b, q0, q1, q2, vec3(ea, eab, eca), ma, mab, mca, n, zc, dA, drA);
   } else {
     q0 = pab; q1 = bq.xyz; q2 = c.xyz;
-    piece(q0, q1, q2, 0.0, -bq.w, -c.w, n, area, dA, drA, rA);
-    piece(pab, c.xyz, pca, 0.0, -c.w, 0.0, n, area, dA, drA, rA);
+    piece(q0, q1, q2, dab, db, dc, n, area, dA, drA, rA);
+    piece(pab, c.xyz, pca, dab, dc, dca, n, area, dA, drA, rA);
+    if (lin) {
+      dynPiece(b, q0, q1, q2, vec3(eab, eb, ec), mab, mb, mc, n, zc, dA, drA);
+      dynPiece(b, pab, c.xyz, pca, vec3(eab, ec, eca), mab, mc, mca, n, zc, dA, drA);
+    }
   }
   if (!(area > 0.0)) {
     if (!(area <= 0.0)) pF += vec3(kNaN);  // NaN area: heights not finite
@@ -117,10 +170,9 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
 
   // flow-relative velocity: point velocity minus the water's there; the
   // label search starts from the mean of the vertex labels
-  vec2 l3 = texelFetch(tLab, t.x).xy + texelFetch(tLab, t.y).xy + texelFetch(tLab, t.z).xy;
   vec2 la = seaLabel(b, cc.xy, l3 / 3.0);
-  float zb = min(cc.z + zc - seaEta(b, la), 0.0);
-  vec3 v = vlin + cross(vang, cc) - seaVelocity(b, la, zb);
+  float eta = seaEta(b, la, cc.xy);
+  vec3 v = vlin + cross(vang, cc) - seaVelocity(b, la, cc.xy, cc.z + zc, eta);
   float v2 = dot(v, v), sp = sqrt(v2);
   if (!(sp <= 3.0e38)) {
     // |v| not finite in float (NaN water velocity, or overflow)

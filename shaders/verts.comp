@@ -29,7 +29,7 @@ void main() {
       vec3 p = texelFetch(tVert, i).xyz;
       vec3 r = vec3(dot(r0, p), dot(r1, p), dot(r2, p)) + o.xyz;
       vec2 a = seaLabel(b, r.xy, r.xy);
-      vec4 q = vec4(r, r.z + o.w - seaEta(b, a));
+      vec4 q = vec4(r, r.z + o.w - seaEta(b, a, r.xy));
       lab[i] = a;
       vout[i] = q;
     }

@@ -37,6 +37,8 @@ TEST(Config, ValidSceneAttaches) {
   EXPECT_EQ(attachError(std::string(kHull) +
                         "<numeric name=\"mjbuoy.sea.density\" data=\"1025\"/>"
                         "<numeric name=\"mjbuoy.wave.swell\" data=\"0.5 20 30 0 0.6\"/>"
+                        "<numeric name=\"mjbuoy.airy.chop\" data=\"0.1 5 60 90\"/>"
+                        "<text name=\"mjbuoy.sea.pressure\" data=\"kerner\"/>"
                         "<numeric name=\"mjbuoy.hull.damping\" data=\"10 1\"/>"
                         "<numeric name=\"mjbuoy.geom.hull.damping\" data=\"20 2\"/>"
                         "<numeric name=\"mjbuoy.sea.current\" data=\"0.5 0\"/>"
@@ -106,6 +108,12 @@ TEST(Config, EachInvalidEntryNamesItself) {
      {"\"fixed\"", "on the world body"}},
     {"unknown backend", "<text name=\"mjbuoy.backend\" data=\"cuda\"/>", "",
      {"mjbuoy.backend", "\"cuda\"", "accepted: cpu"}},
+    {"airy with a steepness", "<numeric name=\"mjbuoy.airy.a\" data=\"0.5 20 0 0 0.6\"/>", "",
+     {"mjbuoy.airy.a", "5 value(s), expected 4"}},
+    {"airy zero wavelength", "<numeric name=\"mjbuoy.airy.a\" data=\"0.5 0 0 0\"/>", "",
+     {"mjbuoy.airy.a", "wavelength", "> 0"}},
+    {"unknown pressure model", "<text name=\"mjbuoy.sea.pressure\" data=\"nonlinear\"/>", "",
+     {"mjbuoy.sea.pressure", "\"nonlinear\"", "linear", "kerner"}},
     {"sideways gravity", "", "<option gravity=\"1 0 -9.81\"/>",
      {"gravity", "along -z"}},
     {"zero gravity", "", "<option gravity=\"0 0 0\"/>", {"gravity", "along -z"}},

@@ -127,11 +127,12 @@ TEST(Cpu, FastSurfaceSearchMatchesLabel) {
         double z = sea.solve(wn.data(), x, y, a, sc.data(), tmp.data());
         EXPECT_NEAR(a[0], want[0], 1e-10);
         EXPECT_NEAR(a[1], want[1], 1e-10);
-        EXPECT_NEAR(z, sea.heightOf(want, t), 1e-10);
+        EXPECT_NEAR(z, sea.heightOf(want, x, y, t), 1e-10);
         EXPECT_NEAR(z, sea.height(x, y, t), 1e-10);
         double v[3], vw[3];
-        sea.velocitySC(wn.data(), sc.data(), -0.5, v);
-        sea.velocityOf(want, t, -0.5, vw);
+        sea.velocitySC(wn.data(), sc.data(), z - 0.5 - sea.level, z - sea.level, v);
+        double pw[3] = {x, y, z - 0.5};
+        sea.velocity(pw, t, vw);
         for (int j = 0; j < 3; j++) EXPECT_NEAR(v[j], vw[j], 1e-10);
       }
     }

@@ -29,6 +29,18 @@ std::string randomScene(std::mt19937* rng) {
         << 360 * U(*rng) << " 0 0.5\"/>";
     }
   }
+  // linear (Airy) components, alone or mixed with Gerstner ones; the
+  // pressure is linear wave theory (the default) or Kerner's; finite depth
+  if (U(*rng) < 0.5) {
+    s << "<numeric name=\"mjbuoy.airy.c\" data=\"" << 0.05 + 0.3 * U(*rng) << " "
+      << 4 + 20 * U(*rng) << " " << 360 * U(*rng) << " " << 360 * U(*rng) << "\"/>";
+    if (U(*rng) < 0.5) {
+      s << "<numeric name=\"mjbuoy.airy.d\" data=\"0.04 " << 2 + 3 * U(*rng) << " "
+        << 360 * U(*rng) << " 90\"/>";
+    }
+  }
+  if (U(*rng) < 0.25) s << "<text name=\"mjbuoy.sea.pressure\" data=\"kerner\"/>";
+  if (U(*rng) < 0.3) s << "<numeric name=\"mjbuoy.sea.depth\" data=\"" << 2 + 10 * U(*rng) << "\"/>";
   if (U(*rng) < 0.5) {
     s << "<numeric name=\"mjbuoy.sea.current\" data=\"" << U(*rng) - 0.5 << " "
       << U(*rng) - 0.5 << "\"/>";

@@ -96,8 +96,12 @@ TEST(RobustForces, VeryDeepFiniteDepthIsDeepWater) {
       mj_step(md, dd);
       mj_step(mf, df);
     }
-    // float on gl: the slamming rate |A v - A' v'| cancels digits
-    const double tol = std::string(be) == "gl" ? 1e-4 : 1e-9;
+    // Wheeler's finite-depth stretch z' = (z - eta) h / (h + eta) differs
+    // from the deep one, z - eta, by |z - eta| |eta| / h: with k = 0.9 /m,
+    // |z - eta| <= 1.1 m (cube and wave) and |eta| <= 0.2 m the profiles
+    // e^(k z') differ by at most k 1.1 0.2 / 1000 = 2e-4 relative (physics.md
+    // section 11); the overflowing cosh ratios gave NaN and zero forces
+    const double tol = 3e-4;
     for (int p = 0; p < mjbNPART; p++) {
       const mjtNum* wd = mjb_wrenchPart(bd, dd, p) + 6;
       const mjtNum* wf = mjb_wrenchPart(bf, df, p) + 6;
