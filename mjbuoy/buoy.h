@@ -42,6 +42,8 @@ struct Buoy {
   int nthreads = 1;
   std::vector<int> split;
   Pool* pool = nullptr;
+  size_t wcap = 0;             // wave components reserved (cpu scratch, gl buffers)
+  Wind wind;                   // wind.cc
 };
 
 // wet triangle data of one call, and the slamming history
@@ -109,6 +111,8 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s);
 void glFree(Buoy* b);
 void glFreeState(Buoy* b, State* s);
 int glStageTimes(Buoy* b, const char** name, double* ms, int n);
+// gl backend: upload b's current waves and current (mjb_setSea)
+void glSetSea(Buoy* b);
 
 }  // namespace mjb
 

@@ -1,5 +1,6 @@
 // parse and validate the "mjbuoy.*" <custom> entries (schema: docs/mjcf.md)
 #include "config.h"
+#include "seaconfig.h"
 
 #include <fnmatch.h>
 
@@ -151,8 +152,8 @@ static std::string fieldList(const Field* fs, int n) {
 }
 
 static const char kNumericNames[] =
-    "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.hull.<param>, "
-    "mjbuoy.geom.<geom>.<param>, mjbuoy.threads";
+    "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.spectrum.<label>.<field>, "
+    "mjbuoy.wind.<field>, mjbuoy.hull.<param>, mjbuoy.geom.<geom>.<param>, mjbuoy.threads";
 
 // hull geom list: whitespace-separated geom names or fnmatch patterns. A
 // pattern skips geoms that cannot be hulls ("*" with a floor in the scene);
@@ -224,6 +225,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
     if (!has(name)) continue;
     const char* key = name + np;
     const char* text = m->text_data + m->text_adr[i];
+    if (isSeaExtra(key)) continue;  // seaconfig.cc
     if (!std::strcmp(key, "hulls")) {
       anyHullList = true;
       std::string e = parseHulls(m, name, text, &is);
@@ -233,7 +235,8 @@ std::string parseConfig(const mjModel* m, Config* c) {
       if (!e.empty()) return e;
     } else {
       return "mjbuoy: unknown entry " + tag("text", name) +
-             "; text entries are mjbuoy.hulls and mjbuoy.backend (numeric entries: " +
+             "; text entries are mjbuoy.hulls, mjbuoy.backend, mjbuoy.spectrum.<label>.type, "
+             "mjbuoy.wind.gust and mjbuoy.wind.geoms (numeric entries: " +
              kNumericNames + "; see docs/mjcf.md)";
     }
   }
@@ -269,11 +272,12 @@ std::string parseConfig(const mjModel* m, Config* c) {
     any = true;
     const char* key = name + np;
     const mjtNum* v = m->numeric_data + m->numeric_adr[i];
+    if (isSeaExtra(key)) continue;  // seaconfig.cc
     if (!std::strncmp(key, "sea.", 4)) {
       const Field* f = findField(kSeaFields, nsf, key + 4);
       if (!f) {
         return "mjbuoy: unknown entry " + tag("numeric", name) + "; sea fields are " +
-               fieldList(kSeaFields, nsf) + " (see docs/mjcf.md)";
+               fieldList(kSeaFields, nsf) + ", capacity (see docs/mjcf.md)";
       }
       std::string e = checkNumeric(m, i, *f);
       if (!e.empty()) return e;
@@ -351,6 +355,8 @@ std::string parseConfig(const mjModel* m, Config* c) {
     }
   }
 
+  std::string ex = parseSeaExtra(m, gid, c);
+  if (!ex.empty()) return ex;
   c->sea.derive();
   double q = c->sea.fold();
   if (!(q < 1)) {

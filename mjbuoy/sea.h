@@ -17,6 +17,7 @@ struct Wave {
   double omega;    // angular frequency from the dispersion relation [rad/s]
   double dx, dy;   // unit direction
   double ph;       // phase [rad]
+  int kind = 0;      // 0 Gerstner (trochoidal), 1 Airy (linear)
 };
 
 // per-call constants of one component at a fixed time t (Sea::now), so the

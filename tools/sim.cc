@@ -67,6 +67,25 @@ struct Progress {
   }
 };
 
+// --print-sea: one line per wave component (mjb_waves), then the wind
+static void printSeaTable(const mjbBuoy* b) {
+  int n = mjb_waves(b, nullptr, 0);
+  std::vector<double> w(6 * n);
+  mjb_waves(b, w.data(), n);
+  std::printf("# %d wave components\n# i amplitude_m omega_rad_s k_rad_m direction_deg "
+              "phase_deg steepness\n", n);
+  double m0 = 0;
+  for (int i = 0; i < n; i++) {
+    const double* c = &w[6 * i];
+    std::printf("%d %.9g %.9g %.9g %.9g %.9g %.9g\n", i, c[0], c[1], c[2], c[3], c[4], c[5]);
+    m0 += 0.5 * c[0] * c[0];
+  }
+  mjtNum u[2];
+  mjb_windVelocity(b, 0, u);
+  std::printf("# Hs = 4 sqrt(sum A^2 / 2) = %.6g m; wind at t = 0: %.6g %.6g m/s\n",
+              4 * std::sqrt(m0), u[0], u[1]);
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"Simulate an mjbuoy MJCF scene headless and print a summary."};
   std::string model, csv, backend;
@@ -94,6 +113,8 @@ int main(int argc, char** argv) {
                  "model camera to render from (default: a free camera following the hulls)");
   app.add_option("--snapshot", snapshots, "T:FILE.png: a still picture at simulated time T");
   app.add_flag("--show-forces", showForces, "draw each hull body's mjbuoy force as an arrow");
+  bool printSea = false;
+  app.add_flag("--print-sea", printSea, "print the sea's wave components and wind, then exit");
   app.add_option("--plot", plot, "plot heave, roll and pitch of the hull bodies (PNG, gnuplot)");
   app.add_option("--progress", progress,
                  "progress on stderr: auto (bar on a terminal, lines when rendering), bar, "
@@ -163,6 +184,12 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::fputs(mjb_warnings(b), stderr);
+  if (printSea) {
+    printSeaTable(b);
+    mjb_detach(b);
+    mj_deleteModel(m);
+    return 0;
+  }
   mjData* d = mj_makeData(m);
   mjb_bindData(b, d);
   if ((int)ctrl.size() > m->nu) {
