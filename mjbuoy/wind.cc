@@ -61,13 +61,16 @@ std::string windMake(Buoy* b) {
   w.part.clear();
   w.body.clear();
   w.extra.clear();
-  for (const Hull& h : b->hull) w.part.push_back(Wind::Part{h.body, -1 - h.t0, h.nt});
+  for (size_t i = 0; i < b->hull.size(); i++) {
+    const Hull& h = b->hull[i];
+    w.part.push_back(Wind::Part{h.body, -1 - h.t0, h.nt, int(i)});
+  }
   for (int g : w.par.geom) {
     Mesh mesh = hullMesh(b->m, g, &b->cfg.warn);
     int v0 = w.vert.size() / 3, t0 = w.face.size() / 3;
     w.vert.insert(w.vert.end(), mesh.v.begin(), mesh.v.end());
     for (int i : mesh.f) w.face.push_back(i + v0);
-    w.part.push_back(Wind::Part{b->m->geom_bodyid[g], t0, mesh.nf()});
+    w.part.push_back(Wind::Part{b->m->geom_bodyid[g], t0, mesh.nf(), -1});
   }
   for (size_t t = 0; t < w.face.size() / 3; t++) {
     const double* p0 = &w.vert[3 * w.face[3 * t]];
@@ -155,6 +158,16 @@ void windWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
     double* w = s->part.data() + mjbPART_WIND * nb6 + 6 * bd;
     const bool hull = p.t0 < 0;
     const int t0 = hull ? -1 - p.t0 : p.t0;
+    // cpu backend: the vertex heights above the surface its water pass
+    // left in s->h (unless it skipped the hull as above every crest: all
+    // dry); a centroid is dry when their mean is > 0, the linear surface
+    // the pressure cut uses. gl: the exact height at the centroid.
+    const bool useH = hull && !b.gl;
+    bool allDry = false;
+    if (useH) {
+      const Hull& hl = b.hull[p.hull];
+      allDry = x[2] - hl.rad > s->crest + 1e-6 * (1 + std::fabs(x[2]) + hl.rad);
+    }
     const int* face = hull ? b.face.data() : wd.face.data();
     const double* vert = hull ? b.vert.data() : wd.vert.data();
     for (int k = t0; k < t0 + p.nt; k++) {
@@ -164,9 +177,15 @@ void windWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
         mju_rotVecMat(q[i], v, R);
         for (int j = 0; j < 3; j++) q[i][j] += x[j];
       }
+      if (useH && !allDry) {
+        const int* f = face + 3 * k;
+        if (s->h[f[0]] + s->h[f[1]] + s->h[f[2]] <= 0) continue;
+        triForce(wd, U, q[0], q[1], q[2], com, vel, w);
+        continue;
+      }
       double cz = (q[0][2] + q[1][2] + q[2][2]) / 3;
-      if (cz < sea.level - amp) continue;
-      if (cz <= sea.level + amp) {
+      if (cz < sea.level - amp && !allDry) continue;
+      if (cz <= sea.level + amp && !allDry) {
         double cx = (q[0][0] + q[1][0] + q[2][0]) / 3, cy = (q[0][1] + q[1][1] + q[2][1]) / 3;
         if (cz <= sea.height(cx, cy, t)) continue;
       }
