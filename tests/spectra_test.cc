@@ -323,6 +323,34 @@ TEST(Spectra, PiersonMoskowitzFromWind) {
   std::printf("[spectra] PM from U10 15 m/s: Hs %.3f m (5.071), Tp %.2f s (11.24)\n", hsOf(r), tpm);
 }
 
+// a tabulated triangle S = 0, 2, 0 m^2 s/rad at 0.5, 1, 1.5 rad/s: m0 =
+// 1/2 base height = 0.5 * 1 * 2 = 1 m^2, Hs = 4 m; half its energy lies
+// below 1 rad/s, so (equal-energy bins) half the components do
+TEST(Spectra, TableSpectrum) {
+  const double tab[6] = {0.5, 0, 1.0, 2, 1.5, 0};
+  mjbSpectrum s;
+  mjb_defaultSpectrum(&s);
+  s.type = mjbSPEC_TABLE;
+  s.table = tab;
+  s.ntable = 3;
+  s.n = 128;
+  EXPECT_EQ(mjb::specCheck(s, ""), "");
+  EXPECT_DOUBLE_EQ(mjb::specDensity(s, 0.75, kG), 1.0);
+  std::vector<Wave> w = expand(s);
+  double m0 = 0;
+  int below = 0;
+  for (const Wave& x : w) {
+    m0 += x.amp * x.amp / 2;
+    below += x.omega < 1.0;
+    EXPECT_GE(x.omega, 0.5);
+    EXPECT_LE(x.omega, 1.5);
+  }
+  EXPECT_NEAR(m0, 1.0, 1e-4);
+  EXPECT_EQ(below, 64);
+  std::vector<double> r = record(w, 3600, 0.5);
+  EXPECT_NEAR(hsOf(r), 4.0, 0.03 * 4.0);
+}
+
 // the finite-depth dispersion relation w^2 = g k tanh(k h)
 TEST(Spectra, WaveNumberSolvesDispersion) {
   for (double h : {2.0, 10.0, 100.0}) {

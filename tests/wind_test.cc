@@ -255,6 +255,31 @@ TEST(SetSea, RejectsBadInputAndKeepsTheSea) {
   EXPECT_EQ(mjb_waves(s.b, nullptr, 0), 48);
 }
 
+// spectra add to each other and to listed waves: the count is the sum and
+// the variance too, m0 = Hs1^2 / 16 + Hs2^2 / 16 + A^2 / 2 (each spectrum's
+// components hold its m0 over its range: 0.5-4 wp holds 99.9% of a
+// JONSWAP's (gamma 3.3), 99.5% of a PM's, DNV-RP-C205 3.5.5)
+TEST(SeaEntries, SpectraAddToEachOtherAndToWaves) {
+  Scene s(R"(<mujoco><custom><text name="mjbuoy.hulls" data="hull"/>
+    <numeric name="mjbuoy.wave.w" data="0.2 30 0 0 0"/>
+    <text name="mjbuoy.spectrum.a.type" data="jonswap"/>
+    <numeric name="mjbuoy.spectrum.a.hs" data="1"/><numeric name="mjbuoy.spectrum.a.tp" data="5"/>
+    <numeric name="mjbuoy.spectrum.a.components" data="40"/>
+    <text name="mjbuoy.spectrum.b.type" data="pm"/>
+    <numeric name="mjbuoy.spectrum.b.hs" data="0.5"/><numeric name="mjbuoy.spectrum.b.tp" data="9"/>
+    <numeric name="mjbuoy.spectrum.b.components" data="20"/><numeric name="mjbuoy.spectrum.b.seed" data="2"/>
+    )" + std::string(kSeaBody));
+  ASSERT_TRUE(s.ok()) << s.err;
+  ASSERT_EQ(mjb_waves(s.b, nullptr, 0), 61);
+  double c[6 * 61], m0 = 0;
+  mjb_waves(s.b, c, 61);
+  for (int i = 0; i < 61; i++) m0 += c[6 * i] * c[6 * i] / 2;
+  EXPECT_NEAR(m0, 1.0 / 16 * 0.999 + 0.25 / 16 * 0.995 + 0.02, 2e-4);
+  // the listed wave keeps its Gerstner description; spectra are linear
+  EXPECT_EQ(c[0], 0.2);
+  EXPECT_EQ(c[5], 0);
+}
+
 // validation of the entries: entry, value and range in the message
 TEST(SeaEntries, ErrorsNameEntryValueAndRange) {
   struct Case { const char* xml; const char* want; } cases[] = {
