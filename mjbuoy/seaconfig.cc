@@ -111,8 +111,8 @@ struct SpecIn {
   std::string first;  // an entry name of this spectrum, for messages
 };
 
-static std::string specText(const char* name, const char* label, const char* field,
-                            const char* text, SpecIn* in) {
+static std::string specText(const char* name, const char* field, const char* text,
+                            SpecIn* in) {
   if (std::strcmp(field, "type")) {
     return "mjbuoy: unknown entry " + tag("text", name) +
            "; the text field of a spectrum is type (pm, jonswap or table; see docs/mjcf.md)";
@@ -125,7 +125,6 @@ static std::string specText(const char* name, const char* label, const char* fie
            "\" is not a spectrum type; accepted: pm, jonswap, table";
   }
   in->typed = true;
-  (void)label;
   return "";
 }
 
@@ -266,7 +265,7 @@ std::string parseSeaExtra(const mjModel* m, const std::vector<int>& hulls, Confi
         return "mjbuoy: " + tag("text", name) + " is not mjbuoy.spectrum.<label>.type";
       }
       if (!spec.count(label)) spec[label] = blank();
-      e = specText(name, label.c_str(), field, text, &spec[label]);
+      e = specText(name, field, text, &spec[label]);
     } else if (!std::strncmp(key, "wind.", 5)) {
       c->wind.on = true;
       e = windText(m, name, key + 5, text, c);

@@ -263,7 +263,7 @@ double etaSum(const Wave* w, int n, double x, double y, double t) {
   return z;
 }
 
-void mjbDefaults(mjbSpectrum* s) {
+static void defaults(mjbSpectrum* s) {
   *s = mjbSpectrum{};
   s->type = mjbSPEC_JONSWAP;
   s->hs = 1;
@@ -276,5 +276,5 @@ void mjbDefaults(mjbSpectrum* s) {
 }  // namespace mjb
 
 void mjb_defaultSpectrum(mjbSpectrum* s) {
-  if (s) mjb::mjbDefaults(s);
+  if (s) mjb::defaults(s);
 }

@@ -72,18 +72,6 @@ std::string windMake(Buoy* b) {
     for (int i : mesh.f) w.face.push_back(i + v0);
     w.part.push_back(Wind::Part{b->m->geom_bodyid[g], t0, mesh.nf(), -1});
   }
-  for (size_t t = 0; t < w.face.size() / 3; t++) {
-    const double* p0 = &w.vert[3 * w.face[3 * t]];
-    const double* p1 = &w.vert[3 * w.face[3 * t + 1]];
-    const double* p2 = &w.vert[3 * w.face[3 * t + 2]];
-    mjtNum u[3], v[3], x[3];
-    for (int j = 0; j < 3; j++) {
-      u[j] = p1[j] - p0[j];
-      v[j] = p2[j] - p0[j];
-    }
-    mju_cross(x, u, v);
-    w.tarea.push_back(0.5 * mju_norm3(x));
-  }
   for (const Wind::Part& p : w.part) w.body.push_back(p.body);
   std::sort(w.body.begin(), w.body.end());
   w.body.erase(std::unique(w.body.begin(), w.body.end()), w.body.end());

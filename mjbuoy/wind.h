@@ -35,7 +35,6 @@ struct Wind {
   std::vector<Gust> gust;      // capacity reserved at attach
   std::vector<double> vert;    // superstructure vertices, body frame [m]
   std::vector<int> face;       // 3 indices into vert each
-  std::vector<double> tarea;   // triangle areas [m^2]
   struct Part { int body, t0, nt, hull; };  // triangles of one surface on one body; hull index or -1
   std::vector<Part> part;      // hulls then superstructure; t0 < 0: hull triangles
   std::vector<int> body;       // bodies with a wind surface, ascending
@@ -45,7 +44,7 @@ struct Wind {
 // Froya gust spectrum at 10 m [m^2/s^2 per Hz] of mean speed u0 [m/s]
 double froya(double u0, double f);
 
-// fill w->gust from w->par.w (within capacity when reserve is false)
+// fill w->gust from w->par.w (no allocation within the 1024 reserved)
 void windGusts(Wind* w);
 
 // speed at 10 m along the mean direction at time t [m/s]
