@@ -45,6 +45,8 @@ struct Buoy {
   int nthreads = 1;
   std::vector<int> split;
   Pool* pool = nullptr;
+  size_t wcap = 0;             // wave components reserved (cpu scratch, gl buffers)
+  Wind wind;                   // wind.cc
 };
 
 // wet triangle data of one call, and the slamming history
@@ -130,6 +132,8 @@ void glFreeState(Buoy* b, State* s);
 // copy src's slamming history buffers into dst's (created if needed)
 bool glCopyState(Buoy* b, State* dst, const State* src);
 int glStageTimes(Buoy* b, const char** name, double* ms, int n);
+// gl backend: upload b's current waves and current (mjb_setSea)
+void glSetSea(Buoy* b);
 
 }  // namespace mjb
 

@@ -1,5 +1,6 @@
 // parse and validate the "mjbuoy.*" <custom> entries (schema: docs/mjcf.md)
 #include "config.h"
+#include "seaconfig.h"
 
 #include <fnmatch.h>
 
@@ -169,7 +170,8 @@ static std::string fieldList(const Field* fs, int n) {
 }
 
 static const char kNumericNames[] =
-    "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.airy.<label>, mjbuoy.hull.<param>, "
+    "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.airy.<label>, "
+    "mjbuoy.spectrum.<label>.<field>, mjbuoy.wind.<field>, mjbuoy.hull.<param>, "
     "mjbuoy.geom.<geom>.<param>, mjbuoy.threads";
 
 // hull geom list: whitespace-separated geom names or fnmatch patterns. A
@@ -249,6 +251,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
     if (!has(name)) continue;
     const char* key = name + np;
     const char* text = m->text_data + m->text_adr[i];
+    if (isSeaExtra(key)) continue;  // seaconfig.cc
     if (!std::strcmp(key, "hulls")) {
       anyHullList = true;
       std::string e = parseHulls(m, name, text, &is);
@@ -270,9 +273,9 @@ std::string parseConfig(const mjModel* m, Config* c) {
       }
     } else {
       return "mjbuoy: unknown entry " + tag("text", name) +
-             "; text entries are mjbuoy.hulls, mjbuoy.backend, mjbuoy.sea.pressure and "
-             "mjbuoy.sensor.<sensor> "
-             "(numeric entries: " +
+             "; text entries are mjbuoy.hulls, mjbuoy.backend, mjbuoy.sea.pressure, "
+             "mjbuoy.sensor.<sensor>, mjbuoy.spectrum.<label>.type, mjbuoy.wind.gust and "
+             "mjbuoy.wind.geoms (numeric entries: " +
              kNumericNames + "; see docs/mjcf.md)";
     }
   }
@@ -308,11 +311,12 @@ std::string parseConfig(const mjModel* m, Config* c) {
     any = true;
     const char* key = name + np;
     const mjtNum* v = m->numeric_data + m->numeric_adr[i];
+    if (isSeaExtra(key)) continue;  // seaconfig.cc
     if (!std::strncmp(key, "sea.", 4)) {
       const Field* f = findField(kSeaFields, nsf, key + 4);
       if (!f) {
         return "mjbuoy: unknown entry " + tag("numeric", name) + "; sea fields are " +
-               fieldList(kSeaFields, nsf) + " (see docs/mjcf.md)";
+               fieldList(kSeaFields, nsf) + ", capacity (see docs/mjcf.md)";
       }
       std::string e = checkNumeric(m, i, *f);
       if (!e.empty()) return e;
@@ -402,8 +406,10 @@ std::string parseConfig(const mjModel* m, Config* c) {
   if (sumA > kMaxAmp) {
     return "mjbuoy: the waves' amplitudes add up to " + fmt(sumA) + " m, above " +
            fmt(kMaxAmp) + " m (twice the amplitude of the highest ocean waves measured, about 15 m); lower the "
-           "amplitudes of the mjbuoy.wave.* entries";
+           "amplitudes of the mjbuoy.wave.* and mjbuoy.airy.* entries";
   }
+  std::string ex = parseSeaExtra(m, gid, c);
+  if (!ex.empty()) return ex;
   c->sea.derive();
   double q = c->sea.fold();
   if (!(q < 1)) {

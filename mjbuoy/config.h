@@ -8,6 +8,7 @@
 #include <mujoco/mujoco.h>
 
 #include "sea.h"
+#include "wind.h"
 
 namespace mjb {
 
@@ -28,6 +29,9 @@ struct Config {
   std::vector<int> geom;           // hull geom ids, ascending
   std::vector<HullParams> param;   // one per hull geom
   std::vector<std::string> warn;   // load-time warnings
+  std::vector<mjbSpectrum> spec;   // spectra as given (table not kept), seaconfig.cc
+  WindParams wind;                 // wind entries, seaconfig.cc
+  int capacity = 0;                // mjbuoy.sea.capacity: components reserved
 };
 
 // read m's custom entries into c; returns "" or the first error

@@ -23,7 +23,7 @@ static size_t maxItems(const Buoy& b) {
 // per thread: 4 per wave for solve(), then x, y, a0, a1, z and 2 per wave
 // for every point of a hull
 static size_t scratchSize(const Buoy& b) {
-  size_t nw = b.cfg.sea.waves.size();
+  size_t nw = std::max(b.wcap, b.cfg.sea.waves.size());
   return 4 * nw + (5 + 2 * nw) * maxItems(b);
 }
 
@@ -52,7 +52,7 @@ void makeState(const Buoy& b, State* s) {
   s->offNew.assign(b.vert.size() / 3 * 2, 0);
   s->hoff.assign(2 * b.hull.size(), 0);
   s->hoffNew.assign(2 * b.hull.size(), 0);
-  s->wn.assign(b.cfg.sea.waves.size(), WaveNow{});
+  s->wn.assign(std::max(b.wcap, b.cfg.sea.waves.size()), WaveNow{});
   s->mi = maxItems(b);
   s->per = scratchSize(b);
   s->scr.assign(s->per * std::max(1, b.nthreads), 0);

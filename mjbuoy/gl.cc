@@ -76,6 +76,21 @@ static bool groupSizes(GlBackend* g, std::string* err) {
   return true;
 }
 
+// one wave component as the shaders read it; Airy components (kind 1) take
+// no part in the label search: steep 0
+static GWave gwave(const Wave& w) {
+  return GWave{float(w.amp), float(w.k), float(w.omega), float(w.kind == 0 ? w.steep : 0),
+               float(w.dx), float(w.dy), float(w.kind), 0};
+}
+
+// the wave buffer's contents
+static void waveData(const Sea& sea, GWave* out) {
+  for (size_t i = 0; i < sea.waves.size(); i++) out[i] = gwave(sea.waves[i]);
+}
+
+// the uniforms that change with the sea
+static void seaUniforms(GlBackend* g, const Sea& sea);
+
 bool glMake(Buoy* b, std::string* err) {
   auto g = new GlBackend;
   if (!glCreate(&g->ctx, err)) {
@@ -158,13 +173,11 @@ bool glMake(Buoy* b, std::string* err) {
   }
   const Sea& sea = b->cfg.sea;
   g->nwave = sea.waves.size();
-  std::vector<GWave> wave;
-  for (const Wave& w : sea.waves) {
-    wave.push_back(GWave{float(w.amp), float(w.k), float(w.omega),
-                         float(w.kind == 0 ? w.steep : 0), float(w.dx), float(w.dy),
-                         float(w.kind), 0});
-  }
-  g->phase.assign(g->nslot * std::max(g->nwave, 1), 0);
+  // room for b->wcap components, so mjb_setSea only rewrites (glSetSea)
+  const int cap = std::max<int>(b->wcap, g->nwave);
+  std::vector<GWave> wave(cap, GWave{});
+  waveData(sea, wave.data());
+  g->phase.assign(g->nslot * std::max(cap, 1), 0);
   g->out.assign(g->nslot * 40, 0);
   g->nchunk = chunk.size();
   g->nvchunk = vchunk.size();
@@ -237,18 +250,10 @@ bool glMake(Buoy* b, std::string* err) {
   gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "nchunk"), g->nchunk);
   gl.ProgramUniform1f(g->prog[kTris], loc(g, kTris, "rhog"), float(sea.rho * sea.g));
   gl.ProgramUniform1f(g->prog[kTris], loc(g, kTris, "rho"), float(sea.rho));
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "linear"),
-                      !sea.kerner && !sea.waves.empty());
   gl.ProgramUniform1i(g->prog[kBodies], loc(g, kBodies, "nslot"), g->nslot);
   gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "nu"), float(sea.nu));
   gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "rho"), float(sea.rho));
-  for (int st : {kVerts, kTris}) {
-    gl.ProgramUniform1i(g->prog[st], loc(g, st, "nwave"), g->nwave);
-    gl.ProgramUniform1i(g->prog[st], loc(g, st, "ngerst"), sea.ng);
-    gl.ProgramUniform1f(g->prog[st], loc(g, st, "depth"), float(sea.depth));
-    gl.ProgramUniform2f(g->prog[st], loc(g, st, "current"), float(sea.current[0]),
-                        float(sea.current[1]));
-  }
+  seaUniforms(g, sea);
   g->uHasprev = loc(g, kTris, "hasprev");
   g->uFirst = loc(g, kTris, "first");
   g->uSlamdt = loc(g, kTris, "slamdt");
@@ -257,6 +262,40 @@ bool glMake(Buoy* b, std::string* err) {
   b->gl = g;
   b->renderer = g->ctx.renderer;
   return true;
+}
+
+static void seaUniforms(GlBackend* g, const Sea& sea) {
+  const GladGLContext& gl = g->ctx.gl;
+  for (int st : {kVerts, kTris}) {
+    gl.ProgramUniform1i(g->prog[st], loc(g, st, "nwave"), g->nwave);
+    gl.ProgramUniform1i(g->prog[st], loc(g, st, "ngerst"), sea.ng);
+    gl.ProgramUniform1f(g->prog[st], loc(g, st, "depth"), float(sea.depth));
+    gl.ProgramUniform2f(g->prog[st], loc(g, st, "current"), float(sea.current[0]),
+                        float(sea.current[1]));
+  }
+  // flat water needs no dynamic pressure, whatever the model
+  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "linear"), !sea.kerner && !sea.waves.empty());
+}
+
+void glSetSea(Buoy* b) {
+  GlBackend* g = b->gl;
+  if (!g) return;
+  std::lock_guard<std::mutex> lk(g->mu);
+  GlCurrent cur(&g->ctx);
+  const GladGLContext& gl = g->ctx.gl;
+  const Sea& sea = b->cfg.sea;
+  // within the capacity reserved in glMake (mjb_setSea checks): a rewrite,
+  // no new GL object; uploaded in pieces from the stack
+  g->nwave = sea.waves.size();
+  GWave buf[64];
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_WAVE]);
+  for (int i0 = 0; i0 < g->nwave; i0 += 64) {
+    int n = std::min(64, g->nwave - i0);
+    for (int i = 0; i < n; i++) buf[i] = gwave(sea.waves[i0 + i]);
+    gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, i0 * sizeof(GWave), n * sizeof(GWave), buf);
+  }
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  seaUniforms(g, sea);
 }
 
 void glFreeState(Buoy* b, State* s) {
@@ -436,7 +475,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   for (int i = 0; i < g->nslot; i++) {
     int bd = b->body[i];
     if (s->bad[bd]) continue;
-    for (int p = 0; p < mjbNPART; p++) {
+    for (int p = 0; p < mjbPART_WIND; p++) {  // the water families; wind: wind.cc
       double* w = s->part.data() + p * nb6 + 6 * bd;
       const float* o = g->out.data() + 40 * i + 8 * p;
       for (int j = 0; j < 3; j++) {

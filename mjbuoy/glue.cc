@@ -1,5 +1,6 @@
 // MuJoCo glue: public API, registry of attached models, mjcb_passive
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <map>
@@ -12,6 +13,8 @@
 #include "hull.h"
 #include "pool.h"
 #include "mjbuoy.h"
+#include "seasetter.h"
+#include "wind.h"
 
 using mjb::Buoy;
 using mjb::State;
@@ -143,7 +146,13 @@ void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
   } else {
     mjb::cpuWrench(b->b, m, d, s);
   }
+  mjb::windWrench(b->b, m, d, s);
   for (int bd : b->b.body) {
+    const mjtNum* w = s->wrench.data() + 6 * bd;
+    applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
+  }
+  // wind on superstructure bodies that carry no hull (wind.cc)
+  for (int bd : b->b.wind.extra) {
     const mjtNum* w = s->wrench.data() + 6 * bd;
     applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
   }
@@ -170,7 +179,7 @@ void passive(const mjModel* m, mjData* d) {
     warnUnknown(m, d);
     return;
   }
-  if (!b->b.hull.empty()) compute(b, m, d);
+  if (!b->b.hull.empty() || !b->b.wind.body.empty()) compute(b, m, d);
 }
 
 // user sensors: the user's callback first, then the ones mjbuoy binds
@@ -307,6 +316,11 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     h.rad = 0;
     for (int i = h.v0; i < h.v0 + h.nv; i++) h.rad = std::max(h.rad, mju_norm3(&B.vert[3 * i]));
   }
+  // room for mjb_setSea, and the wind's surfaces
+  B.wcap = std::max<size_t>(B.cfg.capacity, B.cfg.sea.waves.size());
+  B.cfg.sea.waves.reserve(B.wcap);
+  B.cfg.sea.order.reserve(B.wcap);  // Sea::derive rebuilds it in mjb_setSea
+  mjb::windMake(&B);
   // gl: required; auto: gl when an EGL display with GL >= 4.3 compute is
   // there, else cpu with a notice
   B.renderer = "CPU";
@@ -444,6 +458,36 @@ int mjb_stageTimes(const mjbBuoy* b, const char** name, double* ms, int n) {
 
 const char* mjb_warnings(const mjbBuoy* b) {
   return b ? b->b.warnings.c_str() : "";
+}
+
+int mjb_setSea(mjbBuoy* b, const mjbSea* sea, char* error, int error_sz) {
+  if (!b || !sea) {
+    copyError("mjbuoy: mjb_setSea was given a NULL model or sea", error, error_sz);
+    return 0;
+  }
+  // no callback of this model may run meanwhile: its data lock, exclusive
+  std::unique_lock<std::shared_mutex> lk(b->mu);
+  if (!mjb::setSea(&b->b, *sea, error, error_sz)) return 0;
+  if (b->b.gl) mjb::glSetSea(&b->b);
+  return 1;
+}
+
+int mjb_waves(const mjbBuoy* b, double* out, int max) {
+  if (!b) return 0;
+  const std::vector<mjb::Wave>& w = b->b.cfg.sea.waves;
+  for (int i = 0; out && i < max && i < int(w.size()); i++) {
+    double v[6] = {w[i].amp, w[i].omega, w[i].k, w[i].dir, w[i].phase, w[i].steep};
+    std::memcpy(out + 6 * i, v, sizeof(v));
+  }
+  return w.size();
+}
+
+void mjb_windVelocity(const mjbBuoy* b, mjtNum t, mjtNum v[2]) {
+  v[0] = v[1] = 0;
+  if (!b || !b->b.wind.par.on) return;
+  double u = mjb::windSpeed(b->b.wind, t), dr = b->b.wind.par.w.dir * M_PI / 180;
+  v[0] = u * std::cos(dr);
+  v[1] = u * std::sin(dr);
 }
 
 mjtNum mjb_seaHeight(const mjbBuoy* b, mjtNum x, mjtNum y, mjtNum t) {

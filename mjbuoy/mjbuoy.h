@@ -112,6 +112,7 @@ typedef enum mjbPart_ {
   mjbPART_DRAG,          // pressure and suction drag
   mjbPART_SLAM,          // slamming
   mjbPART_DAMPING,       // simple linear damping
+  mjbPART_WIND,          // wind: air drag and friction on dry faces (cpu, both backends)
   mjbNPART
 } mjbPart;
 
@@ -145,6 +146,77 @@ MJB_API mjtNum mjb_seaHeight(const mjbBuoy* b, mjtNum x, mjtNum y, mjtNum t);
 // MJBUOY_VERSION of the header compiled against), and as "major.minor.patch"
 MJB_API int mjb_version(void);
 MJB_API const char* mjb_versionString(void);
+
+// ---- irregular seas and wind (docs/mjcf.md sections 8-10, docs/physics.md section 12) ----
+
+// wave spectrum types
+typedef enum mjbSpecType_ {
+  mjbSPEC_PM = 0,        // Pierson-Moskowitz (from hs and tp, or from wind)
+  mjbSPEC_JONSWAP,       // JONSWAP, DNV-RP-C205 normalisation
+  mjbSPEC_TABLE          // tabulated (omega, S), linear in between, 0 outside
+} mjbSpecType;
+
+// one spectrum, expanded into n linear (Airy) components
+typedef struct mjbSpectrum_ {
+  int type;              // mjbSpecType
+  double hs;             // significant wave height 4 sqrt(m0) [m] (PM, JONSWAP)
+  double tp;             // peak period [s] (PM, JONSWAP)
+  double wind;           // PM only: wind speed at 10 m [m/s] giving hs, tp; 0 = unused
+  double gamma;          // JONSWAP peak enhancement [1, 10]
+  const double* table;   // TABLE: ntable pairs (omega [rad/s], S [m^2 s/rad]), omega rising
+  int ntable;            // TABLE: number of pairs (>= 2)
+  double dir;            // mean direction of travel, from +x towards +y [deg]
+  double spread;         // s of the spreading cos^2s((b - b0) / 2); 0 = long-crested
+  int n;                 // number of components [1, 4096]
+  double wmin, wmax;     // frequency range [rad/s]; both 0: 0.5 wp to 4 wp (table: its span)
+  unsigned long long seed;  // random frequencies, phases and directions
+} mjbSpectrum;
+
+// defaults: JONSWAP, hs 1 m, tp 8 s, gamma 3.3, long-crested along +x,
+// 64 components, default range, seed 1
+MJB_API void mjb_defaultSpectrum(mjbSpectrum* s);
+
+// gust spectra
+typedef enum mjbGust_ {
+  mjbGUST_NONE = 0,      // steady wind
+  mjbGUST_FROYA          // Froya / API RP 2A-WSD spectrum of the speed at 10 m
+} mjbGust;
+
+// wind: mean speed and direction at 10 m, optional gusts
+typedef struct mjbWind_ {
+  double speed;          // 1-hour mean speed at 10 m above the still level [m/s]
+  double dir;            // direction the wind blows towards, from +x towards +y [deg]
+  int gust;              // mjbGust
+  int ngust;             // gust components [1, 1024]
+  unsigned long long seed;  // gust frequencies and phases
+} mjbWind;
+
+// a sea state for mjb_setSea
+typedef struct mjbSea_ {
+  double current[2];     // uniform current [m/s]
+  const double* wave;    // nwave x 5, as mjbuoy.wave.<label>: amplitude [m],
+  int nwave;             // wavelength [m], direction [deg], phase [deg], steepness Q
+  const mjbSpectrum* spectrum;  // nspectrum spectra, added to the waves
+  int nspectrum;
+  mjbWind wind;
+} mjbSea;
+
+// replace the sea state of an attached model between steps (not during
+// one): components, current and wind take effect in the next callback.
+// Density, level and depth stay the model's. Allocates nothing as long as
+// the total component count stays within the capacity reserved at attach
+// (the model's count, or mjbuoy.sea.capacity); more is an error. Returns 1,
+// or 0 with the reason in error (the sea is then unchanged).
+MJB_API int mjb_setSea(mjbBuoy* b, const mjbSea* sea, char* error, int error_sz);
+
+// the current sea's components, 6 values each: amplitude [m], omega
+// [rad/s], wave number k [rad/m], direction [deg], phase [deg], steepness
+// Q; fills up to max components into out (may be NULL) and returns their
+// total number
+MJB_API int mjb_waves(const mjbBuoy* b, double* out, int max);
+
+// wind speed vector at 10 m at time t [m/s] (mean plus gusts), 2 values
+MJB_API void mjb_windVelocity(const mjbBuoy* b, mjtNum t, mjtNum v[2]);
 
 #ifdef __cplusplus
 }

@@ -34,11 +34,12 @@ const Quantity kQuantity[] = {
     {"wrench", kSensWrench, 6, mjbNPART, false, true},
 };
 
-const char* const kFamily[mjbNPART] = {"pressure", "viscous", "drag", "slam", "damping"};
+const char* const kFamily[mjbNPART] = {"pressure", "viscous", "drag", "slam", "damping",
+                                       "wind"};
 
 const char kWords[] =
     "elevation, relative_elevation, submerged_volume, wetted_area, wrench, "
-    "wrench pressure|viscous|drag|slam|damping";
+    "wrench pressure|viscous|drag|slam|damping|wind";
 
 std::string where(const char* sensor) {
   return std::string("mjbuoy: sensor \"") + sensor + "\" (<text name=\"" + kPre + sensor + "\">)";

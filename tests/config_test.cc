@@ -111,7 +111,7 @@ TEST(Config, EachInvalidEntryNamesItself) {
     {"airy with a steepness", "<numeric name=\"mjbuoy.airy.a\" data=\"0.5 20 0 0 0.6\"/>", "",
      {"mjbuoy.airy.a", "5 value(s), expected 4"}},
     {"airy zero wavelength", "<numeric name=\"mjbuoy.airy.a\" data=\"0.5 0 0 0\"/>", "",
-     {"mjbuoy.airy.a", "wavelength", "> 0"}},
+     {"mjbuoy.airy.a", "wavelength", "out of range"}},
     {"unknown pressure model", "<text name=\"mjbuoy.sea.pressure\" data=\"nonlinear\"/>", "",
      {"mjbuoy.sea.pressure", "\"nonlinear\"", "linear", "kerner"}},
     {"sideways gravity", "", "<option gravity=\"1 0 -9.81\"/>",

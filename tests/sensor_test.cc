@@ -113,8 +113,10 @@ TEST(Sensor, BargeVolumeAndWettedAreaAtRest) {
 // wrench sensors, total and by family, carry what mjb_wrench and
 // mjb_wrenchPart report for the same call, while the barge moves
 TEST(Sensor, WrenchByFamilyEqualsWrenchPart) {
-  const char* fam[] = {"pressure", "viscous", "drag", "slam", "damping"};
-  std::string custom = R"(<text name="mjbuoy.sensor.total" data="wrench"/>)", sens =
+  const char* fam[mjbNPART] = {"pressure", "viscous", "drag", "slam", "damping", "wind"};
+  // a 10 m/s wind, so that the wind family acts on the dry sides too
+  std::string custom = R"(<text name="mjbuoy.sensor.total" data="wrench"/>)"
+                       R"(<numeric name="mjbuoy.wind.speed" data="10"/>)", sens =
       R"(<user name="total" objtype="body" objname="barge" dim="6" datatype="real" needstage="acc"/>)";
   for (const char* f : fam) {
     custom += std::string("<text name=\"mjbuoy.sensor.") + f + "\" data=\"wrench " + f + "\"/>";

@@ -22,13 +22,27 @@ using Clock = std::chrono::steady_clock;
 
 // boats spaced on a grid 6 m x 2 m apart, all partly wet on a 20 m swell
 static int gthreads = -1;  // mjbuoy.threads, -1: leave it out (auto)
+static std::string gsea = "swell";  // flat, swell (one Gerstner wave) or jonswap
+
+// the sea entries of --sea: jonswap is a 64-component short-crested sea
+// (Hs 0.6 m, Tp 5 s, spreading s = 10 about 20 deg)
+static std::string seaEntries() {
+  if (gsea == "flat") return "";
+  if (gsea == "swell") return "<numeric name=\"mjbuoy.wave.swell\" data=\"0.3 20 20 0 0.5\"/>";
+  return "<text name=\"mjbuoy.spectrum.sea.type\" data=\"jonswap\"/>"
+         "<numeric name=\"mjbuoy.spectrum.sea.hs\" data=\"0.6\"/>"
+         "<numeric name=\"mjbuoy.spectrum.sea.tp\" data=\"5\"/>"
+         "<numeric name=\"mjbuoy.spectrum.sea.components\" data=\"64\"/>"
+         "<numeric name=\"mjbuoy.spectrum.sea.spreading\" data=\"10\"/>"
+         "<numeric name=\"mjbuoy.spectrum.sea.direction\" data=\"20\"/>";
+}
 
 static std::string scene(const std::string& meshes, int boats, int tris) {
   std::ostringstream s;
   s << "<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" << meshes
     << "/wigley_" << tris << ".obj\"/></asset><custom>"
     << "<text name=\"mjbuoy.hulls\" data=\"h*\"/>"
-    << "<numeric name=\"mjbuoy.wave.swell\" data=\"0.3 20 20 0 0.5\"/>";
+    << seaEntries();
   if (gthreads >= 0) s << "<numeric name=\"mjbuoy.threads\" data=\"" << gthreads << "\"/>";
   s << "</custom><worldbody>";
   int side = std::ceil(std::sqrt(boats));
@@ -180,6 +194,8 @@ int main(int argc, char** argv) {
   app.add_option("--threads", gthreads, "cpu threads (mjbuoy.threads; 0 = auto, the default)")
       ->check(Finite(0, 64));
   app.add_option("--json", json, "also write the results as JSON (replaced only when complete)");
+  app.add_option("--sea", gsea, "flat, swell (one Gerstner wave, the default) or jonswap "
+                 "(64 components)")->check(CLI::IsMember({"flat", "swell", "jonswap"}));
   app.add_option("--meshes", meshes, "directory of wigley_N.obj");
   CLI11_PARSE(app, argc, argv);
   if (boats.empty()) boats = grid == "full" ? std::vector<int>{1, 50, 100, 200, 400, 800}

@@ -8,7 +8,7 @@
 
 namespace scn {
 
-static const char* kPartNames[] = {"pressure", "viscous", "drag", "slamming", "damping"};
+static const char* kPartNames[mjbNPART] = {"pressure", "viscous", "drag", "slamming", "damping", "wind"};
 
 const char* quantityUnit(Quantity q) {
   switch (q) {

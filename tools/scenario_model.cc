@@ -86,7 +86,10 @@ std::string editModel(const Scenario& s) {
   if (!root || std::string(root->Name()) != "mujoco") {
     throw Invalid(s.file, s.line, "model " + s.model + " is not MJCF (root element <mujoco>)");
   }
-  if (s.calm) removeEntries(root, "mjbuoy.wave.", true);
+  if (s.calm) {  // no listed waves and no spectra (docs/mjcf.md section 8)
+    removeEntries(root, "mjbuoy.wave.", true);
+    removeEntries(root, "mjbuoy.spectrum.", true);
+  }
   for (const Entry& e : s.entries) {
     if (e.remove) {
       removeEntries(root, e.name, false);

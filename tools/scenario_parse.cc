@@ -136,7 +136,8 @@ static bool isWrench(Quantity q) { return q >= Quantity::FX; }
 
 static const std::map<std::string, int> kParts = {
     {"total", -1}, {"pressure", mjbPART_PRESSURE}, {"viscous", mjbPART_VISCOUS},
-    {"drag", mjbPART_DRAG}, {"slamming", mjbPART_SLAM}, {"damping", mjbPART_DAMPING}};
+    {"drag", mjbPART_DRAG}, {"slamming", mjbPART_SLAM}, {"damping", mjbPART_DAMPING},
+    {"wind", mjbPART_WIND}};
 
 static std::string keys(const std::map<std::string, Quantity>& m, bool wrench) {
   std::vector<std::string> v;

@@ -115,6 +115,25 @@ static bool isRegularTarget(const std::string& path) {
   return stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode);
 }
 
+// --print-sea: one line per wave component (mjb_waves), then the wind
+static void printSeaTable(const mjbBuoy* b) {
+  int n = mjb_waves(b, nullptr, 0);
+  std::vector<double> w(6 * n);
+  mjb_waves(b, w.data(), n);
+  std::printf("# %d wave components\n# i amplitude_m omega_rad_s k_rad_m direction_deg "
+              "phase_deg steepness\n", n);
+  double m0 = 0;
+  for (int i = 0; i < n; i++) {
+    const double* c = &w[6 * i];
+    std::printf("%d %.9g %.9g %.9g %.9g %.9g %.9g\n", i, c[0], c[1], c[2], c[3], c[4], c[5]);
+    m0 += 0.5 * c[0] * c[0];
+  }
+  mjtNum u[2];
+  mjb_windVelocity(b, 0, u);
+  std::printf("# Hs = 4 sqrt(sum A^2 / 2) = %.6g m; wind at t = 0: %.6g %.6g m/s\n",
+              4 * std::sqrt(m0), u[0], u[1]);
+}
+
 int main(int argc, char** argv) {
   mjbtool::installMujocoHandlers("mjbuoy-sim");
   // a failing ffmpeg closes its pipe: a write error to report, not a death by SIGPIPE
@@ -154,6 +173,8 @@ int main(int argc, char** argv) {
   app.add_flag("--show-forces", showForces, "draw each hull body's mjbuoy force as an arrow");
   app.add_flag("--show-wet", showWet,
                "draw the wet part of each hull (below the exact surface) in magenta");
+  bool printSea = false;
+  app.add_flag("--print-sea", printSea, "print the sea's wave components and wind, then exit");
   app.add_option("--plot", plot, "plot heave, roll and pitch of the hull bodies (PNG, gnuplot)");
   app.add_option("--progress", progress,
                  "progress on stderr: auto (bar on a terminal, lines when rendering), bar, "
@@ -246,6 +267,10 @@ int main(int argc, char** argv) {
   }
   mjbBuoy* b = sc.b;
   std::fputs(mjb_warnings(b), stderr);
+  if (printSea) {
+    printSeaTable(b);
+    return 0;
+  }
   sc.d = mj_makeData(m);
   mjData* d = sc.d;
   mjb_bindData(b, d);
