@@ -15,7 +15,8 @@ namespace scn {
 static std::string g_warning;  // last MuJoCo warning text
 static void onWarning(const char* msg) { g_warning = msg; }
 
-void runScenario(const Scenario& s, Sim& sim, Report& r) {
+void runScenario(const Scenario& s, Sim& sim, Report& r,
+                 const std::function<void(const Sample&)>& observe) {
   const mjModel* m = sim.m;
   mjData* d = sim.d;
   const double dt = m->opt.timestep;
@@ -24,6 +25,7 @@ void runScenario(const Scenario& s, Sim& sim, Report& r) {
   auto sample = [&](double t) {
     Sample smp{m, d, sim.b, t};
     for (auto& e : evals) e->sample(smp);
+    if (observe) observe(smp);
   };
   auto bad = [&]() {
     for (int w : {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC}) {
@@ -66,6 +68,7 @@ void runScenario(const Scenario& s, Sim& sim, Report& r) {
   double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   mju_user_warning = prev;
 
+  r.diverged = diverged;
   for (auto& e : evals) r.results.push_back(e->finish(diverged, why));
   if (!std::isinf(diverged)) {
     Result res;
