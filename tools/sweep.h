@@ -62,6 +62,7 @@ struct Plot {
 
 struct Sweep {
   std::string file;   // absolute path of the sweep file
+  std::string given;  // the path as given, for errors
   std::string name;   // default: the file stem
   std::string base;   // absolute path of the base scenario
   std::string base_text;  // its contents

@@ -238,9 +238,9 @@ static void checkPlots(const Sweep& s) {
     return false;
   };
   for (const Plot& p : s.plots) {
-    if (!isStat(p.y)) throw Invalid(s.file, p.line, "<plot>: y=\"" + p.y + "\" is not a <stat> name");
-    if (!isStat(p.x) && !isAxis(p.x)) throw Invalid(s.file, p.line, "<plot>: x=\"" + p.x + "\" is not an axis or <stat> name");
-    if (!p.curves.empty() && !isAxis(p.curves)) throw Invalid(s.file, p.line, "<plot>: curves=\"" + p.curves + "\" is not an axis name");
+    if (!isStat(p.y)) throw Invalid(s.given, p.line, "<plot>: y=\"" + p.y + "\" is not a <stat> name");
+    if (!isStat(p.x) && !isAxis(p.x)) throw Invalid(s.given, p.line, "<plot>: x=\"" + p.x + "\" is not an axis or <stat> name");
+    if (!p.curves.empty() && !isAxis(p.curves)) throw Invalid(s.given, p.line, "<plot>: curves=\"" + p.curves + "\" is not an axis name");
   }
 }
 
@@ -254,6 +254,7 @@ static std::string slurp(const std::string& path) {
 Sweep parseSweep(const std::string& path) {
   Sweep s;
   s.file = fs::absolute(path).lexically_normal().string();
+  s.given = path;
   const std::string& file = path;
   tinyxml2::XMLDocument doc;
   tinyxml2::XMLError err = doc.LoadFile(path.c_str());
@@ -355,7 +356,7 @@ static XMLElement* target(tinyxml2::XMLDocument& doc, const Sweep& s, const Axis
     if (a.key.empty() || (v && a.keyval == v)) found.push_back(e);
   }
   if (found.size() > 1) {
-    throw Invalid(s.file, a.line, "set=\"" + a.path + "\" matches " + std::to_string(found.size()) +
+    throw Invalid(s.given, a.line, "set=\"" + a.path + "\" matches " + std::to_string(found.size()) +
                                       " <" + a.elem + "> elements of " + s.base +
                                       "; pick one with " + a.elem + "[name=...]@" + a.attr);
   }
@@ -400,7 +401,7 @@ scn::Scenario caseScenario(const Sweep& s, const Case& c, std::string* xml) {
       std::string at = s.base + ":" + std::to_string(lines[i]) + ":";
       if (w.rfind(at, 0) == 0 || lines[i] == 0) { line = s.axes[i].line; break; }
     }
-    throw Invalid(s.file, line, describe(s, c) + ": " + w);
+    throw Invalid(s.given, line, describe(s, c) + ": " + w);
   }
 }
 

@@ -121,14 +121,14 @@ Stats::Stats(const Sweep& s, const scn::Scenario& sc, const mjModel* m)
     x.from = st.from;
     x.to = st.has_to ? st.to : sc.duration;
     if (x.to > sc.duration + 1e-9 || x.from >= x.to) {
-      throw Invalid(s.file, st.line, "<stat name=\"" + st.name + "\">: the window [" + num(x.from) +
+      throw Invalid(s.given, st.line, "<stat name=\"" + st.name + "\">: the window [" + num(x.from) +
                                          ", " + num(x.to) + "] s is not within the run [0, " +
                                          num(sc.duration) + "] s");
     }
     if (st.kind != StatKind::PERIOD) {
       x.body = mj_name2id(m, mjOBJ_BODY, st.body.c_str());
       if (x.body <= 0) {
-        throw Invalid(s.file, st.line, "<stat name=\"" + st.name + "\">: no body \"" + st.body +
+        throw Invalid(s.given, st.line, "<stat name=\"" + st.name + "\">: no body \"" + st.body +
                                            "\" in model " + sc.model_attr);
       }
     }
@@ -136,7 +136,7 @@ Stats::Stats(const Sweep& s, const scn::Scenario& sc, const mjModel* m)
       double lambda = 0;
       x.omega = waveOmega(m, st.wave, &lambda);
       if (!(x.omega > 0)) {
-        throw Invalid(s.file, st.line, "<stat name=\"" + st.name + "\">: the model has no wave "
+        throw Invalid(s.given, st.line, "<stat name=\"" + st.name + "\">: the model has no wave "
                                            "mjbuoy.wave." + st.wave);
       }
     } else if (st.period > 0) {

@@ -142,7 +142,17 @@ PartitionName=test Nodes=localhost Default=YES MaxTime=INFINITE State=UP
         return "\n".join(out)
 
     def stop(self):
-        # slurmd first (it may still run job steps), then slurmctld, then munged
+        # cancel what still runs (slurmstepd leaves slurmd's process group),
+        # then slurmd, slurmctld and munged
+        if self.procs and all(p.poll() is None for p in self.procs):
+            subprocess.run(["scancel", "--partition=test"], env=self.env, capture_output=True,
+                           timeout=10)
+            t0 = time.time()
+            while time.time() - t0 < 10:
+                q = subprocess.run(["squeue", "-h"], env=self.env, capture_output=True, text=True)
+                if q.returncode != 0 or not q.stdout.strip():
+                    break
+                time.sleep(0.2)
         for p in reversed(self.procs):
             if p.poll() is None:
                 try:
