@@ -237,7 +237,14 @@ int estimate(const std::string& file, long index, int shards, int jobs, const st
   if (ec) bytes = 0;
   uintmax_t logb = fs::file_size(dir + "/case.log", ec);
   if (ec) logb = 0;
+  json res;
+  readJson(resultPath(dir, c.id), &res);
   fs::remove_all(dir, ec);
+  if (res.value("status", "") == "invalid" || res.value("status", "") == "diverged") {
+    std::fprintf(stderr, "mjbuoy-sweep: case %s is %s: %s\n", c.id.c_str(),
+                 res.value("status", "").c_str(), res.value("error", "").c_str());
+    return 2;
+  }
   if (!WIFEXITED(status) || WEXITSTATUS(status) > 2) {
     std::fprintf(stderr, "mjbuoy-sweep: case %s did not finish (status %d)\n", c.id.c_str(), status);
     return 1;
@@ -251,8 +258,8 @@ int estimate(const std::string& file, long index, int shards, int jobs, const st
   std::printf("case %s: wall %.3f s, cpu %.3f s, peak RSS %.1f MiB, result %ju B, log %ju B\n",
               c.id.c_str(), wall, ru.ru_utime.tv_sec + ru.ru_stime.tv_sec +
               1e-6 * (ru.ru_utime.tv_usec + ru.ru_stime.tv_usec), rss, bytes, logb);
-  std::printf("sweep %s: %ld case(s): %.1f s of one core in all, output about %.1f MB\n",
-              s.name.c_str(), s.ncases, wall * s.ncases, (bytes + logb) * (double)s.ncases / 1e6);
+  std::printf("sweep %s: %ld case(s): about %.1f core-hours, output about %.1f MB (results and logs)\n",
+              s.name.c_str(), s.ncases, wall * s.ncases / 3600, (bytes + logb) * (double)s.ncases / 1e6);
   std::printf("with --shards %d and --jobs %d: %ld case(s) per task, about %.0f s each\n", shards,
               jobs, per, task);
   std::printf("suggested: --time %ld --mem %ldM --jobs %d (time in minutes)\n", minutes, mem, jobs);
