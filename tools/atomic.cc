@@ -9,8 +9,11 @@
 namespace atomicfile {
 
 std::string tempBeside(const std::string& path) {
+  // host and pid: processes on several nodes may write into one shared directory
   static unsigned long n = 0;
-  return path + ".tmp." + std::to_string(getpid()) + "." + std::to_string(n++);
+  char host[256] = "";
+  gethostname(host, sizeof(host) - 1);
+  return path + ".tmp." + host + "." + std::to_string(getpid()) + "." + std::to_string(n++);
 }
 
 bool commit(const std::string& path, const std::function<bool(const std::string& tmp)>& fill,

@@ -131,11 +131,19 @@ int runSweep(const std::string& file, const std::string& out, int jobs, int shar
              const std::string& self) {
   Sweep s = parseSweep(file);
   json man = manifest(s);  // builds every case's scenario: a bad value stops here (exit 2)
+  json prev;
+  std::string mpath = (fs::path(out) / "sweep.json").string();
+  if (readJson(mpath, &prev) && prev.value("file", "") != s.file) {
+    std::fprintf(stderr, "mjbuoy-sweep: %s holds the results of another sweep (%s); give another "
+                 "--out, or remove that directory to start again\n", out.c_str(),
+                 prev.value("file", "").c_str());
+    return 2;
+  }
   std::error_code ec;
   fs::create_directories(fs::path(out) / "cases", ec);
   fs::create_directories(fs::path(out) / "logs", ec);
   std::string err;
-  if (!atomicfile::write((fs::path(out) / "sweep.json").string(), man.dump(1) + "\n", &err)) {
+  if (!atomicfile::write(mpath, man.dump(1) + "\n", &err)) {
     std::fprintf(stderr, "mjbuoy-sweep: %s\n", err.c_str());
     return 2;
   }

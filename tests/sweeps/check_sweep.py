@@ -100,6 +100,12 @@ def mode_local(bin_):
             check(read(os.path.join(o1, f)) == read(os.path.join(o2, f)), f"{f} identical with --jobs 1 and 2")
         check(os.path.getsize(os.path.join(o1, "plots", "z_max-drop-density.png")) > 1000, "plot written")
 
+        # another sweep's directory is refused, its results untouched
+        before = read(os.path.join(o1, "sweep.json"))
+        r = subprocess.run([bin_, "run", os.path.join(HERE, "expand.xml"), "--out", o1], capture_output=True, text=True)
+        check(r.returncode == 2 and "holds the results of another sweep" in r.stderr, "another sweep's --out refused")
+        check(read(os.path.join(o1, "sweep.json")) == before, "its manifest untouched")
+
         # killed after 2 cases (the runner SIGKILLs itself), then resumed
         env = dict(os.environ, MJBUOY_SWEEP_TEST_STOP_AFTER="2")
         r = subprocess.run([bin_, "run", BARGE, "--out", o3, "--jobs", "1"], env=env, capture_output=True)
