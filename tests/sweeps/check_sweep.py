@@ -185,6 +185,10 @@ def mode_rao(bin_):
             lam = float(r["wavelength"])
             check(abs(T - math.sqrt(2 * math.pi * lam / 9.81)) < 1e-9 * T,
                   f"period {T:.4f} s from deep-water dispersion lambda = g T^2 / 2 pi")
+            # the wave at the body is the input sinusoid of 0.1 m (steepness 0); the
+            # response's up-crossings are one wave period apart
+            check(abs(float(r["eta_amp"]) - 0.1) < 1e-6, f"T = {T:5.2f} s: wave amplitude {r['eta_amp']} = 0.1 m")
+            check(abs(float(r["heave_tz"]) / T - 1) < 1e-3, f"T = {T:5.2f} s: zero-crossing period {r['heave_tz']}")
             w = 2 * math.pi / T
             x = w / wn
             # m z'' + C z = F_FK with the Kerner pressure p = rho g (eta - z) at every depth:
