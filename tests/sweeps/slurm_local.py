@@ -32,7 +32,8 @@ def mem_mb():
 class LocalSlurm:
     def __init__(self, root, cpus=2):
         self.root = os.path.abspath(root)
-        self.cpus = cpus
+        # slurmd drains a node that has fewer CPUs than slurm.conf says
+        self.cpus = max(1, min(cpus, os.cpu_count() or 1))
         self.procs = []
 
     def path(self, *p):
