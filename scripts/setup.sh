@@ -24,6 +24,8 @@ pkgs=(
   gnuplot-nox                  # mjbuoy-sim --plot: heave, roll and pitch plots
   heaptrack                    # soak.fleet.3600s: records every allocation of the hour-long soak (tests/check_heaptrack.py)
   clang libclang-rt-14-dev     # libFuzzer (-fsanitize=fuzzer) for tests/fuzz, run by scripts/test.sh
+  nlohmann-json3-dev           # mjbuoy-sweep: JSON result files (header-only)
+  slurm-wlm munge              # mjbuoy-sweep slurm: sbatch; sweep.slurm starts a single-node Slurm (munged, slurmctld, slurmd)
 )
 
 missing=()

@@ -7,6 +7,7 @@
 #ifndef MJBUOY_TOOLS_SCENARIO_H_
 #define MJBUOY_TOOLS_SCENARIO_H_
 
+#include <functional>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -16,6 +17,8 @@
 #include <mujoco/mujoco.h>
 
 #include "mjbuoy.h"
+
+namespace tinyxml2 { class XMLDocument; }
 
 namespace scn {
 
@@ -109,6 +112,14 @@ Scenario parseScenario(const std::string& file);
 // directory that model and mesh paths are relative to (tests/fuzz)
 Scenario parseScenarioText(const std::string& xml, const std::string& file);
 
+// the same for a parsed document (mjbuoy-sweep edits it first; the elements
+// keep their line numbers for errors)
+Scenario parseScenarioDoc(const tinyxml2::XMLDocument& doc, const std::string& file);
+
+// a quantity or wrench part by its name in a scenario file (false: unknown)
+bool quantityByName(const std::string& name, Quantity* q);
+bool partByName(const std::string& name, int* part);
+
 // the model with the scenario applied, attached and initialised
 struct Sim {
   mjModel* m = nullptr;
@@ -154,6 +165,9 @@ class Evaluator {
   virtual Result finish(double diverged, const std::string& why) = 0;
 };
 
+// value of quantity q of body b in sample s (part: mjbPART_*, -1 = total)
+double quantityValue(const Sample& s, int b, Quantity q, int part);
+
 std::unique_ptr<Evaluator> makeEvaluator(const Check& c, const mjModel* m, double dt);
 
 // the label that names a check in the report
@@ -170,11 +184,14 @@ struct Report {
   std::string header;  // model, backend, sizes, times
   std::vector<Result> results;
   double wall = 0;  // s, load and run
+  double diverged = kInf;  // time the simulation stopped early [s]
   bool passed() const;
 };
 
-// run the scenario and evaluate its checks
-void runScenario(const Scenario& s, Sim& sim, Report& r);
+// run the scenario and evaluate its checks; observe (if given) sees every
+// sample too (mjbuoy-sweep's statistics)
+void runScenario(const Scenario& s, Sim& sim, Report& r,
+                 const std::function<void(const Sample&)>& observe = nullptr);
 
 // print a report: one line per check, FAIL lines with the measurement
 void printReport(const Report& r, FILE* out);

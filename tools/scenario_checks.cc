@@ -23,8 +23,7 @@ const char* quantityUnit(Quantity q) {
 
 static std::string bodyName(const mjModel* m, int b) { return m->names + m->name_bodyadr[b]; }
 
-// value of quantity q of body b in sample s
-static double quantity(const Sample& s, int b, Quantity q, int part) {
+double quantityValue(const Sample& s, int b, Quantity q, int part) {
   const mjtNum* R = s.d->xmat + 9 * b;
   const mjtNum* p = s.d->xpos + 3 * b;
   const double deg = 180 / M_PI;
@@ -117,7 +116,7 @@ class QuantityEval : public Evaluator {
     }
     last_ = s.t;
     for (size_t i = 0; i < c_.bodies.size(); i++) {
-      double v = quantity(s, c_.bodies[i], c_.quantity, c_.part);
+      double v = quantityValue(s, c_.bodies[i], c_.quantity, c_.part);
       Acc& a = acc_[i];
       if (!std::isfinite(v)) {
         if (!a.bad) { a.bad = true; a.badv = v; a.badt = s.t; }

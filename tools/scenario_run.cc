@@ -13,7 +13,8 @@
 
 namespace scn {
 
-void runScenario(const Scenario& s, Sim& sim, Report& r) {
+void runScenario(const Scenario& s, Sim& sim, Report& r,
+                 const std::function<void(const Sample&)>& observe) {
   const mjModel* m = sim.m;
   mjData* d = sim.d;
   const double dt = m->opt.timestep;
@@ -22,6 +23,7 @@ void runScenario(const Scenario& s, Sim& sim, Report& r) {
   auto sample = [&](double t) {
     Sample smp{m, d, sim.b, t};
     for (auto& e : evals) e->sample(smp);
+    if (observe) observe(smp);
   };
   const bool rk4 = m->opt.integrator == mjINT_RK4;
   double diverged = kInf;
@@ -53,6 +55,7 @@ void runScenario(const Scenario& s, Sim& sim, Report& r) {
   }
   double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
+  r.diverged = diverged;
   for (auto& e : evals) r.results.push_back(e->finish(diverged, why));
   if (!std::isinf(diverged)) {
     Result res;

@@ -1,0 +1,229 @@
+#!/usr/bin/env python3
+"""End-to-end tests of mjbuoy-sweep (docs/sweeps.md).
+
+check_sweep.py MODE BIN [ARGS]; prints "FAIL ..." and exits 1 on a failure.
+  list BIN                expansion of tests/sweeps/expand.xml
+  invalid BIN FILE        an invalid sweep: exit 2 and the 'expect output' regex of its comment
+  local BIN               --jobs 1 and 2 merge identically; a killed run resumes only the
+                          missing cases; a crashing case and failing checks are recorded
+  slurm BIN               the same sweep as a Slurm array on a local single-node Slurm
+  rao BIN                 examples/rao/rao.xml against the hydrostatic heave prediction
+"""
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+BARGE = os.path.join(HERE, "barge.xml")
+failures = []
+
+
+def check(cond, what):
+    print(("ok   " if cond else "FAIL ") + what)
+    if not cond:
+        failures.append(what)
+
+
+def run(args, env=None, ok=(0, 1)):
+    r = subprocess.run(args, capture_output=True, text=True, env=env)
+    if r.returncode not in ok:
+        print(r.stdout, r.stderr)
+        raise SystemExit(f"FAIL {' '.join(args)}: exit {r.returncode}")
+    return r
+
+
+def read(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
+def rows(out):
+    import csv
+    with open(os.path.join(out, "sweep.csv")) as f:
+        return {r["id"]: r for r in csv.DictReader(f)}
+
+
+def mode_list(bin_):
+    out = run([bin_, "list", os.path.join(HERE, "expand.xml")], ok=(0,)).stdout.splitlines()
+    check(len(out) == 24, f"24 cases = 4 densities x 2 zipped hulls x 3 time steps (got {len(out)})")
+    # first axis slowest: index 7 = 1 * 6 + 0 * 3 + 1
+    check(out[0] == "0 rho-0.hull-0.dt-0 rho=1000 damp=3000 300 visc=1 dt=0.001", "case 0: " + out[0])
+    check(out[7] == "7 rho-1.hull-0.dt-1 rho=1010 damp=3000 300 visc=1 dt=0.002", "case 7: " + out[7])
+    # zipped: damp and visc change together; log range 0.001 * 2^k
+    check(out[23] == "23 rho-3.hull-1.dt-2 rho=1030 damp=1500 150 visc=3 dt=0.004", "case 23: " + out[23])
+
+
+def mode_invalid(bin_, file):
+    text = open(file).read()
+    pats = [re.sub(r"\s*-->\s*$", "", p) for p in re.findall(r"expect output: (.*)", text)]
+    with tempfile.TemporaryDirectory() as d:
+        r = subprocess.run([bin_, "run", file, "--out", d], capture_output=True, text=True)
+        check(r.returncode == 2, f"exit 2 (got {r.returncode})")
+        check(not os.path.exists(os.path.join(d, "cases")), "nothing run")
+    for p in pats:
+        check(re.search(p, r.stdout + r.stderr, re.M) is not None, f"output matches {p!r}: {r.stderr.strip()}")
+
+
+def local_run(bin_, out, jobs, env=None, ok=(1,)):
+    r = run([bin_, "run", BARGE, "--out", out, "--jobs", str(jobs)], env=env, ok=ok)
+    m = run([bin_, "merge", out])
+    return r, m
+
+
+def check_barge(out):
+    """the physics of the barge sweep: draft from Archimedes, failing drops"""
+    rs = rows(out)
+    check(len(rs) == 6, f"6 rows (got {len(rs)})")
+    for id_, r in rs.items():
+        rho = float(r["density"])
+        # box 2 x 1 m, 500 kg: draft m / (rho L B); centre 0.25 m above the keel
+        z0 = 0.25 - 500 / (rho * 2 * 1)
+        check(abs(float(r["z_mean"]) - z0) < 0.00125,
+              f"{id_}: settled z {r['z_mean']} = 0.25 - m / (rho L B) = {z0:.6f} +- 1.25 mm")
+        want = "fail" if r["drop"] == "0.3" else "pass"
+        check(r["status"] == want, f"{id_}: dropped from {r['drop']} m: {r['status']} (expected {want})")
+
+
+def mode_local(bin_):
+    with tempfile.TemporaryDirectory() as d:
+        o1, o2, o3, o4 = (os.path.join(d, n) for n in ("j1", "j2", "resume", "crash"))
+        local_run(bin_, o1, 1)
+        local_run(bin_, o2, 2)
+        check_barge(o1)
+        for f in ("sweep.csv", "junit.xml"):
+            check(read(os.path.join(o1, f)) == read(os.path.join(o2, f)), f"{f} identical with --jobs 1 and 2")
+        check(os.path.getsize(os.path.join(o1, "plots", "z_max-drop-density.png")) > 1000, "plot written")
+
+        # another sweep's directory is refused, its results untouched
+        before = read(os.path.join(o1, "sweep.json"))
+        r = subprocess.run([bin_, "run", os.path.join(HERE, "expand.xml"), "--out", o1], capture_output=True, text=True)
+        check(r.returncode == 2 and "holds the results of another sweep" in r.stderr, "another sweep's --out refused")
+        check(read(os.path.join(o1, "sweep.json")) == before, "its manifest untouched")
+
+        # killed after 2 cases (the runner SIGKILLs itself), then resumed
+        env = dict(os.environ, MJBUOY_SWEEP_TEST_STOP_AFTER="2")
+        r = subprocess.run([bin_, "run", BARGE, "--out", o3, "--jobs", "1"], env=env, capture_output=True)
+        check(r.returncode == -9, f"first run killed (status {r.returncode})")
+        cases = os.path.join(o3, "cases")
+        first = {f: os.stat(os.path.join(cases, f)) for f in os.listdir(cases)}
+        check(len(first) == 2 and all(f.endswith(".json") for f in first),
+              f"2 results after the kill, no partial file: {sorted(first)}")
+        r, _ = local_run(bin_, o3, 2)
+        check("4 to run (2 complete)" in r.stdout, "the re-run runs the 4 missing cases: " + r.stdout.splitlines()[0])
+        for f, st in first.items():
+            now = os.stat(os.path.join(cases, f))
+            check((now.st_ino, now.st_mtime_ns) == (st.st_ino, st.st_mtime_ns), f"{f} kept (same inode, mtime)")
+        check(read(os.path.join(o1, "sweep.csv")) == read(os.path.join(o3, "sweep.csv")), "resumed sweep.csv identical")
+        r = run([bin_, "run", BARGE, "--out", o3])
+        check("0 to run (6 complete)" in r.stdout, "a third run has nothing to do")
+
+        # one case's process dies (SIGKILL via the test hook): recorded, the others complete
+        env = dict(os.environ, MJBUOY_SWEEP_TEST_CRASH="drop-1.density-0")
+        local_run(bin_, o4, 2, env=env)
+        r4, r1 = rows(o4), rows(o1)
+        check(r4["drop-1.density-0"]["status"] == "crash", "the killed case is recorded as a crash")
+        j = json.load(open(os.path.join(o4, "cases", "drop-1.density-0.json")))
+        check(j.get("signal") == 9, f"with its signal 9: {j.get('error')}")
+        check(all(r4[k] == r1[k] for k in r1 if k != "drop-1.density-0"), "the other 5 rows as in the full run")
+        junit = read(os.path.join(o4, "junit.xml")).decode()
+        check('type="crash"' in junit and "signal 9" in junit, "JUnit reports the crash")
+        # a re-run retries the crashed case only
+        r, _ = local_run(bin_, o4, 2)
+        check("1 to run (5 complete)" in r.stdout, "the re-run retries the crash only")
+        check(read(os.path.join(o1, "sweep.csv")) == read(os.path.join(o4, "sweep.csv")), "then identical")
+
+
+def mode_slurm(bin_):
+    sys.path.insert(0, HERE)
+    from slurm_local import LocalSlurm
+    with tempfile.TemporaryDirectory() as d:
+        local, remote = os.path.join(d, "local"), os.path.join(d, "slurm")
+        local_run(bin_, local, 2)
+        t0 = time.time()
+        with LocalSlurm(os.path.join(d, "cluster")) as env:
+            print(f"slurm up in {time.time() - t0:.1f} s")
+            r = run([bin_, "slurm", BARGE, "--out", remote, "--shards", "3", "--time", "5",
+                     "--mem", "200M"], env=env, ok=(0,))
+            print(r.stdout.strip())
+            check("Submitted batch job" in r.stdout, "sbatch accepted the array")
+            script = open(os.path.join(remote, "sweep.sbatch")).read()
+            check("#SBATCH --array=0-2" in script and "--shard \"${SLURM_ARRAY_TASK_ID}/3\"" in script,
+                  "one array task per shard")
+            done = False
+            while time.time() - t0 < 90:
+                q = subprocess.run(["squeue", "-h"], env=env, capture_output=True, text=True).stdout
+                n = len(os.listdir(os.path.join(remote, "cases"))) if os.path.isdir(os.path.join(remote, "cases")) else 0
+                if not q.strip() and n >= 6:
+                    done = True
+                    break
+                time.sleep(0.5)
+            check(done, f"array finished within 90 s ({time.time() - t0:.1f} s)")
+            logs = sorted(os.listdir(os.path.join(remote, "slurm")))
+            check(len(logs) == 3, f"3 array task logs: {logs}")
+        run([bin_, "merge", remote])
+        for f in ("sweep.csv", "junit.xml"):
+            check(read(os.path.join(local, f)) == read(os.path.join(remote, f)), f"{f} identical locally and on Slurm")
+
+
+def mode_rao(bin_):
+    with tempfile.TemporaryDirectory() as d:
+        run([bin_, "run", os.path.join(ROOT, "examples", "rao", "rao.xml"), "--out", d, "--jobs", "2"], ok=(0,))
+        run([bin_, "merge", d], ok=(0,))
+        rs = rows(d)
+        check(len(rs) >= 8, f"at least 8 wave periods ({len(rs)})")
+        # examples/rao/column.xml: C = rho g A_wp = 9810 N/m, m = 4000 kg
+        wn = math.sqrt(1000 * 9.81 * 1.0 / 4000)
+        zeta = 626.4 / (2 * math.sqrt(9810 * 4000))
+        for r in rs.values():
+            T = float(r["period"])
+            lam = float(r["wavelength"])
+            check(abs(T - math.sqrt(2 * math.pi * lam / 9.81)) < 1e-9 * T,
+                  f"period {T:.4f} s from deep-water dispersion lambda = g T^2 / 2 pi")
+            # the wave at the body is the input sinusoid of 0.1 m (steepness 0); the
+            # response's up-crossings are one wave period apart
+            check(abs(float(r["eta_amp"]) - 0.1) < 1e-6, f"T = {T:5.2f} s: wave amplitude {r['eta_amp']} = 0.1 m")
+            check(abs(float(r["heave_tz"]) / T - 1) < 1e-3, f"T = {T:5.2f} s: zero-crossing period {r['heave_tz']}")
+            w = 2 * math.pi / T
+            x = w / wn
+            # m z'' + C z = F_FK with linear wave pressure (mjbuoy's default,
+            # docs/physics.md section 11): on a wall-sided hull only the flat bottom,
+            # at the draft d = 4 m, takes vertical pressure, whose dynamic part
+            # rho g A e^(-k d) cos(theta) decays with depth (Newman 1977, section 6.3;
+            # Faltinsen 1990, section 3.2): F_FK = C eta e^(-k d) in waves much longer
+            # than the bottom, so RAO = e^(-k d) / |1 - (w/wn)^2|
+            k = 2 * math.pi / lam
+            decay = math.exp(-k * 4.0)
+            undamped = decay / abs(1 - x * x)
+            # the same with the joint's damping c z' and the bottom's finite length B = 1 m
+            # (the pressure averaged over it: sin(k B / 2) / (k B / 2))
+            kb = math.pi / lam
+            damped = decay * math.sin(kb) / kb / math.sqrt((1 - x * x) ** 2 + (2 * zeta * x) ** 2)
+            rao = float(r["heave_rao"])
+            check(abs(rao / undamped - 1) < 0.05,
+                  f"T = {T:5.2f} s: RAO {rao:.4f} vs e^(-kd)/|1-(w/wn)^2| = {undamped:.4f} "
+                  f"({100 * (rao / undamped - 1):+.2f}%, within 5%)")
+            check(abs(rao / damped - 1) < 0.005,
+                  f"T = {T:5.2f} s: RAO {rao:.4f} vs damped, finite-length {damped:.4f} "
+                  f"({100 * (rao / damped - 1):+.3f}%, within 0.5%)")
+            ph = float(r["heave_phase"])
+            # in phase below resonance, in antiphase above (lag atan(2 zeta x / (1 - x^2)))
+            lag = math.degrees(math.atan2(2 * zeta * x, 1 - x * x))
+            check(abs(-ph - lag) < 1 or abs(360 - ph - lag) < 1 if x > 1 else abs(-ph - lag) < 1,
+                  f"T = {T:5.2f} s: phase {ph:.2f} deg vs -{lag:.2f} deg")
+        check(os.path.getsize(os.path.join(d, "plots", "heave_rao-period.png")) > 1000, "RAO curve plotted")
+
+
+if __name__ == "__main__":
+    mode, bin_ = sys.argv[1], os.path.abspath(sys.argv[2])
+    {"list": lambda: mode_list(bin_), "invalid": lambda: mode_invalid(bin_, sys.argv[3]),
+     "local": lambda: mode_local(bin_), "slurm": lambda: mode_slurm(bin_),
+     "rao": lambda: mode_rao(bin_)}[mode]()
+    if failures:
+        print(f"FAIL {len(failures)} check(s) failed")
+        sys.exit(1)
