@@ -102,14 +102,14 @@ static const Field kAiry = {"airy", 4, 0, 0, false,
 // cpu backend threads: 0 picks them from the scene size and the cores
 static const Field kThreads = {"threads", 1, 0, 64, false, "threads, 0 = auto", "0"};
 
-static std::string fmt(double v) {
+std::string fmt(double v) {
   std::ostringstream s;
   s.precision(10);
   s << v;
   return s.str();
 }
 
-static std::string tag(const char* kind, const char* name) {
+std::string tag(const char* kind, const char* name) {
   return std::string("<") + kind + " name=\"" + name + "\">";
 }
 

@@ -34,6 +34,11 @@ struct Config {
   int capacity = 0;                // mjbuoy.sea.capacity: components reserved
 };
 
+// a number as messages print it (10 significant digits), and an entry as
+// MJCF writes it, <kind name="name">
+std::string fmt(double v);
+std::string tag(const char* kind, const char* name);
+
 // read m's custom entries into c; returns "" or the first error
 std::string parseConfig(const mjModel* m, Config* c);
 

@@ -19,17 +19,6 @@ bool isSeaExtra(const char* key) {
          !std::strcmp(key, "sea.capacity");
 }
 
-static std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
-
-static std::string tag(const char* kind, const char* name) {
-  return std::string("<") + kind + " name=\"" + name + "\">";
-}
-
 // one numeric field: name, count (0: any even count), range, unit, example
 struct XField {
   const char* name;

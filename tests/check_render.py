@@ -20,6 +20,8 @@ import subprocess
 import sys
 import tempfile
 
+import camproj
+
 failed = 0
 
 
@@ -116,22 +118,7 @@ def snapshot(sim, models, tmp):
         return
     look = [float(v) for v in m.group(1, 2, 3)]
     dist, az, el, fovy = (float(v) for v in m.group(4, 5, 6, 7))
-    a, e = math.radians(az), math.radians(el)
-    fwd = [math.cos(e) * math.cos(a), math.cos(e) * math.sin(a), math.sin(e)]
-    up = [-math.sin(e) * math.cos(a), -math.sin(e) * math.sin(a), math.cos(e)]
-    right = [fwd[1] * up[2] - fwd[2] * up[1], fwd[2] * up[0] - fwd[0] * up[2],
-             fwd[0] * up[1] - fwd[1] * up[0]]
-    eye = [look[i] - dist * fwd[i] for i in range(3)]
-    f = (h / 2) / math.tan(math.radians(fovy) / 2)
-
-    def project(q):
-        d = [q[i] - eye[i] for i in range(3)]
-        z = sum(d[i] * fwd[i] for i in range(3))
-        return (w / 2 + f * sum(d[i] * right[i] for i in range(3)) / z,
-                h / 2 - f * sum(d[i] * up[i] for i in range(3)) / z)
-
-    # horizon: rays at elevation 0, row from the top (negative: above the picture)
-    horizon = h / 2 - f * math.tan(-e)
+    project, horizon = camproj.projector(look, dist, az, el, fovy, w, h)
     pos = [float(v) for v in pose.group(1, 2, 3)]
     R = rotation(*(float(v) for v in pose.group(4, 5, 6)))
     half = (1.0, 0.5, 0.25)  # models/barge.xml

@@ -36,6 +36,8 @@ import threading
 import time
 import zlib
 
+import camproj
+
 failed = 0
 HALF = (1.0, 0.5, 0.25)  # barge half sizes, tests/viewer/two_barges.xml
 
@@ -102,20 +104,7 @@ def parse(out, when):
 def projector(cam, w, h):
     """pixel (x right, y down) of a world point seen by MuJoCo's free camera"""
     look, (dist, az, el, fovy) = cam[:3], cam[3:]
-    a, e = math.radians(az), math.radians(el)
-    fwd = [math.cos(e) * math.cos(a), math.cos(e) * math.sin(a), math.sin(e)]
-    up = [-math.sin(e) * math.cos(a), -math.sin(e) * math.sin(a), math.cos(e)]
-    right = [fwd[1] * up[2] - fwd[2] * up[1], fwd[2] * up[0] - fwd[0] * up[2],
-             fwd[0] * up[1] - fwd[1] * up[0]]
-    eye = [look[i] - dist * fwd[i] for i in range(3)]
-    f = (h / 2) / math.tan(math.radians(fovy) / 2)
-
-    def project(q):
-        d = [q[i] - eye[i] for i in range(3)]
-        z = sum(d[i] * fwd[i] for i in range(3))
-        return (w / 2 + f * sum(d[i] * right[i] for i in range(3)) / z,
-                h / 2 - f * sum(d[i] * up[i] for i in range(3)) / z)
-    return project
+    return camproj.projector(look, dist, az, el, fovy, w, h)[0]
 
 
 def rotate(q, v):

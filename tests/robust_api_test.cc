@@ -1,6 +1,7 @@
 // API faults (issue 11): the mjcb_passive chain, handles after detach,
 // per-mjData state of new, reset and copied data, copied models
 #include <algorithm>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -140,26 +141,79 @@ TEST(RobustApi, DetachTwiceIsAWarnedNoOp) {
   mj_deleteModel(m);
 }
 
+// MuJoCo's allocator hooks, recycling freed blocks: a block freed is
+// handed out again by the next allocation of the same size, so a new mjData
+// lands at the address of the one deleted before it whatever the system
+// allocator (or ASan's quarantine) would do. Blocks are released at the end
+struct Recycler {
+  static std::vector<std::pair<void*, size_t>>& live() {
+    static std::vector<std::pair<void*, size_t>> v;
+    return v;
+  }
+  static std::vector<std::pair<void*, size_t>>& spare() {
+    static std::vector<std::pair<void*, size_t>> v;
+    return v;
+  }
+  static void* alloc(size_t n) {
+    auto& sp = spare();
+    for (size_t i = 0; i < sp.size(); i++) {
+      if (sp[i].second == n) {
+        void* p = sp[i].first;
+        sp.erase(sp.begin() + i);
+        live().push_back({p, n});
+        return p;
+      }
+    }
+    void* p = std::malloc(n);
+    live().push_back({p, n});
+    return p;
+  }
+  static void release(void* p) {
+    auto& lv = live();
+    for (size_t i = 0; i < lv.size(); i++) {
+      if (lv[i].first == p) {
+        spare().push_back(lv[i]);
+        lv.erase(lv.begin() + i);
+        return;
+      }
+    }
+    std::free(p);  // allocated before the hooks
+  }
+  Recycler() {
+    mju_user_malloc = alloc;
+    mju_user_free = release;
+  }
+  ~Recycler() {
+    mju_user_malloc = nullptr;
+    mju_user_free = nullptr;
+    for (auto& b : spare()) std::free(b.first);
+    spare().clear();
+  }
+};
+
 TEST(RobustApi, FreshDataAtARecycledAddressStartsClean) {
   Scene s(kBox);
   ASSERT_TRUE(s.ok()) << s.err;
   int body = s.body("box"), stale = 0, recycled = 0;
   std::vector<const mjData*> seen;
-  for (int ep = 0; ep < 200; ep++) {
-    mjData* d = mj_makeData(s.m);
-    recycled += std::find(seen.begin(), seen.end(), d) != seen.end();
-    seen.push_back(d);
-    // before its first step a new mjData has had no force from mjbuoy
-    const mjtNum* w = mjb_wrench(s.b, d);
-    bool nonzero = false;
-    for (int j = 0; w && j < 6 * s.m->nbody; j++) nonzero = nonzero || w[j] != 0;
-    stale += nonzero;
-    for (int k = 0; k < 2; k++) mj_step(s.m, d);
-    // and after stepping, buoyancy near rho g V (it has barely moved)
-    EXPECT_NEAR(mjb_wrench(s.b, d)[6 * body + 2], kBuoy, 0.05 * kBuoy);
-    mj_deleteData(d);
+  {
+    Recycler rc;
+    for (int ep = 0; ep < 200; ep++) {
+      mjData* d = mj_makeData(s.m);
+      recycled += std::find(seen.begin(), seen.end(), d) != seen.end();
+      seen.push_back(d);
+      // before its first step a new mjData has had no force from mjbuoy
+      const mjtNum* w = mjb_wrench(s.b, d);
+      bool nonzero = false;
+      for (int j = 0; w && j < 6 * s.m->nbody; j++) nonzero = nonzero || w[j] != 0;
+      stale += nonzero;
+      for (int k = 0; k < 2; k++) mj_step(s.m, d);
+      // and after stepping, buoyancy near rho g V (it has barely moved)
+      EXPECT_NEAR(mjb_wrench(s.b, d)[6 * body + 2], kBuoy, 0.05 * kBuoy);
+      mj_deleteData(d);
+    }
   }
-  EXPECT_GT(recycled, 0) << "the allocator never reused an address: the test shows nothing";
+  EXPECT_EQ(recycled, 199) << "every mjData after the first reuses the address of the last";
   EXPECT_EQ(stale, 0) << "of 200 new mjData, " << recycled << " at recycled addresses";
 }
 

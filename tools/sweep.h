@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "scenario.h"
 
 namespace swp {
@@ -140,6 +142,9 @@ int slurm(const std::string& file, const std::string& out, const SlurmOptions& o
 
 // where a case's result lives
 std::string resultPath(const std::string& dir, const std::string& id);
+
+// a case's result without its outcome: sweep, id, index, axis values
+nlohmann::json stub(const Sweep& s, const Case& c);
 
 }  // namespace swp
 

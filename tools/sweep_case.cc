@@ -23,7 +23,7 @@ static std::string stableHeader(const std::string& h) {
   return w == std::string::npos ? h : h.substr(0, w);
 }
 
-static json stub(const Sweep& s, const Case& c) {
+json stub(const Sweep& s, const Case& c) {
   json j;
   j["sweep"] = s.name;
   j["id"] = c.id;

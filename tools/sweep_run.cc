@@ -103,13 +103,7 @@ static std::string settle(const Sweep& s, const Case& c, const std::string& hash
   bool exited = WIFEXITED(status), ok = exited && WEXITSTATUS(status) <= 2;
   json j;
   if (ok && readJson(path, &j) && j.value("hash", "") == hash) return j.value("status", "?");
-  j = json::object();
-  j["sweep"] = s.name;
-  j["id"] = c.id;
-  j["index"] = c.index;
-  json ax = json::object();
-  for (size_t i = 0; i < s.axes.size(); i++) ax[s.axes[i].name] = s.axes[i].labels[c.at[i]];
-  j["axes"] = ax;
+  j = stub(s, c);
   j["hash"] = hash;
   j["status"] = "crash";
   if (WIFSIGNALED(status)) {
