@@ -7,6 +7,8 @@
 #include <sstream>
 #include <string>
 #include <ctime>
+#include <filesystem>
+#include <system_error>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -173,12 +175,27 @@ static double paper(int boats, int tris) {
   return NAN;
 }
 
+// the default --meshes: the installed models beside this executable
+// (PREFIX/bin/../share/mjbuoy/models/meshes, found through /proc/self/exe so
+// the installed bench works without the source tree), else the source
+// tree's models/meshes of the build
+static std::string defaultMeshes() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    fs::path dir = exe.parent_path() / MJB_INSTALL_MODELS / "meshes";
+    if (fs::is_directory(dir, ec)) return dir.lexically_normal().string();
+  }
+  return MJB_MODELS "/meshes";
+}
+
 int main(int argc, char** argv) {
   mjbtool::installMujocoHandlers("mjbuoy-bench");
   using mjbtool::Finite;
   CLI::App app{"Benchmark mjbuoy on the dissertation's grid of Wigley boats."};
   app.set_version_flag("--version", std::string("mjbuoy-bench ") + MJBUOY_VERSION_STRING);
-  std::string grid = "small", json, meshes = MJB_MODELS "/meshes";
+  std::string grid = "small", json, meshes = defaultMeshes();
   std::vector<std::string> backends = {"cpu", "gl"};
   std::vector<int> boats, tris;
   int steps = 20, reps = 3;
@@ -196,7 +213,8 @@ int main(int argc, char** argv) {
   app.add_option("--json", json, "also write the results as JSON (replaced only when complete)");
   app.add_option("--sea", gsea, "flat, swell (one Gerstner wave, the default) or jonswap "
                  "(64 components)")->check(CLI::IsMember({"flat", "swell", "jonswap"}));
-  app.add_option("--meshes", meshes, "directory of wigley_N.obj");
+  app.add_option("--meshes", meshes, "directory of wigley_N.obj (default: the installed "
+                 "share/mjbuoy/models/meshes beside this executable, else the source tree's)");
   CLI11_PARSE(app, argc, argv);
   if (boats.empty()) boats = grid == "full" ? std::vector<int>{1, 50, 100, 200, 400, 800}
                                             : std::vector<int>{1, 50};
@@ -215,6 +233,7 @@ int main(int argc, char** argv) {
     }
   }
 
+  std::fprintf(stderr, "mjbuoy-bench: Wigley meshes from %s\n", meshes.c_str());
   std::vector<Cell> cells;
   int total = boats.size() * tris.size() * backends.size(), done = 0;
   auto start = Clock::now();

@@ -62,8 +62,9 @@ struct Init {
 };
 
 // what a quantity check measures per body and sample
+// (SENSOR: a value of d->sensordata; its "body" is the sensordata address)
 enum class Quantity { X, Y, Z, ROLL, PITCH, YAW, TILT, HEAVE, ETA, VX, VY, VZ,
-                      FX, FY, FZ, TX, TY, TZ, FORCE, TORQUE };
+                      FX, FY, FZ, TX, TY, TZ, FORCE, TORQUE, SENSOR };
 enum class Kind { VALUE, RANGE, MEAN, STD, SETTLED, FINITE, ENERGY, WRENCH };
 enum class Stat { VALUE, RANGE, MEAN, STD };
 
@@ -72,7 +73,9 @@ struct Check {
   std::string kind_name;  // as written: "range", "settled", ...
   std::string name;       // optional label given by the author
   std::string body_spec;  // body names or shell patterns, space separated
-  std::vector<int> bodies;  // resolved against the model
+  std::vector<int> bodies;  // resolved against the model (sensor: its address)
+  std::string sensor;       // sensor="NAME" instead of body and quantity
+  int index = 0;            // value of a multi-dimensional sensor
   Quantity quantity = Quantity::Z;
   std::string quantity_name;
   int part = -1;  // mjbPART_* of the wrench, -1 = total
@@ -165,8 +168,13 @@ class Evaluator {
   virtual Result finish(double diverged, const std::string& why) = 0;
 };
 
-// value of quantity q of body b in sample s (part: mjbPART_*, -1 = total)
+// value of quantity q of body b in sample s (part: mjbPART_*, -1 = total;
+// Quantity::SENSOR: b is the address in d->sensordata)
 double quantityValue(const Sample& s, int b, Quantity q, int part);
+
+// the d->sensordata address of value index of sensor name, or -1 with the
+// reason in why (no such sensor, index out of range)
+int sensorAddress(const mjModel* m, const std::string& name, int index, std::string* why);
 
 std::unique_ptr<Evaluator> makeEvaluator(const Check& c, const mjModel* m, double dt);
 

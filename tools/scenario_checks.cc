@@ -17,6 +17,7 @@ const char* quantityUnit(Quantity q) {
     case Quantity::VX: case Quantity::VY: case Quantity::VZ: return "m/s";
     case Quantity::FX: case Quantity::FY: case Quantity::FZ: case Quantity::FORCE: return "N";
     case Quantity::TX: case Quantity::TY: case Quantity::TZ: case Quantity::TORQUE: return "N m";
+    case Quantity::SENSOR: return "";  // the sensor's own units
     default: return "m";
   }
 }
@@ -39,6 +40,8 @@ double quantityValue(const Sample& s, int b, Quantity q, int part) {
     case Quantity::TILT: return std::acos(std::fmax(-1.0, std::fmin(1.0, R[8]))) * deg;
     case Quantity::HEAVE: return p[2] - mjb_seaHeight(s.b, p[0], p[1], s.t);
     case Quantity::ETA: return mjb_seaHeight(s.b, p[0], p[1], s.t);
+    // as computed by the mj_forward of the sampled state (scenario_run.cc)
+    case Quantity::SENSOR: return s.d->sensordata[b];
     case Quantity::VX: case Quantity::VY: case Quantity::VZ: {
       mjtNum v[6];  // [angular; linear] at the body frame origin, world frame
       mj_objectVelocity(s.m, s.d, mjOBJ_BODY, b, v, 0);
@@ -54,6 +57,28 @@ double quantityValue(const Sample& s, int b, Quantity q, int part) {
     case Quantity::TORQUE: return mju_norm3(w + 3);
     default: return w[(int)q - (int)Quantity::FX];
   }
+}
+
+int sensorAddress(const mjModel* m, const std::string& name, int index, std::string* why) {
+  int id = mj_name2id(m, mjOBJ_SENSOR, name.c_str());
+  if (id < 0) {
+    std::string names;
+    for (int i = 0; i < m->nsensor && i < 12; i++) {
+      const char* n = mj_id2name(m, mjOBJ_SENSOR, i);
+      names += (i ? ", " : "") + std::string(n ? n : "(unnamed)");
+    }
+    if (m->nsensor > 12) names += ", ...";
+    *why = "no sensor \"" + name + "\" in the model (" +
+           (m->nsensor ? "sensors: " + names : std::string("it has no <sensor>")) + ")";
+    return -1;
+  }
+  if (index < 0 || index >= m->sensor_dim[id]) {
+    *why = "index = " + std::to_string(index) + " is out of range for sensor \"" + name +
+           "\" of dim " + std::to_string(m->sensor_dim[id]) + "; index is in [0, " +
+           std::to_string(m->sensor_dim[id] - 1) + "]";
+    return -1;
+  }
+  return m->sensor_adr[id] + index;
 }
 
 static std::string boundText(double lo, double hi, const std::string& unit) {
@@ -77,7 +102,9 @@ static std::string window(const Check& c) {
 
 std::string checkLabel(const Check& c) {
   std::string l = c.kind_name;
-  if (!c.body_spec.empty()) {
+  if (!c.sensor.empty()) {
+    l += " sensor " + c.sensor + (c.index ? "[" + std::to_string(c.index) + "]" : "");
+  } else if (!c.body_spec.empty()) {
     // a list of names reads "(barge buoy).z"
     std::istringstream in(c.body_spec);
     std::string spec, w;
@@ -146,7 +173,7 @@ class QuantityEval : public Evaluator {
       return r;
     }
     const std::string unit = quantityUnit(c_.quantity);
-    const std::string u = " " + unit;
+    const std::string u = unit.empty() ? "" : " " + unit;
     const bool many = c_.bodies.size() > 1;
     int worst = -1, nbad = 0;
     double worstv = 0;

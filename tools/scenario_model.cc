@@ -287,6 +287,12 @@ std::unique_ptr<Sim> loadScenario(Scenario& s, const std::string& backend) {
 
   for (Check& c : s.checks) {
     if (!c.body_spec.empty()) c.bodies = resolveBodies(s, sim->m, c.body_spec, c.line);
+    if (!c.sensor.empty()) {
+      std::string why;
+      int adr = sensorAddress(sim->m, c.sensor, c.index, &why);
+      if (adr < 0) throw Invalid(s.file, c.line, "<check>: " + why);
+      c.bodies = {adr};
+    }
     double span = c.to - c.from;
     if (c.stat != Stat::VALUE && c.kind != Kind::FINITE && span < sim->m->opt.timestep) {
       throw Invalid(s.file, c.line, "<check>: the window [" + num(c.from) + ", " + num(c.to) +

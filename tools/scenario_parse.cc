@@ -131,11 +131,11 @@ static void parseAt(const El& e, Check& c, double duration) {
 
 static Check parseCheck(const XMLElement* x, const std::string& file, double duration) {
   static const std::map<std::string, std::pair<Kind, std::vector<std::string>>> kinds = {
-      {"value", {Kind::VALUE, {"body", "quantity", "part", "at", "min", "max", "target", "tol"}}},
-      {"range", {Kind::RANGE, {"body", "quantity", "part", "from", "to", "min", "max", "target", "tol"}}},
-      {"mean", {Kind::MEAN, {"body", "quantity", "part", "from", "to", "min", "max", "target", "tol"}}},
-      {"std", {Kind::STD, {"body", "quantity", "part", "from", "to", "min", "max", "target", "tol"}}},
-      {"settled", {Kind::SETTLED, {"body", "quantity", "part", "from", "to", "max"}}},
+      {"value", {Kind::VALUE, {"body", "quantity", "part", "sensor", "index", "at", "min", "max", "target", "tol"}}},
+      {"range", {Kind::RANGE, {"body", "quantity", "part", "sensor", "index", "from", "to", "min", "max", "target", "tol"}}},
+      {"mean", {Kind::MEAN, {"body", "quantity", "part", "sensor", "index", "from", "to", "min", "max", "target", "tol"}}},
+      {"std", {Kind::STD, {"body", "quantity", "part", "sensor", "index", "from", "to", "min", "max", "target", "tol"}}},
+      {"settled", {Kind::SETTLED, {"body", "quantity", "part", "sensor", "index", "from", "to", "max"}}},
       {"finite", {Kind::FINITE, {"from", "to", "maxqvel"}}},
       {"energy", {Kind::ENERGY, {"from", "to", "min", "max"}}},
       {"wrench", {Kind::WRENCH, {"body", "component", "part", "stat", "at", "from", "to", "min",
@@ -162,7 +162,23 @@ static Check parseCheck(const XMLElement* x, const std::string& file, double dur
   c.line = e.line();
   c.name = e.str("name", "");
 
-  if (c.kind != Kind::FINITE && c.kind != Kind::ENERGY) {
+  if (e.has("sensor")) {
+    // any MuJoCo sensor (resolved against the model in scenario_model.cc)
+    for (const char* a : {"body", "quantity", "part"}) {
+      if (e.has(a)) e.fail(std::string("give sensor or body and quantity, not both (") + a + ")", a);
+    }
+    c.sensor = e.str("sensor");
+    if (c.sensor.empty()) e.fail("sensor is empty", "sensor");
+    c.quantity = Quantity::SENSOR;
+    c.quantity_name = "sensor";
+    double i = e.number("index", 0);
+    if (i < 0 || i != std::floor(i) || i > 1e6) {
+      e.fail("index = " + num(i) + " must be a whole number >= 0", "index");
+    }
+    c.index = (int)i;
+  } else if (e.has("index")) {
+    e.fail("index applies to sensor=\"NAME\" only", "index");
+  } else if (c.kind != Kind::FINITE && c.kind != Kind::ENERGY) {
     c.body_spec = e.str("body");
     if (c.body_spec.find_first_not_of(" \t\n") == std::string::npos) e.fail("body is empty", "body");
     const char* qa = c.kind == Kind::WRENCH ? "component" : "quantity";

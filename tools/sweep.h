@@ -47,6 +47,8 @@ struct Stat {
   std::string quantity_name;
   int part = -1;
   std::string part_name;
+  std::string sensor;  // sensor="NAME" instead of body and quantity
+  int index = 0;       // value of a multi-dimensional sensor
   double from = 0, to = 0;  // to <= 0: the case's duration
   bool has_to = false;
   double period = 0;  // frequency of amp, phase, rao, period: 2 pi / period, or

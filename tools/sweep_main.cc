@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "mjbuoy_version.h"
 #include "sweep.h"
 
 // this executable, for the case processes and the sbatch script
@@ -23,6 +24,7 @@ static std::string self(const char* argv0) {
 int main(int argc, char** argv) {
   CLI::App app{"Run sweeps of mjbuoy scenarios (docs/sweeps.md): locally in parallel processes "
                "or as a Slurm job array; merge the results into CSV, JUnit and plots."};
+  app.set_version_flag("--version", std::string("mjbuoy-sweep ") + MJBUOY_VERSION_STRING);
   app.require_subcommand(1);
   std::string file, out, shard = "0/1";
   int jobs = 1;

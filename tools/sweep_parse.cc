@@ -122,7 +122,8 @@ static Stat parseStat(const XMLElement* x, const std::string& file) {
       {"max", StatKind::MAX},   {"min", StatKind::MIN},       {"rms", StatKind::RMS},
       {"tz", StatKind::TZ},     {"amplitude", StatKind::AMP}, {"phase", StatKind::PHASE},
       {"rao", StatKind::RAO},   {"period", StatKind::PERIOD}};
-  El e(x, file, {"name", "stat", "body", "quantity", "part", "from", "to", "period", "wave"});
+  El e(x, file, {"name", "stat", "body", "quantity", "part", "sensor", "index", "from", "to",
+                       "period", "wave"});
   Stat s;
   s.line = e.line();
   s.name = e.str("name");
@@ -151,7 +152,26 @@ static Stat parseStat(const XMLElement* x, const std::string& file) {
       if (e.has(a)) e.fail(std::string(a) + " applies to amplitude, phase, rao and period only", a);
     }
   }
-  if (s.kind != StatKind::PERIOD) {
+  if (e.has("sensor")) {
+    // any MuJoCo sensor, as in scenario checks (resolved in sweep_stats.cc)
+    if (s.kind == StatKind::PERIOD || s.kind == StatKind::PHASE || s.kind == StatKind::RAO) {
+      e.fail("stat=\"" + s.kind_name + "\" needs a body (the wave at it); sensor applies to the "
+             "other stats", "sensor");
+    }
+    for (const char* a : {"body", "quantity", "part"}) {
+      if (e.has(a)) e.fail(std::string("give sensor or body and quantity, not both (") + a + ")", a);
+    }
+    s.sensor = e.str("sensor");
+    s.quantity = scn::Quantity::SENSOR;
+    s.quantity_name = "sensor";
+    double i = e.number("index", 0);
+    if (i < 0 || i != std::floor(i) || i > 1e6) {
+      e.fail("index = " + num(i) + " must be a whole number >= 0", "index");
+    }
+    s.index = (int)i;
+  } else if (e.has("index")) {
+    e.fail("index applies to sensor=\"NAME\" only", "index");
+  } else if (s.kind != StatKind::PERIOD) {
     s.body = e.str("body");
     s.quantity_name = e.str("quantity");
     if (!scn::quantityByName(s.quantity_name, &s.quantity)) {

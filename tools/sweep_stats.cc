@@ -125,7 +125,11 @@ Stats::Stats(const Sweep& s, const scn::Scenario& sc, const mjModel* m)
                                          ", " + num(x.to) + "] s is not within the run [0, " +
                                          num(sc.duration) + "] s");
     }
-    if (st.kind != StatKind::PERIOD) {
+    if (!st.sensor.empty()) {
+      std::string why;
+      x.body = scn::sensorAddress(m, st.sensor, st.index, &why);  // scn::quantityValue's "body"
+      if (x.body < 0) throw Invalid(s.given, st.line, "<stat name=\"" + st.name + "\">: " + why);
+    } else if (st.kind != StatKind::PERIOD) {
       x.body = mj_name2id(m, mjOBJ_BODY, st.body.c_str());
       if (x.body <= 0) {
         throw Invalid(s.given, st.line, "<stat name=\"" + st.name + "\">: no body \"" + st.body +

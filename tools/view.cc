@@ -15,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "mjbuoy_version.h"
 #include "outfile.h"
 #include "render.h"
 
@@ -196,6 +197,7 @@ bool openWindow(View* v) {
 
 int parse(int argc, char** argv, Options* o) {
   CLI::App app{"Interactive viewer of an mjbuoy MJCF scene (GLFW window)."};
+  app.set_version_flag("--version", std::string("mjbuoy-view ") + MJBUOY_VERSION_STRING);
   std::string shot;
   app.add_option("model", o->model, "MJCF model file")->required()->check(CLI::ExistingFile);
   app.add_option("--backend", o->backend, "override the model's mjbuoy.backend (default: the "

@@ -7,6 +7,7 @@
 #                  against WORK/prefix and run it on the installed barge
 #   BUILD    mjbuoy's build tree; SRC: tests/consumer; WORK: scratch dir
 #   CC       C compiler; FLAGS: extra compile and link flags (sanitizers)
+#   VERSION  the project's version (the tools' --version)
 cmake_minimum_required(VERSION 3.16)
 set(P ${WORK}/prefix)
 
@@ -17,6 +18,7 @@ function(run)
     message(FATAL_ERROR "FAIL ${cmd} (${rc}):\n${out}\n${err}")
   endif()
   set(out "${out}" PARENT_SCOPE)
+  set(err "${err}" PARENT_SCOPE)
 endfunction()
 
 if(STEP STREQUAL "tree")
@@ -37,12 +39,33 @@ if(STEP STREQUAL "tree")
   if(NOT headers STREQUAL "mjbuoy;mjbuoy/mjbuoy.h;mjbuoy/mjbuoy_version.h")
     message(FATAL_ERROR "FAIL installed headers are ${headers}, want mjbuoy/mjbuoy.h and mjbuoy/mjbuoy_version.h")
   endif()
+  set(tools mjbuoy-sim mjbuoy-scenario mjbuoy-bench mjbuoy-hullgen mjbuoy-view mjbuoy-sweep)
   foreach(f lib/cmake/mjbuoy/mjbuoyConfig.cmake lib/pkgconfig/mjbuoy.pc share/mjbuoy/models/barge.xml
-      bin/mjbuoy-sim bin/mjbuoy-scenario bin/mjbuoy-bench bin/mjbuoy-hullgen share/doc/mjbuoy/README.md)
+      share/doc/mjbuoy/README.md)
     if(NOT EXISTS ${P}/${f})
       message(FATAL_ERROR "FAIL ${f} is not installed")
     endif()
   endforeach()
+  # every tool: installed, runs from the prefix and names itself and the
+  # library's version (VERSION: the project's)
+  set(ENV{LD_LIBRARY_PATH} ${P}/lib)
+  foreach(t ${tools})
+    if(NOT EXISTS ${P}/bin/${t})
+      message(FATAL_ERROR "FAIL bin/${t} is not installed")
+    endif()
+    run(${P}/bin/${t} --version)
+    if(NOT out MATCHES "^${t} ${VERSION}\n$")
+      message(FATAL_ERROR "FAIL ${t} --version printed '${out}', want '${t} ${VERSION}'")
+    endif()
+  endforeach()
+  # the installed bench finds the installed Wigley meshes (not the source
+  # tree's): one tiny cell
+  run(${P}/bin/mjbuoy-bench --boats 1 --tris 64 --steps 1 --reps 1 --backend cpu)
+  if(NOT err MATCHES "Wigley meshes from ${P}/share/mjbuoy/models/meshes\n" OR
+     NOT out MATCHES "\n\| cpu \| 1 \| 64 \| ")
+    message(FATAL_ERROR "FAIL installed mjbuoy-bench:\n${out}\n${err}")
+  endif()
+  message("installed tools: --version of ${tools}; mjbuoy-bench: ${err}")
   # versioned shared library, SONAME with the major version
   file(GLOB so ${P}/lib/libmjbuoy.so.*.*.*)
   if(NOT so)

@@ -8,6 +8,8 @@ check_sweep.py MODE BIN [ARGS]; prints "FAIL ..." and exits 1 on a failure.
                           missing cases; a crashing case and failing checks are recorded
   slurm BIN               the same sweep as a Slurm array on a local single-node Slurm
   rao BIN                 examples/rao/rao.xml against the hydrostatic heave prediction
+  sensor BIN              statistics of sensors (sensors.xml) against Archimedes; an
+                          unknown sensor makes the case invalid (sensor_unknown.xml)
 """
 import json
 import math
@@ -219,11 +221,33 @@ def mode_rao(bin_):
         check(os.path.getsize(os.path.join(d, "plots", "heave_rao-period.png")) > 1000, "RAO curve plotted")
 
 
+def mode_sensor(bin_):
+    with tempfile.TemporaryDirectory() as d:
+        out = os.path.join(d, "s")
+        run([bin_, "run", os.path.join(HERE, "sensors.xml"), "--out", out], ok=(0,))
+        run([bin_, "merge", out], ok=(0,))
+        rs = rows(out)
+        check(len(rs) == 2, f"2 rows (got {len(rs)})")
+        for id_, r in rs.items():
+            rho = float(r["density"])
+            # Archimedes: the barge (500 kg) at rest displaces m / rho and
+            # its buoyancy carries the weight m g (g = 9.81)
+            v, fz = float(r["volume"]), float(r["fz"])
+            check(abs(v - 500 / rho) < 1e-6, f"{id_}: submerged_volume sensor {v} = m / rho = {500 / rho:.9f}")
+            check(abs(fz - 4905) < 0.01, f"{id_}: wrench sensor index 2 {fz} = m g = 4905 N")
+        bad = os.path.join(d, "bad")
+        r = run([bin_, "run", os.path.join(HERE, "sensor_unknown.xml"), "--out", bad], ok=(1,))
+        case = json.loads(read(os.path.join(bad, "cases", "case.json")))
+        check(case["status"] == "invalid", f"unknown sensor: case {case['status']} (expected invalid)")
+        want = r'sensor_unknown\.xml:4: <stat name="v">: no sensor "volume" in the model \(sensors: displacement,'
+        check(re.search(want, case.get("error", "")) is not None, f"unknown sensor: {case.get('error')}")
+
+
 if __name__ == "__main__":
     mode, bin_ = sys.argv[1], os.path.abspath(sys.argv[2])
     {"list": lambda: mode_list(bin_), "invalid": lambda: mode_invalid(bin_, sys.argv[3]),
      "local": lambda: mode_local(bin_), "slurm": lambda: mode_slurm(bin_),
-     "rao": lambda: mode_rao(bin_)}[mode]()
+     "rao": lambda: mode_rao(bin_), "sensor": lambda: mode_sensor(bin_)}[mode]()
     if failures:
         print(f"FAIL {len(failures)} check(s) failed")
         sys.exit(1)
