@@ -164,7 +164,9 @@ struct Recycler {
         return p;
       }
     }
-    void* p = std::malloc(n);
+    // 64-byte aligned as mju_malloc's own blocks: mj_makeData lays its
+    // arrays out from the buffer's address and checks the total
+    void* p = std::aligned_alloc(64, (n + 63) / 64 * 64);
     live().push_back({p, n});
     return p;
   }
