@@ -191,9 +191,15 @@ void sea(FuzzedDataProvider& in) {
   double q[3] = {x, y, s.level + val(in, -1e3, 1e3)}, u[3];
   s.velocity(q, t, u);
   REQUIRE(finite(u, 3));
-  // orbital speed at most A omega (1 + Q) per wave at and below the surface
+  // linear theory (docs/physics.md section 11), Wheeler-stretched to z' in
+  // [-h, 0]: per wave |u|^2 = (A omega)^2 (cosh^2 cos^2 + sinh^2 sin^2) of
+  // k (z' + h) over sinh^2 k h, at most (A omega coth k h)^2 (the surface in
+  // finite depth); deep water e^(2 k z') (A omega)^2 <= (A omega)^2. Q plays
+  // no part
   double vmax = std::hypot(s.current[0], s.current[1]);
-  for (const mjb::Wave& w : s.waves) vmax += w.amp * w.omega * (1 + w.steep);
+  for (const mjb::Wave& w : s.waves) {
+    vmax += w.amp * w.omega * (s.depth > 0 ? 1 / std::tanh(w.k * s.depth) : 1.0);
+  }
   REQUIRE(norm(u) <= vmax * (1 + 1e-9) + 1e-12);
 }
 
