@@ -146,7 +146,7 @@ int slurm(const std::string& file, const std::string& out, const SlurmOptions& o
 std::string resultPath(const std::string& dir, const std::string& id);
 
 // a case's result without its outcome: sweep, id, index, axis values
-nlohmann::json stub(const Sweep& s, const Case& c);
+nlohmann::json caseHeader(const Sweep& s, const Case& c);
 
 }  // namespace swp
 

@@ -23,7 +23,7 @@ static std::string stableHeader(const std::string& h) {
   return w == std::string::npos ? h : h.substr(0, w);
 }
 
-json stub(const Sweep& s, const Case& c) {
+json caseHeader(const Sweep& s, const Case& c) {
   json j;
   j["sweep"] = s.name;
   j["id"] = c.id;
@@ -42,7 +42,7 @@ int runCase(const std::string& file, long index, const std::string& out) {
     return 2;
   }
   Case c = caseAt(s, index);
-  json j = stub(s, c);
+  json j = caseHeader(s, c);
   std::string xml;
   int status = 0;
   try {

@@ -103,7 +103,7 @@ static std::string settle(const Sweep& s, const Case& c, const std::string& hash
   bool exited = WIFEXITED(status), ok = exited && WEXITSTATUS(status) <= 2;
   json j;
   if (ok && readJson(path, &j) && j.value("hash", "") == hash) return j.value("status", "?");
-  j = stub(s, c);
+  j = caseHeader(s, c);
   j["hash"] = hash;
   j["status"] = "crash";
   if (WIFSIGNALED(status)) {
@@ -141,15 +141,15 @@ int runSweep(const std::string& file, const std::string& out, int jobs, int shar
     std::fprintf(stderr, "mjbuoy-sweep: %s\n", err.c_str());
     return 2;
   }
-  std::vector<long> todo;
+  std::vector<long> pending;
   long mine = 0;
   for (long i = shard; i < s.ncases; i += nshards) {
     mine++;
-    if (!complete(resultPath(out, caseAt(s, i).id), man["cases"][i]["hash"])) todo.push_back(i);
+    if (!complete(resultPath(out, caseAt(s, i).id), man["cases"][i]["hash"])) pending.push_back(i);
   }
   std::printf("mjbuoy-sweep: %s: %ld case(s), shard %d/%d has %ld, %zu to run (%ld complete), "
-              "%d job(s)\n", s.name.c_str(), s.ncases, shard, nshards, mine, todo.size(),
-              mine - (long)todo.size(), jobs);
+              "%d job(s)\n", s.name.c_str(), s.ncases, shard, nshards, mine, pending.size(),
+              mine - (long)pending.size(), jobs);
   std::fflush(stdout);
   const char* stop = std::getenv("MJBUOY_SWEEP_TEST_STOP_AFTER");  // test hook: die after K cases
   long stop_after = stop ? std::atol(stop) : -1;
@@ -158,9 +158,9 @@ int runSweep(const std::string& file, const std::string& out, int jobs, int shar
   std::map<pid_t, Running> running;
   size_t next = 0;
   long done = 0, bad = 0;
-  while (next < todo.size() || !running.empty()) {
-    while (next < todo.size() && (int)running.size() < jobs) {
-      long i = todo[next++];
+  while (next < pending.size() || !running.empty()) {
+    while (next < pending.size() && (int)running.size() < jobs) {
+      long i = pending[next++];
       Case c = caseAt(s, i);
       std::string log = (fs::path(out) / "logs" / (c.id + ".log")).string();
       pid_t pid = spawn(self, s, i, out, log);
@@ -185,7 +185,7 @@ int runSweep(const std::string& file, const std::string& out, int jobs, int shar
     running.erase(it);
     done++;
     bad += st != "pass";
-    std::printf("[%ld/%zu] %s: %s (%.2f s)\n", done, todo.size(), c.id.c_str(), st.c_str(), wall);
+    std::printf("[%ld/%zu] %s: %s (%.2f s)\n", done, pending.size(), c.id.c_str(), st.c_str(), wall);
     std::fflush(stdout);
     if (stop_after >= 0 && done >= stop_after) raise(SIGKILL);
   }
