@@ -9,6 +9,7 @@
 
 #include "config.h"
 #include "mjbuoy.h"
+#include "radiation.h"
 #include "sensor.h"
 
 namespace mjb {
@@ -47,6 +48,7 @@ struct Buoy {
   Pool* pool = nullptr;
   size_t wcap = 0;             // wave components reserved (cpu scratch, gl buffers)
   Wind wind;                   // wind.cc
+  Radiation rad;               // radiation.h: bodies with added mass and memory
 };
 
 // wet triangle data of one call, and the slamming history
@@ -98,6 +100,7 @@ struct State {
   // another buffer, means d is a new mjData at a recycled address or reset
   const void* buf = nullptr;
   long vcount = -1;
+  RadState rad;                // radiation.h: memory history, qM stamp
 };
 
 // slamming clock (cpu.cc): kSameStep for another call at the current step's

@@ -12,6 +12,7 @@
 #include "buoy.h"
 #include "hull.h"
 #include "pool.h"
+#include "radiation.h"
 #include "mjbuoy.h"
 #include "seasetter.h"
 #include "wind.h"
@@ -95,6 +96,7 @@ void renew(State* s, const mjData* d) {
   s->hasPrev = false;
   s->buf = d->buffer;
   s->vcount = -1;
+  mjb::radRestart(&s->rad);
 }
 
 // the state of d, renewed if it is stale; fresh says the state was created
@@ -112,6 +114,7 @@ State* state(mjbBuoy* b, const mjData* d, bool create) {
     if (!u) {
       u = std::make_unique<State>();
       mjb::makeState(b->b, u.get());
+      mjb::radMakeState(b->b.rad, &u->rad);
       u->buf = d->buffer;
     }
     s = u.get();
@@ -156,6 +159,8 @@ void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
     const mjtNum* w = s->wrench.data() + 6 * bd;
     applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
   }
+  // added mass into qM, Kirchhoff and memory forces (radstep.cc)
+  mjb::radiationStep(b->b.rad, m, d, &s->rad, &s->notices);
   s->vcount = d->timer[mjTIMER_VELOCITY].number;
 }
 
@@ -179,7 +184,7 @@ void passive(const mjModel* m, mjData* d) {
     warnUnknown(m, d);
     return;
   }
-  if (!b->b.hull.empty() || !b->b.wind.body.empty()) compute(b, m, d);
+  if (!b->b.hull.empty() || !b->b.wind.body.empty() || !b->b.rad.rb.empty()) compute(b, m, d);
 }
 
 // user sensors: the user's callback first, then the ones mjbuoy binds
@@ -385,6 +390,7 @@ void mjb_detach(mjbBuoy* b) {
     }
   }
   for (auto& kv : b->data) mjb::glFreeState(&b->b, kv.second.get());
+  mjb::restoreModel(b->b.m, b->b.rad);
   mjb::glFree(&b->b);
   mjb::poolFree(b->b.pool);
   delete b;
@@ -492,4 +498,15 @@ void mjb_windVelocity(const mjbBuoy* b, mjtNum t, mjtNum v[2]) {
 
 mjtNum mjb_seaHeight(const mjbBuoy* b, mjtNum x, mjtNum y, mjtNum t) {
   return b ? b->b.cfg.sea.height(x, y, t) : 0;
+}
+
+std::string mjb::setHydroCoef(mjbBuoy* b, int body, const HydroCoef& c, double tmem) {
+  if (!b) return "mjbuoy: setHydroCoef was given a NULL model";
+  // no callback of this model may run meanwhile: its data lock, exclusive
+  std::unique_lock<std::shared_mutex> lk(b->mu);
+  std::string e = setRadiation(b->b.m, body, c, tmem, &b->b.rad);
+  if (!e.empty()) return e;
+  // every mjData's history restarts with room for the new memory
+  for (auto& kv : b->data) radMakeState(b->b.rad, &kv.second->rad);
+  return "";
 }

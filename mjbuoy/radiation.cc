@@ -1,0 +1,257 @@
+// radiation set-up: retardation functions from B(omega), checks of a
+// HydroCoef, the bodies' dof chains (docs/physics.md section 14)
+#include "radiation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace mjb {
+
+namespace {
+
+// int B cos(w t) dw over [w0, w1] with B linear from b0 to b1. Closed form
+// [B sin(w t) / t + s cos(w t) / t^2] (s the slope); 4-point Gauss-Legendre
+// when t (w1 - w0) is small and the closed form would cancel
+double segment(double w0, double w1, double b0, double b1, double t) {
+  const double h = w1 - w0, s = (b1 - b0) / h;
+  if (t * h < 0.1) {
+    static const double x[4] = {-0.8611363115940526, -0.3399810435848563,
+                                0.3399810435848563, 0.8611363115940526};
+    static const double wt[4] = {0.3478548451374538, 0.6521451548625461,
+                                 0.6521451548625461, 0.3478548451374538};
+    double sum = 0;
+    for (int k = 0; k < 4; k++) {
+      double w = w0 + 0.5 * h * (x[k] + 1);
+      sum += wt[k] * (b0 + s * (w - w0)) * std::cos(w * t);
+    }
+    return 0.5 * h * sum;
+  }
+  return (b1 * std::sin(w1 * t) - b0 * std::sin(w0 * t)) / t +
+         s * (std::cos(w1 * t) - std::cos(w0 * t)) / (t * t);
+}
+
+double maxAbs(const std::vector<double>& v, int i, int j) {
+  double mx = 0;
+  for (size_t f = 0; 36 * f < v.size(); f++) mx = std::max(mx, std::fabs(v[36 * f + 6 * i + j]));
+  return mx;
+}
+
+bool finite(const double* x, size_t n) {
+  for (size_t i = 0; i < n; i++) if (!std::isfinite(x[i])) return false;
+  return true;
+}
+
+// positive semi-definite within round-off: Cholesky of A + eps tr(A) I
+bool psd(const double A[36]) {
+  double L[36] = {0}, tr = 0;
+  for (int i = 0; i < 6; i++) tr += A[7 * i];
+  const double eps = 1e-9 * std::max(tr, 1e-300);
+  for (int i = 0; i < 6; i++) {
+    for (int j = 0; j <= i; j++) {
+      double s = A[6 * i + j] + (i == j ? eps : 0);
+      for (int k = 0; k < j; k++) s -= L[6 * i + k] * L[6 * j + k];
+      if (i == j) {
+        if (!(s > 0)) return false;
+        L[6 * i + i] = std::sqrt(s);
+      } else {
+        L[6 * i + j] = s / L[6 * j + j];
+      }
+    }
+  }
+  return true;
+}
+
+std::string checkCoef(const HydroCoef& c) {
+  char e[512];
+  if (!finite(c.ref, 3)) return "mjbuoy: radiation: the reference point ref is not finite";
+  if (!finite(c.Ainf, 36)) return "mjbuoy: radiation: Ainf is not finite";
+  double mx = 0;
+  for (double a : c.Ainf) mx = std::max(mx, std::fabs(a));
+  for (int i = 0; i < 6; i++) {
+    for (int j = 0; j < i; j++) {
+      if (std::fabs(c.Ainf[6 * i + j] - c.Ainf[6 * j + i]) > 1e-6 * mx) {
+        std::snprintf(e, sizeof(e), "mjbuoy: radiation: Ainf is not symmetric (Ainf[%d][%d] = %g, "
+                      "Ainf[%d][%d] = %g); added mass is symmetric", i, j, c.Ainf[6 * i + j], j, i,
+                      c.Ainf[6 * j + i]);
+        return e;
+      }
+    }
+  }
+  if (!psd(c.Ainf)) {
+    return "mjbuoy: radiation: Ainf is not positive semi-definite (the kinetic energy of the "
+           "water it carries would be negative)";
+  }
+  const size_t nw = c.omega.size();
+  if (c.B.size() != 36 * nw || (!c.A.empty() && c.A.size() != 36 * nw)) {
+    std::snprintf(e, sizeof(e), "mjbuoy: radiation: %zu frequencies need %zu values of B (and of A, "
+                  "or none); got %zu and %zu", nw, 36 * nw, c.B.size(), c.A.size());
+    return e;
+  }
+  for (size_t f = 0; f < nw; f++) {
+    if (!std::isfinite(c.omega[f]) || c.omega[f] <= 0 || (f && c.omega[f] <= c.omega[f - 1])) {
+      std::snprintf(e, sizeof(e), "mjbuoy: radiation: omega[%zu] = %g; frequencies must be finite, "
+                    "positive and increasing", f, c.omega[f]);
+      return e;
+    }
+  }
+  if (!finite(c.B.data(), c.B.size()) || !finite(c.A.data(), c.A.size())) {
+    return "mjbuoy: radiation: A or B holds a value that is not finite";
+  }
+  return "";
+}
+
+}  // namespace
+
+void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K) {
+  const int nw = c.nw();
+  for (int k = 0; k < n; k++) {
+    const double t = k * dt;
+    double w0 = 0, b0 = 0, sum = 0;  // B(0) = 0
+    for (int f = 0; f < nw; f++) {
+      const double w1 = c.omega[f], b1 = c.B[36 * f + 6 * i + j];
+      sum += t == 0 ? 0.5 * (b0 + b1) * (w1 - w0) : segment(w0, w1, b0, b1, t);
+      w0 = w1;
+      b0 = b1;
+    }
+    K[k] = 2 / M_PI * sum;  // B = 0 beyond the last frequency
+  }
+}
+
+double memoryLength(const HydroCoef& c) {
+  if (c.nw() == 0) return 0;
+  // K is band-limited to the last frequency: a grid of a quarter of its
+  // half period resolves the envelope
+  const double dc = std::min(M_PI / (4 * c.omega.back()), 0.05);
+  const int n = int(kMaxMemory / dc) + 1;
+  std::vector<double> K(n);
+  double peak = 0, bmax = 0;
+  int last = 0;
+  for (int i = 0; i < 6; i++) for (int j = 0; j < 6; j++) bmax = std::max(bmax, maxAbs(c.B, i, j));
+  std::vector<std::vector<double>> all;
+  for (int i = 0; i < 6; i++) {
+    for (int j = i; j < 6; j++) {
+      if (maxAbs(c.B, i, j) <= 1e-12 * bmax) continue;
+      retardation(c, i, j, dc, n, K.data());
+      all.push_back(K);
+      for (double k : K) peak = std::max(peak, std::fabs(k));
+    }
+  }
+  for (const auto& k : all) {
+    for (int s = n - 1; s > last; s--) {
+      if (std::fabs(k[s]) > 0.01 * peak) {
+        last = s;
+        break;
+      }
+    }
+  }
+  return peak > 0 ? std::min(kMaxMemory, (last + 1) * dc) : 0;
+}
+
+std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double tmem,
+                         Radiation* r) {
+  char e[512];
+  if (body <= 0 || body >= m->nbody) {
+    std::snprintf(e, sizeof(e), "mjbuoy: radiation: body id %d out of range [1, %d]", body,
+                  m->nbody - 1);
+    return e;
+  }
+  const char* name = m->names + m->name_bodyadr[body];
+  int mover = body;
+  while (mover && !m->body_dofnum[mover]) mover = m->body_parentid[mover];
+  if (!mover) {
+    std::snprintf(e, sizeof(e), "mjbuoy: radiation: body \"%s\" has no joint between it and the "
+                  "world; added mass needs a body free to move", name);
+    return e;
+  }
+  std::string ce = checkCoef(c);
+  if (!ce.empty()) return ce + " (body \"" + name + "\")";
+  const double dt = m->opt.timestep;
+  if (!std::isfinite(tmem) || tmem > kMaxMemory) {
+    std::snprintf(e, sizeof(e), "mjbuoy: radiation: memory length %g s for body \"%s\" is out of "
+                  "range; give (0, %g] s, 0 for automatic or < 0 for none", tmem, name, kMaxMemory);
+    return e;
+  }
+  if (!r->rb.empty() && r->dt != dt) {
+    return "mjbuoy: radiation: opt.timestep changed since the first body was set";
+  }
+  r->dt = dt;
+
+  RadBody rb;
+  rb.body = body;
+  std::copy(c.ref, c.ref + 3, rb.ref);
+  std::copy(c.Ainf, c.Ainf + 36, rb.A);
+  for (int i = m->body_dofadr[mover] + m->body_dofnum[mover] - 1; i >= 0; i = m->dof_parentid[i]) {
+    rb.dof.push_back(i);
+  }
+  if (tmem == 0) tmem = memoryLength(c);
+  double bmax = 0;
+  for (double b : c.B) bmax = std::max(bmax, std::fabs(b));
+  if (tmem > 0 && bmax > 0) {
+    rb.nk = int(std::ceil(tmem / dt)) + 1;
+    for (int i = 0; i < 6; i++) {
+      for (int j = 0; j < 6; j++) {
+        if (maxAbs(c.B, i, j) > 1e-12 * bmax) rb.pair.push_back(6 * i + j);
+      }
+    }
+    rb.K.resize(rb.pair.size() * rb.nk);
+    for (size_t p = 0; p < rb.pair.size(); p++) {
+      int i = rb.pair[p] / 6, j = rb.pair[p] % 6;
+      // K is symmetric like B: the transposed pair copies
+      auto q = std::find(rb.pair.begin(), rb.pair.begin() + p, 6 * j + i);
+      if (q != rb.pair.begin() + p) {
+        std::copy_n(rb.K.begin() + (q - rb.pair.begin()) * rb.nk, rb.nk, rb.K.begin() + p * rb.nk);
+      } else {
+        retardation(c, i, j, dt, rb.nk, rb.K.data() + p * rb.nk);
+      }
+    }
+  }
+
+  // MuJoCo factors the dofs of a "simple" body as diagonal: J^T A J is not
+  if (r->simple0.empty()) r->simple0.assign(m->dof_simplenum, m->dof_simplenum + m->nv);
+  int* simple = const_cast<mjModel*>(m)->dof_simplenum;
+  for (int i : rb.dof) simple[i] = 0;
+  for (int i = m->nv - 1, cnt = 0; i >= 0; i--) {
+    cnt = simple[i] ? cnt + 1 : 0;
+    simple[i] = cnt;
+  }
+
+  auto it = std::find_if(r->rb.begin(), r->rb.end(), [&](const RadBody& x) { return x.body == body; });
+  if (it != r->rb.end()) {
+    *it = std::move(rb);
+  } else {
+    r->rb.push_back(std::move(rb));
+  }
+  r->maxdof = 0;
+  r->nh = 1;
+  for (const RadBody& x : r->rb) {
+    r->maxdof = std::max(r->maxdof, int(x.dof.size()));
+    r->nh = std::max(r->nh, x.nk);
+  }
+  return "";
+}
+
+void restoreModel(const mjModel* m, const Radiation& r) {
+  if (r.simple0.empty()) return;
+  std::copy(r.simple0.begin(), r.simple0.end(), const_cast<mjModel*>(m)->dof_simplenum);
+}
+
+void radMakeState(const Radiation& r, RadState* s) {
+  s->hist.assign(6 * r.rb.size() * r.nh, 0);
+  s->fmem.assign(6 * r.rb.size(), 0);
+  s->jac.assign(6 * r.maxdof, 0);
+  s->ajac.assign(6 * r.maxdof, 0);
+  s->told.assign(r.rb.size(), 0);
+  radRestart(s);
+}
+
+void radRestart(RadState* s) {
+  std::fill(s->fmem.begin(), s->fmem.end(), 0.0);
+  std::fill(s->told.begin(), s->told.end(), 0);
+  s->head = s->count = 0;
+  s->key = -1;
+  s->tcur = 0;
+  s->mstamp = -1;
+}
+
+}  // namespace mjb

@@ -1,0 +1,89 @@
+// radiation in the time domain (docs/physics.md section 14): Cummins'
+// equation for a hull body from its frequency-domain HydroCoef. The
+// infinite-frequency added mass joins MuJoCo's inertia matrix (implicit),
+// its Kirchhoff velocity terms and the radiation memory are forces
+#ifndef MJBUOY_RADIATION_H_
+#define MJBUOY_RADIATION_H_
+
+#include <string>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "hydrocoef.h"
+#include "mjbuoy.h"
+
+namespace mjb {
+
+struct State;
+
+// one body with radiation, set up by setRadiation
+struct RadBody {
+  int body;                  // MuJoCo body id
+  double ref[3];             // reference point in the body frame [m]
+  double A[36];              // A_inf about ref, body axes, row-major
+  std::vector<int> dof;      // dofs that move the body, leaf to root
+  std::vector<int> pair;     // (i, j) = 6 i + j with a retardation function
+  std::vector<double> K;     // K_pair(k dt), pair-major, nk each [N/m, ...]
+  int nk = 0;                // memory samples (0: no memory)
+};
+
+// all bodies of one attached model
+struct Radiation {
+  std::vector<RadBody> rb;
+  double dt = 0;             // step of the memory samples [s] (opt.timestep at set time)
+  int maxdof = 0;            // longest dof chain
+  int nh = 1;                // history ring length: the longest memory, >= 1
+  std::vector<int> simple0;  // m->dof_simplenum before the first body was set
+};
+
+// per mjData: velocity history and the memory force of the current step
+struct RadState {
+  std::vector<double> hist;  // per body nh x 6 body-frame velocities at ref, ring
+  std::vector<double> fmem;  // per body 6: memory wrench of this step (body frame)
+  std::vector<double> jac;   // scratch: 6 x maxdof body-frame Jacobian columns
+  std::vector<double> ajac;  // scratch: A_inf times each column
+  std::vector<char> told;    // per body: a non-finite force was named
+  int head = 0, count = 0;   // newest sample, samples held
+  long key = -1;             // mjTIMER_STEP count at the last call (-1: none)
+  double tcur = 0;           // time of the current step [s]
+  long mstamp = -1;          // mjTIMER_POSITION count whose qM holds A_inf
+};
+
+// K_ij(k dt), k = 0..n-1, from B_ij of c: K(t) = (2/pi) int_0^inf B cos(w t) dw
+// with B linear between the table's frequencies, linear from 0 at w = 0 to
+// the first and zero beyond the last (docs/physics.md section 14)
+void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K);
+
+// memory length [s] for c when none is given: the time after which every
+// |K_ij| stays below 1% of the largest |K| (at most kMaxMemory)
+double memoryLength(const HydroCoef& c);
+const double kMaxMemory = 60;
+
+// add radiation to body of an attached model (replacing what it had):
+// c's A_inf, and its memory over tmem seconds (0: memoryLength(c); <0: no
+// memory). Checks c and body; "" or the error. Changes m->dof_simplenum of
+// the body's dofs (MuJoCo's diagonal-inertia shortcut: added mass couples
+// them); restoreModel puts it back
+std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double tmem,
+                         Radiation* r);
+void restoreModel(const mjModel* m, const Radiation& r);
+
+// size s's radiation state for r; clear its history
+void radMakeState(const Radiation& r, RadState* s);
+void radRestart(RadState* s);
+
+// in mjcb_passive: add each body's A_inf to d->qM (refactored) and its
+// Kirchhoff and memory forces to d->qfrc_passive
+void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
+                   std::string* notices);
+
+// give body (a MuJoCo body id) of an attached model radiation from c, with
+// a memory of tmem seconds (0: automatic, memoryLength; < 0: none). Call
+// between steps; every mjData's radiation history restarts. "" or the
+// error. (Internal API for now: the panel solver feeds it at attach.)
+std::string setHydroCoef(mjbBuoy* b, int body, const HydroCoef& c, double tmem = 0);
+
+}  // namespace mjb
+
+#endif  // MJBUOY_RADIATION_H_

@@ -1,0 +1,174 @@
+// radiation per step, inside mjcb_passive (docs/physics.md section 14):
+// A_inf into MuJoCo's inertia matrix, Kirchhoff and memory forces
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "radiation.h"
+
+namespace mjb {
+
+namespace {
+
+enum { kSame = 0, kNew, kRestart, kMid };
+
+// the memory's step clock, as the slamming history's (docs/physics.md
+// section 7): a call at least 3/4 of a step after the current step's time
+// opens a new step, a call at that time repeats it, one in between is an
+// RK4 stage; time going back or the step counter dropping restarts
+int clock(const mjModel* m, const mjData* d, RadState* s) {
+  long k = d->timer[mjTIMER_STEP].number;
+  int r;
+  if (s->key < 0 || k < s->key || d->time < s->tcur) {
+    r = kRestart;
+  } else if (d->time - s->tcur >= 0.75 * m->opt.timestep) {
+    r = kNew;
+  } else {
+    s->key = k;
+    return d->time == s->tcur ? kSame : kMid;
+  }
+  s->key = k;
+  s->tcur = d->time;
+  return r;
+}
+
+void cross(const double* a, const double* b, double* c) {
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+double dot6(const double* a, const double* b) {
+  double s = 0;
+  for (int i = 0; i < 6; i++) s += a[i] * b[i];
+  return s;
+}
+
+void mul6(const double* A, const double* x, double* y) {
+  for (int i = 0; i < 6; i++) y[i] = dot6(A + 6 * i, x);
+}
+
+// memory wrench -dt sum_k w_k K(k dt) nu(t - k dt), trapezoid over the
+// samples held (the body at rest before the first)
+void memory(const RadBody& rb, const double* hist, int nh, int head, int count, double dt,
+            double* f) {
+  std::memset(f, 0, 6 * sizeof(double));
+  const int n = std::min(count, rb.nk);
+  if (n < 2) return;
+  for (size_t p = 0; p < rb.pair.size(); p++) {
+    const double* K = rb.K.data() + p * rb.nk;
+    const int i = rb.pair[p] / 6, j = rb.pair[p] % 6;
+    double sum = 0.5 * (K[0] * hist[6 * head + j] + K[n - 1] * hist[6 * ((head - n + 1 + nh) % nh) + j]);
+    for (int k = 1; k < n - 1; k++) sum += K[k] * hist[6 * ((head - k + nh) % nh) + j];
+    f[i] -= dt * sum;
+  }
+}
+
+}  // namespace
+
+void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
+                   std::string* notices) {
+  if (r.rb.empty()) return;
+  const int tick = clock(m, d, s);
+  if (tick == kRestart) {
+    s->head = 0;
+    s->count = 0;
+  }
+  if (tick == kNew) s->head = (s->head + 1) % r.nh;
+  if (tick == kNew || tick == kRestart) s->count = std::min(s->count + 1, r.nh);
+  // qM is rebuilt by every mj_fwdPosition; a second callback after the same
+  // one (mj_forwardSkip from the velocity stage) finds A_inf in it already
+  const long pos = d->timer[mjTIMER_POSITION].number;
+  const bool addM = pos != s->mstamp;
+  for (size_t ib = 0; ib < r.rb.size(); ib++) {
+    const RadBody& rb = r.rb[ib];
+    const int n = rb.dof.size();
+    const mjtNum* R = d->xmat + 9 * rb.body;
+    const mjtNum* o = d->subtree_com + 3 * m->body_rootid[rb.body];
+    double p[3], po[3];
+    mju_rotVecMat(p, rb.ref, R);
+    mju_addTo3(p, d->xpos + 3 * rb.body);
+    mju_sub3(po, p, o);
+    // body-frame Jacobian at ref, velocity nu and the velocity-product
+    // acceleration (cdof_dot qvel: the acceleration with qacc = 0)
+    double* J = s->jac.data();
+    double nu[6] = {0}, ab[6] = {0};
+    for (int k = 0; k < n; k++) {
+      const int i = rb.dof[k];
+      const mjtNum* c = d->cdof + 6 * i;
+      double lin[3];
+      cross(c, po, lin);
+      mju_addTo3(lin, c + 3);
+      mju_rotVecMatT(J + 6 * k, lin, R);
+      mju_rotVecMatT(J + 6 * k + 3, c, R);
+      for (int j = 0; j < 6; j++) {
+        nu[j] += J[6 * k + j] * d->qvel[i];
+        ab[j] += d->cdof_dot[6 * i + j] * d->qvel[i];
+      }
+    }
+    // d/dt of the body-frame velocity at ref with qacc = 0: the spatial
+    // acceleration at ref in body axes (section 14)
+    double ap[3], bias[6];
+    cross(ab, po, ap);
+    mju_addTo3(ap, ab + 3);
+    mju_rotVecMatT(bias, ap, R);
+    mju_rotVecMatT(bias + 3, ab, R);
+    if (!std::isfinite(dot6(nu, nu)) || !std::isfinite(dot6(bias, bias))) continue;
+
+    if (addM) {
+      // M(dof[a], dof[b]) += J_a^T A J_b, b an ancestor (later in the chain)
+      double* AJ = s->ajac.data();
+      for (int k = 0; k < n; k++) mul6(rb.A, J + 6 * k, AJ + 6 * k);
+      for (int a = 0; a < n; a++) {
+        const int adr = m->dof_Madr[rb.dof[a]];
+        for (int b = a; b < n; b++) d->qM[adr + b - a] += dot6(J + 6 * a, AJ + 6 * b);
+      }
+    }
+
+    // Kirchhoff: with P = A nu = (p, h), F = -w x p, M = -w x h - v x p,
+    // plus -A times the velocity-product acceleration (section 14)
+    double P[6], W[6], t[3];
+    mul6(rb.A, nu, P);
+    mul6(rb.A, bias, W);
+    for (int j = 0; j < 6; j++) W[j] = -W[j];
+    cross(nu + 3, P, t);
+    mju_subFrom3(W, t);
+    cross(nu + 3, P + 3, t);
+    mju_subFrom3(W + 3, t);
+    cross(nu, P, t);
+    mju_subFrom3(W + 3, t);
+
+    // memory: the step's first call records nu and evaluates the convolution
+    double* fm = s->fmem.data() + 6 * ib;
+    double* hist = s->hist.data() + 6 * r.nh * ib;
+    if (rb.nk && tick != kMid) {
+      std::memcpy(hist + 6 * s->head, nu, sizeof(nu));
+      memory(rb, hist, r.nh, s->head, s->count, r.dt, fm);
+    }
+    for (int j = 0; j < 6; j++) W[j] += fm[j];
+
+    if (!std::isfinite(dot6(W, W))) {
+      if (!s->told[ib]) {
+        s->told[ib] = 1;
+        char line[256];
+        std::snprintf(line, sizeof(line),
+                      "body \"%s\": radiation force not finite at t = %g s; mjbuoy leaves it out\n",
+                      m->names + m->name_bodyadr[rb.body], d->time);
+        // within the capacity reserved in makeState: no allocation while stepping
+        if (notices->size() + std::strlen(line) < notices->capacity()) *notices += line;
+      }
+      continue;
+    }
+    for (int k = 0; k < n; k++) d->qfrc_passive[rb.dof[k]] += dot6(J + 6 * k, W);
+  }
+  if (addM) {
+    // as mj_fwdPosition does after mj_crb: the integrators, the constraint
+    // solver and mj_implicit then all see M + J^T A J
+    mj_factorM(m, d);
+    if (d->nefc > 0) mj_projectConstraint(m, d);
+    s->mstamp = pos;
+  }
+}
+
+}  // namespace mjb

@@ -1,0 +1,312 @@
+// radiation in the time domain (docs/physics.md section 14): added mass
+// inside MuJoCo's inertia, Kirchhoff terms, the memory of Cummins' equation
+#include <complex>
+#include <cstring>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include "hydrocoef.h"
+#include "radiation.h"
+#include "testutil.h"
+
+namespace mjbt {
+namespace {
+
+// a 10 kg body on a 1000 N/m vertical slide spring, gravity off, no hull
+std::string slide(const char* integrator, double dt) {
+  char x[1024];
+  std::snprintf(x, sizeof(x),
+                "<mujoco><option timestep=\"%g\" integrator=\"%s\"><flag gravity=\"disable\"/></option>"
+                "<worldbody><body name=\"b\"><joint type=\"slide\" axis=\"0 0 1\" stiffness=\"1000\"/>"
+                "<geom type=\"sphere\" size=\"0.1\" mass=\"10\" contype=\"0\" conaffinity=\"0\"/>"
+                "</body></worldbody></mujoco>", dt, integrator);
+  return x;
+}
+
+// heave-only coefficients: A_inf33 = a, no damping
+mjb::HydroCoef heave(double a) {
+  mjb::HydroCoef c;
+  c.Ainf[14] = a;
+  return c;
+}
+
+// mean period [s] between upward zero crossings of x(t) over T seconds of mj_step
+double period(Scene& s, double T, int q = 0) {
+  std::vector<double> up;
+  double prev = s.d->qpos[q], tprev = s.d->time;
+  for (long k = 0, n = stepsTo(s.m, s.d, T); k < n; k++) {
+    mj_step(s.m, s.d);
+    double x = s.d->qpos[q];
+    if (!std::isfinite(x)) return NAN;
+    if (prev < 0 && x >= 0) up.push_back(tprev + (s.d->time - tprev) * (-prev) / (x - prev));
+    prev = x;
+    tprev = s.d->time;
+  }
+  return up.size() < 2 ? NAN : (up.back() - up.front()) / (up.size() - 1);
+}
+
+TEST(Radiation, AddedMassSetsTheSpringPeriod) {
+  // T = 2 pi sqrt((m + a) / k) for a mass-spring whose mass is m + a, with
+  // a = 0, m, 10 m (the last: added mass ten times the body's own, where an
+  // explicit added-mass force is unstable)
+  for (const char* integ : {"Euler", "RK4"}) {
+    for (double a : {0.0, 10.0, 100.0}) {
+      Scene s(slide(integ, 0.001));
+      ASSERT_TRUE(s.ok()) << s.err;
+      ASSERT_EQ(mjb::setHydroCoef(s.b, s.body("b"), heave(a), -1), "");
+      s.d->qpos[0] = 0.01;
+      double T = period(s, 12);
+      EXPECT_NEAR(T, 2 * M_PI * std::sqrt((10 + a) / 1000), 1e-3 * 2 * M_PI * std::sqrt((10 + a) / 1000))
+          << integ << " a = " << a;
+      EXPECT_LT(std::fabs(s.d->qpos[0]), 0.0101) << integ << " a = " << a;
+    }
+  }
+}
+
+// skew(r) x = r x x
+Eigen::Matrix3d skew(const double* r) {
+  Eigen::Matrix3d S;
+  S << 0, -r[2], r[1], r[2], 0, -r[0], -r[1], r[0], 0;
+  return S;
+}
+
+TEST(Radiation, CoupledAddedMassAcceleratesAsMPlusAInverseF) {
+  // a free body (10 kg, diagonal inertia, COM at its origin: MuJoCo treats
+  // it as "simple", diagonal) with a full symmetric A_inf about a point r
+  // off the COM, turned, at rest, pushed by a constant wrench F at the COM.
+  // By hand: nu_ref = Phi nu_com with Phi = [I -S(r); 0 I] (v_ref = v + w x r),
+  // so the added mass about the COM is Phi^T A Phi and the body-frame
+  // acceleration solves (M + Phi^T A Phi) a = R^T F
+  Scene s("<mujoco><option timestep=\"0.001\"><flag gravity=\"disable\"/></option><worldbody>"
+          "<body name=\"b\" quat=\"0.9 0.2 -0.3 0.1\"><freejoint/>"
+          "<inertial pos=\"0 0 0\" mass=\"10\" diaginertia=\"1 2 3\"/>"
+          "<geom type=\"sphere\" size=\"0.1\" contype=\"0\" conaffinity=\"0\" mass=\"0\"/>"
+          "</body></worldbody></mujoco>");
+  ASSERT_TRUE(s.ok()) << s.err;
+  ASSERT_GT(s.m->dof_simplenum[0], 0);  // the case MuJoCo factors as diagonal
+  Eigen::Matrix<double, 6, 6> G;
+  G << 3, 1, 0, 0.5, 0, 0.2,
+       0, 2, 1, 0, 0.3, 0,
+       1, 0, 4, 0, 0, 0.4,
+       0, 0.2, 0, 1, 0.1, 0,
+       0.3, 0, 0, 0, 1.5, 0.2,
+       0, 0, 0.1, 0.2, 0, 0.8;
+  Eigen::Matrix<double, 6, 6> A = G.transpose() * G;  // symmetric positive definite
+  mjb::HydroCoef c;
+  c.ref[0] = 0.3; c.ref[1] = -0.2; c.ref[2] = 0.1;
+  for (int i = 0; i < 36; i++) c.Ainf[i] = A(i / 6, i % 6);
+  int b = s.body("b");
+  ASSERT_EQ(mjb::setHydroCoef(s.b, b, c, -1), "");
+  double F[6] = {5, -3, 2, 1, 0.5, -2};
+  std::memcpy(s.d->xfrc_applied + 6 * b, F, sizeof(F));
+  mj_forward(s.m, s.d);
+
+  Eigen::Matrix3d R;
+  for (int i = 0; i < 9; i++) R(i / 3, i % 3) = s.d->xmat[9 * b + i];
+  Eigen::Matrix<double, 6, 6> Phi = Eigen::Matrix<double, 6, 6>::Identity();
+  Phi.block<3, 3>(0, 3) = -skew(c.ref);
+  Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Zero();
+  M.diagonal() << 10, 10, 10, 1, 2, 3;
+  Eigen::Matrix<double, 6, 1> f;
+  f << R.transpose() * Eigen::Vector3d(F[0], F[1], F[2]), R.transpose() * Eigen::Vector3d(F[3], F[4], F[5]);
+  Eigen::Matrix<double, 6, 1> acc = (M + Phi.transpose() * A * Phi).ldlt().solve(f);
+  // the free joint: world-frame linear, body-frame angular acceleration
+  Eigen::Vector3d lin = R * acc.head<3>();
+  for (int i = 0; i < 3; i++) {
+    EXPECT_NEAR(s.d->qacc[i], lin(i), 1e-9 * acc.norm()) << i;
+    EXPECT_NEAR(s.d->qacc[3 + i], acc(3 + i), 1e-9 * acc.norm()) << i;
+  }
+  // without the added mass it would be M^-1 f: the test can tell
+  EXPECT_GT(std::fabs(s.d->qacc[3] - f(3) / 1), 0.05 * std::fabs(f(3)));
+}
+
+TEST(Radiation, MunkMomentOfObliqueMotion) {
+  // Kirchhoff's equations (Newman 1977 section 4.13; Fossen 2011 section
+  // 6.3, -C_A(nu) nu): a body with surge and sway added mass A11 != A22
+  // moving with body-frame velocity (u, v) and no rotation feels no force
+  // and the yaw moment N = -(A22 - A11) u v: for A22 > A11 it turns the
+  // body further from its path (the destabilising Munk moment)
+  for (double yaw : {0.0, 0.7}) {
+    Scene s("<mujoco><option><flag gravity=\"disable\"/></option><worldbody><body name=\"b\"><freejoint/>"
+            "<inertial pos=\"0 0 0\" mass=\"10\" diaginertia=\"1 2 3\"/>"
+            "<geom type=\"sphere\" size=\"0.1\" contype=\"0\" conaffinity=\"0\" mass=\"0\"/>"
+            "</body></worldbody></mujoco>");
+    ASSERT_TRUE(s.ok()) << s.err;
+    mjb::HydroCoef c;
+    const double A11 = 50, A22 = 200;
+    c.Ainf[0] = A11; c.Ainf[7] = A22; c.Ainf[14] = 300;
+    c.Ainf[21] = 10; c.Ainf[28] = 20; c.Ainf[35] = 30;
+    ASSERT_EQ(mjb::setHydroCoef(s.b, 1, c, -1), "");
+    s.d->qpos[3] = std::cos(yaw / 2);
+    s.d->qpos[6] = std::sin(yaw / 2);
+    const double u = 2, v = 0.5;  // body frame
+    s.d->qvel[0] = u * std::cos(yaw) - v * std::sin(yaw);
+    s.d->qvel[1] = u * std::sin(yaw) + v * std::cos(yaw);
+    mj_forward(s.m, s.d);
+    // free joint: qfrc[3..5] is the moment about the COM in body axes
+    for (int i = 0; i < 5; i++) EXPECT_NEAR(s.d->qfrc_passive[i], 0, 1e-9) << i;
+    EXPECT_NEAR(s.d->qfrc_passive[5], -(A22 - A11) * u * v, 1e-9);
+  }
+}
+
+TEST(Radiation, SpinningSphereFeelsNoVelocityForce) {
+  // isotropic added mass a I (a sphere's) carries no Kirchhoff force: the
+  // fluid force is -a times the centre's acceleration (Newman 1977 section
+  // 4.13). The free joint's linear dofs are world-frame, so the
+  // body-frame terms must cancel: a body spinning and moving gets exactly
+  // its own accelerations, as without added mass (none here: zero)
+  Scene s("<mujoco><option><flag gravity=\"disable\"/></option><worldbody><body name=\"b\" quat=\"0.8 0.3 0.1 -0.5\">"
+          "<freejoint/><inertial pos=\"0 0 0\" mass=\"10\" diaginertia=\"2 2 2\"/>"
+          "<geom type=\"sphere\" size=\"0.1\" contype=\"0\" conaffinity=\"0\" mass=\"0\"/>"
+          "</body></worldbody></mujoco>");
+  ASSERT_TRUE(s.ok()) << s.err;
+  mjb::HydroCoef c;
+  c.Ainf[0] = c.Ainf[7] = c.Ainf[14] = 7;
+  ASSERT_EQ(mjb::setHydroCoef(s.b, 1, c, -1), "");
+  double qv[6] = {1, -2, 0.5, 3, -1, 2};
+  std::memcpy(s.d->qvel, qv, sizeof(qv));
+  mj_forward(s.m, s.d);
+  for (int i = 0; i < 6; i++) EXPECT_NEAR(s.d->qacc[i], 0, 1e-9) << i;
+}
+
+TEST(Radiation, LightFlatFloatHeavesWithItsAddedMass) {
+  // a 1 m x 1 m x 0.1 m float of 20 kg (draft 0.02 m) with a heave added
+  // mass ten times its mass, on mjbuoy's hydrostatics (drag terms off):
+  // linear heave period 2 pi sqrt((m + a) / (rho g A_wp)) (wall-sided)
+  Scene s("<mujoco><option timestep=\"0.002\"/><custom>"
+          "<text name=\"mjbuoy.hulls\" data=\"hull\"/>"
+          "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
+          "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0.5\"/>"
+          "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0.5\"/>"
+          "<numeric name=\"mjbuoy.hull.slamming\" data=\"0 100 2\"/></custom>"
+          "<worldbody><body name=\"f\" pos=\"0 0 0.035\"><freejoint/>"
+          "<geom name=\"hull\" type=\"box\" size=\"0.5 0.5 0.05\" mass=\"20\"/>"
+          "</body></worldbody></mujoco>");
+  ASSERT_TRUE(s.ok()) << s.err;
+  mjb::HydroCoef c;
+  const double m = 20, a = 200;
+  c.Ainf[0] = c.Ainf[7] = 20;
+  c.Ainf[14] = a;
+  c.Ainf[21] = c.Ainf[28] = 17;  // ten times the roll and pitch inertia
+  c.Ainf[35] = 2;
+  ASSERT_EQ(mjb::setHydroCoef(s.b, 1, c, -1), "");
+  const double zeq = 0.05 - m / (kRho * 1.0);
+  s.d->qpos[2] = zeq + 0.005;
+  std::vector<double> up;
+  double prev = s.d->qpos[2] - zeq, tprev = 0, peak = 0;
+  for (long k = 0, n = stepsTo(s.m, s.d, 10); k < n; k++) {
+    mj_step(s.m, s.d);
+    double x = s.d->qpos[2] - zeq;
+    ASSERT_TRUE(std::isfinite(x)) << "step " << k;
+    peak = std::max(peak, std::fabs(x));
+    if (prev < 0 && x >= 0) up.push_back(tprev + (s.d->time - tprev) * (-prev) / (x - prev));
+    prev = x;
+    tprev = s.d->time;
+  }
+  ASSERT_GE(up.size(), 5u);
+  double T = (up.back() - up.front()) / (up.size() - 1);
+  double expect = 2 * M_PI * std::sqrt((m + a) / (kRho * kG * 1.0));
+  EXPECT_NEAR(T, expect, 0.02 * expect);
+  EXPECT_LT(peak, 0.0051);  // energy bounded
+  EXPECT_STREQ(mjb_notices(s.b, s.d), "");
+}
+
+// a causal pair with closed forms: K(t) = k0 (1 - a t) e^{-a t}. From the
+// Laplace transforms L{e^{-at}} = 1/(s + a), L{t e^{-at}} = 1/(s + a)^2 at
+// s = -i w: int_0^inf K e^{i w t} dt = -i w k0 / (a - i w)^2, whose real
+// part is B(w) = 2 k0 a w^2 / (a^2 + w^2)^2 and whose imaginary part is
+// w (A_inf - A(w)): A(w) = A_inf - k0 (w^2 - a^2) / (a^2 + w^2)^2
+// (Cummins 1962; Ogilvie 1964, the relations of docs/physics.md section 14)
+struct Pair {
+  double k0 = 400, a = 8, Ainf = 5;
+  double K(double t) const { return k0 * (1 - a * t) * std::exp(-a * t); }
+  double B(double w) const { return 2 * k0 * a * w * w / std::pow(a * a + w * w, 2); }
+  double A(double w) const { return Ainf - k0 * (w * w - a * a) / std::pow(a * a + w * w, 2); }
+  // -i w int K e^{i w t}, continued to complex w
+  std::complex<double> Z(std::complex<double> w) const {
+    std::complex<double> q = a - std::complex<double>(0, 1) * w;
+    return -w * w * k0 / (q * q);
+  }
+  mjb::HydroCoef coef() const {
+    mjb::HydroCoef c;
+    c.Ainf[14] = Ainf;
+    // geometric grid 0.05 .. 2000 rad/s: B linear in between to 1e-4, and
+    // the truncated tail int_wmax^inf B < 0.5% of k0
+    for (double w = 0.05; w <= 2000; w *= 1.018) {
+      c.omega.push_back(w);
+      for (int i = 0; i < 36; i++) {
+        c.A.push_back(i == 14 ? A(w) : 0);
+        c.B.push_back(i == 14 ? B(w) : 0);
+      }
+    }
+    return c;
+  }
+};
+
+TEST(Radiation, RetardationFunctionAndKramersKronig) {
+  Pair P;
+  mjb::HydroCoef c = P.coef();
+  const double dt = 0.001;
+  const int n = 5001;
+  std::vector<double> K(n);
+  mjb::retardation(c, 2, 2, dt, n, K.data());
+  for (int k = 0; k < n; k += 50) EXPECT_NEAR(K[k], P.K(k * dt), 0.01 * P.k0) << "t = " << k * dt;
+  // Kramers-Kronig (Ogilvie 1964): A(w) = A_inf - (1/w) int_0^inf K sin(w t) dt
+  for (double w : {1.0, 2.0, 4.0, 8.0, 16.0, 32.0}) {
+    double s = 0;
+    for (int k = 0; k < n; k++) s += (k == 0 || k == n - 1 ? 0.5 : 1) * K[k] * std::sin(w * k * dt);
+    double A = P.Ainf - s * dt / w;
+    EXPECT_NEAR(A, P.A(w), 0.02 * P.A(w)) << "w = " << w;
+  }
+}
+
+// free decay of x'' (m + A_inf) + int K x' + C x = 0 and its prediction:
+// the root w of -w^2 (m + A_inf) + Z(w) + C = 0 (e^{-i w t}), by complex Newton
+std::complex<double> root(const Pair& P, double m, double C) {
+  std::complex<double> w(std::sqrt(C / (m + P.Ainf)), -0.1);
+  auto f = [&](std::complex<double> x) { return -x * x * (m + P.Ainf) + P.Z(x) + C; };
+  for (int i = 0; i < 50; i++) {
+    std::complex<double> h = 1e-7 * std::abs(w), df = (f(w + h) - f(w - h)) / (2.0 * h);
+    w -= f(w) / df;
+  }
+  EXPECT_LT(std::abs(f(w)), 1e-9 * C);
+  return w;
+}
+
+TEST(Radiation, FreeDecayMatchesTheFrequencyDomain) {
+  Pair P;
+  const double m = 10, C = 1000;
+  std::complex<double> w = root(P, m, C);
+  const double Tp = 2 * M_PI / w.real(), delta = 2 * M_PI * -w.imag() / w.real();
+  for (const char* integ : {"Euler", "RK4"}) {
+    Scene s(slide(integ, 0.001));
+    ASSERT_TRUE(s.ok()) << s.err;
+    ASSERT_EQ(mjb::setHydroCoef(s.b, 1, P.coef(), 3.0), "");
+    s.d->qpos[0] = 0.01;
+    std::vector<double> up, peak;
+    double x0 = s.d->qpos[0], x1 = x0, t1 = 0;
+    for (long k = 0, n = stepsTo(s.m, s.d, 4); k < n; k++) {
+      mj_step(s.m, s.d);
+      double x2 = s.d->qpos[0];
+      ASSERT_TRUE(std::isfinite(x2));
+      if (x1 < 0 && x2 >= 0) up.push_back(t1 + (s.d->time - t1) * (-x1) / (x2 - x1));
+      if (x1 > x0 && x1 >= x2) peak.push_back(x1);
+      x0 = x1;
+      x1 = x2;
+      t1 = s.d->time;
+    }
+    ASSERT_GE(up.size(), 3u) << integ;
+    ASSERT_GE(peak.size(), 3u) << integ;
+    double T = (up.back() - up.front()) / (up.size() - 1);
+    double dec = std::log(peak.front() / peak.back()) / (peak.size() - 1);
+    EXPECT_NEAR(T, Tp, 0.05 * Tp) << integ;
+    EXPECT_NEAR(dec, delta, 0.05 * delta) << integ;
+    std::printf("[radiation] %s: period %.5f s (predicted %.5f), log decrement %.5f (predicted %.5f)\n",
+                integ, T, Tp, dec, delta);
+  }
+}
+
+}  // namespace
+}  // namespace mjbt
