@@ -310,3 +310,147 @@ TEST(Radiation, FreeDecayMatchesTheFrequencyDomain) {
 
 }  // namespace
 }  // namespace mjbt
+
+namespace mjbt {
+namespace {
+
+TEST(Radiation, DampedSpringUnderEulerAndImplicit) {
+  // a joint damper c takes Euler's implicit-damping path (qM + h c) and
+  // mj_implicit's (qM - h dqfrc/dqvel): both must see m + a. Damped period
+  // 2 pi / sqrt(k / (m + a) - (c / (2 (m + a)))^2)
+  for (const char* integ : {"Euler", "implicit"}) {
+    std::string x = slide(integ, 0.001);
+    x.replace(x.find("stiffness"), 9, "damping=\"20\" stiffness");
+    Scene s(x);
+    ASSERT_TRUE(s.ok()) << s.err;
+    ASSERT_EQ(mjb::setHydroCoef(s.b, 1, heave(100), -1), "");
+    s.d->qpos[0] = 0.01;
+    const double M = 110, wd = std::sqrt(1000 / M - std::pow(20 / (2 * M), 2));
+    EXPECT_NEAR(period(s, 12), 2 * M_PI / wd, 1e-3 * 2 * M_PI / wd) << integ;
+  }
+}
+
+TEST(Radiation, ConstraintSolverSeesTheAddedMass) {
+  // two slide bodies tied by a nearly hard joint equality, at rest, the
+  // second pushed by 30 N: both accelerate at F / (m1 + a + m2) = 1 m/s^2
+  // only if the constraint's projection J (M + A)^-1 J^T (mj_projectConstraint,
+  // dual solvers) and the solver's M both hold the added mass
+  for (const char* solver : {"PGS", "CG", "Newton"}) {
+    char x[1024];
+    std::snprintf(x, sizeof(x),
+        "<mujoco><option timestep=\"0.001\" solver=\"%s\" tolerance=\"1e-12\" iterations=\"500\">"
+        "<flag gravity=\"disable\"/></option><worldbody>"
+        "<body name=\"a\"><joint name=\"ja\" type=\"slide\" axis=\"1 0 0\"/>"
+        "<geom type=\"sphere\" size=\"0.1\" mass=\"10\" contype=\"0\" conaffinity=\"0\"/></body>"
+        "<body name=\"b\" pos=\"0 1 0\"><joint name=\"jb\" type=\"slide\" axis=\"1 0 0\"/>"
+        "<geom type=\"sphere\" size=\"0.1\" mass=\"5\" contype=\"0\" conaffinity=\"0\"/></body>"
+        "</worldbody><equality><joint joint1=\"ja\" joint2=\"jb\" solimp=\"0.99999 0.99999 0.001\"/>"
+        "</equality></mujoco>", solver);
+    Scene s(x);
+    ASSERT_TRUE(s.ok()) << s.err;
+    mjb::HydroCoef c;
+    c.Ainf[0] = 15;
+    ASSERT_EQ(mjb::setHydroCoef(s.b, s.body("a"), c, -1), "");
+    s.d->qfrc_applied[1] = 30;
+    mj_forward(s.m, s.d);
+    ASSERT_GT(s.d->nefc, 0);
+    EXPECT_NEAR(s.d->qacc[0], 1, 1e-3) << solver;
+    EXPECT_NEAR(s.d->qacc[1], 1, 1e-3) << solver;
+  }
+}
+
+TEST(Radiation, ForwardFromTheVelocityStageAddsNoSecondAddedMass) {
+  // mj_forwardSkip(mjSTAGE_POS) reruns the callback on the qM of the last
+  // mj_fwdPosition, which holds A_inf already: same accelerations
+  Scene s(slide("Euler", 0.001));
+  ASSERT_TRUE(s.ok()) << s.err;
+  ASSERT_EQ(mjb::setHydroCoef(s.b, 1, heave(30), -1), "");
+  s.d->qpos[0] = 0.01;
+  mj_forward(s.m, s.d);
+  EXPECT_NEAR(s.d->qacc[0], -1000 * 0.01 / 40, 1e-12);
+  mj_forwardSkip(s.m, s.d, mjSTAGE_POS, 0);
+  EXPECT_NEAR(s.d->qacc[0], -1000 * 0.01 / 40, 1e-12);
+  mj_forward(s.m, s.d);
+  EXPECT_NEAR(s.d->qacc[0], -1000 * 0.01 / 40, 1e-12);
+}
+
+// the slide body with the memory of Pair, started 1 cm out
+struct Decay {
+  Scene s;
+  explicit Decay(const char* integ) : s(slide(integ, 0.001)) {
+    if (!s.ok() || mjb::setHydroCoef(s.b, 1, Pair().coef(), 1.0) != "") s.err += " setup";
+  }
+};
+
+void run(const mjModel* m, mjData* d, int n) {
+  for (int i = 0; i < n; i++) mj_step(m, d);
+}
+
+TEST(Radiation, ResetEmptiesTheMemory) {
+  // a rerun after mj_resetData repeats the first run bit for bit: with a
+  // remembered history the memory force would differ
+  Decay D("RK4");
+  Scene& s = D.s;
+  ASSERT_TRUE(s.ok()) << s.err;
+  s.d->qpos[0] = 0.01;
+  run(s.m, s.d, 400);
+  double x1 = s.d->qpos[0], v1 = s.d->qvel[0];
+  mj_resetData(s.m, s.d);
+  s.d->qpos[0] = 0.01;
+  run(s.m, s.d, 400);
+  EXPECT_EQ(std::memcmp(&x1, &s.d->qpos[0], sizeof(double)), 0);
+  EXPECT_EQ(std::memcmp(&v1, &s.d->qvel[0], sizeof(double)), 0);
+  // and the memory acts: without it the state would differ
+  Scene t(slide("RK4", 0.001));
+  ASSERT_EQ(mjb::setHydroCoef(t.b, 1, heave(Pair().Ainf), -1), "");
+  t.d->qpos[0] = 0.01;
+  run(t.m, t.d, 400);
+  EXPECT_GT(std::fabs(t.d->qpos[0] - x1), 1e-4);
+}
+
+TEST(Radiation, CopiedStateContinuesIdentically) {
+  // mj_copyData + mjb_copyData halfway: the copy's second half is the
+  // original's bit for bit (history included), under RK4 and Euler, and with
+  // an extra mj_forward between steps (a viewer's) changing nothing
+  for (const char* integ : {"RK4", "Euler"}) {
+    Decay D(integ);
+    Scene& s = D.s;
+    ASSERT_TRUE(s.ok()) << s.err;
+    s.d->qpos[0] = 0.01;
+    run(s.m, s.d, 300);
+    mjData* c = mj_makeData(s.m);
+    mj_copyData(c, s.m, s.d);
+    ASSERT_EQ(mjb_copyData(s.b, c, s.d), 1);
+    run(s.m, s.d, 300);
+    for (int i = 0; i < 300; i++) {
+      mj_forward(s.m, c);
+      mj_step(s.m, c);
+    }
+    EXPECT_EQ(std::memcmp(s.d->qpos, c->qpos, sizeof(double)), 0) << integ;
+    EXPECT_EQ(std::memcmp(s.d->qvel, c->qvel, sizeof(double)), 0) << integ;
+    mjb_unbindData(s.b, c);
+    mj_deleteData(c);
+  }
+}
+
+TEST(Radiation, BadCoefficientsAreRefusedByName) {
+  Scene s(slide("Euler", 0.001));
+  ASSERT_TRUE(s.ok()) << s.err;
+  mjb::HydroCoef c;
+  c.Ainf[1] = 5;  // not symmetric
+  EXPECT_NE(mjb::setHydroCoef(s.b, 1, c, -1).find("not symmetric"), std::string::npos);
+  c.Ainf[6] = 5;  // symmetric, indefinite
+  EXPECT_NE(mjb::setHydroCoef(s.b, 1, c, -1).find("positive semi-definite"), std::string::npos);
+  mjb::HydroCoef e = heave(1);
+  e.omega = {1, 0.5};
+  e.B.assign(72, 0);
+  EXPECT_NE(mjb::setHydroCoef(s.b, 1, e, -1).find("omega[1] = 0.5"), std::string::npos);
+  e.omega = {1, 2};
+  e.B.assign(71, 0);
+  EXPECT_NE(mjb::setHydroCoef(s.b, 1, e, -1).find("need 72 values of B"), std::string::npos);
+  EXPECT_NE(mjb::setHydroCoef(s.b, 0, heave(1), -1).find("out of range"), std::string::npos);
+  EXPECT_NE(mjb::setHydroCoef(s.b, 1, heave(1), 1e9).find("memory length"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mjbt
