@@ -86,10 +86,12 @@ MJB_API void mjb_detach(mjbBuoy* b);
 // The state knows its mjData by address plus a stamp: d->buffer, the
 // fwdVelocity count d->timer[mjTIMER_VELOCITY].number at the last callback
 // and d->time at the first callback of the last step. A new mjData at a recycled address, or d after
-// mj_resetData, starts clean: zero wrench, no notices, no slamming history.
+// mj_resetData, starts clean: zero wrench, no notices, no slamming history,
+// no radiation memory (docs/physics.md section 14).
 MJB_API int mjb_bindData(mjbBuoy* b, const mjData* d);
 
-// copy mjbuoy's state for src (wrench, notices, slamming history) to dst;
+// copy mjbuoy's state for src (wrench, notices, slamming history,
+// radiation memory) to dst;
 // call right after mj_copyData(dst, m, src), which does not carry it, so
 // that dst continues exactly like src (1 on success, 0 on failure)
 MJB_API int mjb_copyData(mjbBuoy* b, mjData* dst, const mjData* src);

@@ -39,7 +39,7 @@ struct Radiation {
 
 // per mjData: velocity history and the memory force of the current step
 struct RadState {
-  std::vector<double> hist;  // per body nh x 6 body-frame velocities at ref, ring
+  std::vector<double> hist;  // per body and dof a ring of nh body-frame velocities at ref
   std::vector<double> fmem;  // per body 6: memory wrench of this step (body frame)
   std::vector<double> jac;   // scratch: 6 x maxdof body-frame Jacobian columns
   std::vector<double> ajac;  // scratch: A_inf times each column

@@ -50,17 +50,22 @@ void mul6(const double* A, const double* x, double* y) {
 }
 
 // memory wrench -dt sum_k w_k K(k dt) nu(t - k dt), trapezoid over the
-// samples held (the body at rest before the first)
+// samples held (the body at rest before the first). hist holds each dof's
+// ring of nh samples, the newest at head
 void memory(const RadBody& rb, const double* hist, int nh, int head, int count, double dt,
             double* f) {
   std::memset(f, 0, 6 * sizeof(double));
   const int n = std::min(count, rb.nk);
   if (n < 2) return;
+  const int k1 = std::min(n - 2, head);  // k <= k1: no wrap
   for (size_t p = 0; p < rb.pair.size(); p++) {
     const double* K = rb.K.data() + p * rb.nk;
-    const int i = rb.pair[p] / 6, j = rb.pair[p] % 6;
-    double sum = 0.5 * (K[0] * hist[6 * head + j] + K[n - 1] * hist[6 * ((head - n + 1 + nh) % nh) + j]);
-    for (int k = 1; k < n - 1; k++) sum += K[k] * hist[6 * ((head - k + nh) % nh) + j];
+    const int i = rb.pair[p] / 6;
+    const double* h = hist + nh * (rb.pair[p] % 6);
+    double sum = 0.5 * (K[0] * h[head] + K[n - 1] * h[(head - n + 1 + nh) % nh]);
+    int k = 1;
+    for (const double* x = h + head - 1; k <= k1; k++, x--) sum += K[k] * *x;
+    for (const double* x = h + head - k + nh; k <= n - 2; k++, x--) sum += K[k] * *x;
     f[i] -= dt * sum;
   }
 }
@@ -143,7 +148,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
     double* fm = s->fmem.data() + 6 * ib;
     double* hist = s->hist.data() + 6 * r.nh * ib;
     if (rb.nk && tick != kMid) {
-      std::memcpy(hist + 6 * s->head, nu, sizeof(nu));
+      for (int j = 0; j < 6; j++) hist[r.nh * j + s->head] = nu[j];
       memory(rb, hist, r.nh, s->head, s->count, r.dt, fm);
     }
     for (int j = 0; j < 6; j++) W[j] += fm[j];

@@ -19,12 +19,42 @@
 #include "guard.h"
 #include "mjbuoy.h"  // and mjbuoy_version.h
 #include "outfile.h"
+#include "radiation.h"  // internal: mjb::setHydroCoef until MJCF switches exist
 
 using Clock = std::chrono::steady_clock;
 
 // boats spaced on a grid 6 m x 2 m apart, all partly wet on a 20 m swell
 static int gthreads = -1;  // mjbuoy.threads, -1: leave it out (auto)
 static std::string gsea = "swell";  // flat, swell (one Gerstner wave) or jonswap
+static double gradiation = -1;  // --radiation: memory length [s]; < 0: off
+
+// --radiation: every boat gets synthetic coefficients of the Wigley's
+// size (docs/physics.md section 14): A_inf on the diagonal, and B of each
+// dof plus the surge-pitch coupling of the causal form 2 k0 a w^2 /
+// (a^2 + w^2)^2 (60 frequencies 0.1 to 20 rad/s), memory gradiation s.
+// What is measured is the cost, not these numbers
+static bool addRadiation(mjbBuoy* b, const mjModel* m) {
+  const double M[6] = {176.2, 176.2, 176.2, 6.02, 237.28, 238.6};
+  const double share[6] = {0.05, 0.5, 1.0, 0.2, 1.0, 0.5}, a = 4;
+  mjb::HydroCoef c;
+  for (int i = 0; i < 6; i++) c.Ainf[7 * i] = share[i] * M[i];
+  for (double w = 0.1; w <= 20; w *= std::pow(200.0, 1 / 59.0)) {
+    c.omega.push_back(w);
+    for (int k = 0; k < 36; k++) {
+      int i = k / 6, j = k % 6;
+      double k0 = i == j ? a * a * c.Ainf[k] : (i + j == 4 && i != j ? 0.1 * a * a * 176.2 : 0);
+      c.B.push_back(2 * k0 * a * w * w / std::pow(a * a + w * w, 2));
+    }
+  }
+  for (int bd = 1; bd < m->nbody; bd++) {
+    std::string e = mjb::setHydroCoef(b, bd, c, gradiation > 0 ? gradiation : -1);
+    if (!e.empty()) {
+      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
+      return false;
+    }
+  }
+  return true;
+}
 
 // the sea entries of --sea: jonswap is a 64-component short-crested sea
 // (Hs 0.6 m, Tp 5 s, spreading s = 10 about 20 deg)
@@ -122,12 +152,21 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
     mj_deleteModel(m);
     return false;
   }
+  if (gradiation >= 0 && !addRadiation(b, m)) {
+    mjb_detach(b);
+    mj_deleteData(d);
+    mj_deleteModel(m);
+    return false;
+  }
   mjb_bindData(b, d);
   std::string why;  // mj_resetData below clears the bare runs' warnings
   ginner = mjcb_passive;
   mjcb_passive = timed;
   mj_resetData(m, d);
-  for (int i = 0; i < 5; i++) mj_step(m, d);  // warm up
+  // warm up; with --radiation until the memory's history is full, the
+  // convolution's steady cost
+  int warm = 5 + (gradiation > 0 ? int(std::ceil(gradiation / m->opt.timestep)) : 0);
+  for (int i = 0; i < warm; i++) mj_step(m, d);
   for (int r = 0; r < reps; r++) {
     ghydro = gcpu = 0;
     auto t0 = Clock::now();
@@ -213,6 +252,9 @@ int main(int argc, char** argv) {
   app.add_option("--json", json, "also write the results as JSON (replaced only when complete)");
   app.add_option("--sea", gsea, "flat, swell (one Gerstner wave, the default) or jonswap "
                  "(64 components)")->check(CLI::IsMember({"flat", "swell", "jonswap"}));
+  app.add_option("--radiation", gradiation, "give every boat synthetic radiation coefficients "
+                 "with this memory length [s] (0: added mass and its Kirchhoff terms only)")
+      ->check(Finite(0, 60));
   app.add_option("--meshes", meshes, "directory of wigley_N.obj (default: the installed "
                  "share/mjbuoy/models/meshes beside this executable, else the source tree's)");
   CLI11_PARSE(app, argc, argv);
