@@ -64,8 +64,8 @@ void memory(const RadBody& rb, const double* hist, int nh, int head, int count, 
     const double* h = hist + nh * (rb.pair[p] % 6);
     double sum = 0.5 * (K[0] * h[head] + K[n - 1] * h[(head - n + 1 + nh) % nh]);
     int k = 1;
-    for (const double* x = h + head - 1; k <= k1; k++, x--) sum += K[k] * *x;
-    for (const double* x = h + head - k + nh; k <= n - 2; k++, x--) sum += K[k] * *x;
+    for (; k <= k1; k++) sum += K[k] * h[head - k];
+    for (; k <= n - 2; k++) sum += K[k] * h[head - k + nh];
     f[i] -= dt * sum;
   }
 }
