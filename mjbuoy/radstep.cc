@@ -49,6 +49,21 @@ void mul6(const double* A, const double* x, double* y) {
   for (int i = 0; i < 6; i++) y[i] = dot6(A + 6 * i, x);
 }
 
+// sum_k K[k] x[i - k], k < n, in four independent sums (the adds' latency,
+// not the multiplies, bounds a single running sum)
+double dotBack(const double* K, const double* x, int i, int n) {
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    s0 += K[k] * x[i - k];
+    s1 += K[k + 1] * x[i - k - 1];
+    s2 += K[k + 2] * x[i - k - 2];
+    s3 += K[k + 3] * x[i - k - 3];
+  }
+  for (; k < n; k++) s0 += K[k] * x[i - k];
+  return (s0 + s1) + (s2 + s3);
+}
+
 // memory wrench -dt sum_k w_k K(k dt) nu(t - k dt), trapezoid over the
 // samples held (the body at rest before the first). hist holds each dof's
 // ring of nh samples, the newest at head
@@ -63,9 +78,8 @@ void memory(const RadBody& rb, const double* hist, int nh, int head, int count, 
     const int i = rb.pair[p] / 6;
     const double* h = hist + nh * (rb.pair[p] % 6);
     double sum = 0.5 * (K[0] * h[head] + K[n - 1] * h[(head - n + 1 + nh) % nh]);
-    int k = 1;
-    for (; k <= k1; k++) sum += K[k] * h[head - k];
-    for (; k <= n - 2; k++) sum += K[k] * h[head - k + nh];
+    sum += dotBack(K + 1, h, head - 1, k1);
+    sum += dotBack(K + k1 + 1, h, head - k1 - 1 + nh, n - 2 - k1);
     f[i] -= dt * sum;
   }
 }
