@@ -101,6 +101,45 @@ std::string checkCoef(const HydroCoef& c) {
   return "";
 }
 
+// rb's retardation functions over tmem seconds at step dt: one per pair
+// (i, j) whose B_ij is not zero
+void kernels(const HydroCoef& c, double tmem, double dt, RadBody* rb) {
+  double bmax = 0;
+  for (double b : c.B) bmax = std::max(bmax, std::fabs(b));
+  if (!(tmem > 0 && bmax > 0)) return;
+  rb->nk = int(std::ceil(tmem / dt)) + 1;
+  for (int i = 0; i < 6; i++) {
+    for (int j = 0; j < 6; j++) {
+      if (maxAbs(c.B, i, j) > 1e-12 * bmax) rb->pair.push_back(6 * i + j);
+    }
+  }
+  rb->K.resize(rb->pair.size() * rb->nk);
+  for (size_t p = 0; p < rb->pair.size(); p++) {
+    int i = rb->pair[p] / 6, j = rb->pair[p] % 6;
+    // K is symmetric like B: the transposed pair copies
+    auto q = std::find(rb->pair.begin(), rb->pair.begin() + p, 6 * j + i);
+    if (q != rb->pair.begin() + p) {
+      std::copy_n(rb->K.begin() + (q - rb->pair.begin()) * rb->nk, rb->nk,
+                  rb->K.begin() + p * rb->nk);
+    } else {
+      retardation(c, i, j, dt, rb->nk, rb->K.data() + p * rb->nk);
+    }
+  }
+}
+
+// MuJoCo factors the dofs of a "simple" body as diagonal: J^T A J is not.
+// Clear their flag and recount the runs of simple dofs (docs/physics.md
+// section 14); the first call keeps the model's flags for restoreModel
+void clearSimple(const mjModel* m, const std::vector<int>& dof, Radiation* r) {
+  if (r->simple0.empty()) r->simple0.assign(m->dof_simplenum, m->dof_simplenum + m->nv);
+  int* simple = const_cast<mjModel*>(m)->dof_simplenum;
+  for (int i : dof) simple[i] = 0;
+  for (int i = m->nv - 1, cnt = 0; i >= 0; i--) {
+    cnt = simple[i] ? cnt + 1 : 0;
+    simple[i] = cnt;
+  }
+}
+
 }  // namespace
 
 void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K) {
@@ -185,36 +224,8 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
     rb.dof.push_back(i);
   }
   if (tmem == 0) tmem = memoryLength(c);
-  double bmax = 0;
-  for (double b : c.B) bmax = std::max(bmax, std::fabs(b));
-  if (tmem > 0 && bmax > 0) {
-    rb.nk = int(std::ceil(tmem / dt)) + 1;
-    for (int i = 0; i < 6; i++) {
-      for (int j = 0; j < 6; j++) {
-        if (maxAbs(c.B, i, j) > 1e-12 * bmax) rb.pair.push_back(6 * i + j);
-      }
-    }
-    rb.K.resize(rb.pair.size() * rb.nk);
-    for (size_t p = 0; p < rb.pair.size(); p++) {
-      int i = rb.pair[p] / 6, j = rb.pair[p] % 6;
-      // K is symmetric like B: the transposed pair copies
-      auto q = std::find(rb.pair.begin(), rb.pair.begin() + p, 6 * j + i);
-      if (q != rb.pair.begin() + p) {
-        std::copy_n(rb.K.begin() + (q - rb.pair.begin()) * rb.nk, rb.nk, rb.K.begin() + p * rb.nk);
-      } else {
-        retardation(c, i, j, dt, rb.nk, rb.K.data() + p * rb.nk);
-      }
-    }
-  }
-
-  // MuJoCo factors the dofs of a "simple" body as diagonal: J^T A J is not
-  if (r->simple0.empty()) r->simple0.assign(m->dof_simplenum, m->dof_simplenum + m->nv);
-  int* simple = const_cast<mjModel*>(m)->dof_simplenum;
-  for (int i : rb.dof) simple[i] = 0;
-  for (int i = m->nv - 1, cnt = 0; i >= 0; i--) {
-    cnt = simple[i] ? cnt + 1 : 0;
-    simple[i] = cnt;
-  }
+  kernels(c, tmem, dt, &rb);
+  clearSimple(m, rb.dof, r);
 
   auto it = std::find_if(r->rb.begin(), r->rb.end(), [&](const RadBody& x) { return x.body == body; });
   if (it != r->rb.end()) {

@@ -84,6 +84,55 @@ void memory(const RadBody& rb, const double* hist, int nh, int head, int count, 
   }
 }
 
+// body-axes Jacobian J (6 x n, column k for rb.dof[k]) at rb's reference
+// point p, its velocity nu = J qdot, and bias, the rate of change of nu
+// with qacc = 0: the spatial acceleration sum cdof_dot qdot (alpha, a_o at
+// o) moved to p and turned into body axes (docs/physics.md section 14)
+void kinematics(const RadBody& rb, const mjModel* m, const mjData* d, double* J, double nu[6],
+                double bias[6]) {
+  const mjtNum* R = d->xmat + 9 * rb.body;
+  const mjtNum* o = d->subtree_com + 3 * m->body_rootid[rb.body];
+  double p[3], po[3], ab[6] = {0};
+  mju_rotVecMat(p, rb.ref, R);
+  mju_addTo3(p, d->xpos + 3 * rb.body);
+  mju_sub3(po, p, o);
+  std::memset(nu, 0, 6 * sizeof(double));
+  for (size_t k = 0; k < rb.dof.size(); k++) {
+    const int i = rb.dof[k];
+    const mjtNum* c = d->cdof + 6 * i;  // [angular; linear at o]
+    double lin[3];
+    cross(c, po, lin);
+    mju_addTo3(lin, c + 3);
+    mju_rotVecMatT(J + 6 * k, lin, R);
+    mju_rotVecMatT(J + 6 * k + 3, c, R);
+    for (int j = 0; j < 6; j++) {
+      nu[j] += J[6 * k + j] * d->qvel[i];
+      ab[j] += d->cdof_dot[6 * i + j] * d->qvel[i];
+    }
+  }
+  double ap[3];
+  cross(ab, po, ap);
+  mju_addTo3(ap, ab + 3);
+  mju_rotVecMatT(bias, ap, R);
+  mju_rotVecMatT(bias + 3, ab, R);
+}
+
+// the added mass's velocity wrench in body axes at ref: -A bias plus
+// Kirchhoff's terms, with (p, h) = A nu: F = -w x p, M = -w x h - v x p
+// [Newman 1977, sec. 4.13; Fossen 2011, -C_A(nu) nu]
+void kirchhoff(const double A[36], const double nu[6], const double bias[6], double W[6]) {
+  double P[6], t[3];
+  mul6(A, nu, P);
+  mul6(A, bias, W);
+  for (int j = 0; j < 6; j++) W[j] = -W[j];
+  cross(nu + 3, P, t);
+  mju_subFrom3(W, t);
+  cross(nu + 3, P + 3, t);
+  mju_subFrom3(W + 3, t);
+  cross(nu, P, t);
+  mju_subFrom3(W + 3, t);
+}
+
 }  // namespace
 
 void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
@@ -103,36 +152,9 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
   for (size_t ib = 0; ib < r.rb.size(); ib++) {
     const RadBody& rb = r.rb[ib];
     const int n = rb.dof.size();
-    const mjtNum* R = d->xmat + 9 * rb.body;
-    const mjtNum* o = d->subtree_com + 3 * m->body_rootid[rb.body];
-    double p[3], po[3];
-    mju_rotVecMat(p, rb.ref, R);
-    mju_addTo3(p, d->xpos + 3 * rb.body);
-    mju_sub3(po, p, o);
-    // body-frame Jacobian at ref, velocity nu and the velocity-product
-    // acceleration (cdof_dot qvel: the acceleration with qacc = 0)
     double* J = s->jac.data();
-    double nu[6] = {0}, ab[6] = {0};
-    for (int k = 0; k < n; k++) {
-      const int i = rb.dof[k];
-      const mjtNum* c = d->cdof + 6 * i;
-      double lin[3];
-      cross(c, po, lin);
-      mju_addTo3(lin, c + 3);
-      mju_rotVecMatT(J + 6 * k, lin, R);
-      mju_rotVecMatT(J + 6 * k + 3, c, R);
-      for (int j = 0; j < 6; j++) {
-        nu[j] += J[6 * k + j] * d->qvel[i];
-        ab[j] += d->cdof_dot[6 * i + j] * d->qvel[i];
-      }
-    }
-    // d/dt of the body-frame velocity at ref with qacc = 0: the spatial
-    // acceleration at ref in body axes (section 14)
-    double ap[3], bias[6];
-    cross(ab, po, ap);
-    mju_addTo3(ap, ab + 3);
-    mju_rotVecMatT(bias, ap, R);
-    mju_rotVecMatT(bias + 3, ab, R);
+    double nu[6], bias[6];
+    kinematics(rb, m, d, J, nu, bias);
     if (!std::isfinite(dot6(nu, nu)) || !std::isfinite(dot6(bias, bias))) continue;
 
     if (addM) {
@@ -145,18 +167,8 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
       }
     }
 
-    // Kirchhoff: with P = A nu = (p, h), F = -w x p, M = -w x h - v x p,
-    // plus -A times the velocity-product acceleration (section 14)
-    double P[6], W[6], t[3];
-    mul6(rb.A, nu, P);
-    mul6(rb.A, bias, W);
-    for (int j = 0; j < 6; j++) W[j] = -W[j];
-    cross(nu + 3, P, t);
-    mju_subFrom3(W, t);
-    cross(nu + 3, P + 3, t);
-    mju_subFrom3(W + 3, t);
-    cross(nu, P, t);
-    mju_subFrom3(W + 3, t);
+    double W[6];
+    kirchhoff(rb.A, nu, bias, W);
 
     // memory: the step's first call records nu and evaluates the convolution
     double* fm = s->fmem.data() + 6 * ib;
