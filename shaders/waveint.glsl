@@ -19,9 +19,10 @@ vec2 cexp(vec2 z) { return exp(z.x) * vec2(cos(z.y), sin(z.y)); }
 // complete homogeneous symmetric polynomials; h_n(x,y) = x h_{n-1}(x,y) +
 // y^n, h_n(x,x,y) = x h_{n-1}(x,x,y) + h_n(x,y)); stops when the bound
 // (n+1) r^n / (n+2)! of the next term (and of the moments') is below
-// WI_TOL, r = max(|x|, |y|): float's resolution of the sums (~1/2, 1/6)
+// WI_TOL, r = max(|x|, |y|): 2e-6 of the sums (1/2, 1/6), far below the
+// gl backend's parity tolerance (1e-4) and 9 terms at most (r = 1)
 const float WI_TAYLOR = 1.0;
-const float WI_TOL = 3e-8;
+const float WI_TOL = 3e-7;
 void ddTaylor(vec2 x, vec2 y, bool mom, out vec2 s0, out vec2 sa, out vec2 sb) {
   float r = max(length(x), length(y));
   vec2 g = vec2(1.0, 0.0), u = g, yn = g;
@@ -49,12 +50,15 @@ void ddTaylor(vec2 x, vec2 y, bool mom, out vec2 s0, out vec2 sa, out vec2 sb) {
 // S - M1 - M2). Pieces with a node gap r above WI_TAYLOR are split into n^2
 // similar triangles of gap r / n (n <= 64), each summed by its series about
 // its corner 0; the series' terms then stay below e^WI_TAYLOR, so float
-// round-off stays below 3e-7 of the largest |e^L| whatever the piece's size.
+// round-off stays below 3e-7 of the largest |e^L| for any piece up to
+// 64 WI_TAYLOR across (past it the parts' series, 16 terms, lose accuracy
+// only beyond r = 256: a piece some 40 wavelengths long).
 // The first part's corner 0 is the piece's: no transcendental unless split.
 void triExp(vec2 x, vec2 y, vec2 e0, float a2, bool mom, inout vec2 S, inout vec2 M1,
             inout vec2 M2) {
   float r = max(length(x), max(length(y), length(y - x)));
-  int n = int(clamp(ceil(r / WI_TAYLOR), 1.0, 64.0));
+  float nr = ceil(r / WI_TAYLOR);
+  int n = nr > 1.0 ? int(min(nr, 64.0)) : 1;  // (NaN: 1, and the NaN reaches the sums)
   float fn = float(n), w = a2 / (fn * fn);
   vec2 xs = x / fn, ys = y / fn, s0, sa, sb;
   ddTaylor(xs, ys, mom, s0, sa, sb);
