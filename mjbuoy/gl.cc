@@ -185,6 +185,22 @@ bool glMake(Buoy* b, std::string* err) {
   g->nchunk = chunk.size();
   g->nvchunk = vchunk.size();
 
+  // each wet vertex's e^L per component (shaders/waveint.glsl), room for
+  // the capacity so mjb_setSea creates nothing; within the driver's limits
+  // (checked before anything is allocated)
+  const size_t nexp = size_t(g->nvert) * cap;
+  GLint tmax = 0;  // texels; GL guarantees only 65536, llvmpipe has 2^27
+  gl.GetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &tmax);
+  if (nexp > size_t(tmax)) {
+    *err = "gl backend: " + std::to_string(g->nvert) + " vertices x " + std::to_string(cap) +
+           " wave components (mjbuoy.sea.capacity, else the sea's count) = " +
+           std::to_string(nexp) + " values exceed the driver's buffer texture size (" +
+           std::to_string(tmax) + " texels); use fewer components or boats, or backend cpu";
+    b->gl = g;
+    glFree(b);
+    return false;
+  }
+  makeBuffer(g, B_EXP, std::max<size_t>(nexp, 1) * 16, nullptr, GL_DYNAMIC_COPY);
   makeBuffer(g, B_VERT, vert.size() * sizeof(GVert), vert.data(), GL_STATIC_DRAW);
   makeBuffer(g, B_TRI, tri.size() * sizeof(GTri), tri.data(), GL_STATIC_DRAW);
   makeBuffer(g, B_HULL, hull.size() * sizeof(GHull), hull.data(), GL_STATIC_DRAW);
@@ -217,10 +233,6 @@ bool glMake(Buoy* b, std::string* err) {
   }
   makeBuffer(g, B_VOUT, g->nvert * 16, nullptr, GL_DYNAMIC_COPY);
   makeBuffer(g, B_LAB, g->nvert * 8, nullptr, GL_DYNAMIC_COPY);
-  // each wet vertex's e^L per component (shaders/waveint.glsl), room for
-  // the capacity so mjb_setSea creates nothing
-  const size_t nexp = size_t(g->nvert) * cap;
-  makeBuffer(g, B_EXP, nexp * 16, nullptr, GL_DYNAMIC_COPY);
   makeBuffer(g, B_CHUNK, chunk.size() * sizeof(GChunk), chunk.data(), GL_STATIC_DRAW);
   makeBuffer(g, B_VCHUNK, vchunk.size() * sizeof(GChunk), vchunk.data(), GL_STATIC_DRAW);
   makeBuffer(g, B_CPART, chunk.size() * g->local * BUOY_NSUM * 16, nullptr, GL_DYNAMIC_COPY);
@@ -229,24 +241,10 @@ bool glMake(Buoy* b, std::string* err) {
   // the per-triangle gathers read through texel fetches: llvmpipe gathers a
   // texel per lane in straight-line SIMD code, an SSBO load with a
   // per-lane index in a scalar loop per component
-  GLint tmax = 0;  // texels; GL guarantees only 65536, llvmpipe has 2^27
-  gl.GetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &tmax);
   if (std::max(g->ntri, g->nvert) > tmax) {
     *err = "gl backend: " + std::to_string(g->ntri) + " triangles and " +
            std::to_string(g->nvert) + " vertices exceed the driver's buffer texture size (" +
            std::to_string(tmax) + " texels); use backend cpu";
-    b->gl = g;
-    glFree(b);
-    return false;
-  }
-  GLint64 smax = 0;  // bytes of one shader storage block
-  gl.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &smax);
-  if (nexp > size_t(tmax) || GLint64(nexp * 16) > smax) {
-    *err = "gl backend: " + std::to_string(g->nvert) + " vertices x " + std::to_string(cap) +
-           " wave components (mjbuoy.sea.capacity or the sea's count) = " +
-           std::to_string(nexp) + " values exceed the driver's buffer limits (" +
-           std::to_string(tmax) + " texels, " + std::to_string(smax / 16) +
-           " in a storage block); use fewer components or boats, or backend cpu";
     b->gl = g;
     glFree(b);
     return false;
@@ -450,8 +448,9 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
                      g->phase.data());
   }
   for (int i = 0; i < 15; i++) {
-    if (g->buf[i]) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, g->buf[i]);
+    if (g->buf[i] && i != B_EXP) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, g->buf[i]);
   }
+  gl.BindImageTexture(0, g->tex[4], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
   gl.ProgramUniform1i(g->prog[kTris], g->uHasprev, s->hasPrev);
@@ -471,7 +470,8 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     timerBegin(&g->timer, g->tstage[st]);
     gl.UseProgram(g->prog[st]);
     if (groups[st] > 0) gl.DispatchCompute(groups[st], 1, 1);
-    gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     timerEnd(&g->timer, g->tstage[st]);
   }
   gl.UseProgram(0);
@@ -483,6 +483,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->out.size() * sizeof(float), g->out.data());
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   for (int i = 0; i < 15; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
+  gl.BindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   for (int i = 4; i >= 0; i--) {
     gl.ActiveTexture(GL_TEXTURE0 + i);
     gl.BindTexture(GL_TEXTURE_BUFFER, 0);

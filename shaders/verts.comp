@@ -14,7 +14,9 @@ layout(std430, binding = B_VCHUNK) readonly buffer Vchunks { GChunk vchunk[]; };
 uniform samplerBuffer tVert;                       // B_VERT as a buffer texture
 layout(std430, binding = B_VOUT) writeonly buffer Vout { vec4 vout[]; };
 layout(std430, binding = B_LAB) writeonly buffer Labs { vec2 lab[]; };
-layout(std430, binding = B_EXP) writeonly buffer Exps { vec4 ex[]; };
+// B_EXP through an image: a buffer texture holds 2^27 texels on llvmpipe,
+// a storage block only 2^27 bytes
+layout(binding = 0, rgba32f) uniform writeonly imageBuffer iExp;
 
 uniform int nvchunk;
 
@@ -46,7 +48,7 @@ void main() {
           float th = thetaAt(b, w, a, r.xy), k = wv.k;
           vec2 cs = vec2(cos(th), sin(th));
           float em = wv.e2kh > 0.0 ? exp(-k * (zs + 2.0 * depth)) : 0.0;
-          ex[i * nwave + w] = vec4(exp(k * zs) * cs, em * cs);
+          imageStore(iExp, i * nwave + w, vec4(exp(k * zs) * cs, em * cs));
         }
       }
     }
