@@ -93,39 +93,45 @@ Piece makePiece(vec3 p0, vec3 p1, vec3 p2, float z0, float z1, float z2, vec2 m0
   return P;
 }
 
-// adds component w's integrals over piece P: the dynamic pressure over
-// rho g times 1 and r (dA, drA; with lin) and the water velocity times
-// area (vs); f0..f2: e^L at the polygon corners c0..c2 of P (B_EXP layout)
-void wavePiece(Piece P, GWave wv, vec4 f0, vec4 f1, vec4 f2, bool lin, inout float dA,
-               inout vec3 drA, inout vec3 vs) {
-  float k = wv.k;
-  if (!(P.a2 > 0.0) || k * P.zs.x < -40.0) return;  // e^(k zs) < 4e-18 on all of it
+// the exponent's changes from corner 0 to corners 1, 2 of piece P for
+// component wv: L = k zs + i theta (Airy phase at x, Gerstner at the label)
+void pieceSpan(Piece P, GWave wv, out vec2 x, out vec2 y) {
+  vec2 kd = wv.k * vec2(wv.dx, wv.dy);
+  vec4 d = wv.kind != 0.0 ? P.dp : P.dl;
+  x = vec2(wv.k * (P.zs.y - P.zs.x), dot(kd, d.xy));
+  y = vec2(wv.k * (P.zs.z - P.zs.x), dot(kd, d.zw));
+}
+
+// adds component wv's integrals over part k of n^2 of piece P (triPart):
+// the dynamic pressure over rho g times 1 and r (dA, drA; with lin) and
+// the water velocity times area (vs); f0..f2: e^L at the polygon corners
+// c0..c2 of P (B_EXP layout)
+void wavePart(Piece P, GWave wv, vec4 f0, vec4 f1, vec4 f2, bool lin, int n, int k,
+              inout float dA, inout vec3 drA, inout vec3 vs) {
+  if (!(P.a2 > 0.0) || wv.k * P.zs.x < -40.0) return;  // e^(k zs) < 4e-18 on all of it
   bool r0 = P.rot == 0, r1 = P.rot == 1;
   vec4 E0 = r0 ? f0 : r1 ? f1 : f2;
-  vec2 kd = k * vec2(wv.dx, wv.dy);
-  vec4 d = wv.kind != 0.0 ? P.dp : P.dl;  // Airy phase at x, Gerstner at the label
-  vec2 x = vec2(k * (P.zs.y - P.zs.x), dot(kd, d.xy));
-  vec2 y = vec2(k * (P.zs.z - P.zs.x), dot(kd, d.zw));
+  vec2 x, y;
+  pieceSpan(P, wv, x, y);
   // e^(k zs) and, at finite depth, e^(-k (zs + 2h)) (real parts flip); a
   // loop, not an if: llvmpipe runs an if's body for every lane, masked
-  float e2 = wv.e2kh;
-  vec2 S[2] = vec2[2](vec2(0.0), vec2(0.0)), M1[2] = S, M2[2] = S;
+  float e2 = wv.e2kh, sv = 0.0;
+  vec2 S = vec2(0.0), M1 = S, M2 = S;
   for (int f = 0; f < (e2 > 0.0 ? 2 : 1); f++) {
     float sg = f == 0 ? 1.0 : -1.0;
-    vec2 s = vec2(0.0), m1 = s, m2 = s;
-    triExp(vec2(sg * x.x, x.y), vec2(sg * y.x, y.y), f == 0 ? E0.xy : E0.zw, P.a2, lin, s, m1, m2);
-    S[f] = s;
-    M1[f] = m1;
-    M2[f] = m2;
+    vec2 s = vec2(0.0);
+    triPart(vec2(sg * x.x, x.y), vec2(sg * y.x, y.y), f == 0 ? E0.xy : E0.zw, P.a2, n, k, s, M1,
+            M2);
+    S += s;
+    sv += sg * s.y;
   }
   float amp = wv.amp, cp = amp / (1.0 + e2), cv = amp * wv.omega / (1.0 - e2);
   // velocity: horizontal (e+ + e-) cos, vertical (e+ - e-) sin, over 1 - e^(-2kh)
-  vs += cv * vec3((S[0].x + S[1].x) * vec2(wv.dx, wv.dy), S[0].y - S[1].y);
+  vs += cv * vec3(S.x * vec2(wv.dx, wv.dy), sv);
   if (!lin) return;
   // pressure: (e+ + e-) cos over 1 + e^(-2kh), its moments
-  float s = S[0].x + S[1].x, m1 = M1[0].x + M1[1].x, m2 = M2[0].x + M2[1].x;
-  dA += cp * s;
-  drA += cp * ((s - m1 - m2) * P.q0 + m1 * P.q1 + m2 * P.q2);
+  dA += cp * S.x;
+  drA += cp * ((S.x - M1.x - M2.x) * P.q0 + M1.x * P.q1 + M2.x * P.q2);
 }
 
 // e^L of component w at a cut point (on the surface: zs = 0) with Airy
@@ -164,7 +170,7 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
   vec3 q0, q1, q2;
   // depths: Kerner's below the surface, -h (0 on the cut); linear theory's
   // hydrostatic part below the still level, -(z + zc), plus the dynamic
-  // pressure (wavePiece)
+  // pressure (wavePart)
   bool lin = linear != 0;
   float d0 = lin ? -(P0.z + zc) : -P0.w, d1 = lin ? -(P1.z + zc) : -P1.w;
   float d2 = lin ? -(P2.z + zc) : -P2.w, da = lin ? -(a.z + zc) : -a.w;
@@ -224,10 +230,18 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
       vec4 e0 = nw == 3 ? E0 : nw == 1 ? Ea : Eab, e1 = nw == 3 ? E1 : nw == 1 ? Eab : Eb;
       vec4 e2 = nw == 3 ? E2 : nw == 1 ? Eca : Ec;
       // the second piece of a quad in a loop (an if runs for every lane)
-      // (one call: llvmpipe would run both sides of an if)
-      for (int pc = 0; pc < nv; pc++) {
-        bool p0 = pc == 0;
-        wavePiece(p0 ? A1 : A2, wv, e0, p0 ? e1 : e2, p0 ? e2 : Eca, lin, dA, drA, vs);
+      // the pieces' parts (triParts: one each, but for pieces wider than
+      // about a sixth of the wavelength) in one loop with one call
+      // (llvmpipe would run both sides of an if)
+      vec2 x1, y1, x2, y2;
+      pieceSpan(A1, wv, x1, y1);
+      pieceSpan(A2, wv, x2, y2);
+      int n1 = triParts(x1, y1), n2 = triParts(x2, y2);
+      int m1 = n1 * n1, np = m1 + (nv == 2 ? n2 * n2 : 0);
+      for (int it = 0; it < np; it++) {
+        bool p0 = it < m1;
+        wavePart(p0 ? A1 : A2, wv, e0, p0 ? e1 : e2, p0 ? e2 : Eca, lin, p0 ? n1 : n2,
+                 p0 ? it : it - m1, dA, drA, vs);
       }
     }
   }
