@@ -47,8 +47,10 @@ void main() {
           GWave wv = wave[w];
           float th = thetaAt(b, w, a, r.xy), k = wv.k;
           vec2 cs = vec2(cos(th), sin(th));
-          float em = wv.e2kh > 0.0 ? exp(-k * (zs + 2.0 * depth)) : 0.0;
-          imageStore(iExp, i * nwave + w, vec4(exp(k * zs) * cs, em * cs));
+          // e^(-k (zs + 2h)) = e^(-2kh) / e^(k zs), no second exp: e^(k zs) >=
+          // e^(-k h) > e^-17 where e2kh > 0 (zs >= -h)
+          float ep = exp(k * zs), em = wv.e2kh > 0.0 ? wv.e2kh / ep : 0.0;
+          imageStore(iExp, i * nwave + w, vec4(ep * cs, em * cs));
         }
       }
     }
