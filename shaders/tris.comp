@@ -1,9 +1,11 @@
 #version 430
 // stage 2, one workgroup per chunk of one hull's triangles (GChunk), each
 // invocation BUOY_PER of them: cut each triangle at the waterline and
-// integrate the pressure exactly (mjbuoy/pressure.cc), then Kerner's
-// viscous resistance, pressure/suction drag and slamming at the wet centroid
-// (mjbuoy/hydro.cc); each invocation sums its triangles in a fixed order,
+// integrate the pressure exactly (mjbuoy/pressure.cc; the linear dynamic
+// pressure and the water velocity per wave component in closed form,
+// waveint.glsl), then Kerner's viscous resistance, pressure/suction drag
+// and slamming at the wet centroid with the water velocity's mean over the
+// wet part (mjbuoy/hydro.cc, docs/physics.md); each invocation sums its triangles in a fixed order,
 // so no per-triangle buffer. The viscous force needs the hull's wetted length and sbar, known
 // only after all its triangles: its per-triangle factor (1 + sbar - s_k),
 // s_k = (e_k - lo) / len, is linear in e_k, so the chunk keeps sum g and

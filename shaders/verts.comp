@@ -38,9 +38,10 @@ void main() {
       lab[i] = a;
       vout[i] = q;
       // each component's e^(k zs + i theta) and e^(-k (zs + 2 h) + i theta),
-      // zs the Wheeler height, at wet vertices: the linear profiles' two
-      // exponentials (seaProfile), each bounded by 1 (the second 0 where
-      // e^(-k h) is below float's resolution, gl.cc gwave)
+      // zs the Wheeler height, at wet vertices: the two exponentials of
+      // the linear profiles cosh(k (zs + h)) / cosh(k h) and its kin
+      // (docs/physics.md), each bounded by 1 (the second 0 where e^(-k h)
+      // is below float's resolution, gl.cc gwave)
       if (q.w <= 0.0) {
         float zs = seaStretch(r.z + o.w, eta);
         for (int w = 0; w < nwave; w++) {
