@@ -28,8 +28,8 @@ const int kMaxGroups = 65535;  // GL 4.3's minimum GL_MAX_COMPUTE_WORK_GROUP_COU
 struct GlBackend {
   GlContext ctx;
   GLuint prog[kNStage] = {0};
-  GLuint buf[14] = {0};         // by binding point
-  GLuint tex[4] = {0};          // buffer textures of B_VOUT, B_LAB, B_TRI, B_VERT (units 0..3)
+  GLuint buf[15] = {0};         // by binding point
+  GLuint tex[5] = {0};          // buffer textures of B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP (units 0..4)
   GlTimer timer;
   int tstage[kNStage] = {0};
   std::mutex mu;                // one context: one thread at a time
@@ -77,15 +77,18 @@ static bool groupSizes(GlBackend* g, std::string* err) {
 }
 
 // one wave component as the shaders read it; Airy components (kind 1) take
-// no part in the label search: steep 0
-static GWave gwave(const Wave& w) {
+// no part in the label search: steep 0; e^(-2 k h) for the finite-depth
+// profiles (0 deep, or where k h >= 17: shaders/waveint.glsl WI_KHMAX)
+static GWave gwave(const Wave& w, double depth) {
+  double kh = w.k * depth;
+  float e2 = depth > 0 && kh < 17 ? float(std::exp(-2 * kh)) : 0.0f;
   return GWave{float(w.amp), float(w.k), float(w.omega), float(w.kind == 0 ? w.steep : 0),
-               float(w.dx), float(w.dy), float(w.kind), 0};
+               float(w.dx), float(w.dy), float(w.kind), e2};
 }
 
 // the wave buffer's contents
 static void waveData(const Sea& sea, GWave* out) {
-  for (size_t i = 0; i < sea.waves.size(); i++) out[i] = gwave(sea.waves[i]);
+  for (size_t i = 0; i < sea.waves.size(); i++) out[i] = gwave(sea.waves[i], sea.depth);
 }
 
 // the uniforms that change with the sea
@@ -182,6 +185,22 @@ bool glMake(Buoy* b, std::string* err) {
   g->nchunk = chunk.size();
   g->nvchunk = vchunk.size();
 
+  // each wet vertex's e^L per component (shaders/waveint.glsl), room for
+  // the capacity so mjb_setSea creates nothing; within the driver's limits
+  // (checked before anything is allocated)
+  const size_t nexp = size_t(g->nvert) * cap;
+  GLint tmax = 0;  // texels; GL guarantees only 65536, llvmpipe has 2^27
+  gl.GetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &tmax);
+  if (nexp > size_t(tmax)) {
+    *err = "gl backend: " + std::to_string(g->nvert) + " vertices x " + std::to_string(cap) +
+           " wave components (mjbuoy.sea.capacity, else the sea's count) = " +
+           std::to_string(nexp) + " values exceed the driver's buffer texture size (" +
+           std::to_string(tmax) + " texels); use fewer components or boats, or backend cpu";
+    b->gl = g;
+    glFree(b);
+    return false;
+  }
+  makeBuffer(g, B_EXP, std::max<size_t>(nexp, 1) * 16, nullptr, GL_DYNAMIC_COPY);
   makeBuffer(g, B_VERT, vert.size() * sizeof(GVert), vert.data(), GL_STATIC_DRAW);
   makeBuffer(g, B_TRI, tri.size() * sizeof(GTri), tri.data(), GL_STATIC_DRAW);
   makeBuffer(g, B_HULL, hull.size() * sizeof(GHull), hull.data(), GL_STATIC_DRAW);
@@ -222,8 +241,6 @@ bool glMake(Buoy* b, std::string* err) {
   // the per-triangle gathers read through texel fetches: llvmpipe gathers a
   // texel per lane in straight-line SIMD code, an SSBO load with a
   // per-lane index in a scalar loop per component
-  GLint tmax = 0;  // texels; GL guarantees only 65536, llvmpipe has 2^27
-  gl.GetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &tmax);
   if (std::max(g->ntri, g->nvert) > tmax) {
     *err = "gl backend: " + std::to_string(g->ntri) + " triangles and " +
            std::to_string(g->nvert) + " vertices exceed the driver's buffer texture size (" +
@@ -232,10 +249,10 @@ bool glMake(Buoy* b, std::string* err) {
     glFree(b);
     return false;
   }
-  const GLenum tfmt[4] = {GL_RGBA32F, GL_RG32F, GL_RGBA32I, GL_RGBA32F};
-  const int tbuf[4] = {B_VOUT, B_LAB, B_TRI, B_VERT};
-  gl.GenTextures(4, g->tex);
-  for (int i = 0; i < 4; i++) {
+  const GLenum tfmt[5] = {GL_RGBA32F, GL_RG32F, GL_RGBA32I, GL_RGBA32F, GL_RGBA32F};
+  const int tbuf[5] = {B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP};
+  gl.GenTextures(5, g->tex);
+  for (int i = 0; i < 5; i++) {
     gl.BindTexture(GL_TEXTURE_BUFFER, g->tex[i]);
     gl.TexBuffer(GL_TEXTURE_BUFFER, tfmt[i], g->buf[tbuf[i]]);
   }
@@ -244,6 +261,7 @@ bool glMake(Buoy* b, std::string* err) {
   gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tLab"), 1);
   gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tTri"), 2);
   gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "tVert"), 3);
+  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tExp"), 4);
   gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "nvchunk"), g->nvchunk);
 
   // uniforms that never change
@@ -291,7 +309,7 @@ void glSetSea(Buoy* b) {
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_WAVE]);
   for (int i0 = 0; i0 < g->nwave; i0 += 64) {
     int n = std::min(64, g->nwave - i0);
-    for (int i = 0; i < n; i++) buf[i] = gwave(sea.waves[i0 + i]);
+    for (int i = 0; i < n; i++) buf[i] = gwave(sea.waves[i0 + i], sea.depth);
     gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, i0 * sizeof(GWave), n * sizeof(GWave), buf);
   }
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
@@ -429,9 +447,10 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->phase.size() * sizeof(float),
                      g->phase.data());
   }
-  for (int i = 0; i < 14; i++) {
-    if (g->buf[i]) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, g->buf[i]);
+  for (int i = 0; i < 15; i++) {
+    if (g->buf[i] && i != B_EXP) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, g->buf[i]);
   }
+  gl.BindImageTexture(0, g->tex[4], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
   gl.ProgramUniform1i(g->prog[kTris], g->uHasprev, s->hasPrev);
@@ -443,7 +462,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   const int groups[kNStage] = {std::min(g->nvchunk, kMaxGroups),
                                std::min(g->nchunk, kMaxGroups),
                                (g->nslot + g->blocal - 1) / g->blocal};
-  for (int i = 0; i < 4; i++) {
+  for (int i = 0; i < 5; i++) {
     gl.ActiveTexture(GL_TEXTURE0 + i);
     gl.BindTexture(GL_TEXTURE_BUFFER, g->tex[i]);
   }
@@ -451,7 +470,8 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     timerBegin(&g->timer, g->tstage[st]);
     gl.UseProgram(g->prog[st]);
     if (groups[st] > 0) gl.DispatchCompute(groups[st], 1, 1);
-    gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     timerEnd(&g->timer, g->tstage[st]);
   }
   gl.UseProgram(0);
@@ -462,8 +482,9 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->out.size() * sizeof(float), g->out.data());
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  for (int i = 0; i < 14; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
-  for (int i = 3; i >= 0; i--) {
+  for (int i = 0; i < 15; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
+  gl.BindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  for (int i = 4; i >= 0; i--) {
     gl.ActiveTexture(GL_TEXTURE0 + i);
     gl.BindTexture(GL_TEXTURE_BUFFER, 0);
   }

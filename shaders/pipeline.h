@@ -51,6 +51,9 @@ namespace glsl {
 #define B_SLAMPREV 11  // vec4[]     triangle: previous step's velocity (xyz), wet area (w)
 #define B_SLAMCUR 12   // vec4[]     triangle: this step's, written on its first call
 #define B_WAVE 13    // GWave[]      static: wave components
+#define B_EXP 14     // vec4[]       (image unit 0, not an SSBO binding) vertex x component
+                     //              (v * nwave + i), wet vertices only:
+                     //              e^(k zs + i theta) (xy), e^(-k (zs + 2 h) + i theta) (zw)
 
 struct GVert {
   float x;
@@ -103,7 +106,7 @@ struct GWave {
   float dx;
   float dy;
   float kind;      // 0 Gerstner, 1 Airy (whose steep is 0 here)
-  float pad1;
+  float e2kh;      // e^(-2 k h) at finite depth h if k h < 17, else 0 (deep: 0)
 };
 
 struct GChunk {

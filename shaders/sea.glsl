@@ -1,4 +1,4 @@
-// sea.glsl: Gerstner and Airy surface and linear kinematics in each body's frame (same maths as
+// sea.glsl: Gerstner and Airy surface in each body's frame (same maths as
 // mjbuoy/sea.cc, in positions relative to the body's COM; the per-body
 // phases come from the CPU in double). Needs shared.h and buoy.h first.
 
@@ -86,38 +86,6 @@ float seaStretch(float z, float eta) {
   return clamp((z - eta) * depth / (depth + eta), -depth, 0.0);
 }
 
-// 1 - e^(-2 x) for x >= 0 without cancellation (GLSL has no expm1)
-float seaOm2(float x) {
-  return x < 0.01 ? 2.0 * x * (1.0 - x * (1.0 - x * 2.0 / 3.0)) : 1.0 - exp(-2.0 * x);
-}
-
-// linear depth profiles (ch, sh, cc) = (cosh s / sinh D, sinh s / sinh D,
-// cosh s / cosh D), s = k (zs + h), D = k h, as e^(k zs) times bounded
-// factors so nothing overflows (float cosh overflows past 89); deep: e^(k zs)
-vec3 seaProfile(int i, float zs) {
-  float k = wave[i].k, e = exp(k * zs);
-  if (depth <= 0.0) return vec3(e);
-  float s = k * (zs + depth), D = k * depth, e2s = exp(-2.0 * s), sd = seaOm2(D);
-  return vec3(e * (1.0 + e2s) / sd, e * seaOm2(s) / sd, e * (1.0 + e2s) / (1.0 + exp(-2.0 * D)));
-}
-
-// water velocity [m/s] at the point (x, z above the level), label a,
-// under the surface eta: linear theory of every component
-vec3 seaVelocity(int b, vec2 a, vec2 x, float z, float eta) {
-  vec3 v = vec3(current, 0.0);
-  float zs = seaStretch(z, eta);
-  for (int i = 0; i < nwave; i++) {
-    float th = thetaAt(b, i, a, x), ao = wave[i].amp * wave[i].omega;
-    vec3 f = seaProfile(i, zs);
-    float uh = ao * f.x * cos(th);
-    v += vec3(uh * wave[i].dx, uh * wave[i].dy, ao * f.y * sin(th));
-  }
-  return v;
-}
-
-// dynamic pressure over rho g [m] at the same point
-float seaDynamic(int b, vec2 a, vec2 x, float z, float eta) {
-  float zs = seaStretch(z, eta), p = 0.0;
-  for (int i = 0; i < nwave; i++) p += wave[i].amp * seaProfile(i, zs).z * cos(thetaAt(b, i, a, x));
-  return p;
-}
+// the linear profiles, velocity and dynamic pressure below the surface:
+// per component integrated over the wet pieces in closed form (waveint.glsl,
+// tris.comp), from e^L at the wet vertices (verts.comp)

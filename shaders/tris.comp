@@ -1,9 +1,11 @@
 #version 430
 // stage 2, one workgroup per chunk of one hull's triangles (GChunk), each
 // invocation BUOY_PER of them: cut each triangle at the waterline and
-// integrate the pressure exactly (mjbuoy/pressure.cc), then Kerner's
-// viscous resistance, pressure/suction drag and slamming at the wet centroid
-// (mjbuoy/hydro.cc); each invocation sums its triangles in a fixed order,
+// integrate the pressure exactly (mjbuoy/pressure.cc; the linear dynamic
+// pressure and the water velocity per wave component in closed form,
+// waveint.glsl), then Kerner's viscous resistance, pressure/suction drag
+// and slamming at the wet centroid with the water velocity's mean over the
+// wet part (mjbuoy/hydro.cc, docs/physics.md); each invocation sums its triangles in a fixed order,
 // so no per-triangle buffer. The viscous force needs the hull's wetted length and sbar, known
 // only after all its triangles: its per-triangle factor (1 + sbar - s_k),
 // s_k = (e_k - lo) / len, is linear in e_k, so the chunk keeps sum g and
@@ -11,6 +13,7 @@
 #include "shared.h"
 #include "pipeline.h"
 #include "sea.glsl"
+#include "waveint.glsl"
 
 layout(local_size_x = BUOY_LOCAL) in;
 layout(std430, binding = B_HULL) readonly buffer Hulls { GHull hull[]; };
@@ -23,6 +26,7 @@ layout(std430, binding = B_SLAMCUR) writeonly buffer Scur { vec4 scur[]; };
 uniform samplerBuffer tVout;   // B_VOUT, B_LAB and B_TRI as buffer textures
 uniform samplerBuffer tLab;
 uniform isamplerBuffer tTri;
+uniform samplerBuffer tExp;    // B_EXP
 
 uniform int nchunk;
 uniform float rhog;    // rho g [N/m^3]
@@ -63,31 +67,81 @@ float effMass(int b, vec3 cc, vec3 u) {
   return 1.0 / (r0.w + dot(w, Jw));
 }
 
-// Radon's degree-5 7-point rule (as mjbuoy/wavepress.cc): barycentric
-// points and weights
-const float RA = 0.10128650732345634, RB = 0.47014206410511511;
-const float WA = 0.12593918054482715, WB = 0.13239415278850619;
+// one fan piece of the wet polygon, corners rotated so corner 0 is the
+// highest (largest Wheeler height zs: Re of every L - L0 <= 0 then)
+struct Piece {
+  vec3 q0, q1, q2;   // corners rel. COM
+  vec3 zs;           // Wheeler heights [m]
+  vec4 dp;           // horizontal position differences q1 - q0, q2 - q0
+  vec4 dl;           // the same of the Gerstner labels
+  float a2;          // twice the area (0: skip)
+  int rot;           // corner 0 is the polygon corner c0 + rot of (c0, c1, c2)
+};
 
-// the dynamic pressure over rho g [m] integrated over piece q (+= into dA
-// and drA, as the hydrostatic depth); e, l: the surface height above the
-// level and Gerstner label at its corners, linear in between (as the cut
-// assumes), so no label search at the quadrature points
-void dynPiece(int b, vec3 q0, vec3 q1, vec3 q2, vec3 e, vec2 l0, vec2 l1, vec2 l2, vec3 n,
-              float zc, inout float dA, inout vec3 drA) {
-  float A = 0.5 * dot(cross(q1 - q0, q2 - q0), n);
-  if (!(A > 0.0)) return;
-  for (int i = 0; i < 7; i++) {
-    vec3 bc = i == 0 ? vec3(1.0 / 3.0) : i < 4 ? vec3(RA) : vec3(RB);
-    float o = i == 0 ? 1.0 / 3.0 : i < 4 ? 1.0 - 2.0 * RA : 1.0 - 2.0 * RB;
-    int j = (i - 1) % 3;
-    if (i > 0) bc[j] = o;
-    float w = i == 0 ? 0.225 : i < 4 ? WA : WB;
-    vec3 r = bc.x * q0 + bc.y * q1 + bc.z * q2;
-    vec2 a = bc.x * l0 + bc.y * l1 + bc.z * l2;
-    float p = w * A * seaDynamic(b, a, r.xy, r.z + zc, dot(bc, e));
-    dA += p;
-    drA += p * r;
+Piece makePiece(vec3 p0, vec3 p1, vec3 p2, float z0, float z1, float z2, vec2 m0, vec2 m1,
+                vec2 m2, vec3 n) {
+  Piece P;
+  float A = 0.5 * dot(cross(p1 - p0, p2 - p0), n);
+  P.a2 = A > 0.0 ? 2.0 * A : 0.0;
+  P.rot = z0 >= z1 && z0 >= z2 ? 0 : z1 >= z2 ? 1 : 2;
+  bool r0 = P.rot == 0, r1 = P.rot == 1;
+  P.q0 = r0 ? p0 : r1 ? p1 : p2;
+  P.q1 = r0 ? p1 : r1 ? p2 : p0;
+  P.q2 = r0 ? p2 : r1 ? p0 : p1;
+  P.zs = r0 ? vec3(z0, z1, z2) : r1 ? vec3(z1, z2, z0) : vec3(z2, z0, z1);
+  vec2 l0 = r0 ? m0 : r1 ? m1 : m2, l1 = r0 ? m1 : r1 ? m2 : m0, l2 = r0 ? m2 : r1 ? m0 : m1;
+  P.dp = vec4(P.q1.xy - P.q0.xy, P.q2.xy - P.q0.xy);
+  P.dl = vec4(l1 - l0, l2 - l0);
+  return P;
+}
+
+// the exponent's changes from corner 0 to corners 1, 2 of piece P for
+// component wv: L = k zs + i theta (Airy phase at x, Gerstner at the label)
+void pieceSpan(Piece P, GWave wv, out vec2 x, out vec2 y) {
+  vec2 kd = wv.k * vec2(wv.dx, wv.dy);
+  vec4 d = wv.kind != 0.0 ? P.dp : P.dl;
+  x = vec2(wv.k * (P.zs.y - P.zs.x), dot(kd, d.xy));
+  y = vec2(wv.k * (P.zs.z - P.zs.x), dot(kd, d.zw));
+}
+
+// adds component wv's integrals over part k of n^2 of piece P (triPart):
+// the dynamic pressure over rho g times 1 and r (dA, drA; with lin) and
+// the water velocity times area (vs); f0..f2: e^L at the polygon corners
+// c0..c2 of P (B_EXP layout)
+void wavePart(Piece P, GWave wv, vec4 f0, vec4 f1, vec4 f2, bool lin, int n, int k,
+              inout float dA, inout vec3 drA, inout vec3 vs) {
+  if (!(P.a2 > 0.0) || wv.k * P.zs.x < -40.0) return;  // e^(k zs) < 4e-18 on all of it
+  bool r0 = P.rot == 0, r1 = P.rot == 1;
+  vec4 E0 = r0 ? f0 : r1 ? f1 : f2;
+  vec2 x, y;
+  pieceSpan(P, wv, x, y);
+  // e^(k zs) and, at finite depth, e^(-k (zs + 2h)) (real parts flip); a
+  // loop, not an if: llvmpipe runs an if's body for every lane, masked
+  float e2 = wv.e2kh, sv = 0.0;
+  vec2 S = vec2(0.0), M1 = S, M2 = S;
+  for (int f = 0; f < (e2 > 0.0 ? 2 : 1); f++) {
+    float sg = f == 0 ? 1.0 : -1.0;
+    vec2 s = vec2(0.0);
+    triPart(vec2(sg * x.x, x.y), vec2(sg * y.x, y.y), f == 0 ? E0.xy : E0.zw, P.a2, n, k, s, M1,
+            M2);
+    S += s;
+    sv += sg * s.y;
   }
+  float amp = wv.amp, cp = amp / (1.0 + e2), cv = amp * wv.omega / (1.0 - e2);
+  // velocity: horizontal (e+ + e-) cos, vertical (e+ - e-) sin, over 1 - e^(-2kh)
+  vs += cv * vec3(S.x * vec2(wv.dx, wv.dy), sv);
+  if (!lin) return;
+  // pressure: (e+ + e-) cos over 1 + e^(-2kh), its moments
+  dA += cp * S.x;
+  drA += cp * ((S.x - M1.x - M2.x) * P.q0 + M1.x * P.q1 + M2.x * P.q2);
+}
+
+// e^L of component w at a cut point (on the surface: zs = 0) with Airy
+// position x, Gerstner label l
+vec4 cutExp(GWave wv, float ph, vec2 x, vec2 l) {
+  float th = ph + wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? x : l);
+  vec2 cs = vec2(cos(th), sin(th));
+  return vec4(cs, wv.e2kh * cs);
 }
 
 void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) {
@@ -118,45 +172,82 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
   vec3 q0, q1, q2;
   // depths: Kerner's below the surface, -h (0 on the cut); linear theory's
   // hydrostatic part below the still level, -(z + zc), plus the dynamic
-  // pressure by quadrature
+  // pressure (wavePart)
   bool lin = linear != 0;
   float d0 = lin ? -(P0.z + zc) : -P0.w, d1 = lin ? -(P1.z + zc) : -P1.w;
   float d2 = lin ? -(P2.z + zc) : -P2.w, da = lin ? -(a.z + zc) : -a.w;
   float db = lin ? -(bq.z + zc) : -bq.w, dc = lin ? -(c.z + zc) : -c.w;
   float dab = lin ? -(pab.z + zc) : 0.0, dca = lin ? -(pca.z + zc) : 0.0;
-  vec2 L0 = texelFetch(tLab, t.x).xy, L1 = texelFetch(tLab, t.y).xy, L2 = texelFetch(tLab, t.z).xy;
-  vec2 l3 = L0 + L1 + L2;
-  // surface height above the level (z - h) and label at the corners and
-  // cut points, the labels cut with the same fractions as the positions
-  vec2 ma = o0 ? L0 : o1 ? L1 : L2, mb = o0 ? L1 : o1 ? L2 : L0, mc = o0 ? L2 : o1 ? L0 : L1;
-  vec2 mab = ma + a.w / (a.w - bq.w) * (mb - ma), mca = ma + a.w / (a.w - c.w) * (mc - ma);
-  float ea = a.z + zc - a.w, eb = bq.z + zc - bq.w, ec = c.z + zc - c.w;
-  float eab = pab.z + zc, eca = pca.z + zc;
   if (nw == 3) {
     q0 = P0.xyz; q1 = P1.xyz; q2 = P2.xyz;
     piece(q0, q1, q2, d0, d1, d2, n, area, dA, drA, rA);
-    if (lin) {
-      vec3 e = vec3(P0.z - P0.w, P1.z - P1.w, P2.z - P2.w) + zc;
-      dynPiece(b, q0, q1, q2, e, L0, L1, L2, n, zc, dA, drA);
-    }
   } else if (nw == 1) {
     q0 = a.xyz; q1 = pab; q2 = pca;
     piece(q0, q1, q2, da, dab, dca, n, area, dA, drA, rA);
-    if (lin) dynPiece(b, q0, q1, q2, vec3(ea, eab, eca), ma, mab, mca, n, zc, dA, drA);
   } else {
     q0 = pab; q1 = bq.xyz; q2 = c.xyz;
     piece(q0, q1, q2, dab, db, dc, n, area, dA, drA, rA);
     piece(pab, c.xyz, pca, dab, dc, dca, n, area, dA, drA, rA);
-    if (lin) {
-      dynPiece(b, q0, q1, q2, vec3(eab, eb, ec), mab, mb, mc, n, zc, dA, drA);
-      dynPiece(b, pab, c.xyz, pca, vec3(eab, ec, eca), mab, mc, mca, n, zc, dA, drA);
-    }
   }
   if (!(area > 0.0)) {
     if (!(area <= 0.0)) pF += vec3(kNaN);  // NaN area: heights not finite
     if (first != 0) scur[k] = vec4(0.0);
     return;
   }
+
+  // the waves over the wet polygon c0 c1 c2 (c3), fanned from c0: each
+  // component's e^L at the corners (wet vertices: verts.comp; cut points
+  // here), integrated exactly per piece (waveint.glsl); the water velocity
+  // is its mean over the wet part (docs/physics.md)
+  vec3 vs = vec3(0.0);
+  if (nwave > 0) {
+    vec2 L0 = texelFetch(tLab, t.x).xy, L1 = texelFetch(tLab, t.y).xy, L2 = texelFetch(tLab, t.z).xy;
+    // labels: at the cut points cut with the same fractions as the positions
+    vec2 ma = o0 ? L0 : o1 ? L1 : L2, mb = o0 ? L1 : o1 ? L2 : L0, mc = o0 ? L2 : o1 ? L0 : L1;
+    vec2 mab = ma + a.w / (a.w - bq.w) * (mb - ma), mca = ma + a.w / (a.w - c.w) * (mc - ma);
+    // Wheeler heights at the wet vertices, 0 at the cut points
+    float s0 = seaStretch(P0.z + zc, P0.z + zc - P0.w), s1 = seaStretch(P1.z + zc, P1.z + zc - P1.w);
+    float s2 = seaStretch(P2.z + zc, P2.z + zc - P2.w);
+    float sa = o0 ? s0 : o1 ? s1 : s2, sb = o0 ? s1 : o1 ? s2 : s0, sc = o0 ? s2 : o1 ? s0 : s1;
+    // polygon corners: vertex index (-1 at a cut), position, label, zs
+    vec3 c0 = nw == 3 ? P0.xyz : nw == 1 ? a.xyz : pab, c1 = nw == 3 ? P1.xyz : nw == 1 ? pab : bq.xyz;
+    vec3 c2 = nw == 3 ? P2.xyz : nw == 1 ? pca : c.xyz;
+    vec2 n0 = nw == 3 ? L0 : nw == 1 ? ma : mab, n1 = nw == 3 ? L1 : nw == 1 ? mab : mb;
+    vec2 n2 = nw == 3 ? L2 : nw == 1 ? mca : mc;
+    float z0 = nw == 3 ? s0 : nw == 1 ? sa : 0.0, z1 = nw == 3 ? s1 : nw == 1 ? 0.0 : sb;
+    float z2 = nw == 3 ? s2 : nw == 1 ? 0.0 : sc;
+    Piece A1 = makePiece(c0, c1, c2, z0, z1, z2, n0, n1, n2, n);
+    Piece A2 = makePiece(c0, c2, pca, z0, z2, 0.0, n0, n2, mca, n);
+    // each component's e^L at the corners: the three vertices' (read even
+    // where dry, then unused) and the two cut points' (computed even where
+    // none: llvmpipe runs both sides of a per-lane choice)
+    int nv = nw == 2 ? 2 : 1;  // pieces
+    for (int w = 0; w < nwave; w++) {
+      GWave wv = wave[w];  // once: llvmpipe may load an SSBO lane by lane
+      float ph = phase[b * nwave + w];
+      vec4 E0 = texelFetch(tExp, t.x * nwave + w), E1 = texelFetch(tExp, t.y * nwave + w);
+      vec4 E2 = texelFetch(tExp, t.z * nwave + w);
+      vec4 Ea = o0 ? E0 : o1 ? E1 : E2, Eb = o0 ? E1 : o1 ? E2 : E0, Ec = o0 ? E2 : o1 ? E0 : E1;
+      vec4 Eab = cutExp(wv, ph, pab.xy, mab), Eca = cutExp(wv, ph, pca.xy, mca);
+      vec4 e0 = nw == 3 ? E0 : nw == 1 ? Ea : Eab, e1 = nw == 3 ? E1 : nw == 1 ? Eab : Eb;
+      vec4 e2 = nw == 3 ? E2 : nw == 1 ? Eca : Ec;
+      // the second piece of a quad in a loop (an if runs for every lane)
+      // the pieces' parts (triParts: one each, but for pieces wider than
+      // about a sixth of the wavelength) in one loop with one call
+      // (llvmpipe would run both sides of an if)
+      vec2 x1, y1, x2, y2;
+      pieceSpan(A1, wv, x1, y1);
+      pieceSpan(A2, wv, x2, y2);
+      int n1 = triParts(x1, y1), n2 = triParts(x2, y2);
+      int m1 = n1 * n1, np = m1 + (nv == 2 ? n2 * n2 : 0);
+      for (int it = 0; it < np; it++) {
+        bool p0 = it < m1;
+        wavePart(p0 ? A1 : A2, wv, e0, p0 ? e1 : e2, p0 ? e2 : Eca, lin, p0 ? n1 : n2,
+                 p0 ? it : it - m1, dA, drA, vs);
+      }
+    }
+  }
+
   float e0 = dot(q0, dir), e1 = dot(q1, dir), e2 = dot(q2, dir);
   float e3 = nw == 2 ? dot(pca, dir) : e0;
   float A = area;
@@ -168,11 +259,9 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
   pF -= rhog * dA * n;
   pT -= rhog * cross(drA, n);
 
-  // flow-relative velocity: point velocity minus the water's there; the
-  // label search starts from the mean of the vertex labels
-  vec2 la = seaLabel(b, cc.xy, l3 / 3.0);
-  float eta = seaEta(b, la, cc.xy);
-  vec3 v = vlin + cross(vang, cc) - seaVelocity(b, la, cc.xy, cc.z + zc, eta);
+  // flow-relative velocity: point velocity minus the water's, its mean
+  // over the wet part
+  vec3 v = vlin + cross(vang, cc) - (vec3(current, 0.0) + vs / A);
   float v2 = dot(v, v), sp = sqrt(v2);
   if (!(sp <= 3.0e38)) {
     // |v| not finite in float (NaN water velocity, or overflow)

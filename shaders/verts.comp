@@ -5,6 +5,7 @@
 #include "shared.h"
 #include "pipeline.h"
 #include "sea.glsl"
+#include "waveint.glsl"
 
 layout(local_size_x = BUOY_VERT_LOCAL) in;
 layout(std430, binding = B_HULL) readonly buffer Hulls { GHull hull[]; };
@@ -13,6 +14,9 @@ layout(std430, binding = B_VCHUNK) readonly buffer Vchunks { GChunk vchunk[]; };
 uniform samplerBuffer tVert;                       // B_VERT as a buffer texture
 layout(std430, binding = B_VOUT) writeonly buffer Vout { vec4 vout[]; };
 layout(std430, binding = B_LAB) writeonly buffer Labs { vec2 lab[]; };
+// B_EXP through an image: a buffer texture holds 2^27 texels on llvmpipe,
+// a storage block only 2^27 bytes
+layout(binding = 0, rgba32f) uniform writeonly imageBuffer iExp;
 
 uniform int nvchunk;
 
@@ -29,9 +33,27 @@ void main() {
       vec3 p = texelFetch(tVert, i).xyz;
       vec3 r = vec3(dot(r0, p), dot(r1, p), dot(r2, p)) + o.xyz;
       vec2 a = seaLabel(b, r.xy, r.xy);
-      vec4 q = vec4(r, r.z + o.w - seaEta(b, a, r.xy));
+      float eta = seaEta(b, a, r.xy);
+      vec4 q = vec4(r, r.z + o.w - eta);
       lab[i] = a;
       vout[i] = q;
+      // each component's e^(k zs + i theta) and e^(-k (zs + 2 h) + i theta),
+      // zs the Wheeler height, at wet vertices: the two exponentials of
+      // the linear profiles cosh(k (zs + h)) / cosh(k h) and its kin
+      // (docs/physics.md), each bounded by 1 (the second 0 where e^(-k h)
+      // is below float's resolution, gl.cc gwave)
+      if (q.w <= 0.0) {
+        float zs = seaStretch(r.z + o.w, eta);
+        for (int w = 0; w < nwave; w++) {
+          GWave wv = wave[w];
+          float th = thetaAt(b, w, a, r.xy), k = wv.k;
+          vec2 cs = vec2(cos(th), sin(th));
+          // e^(-k (zs + 2h)) = e^(-2kh) / e^(k zs), no second exp: e^(k zs) >=
+          // e^(-k h) > e^-17 where e2kh > 0 (zs >= -h)
+          float ep = exp(k * zs), em = wv.e2kh > 0.0 ? wv.e2kh / ep : 0.0;
+          imageStore(iExp, i * nwave + w, vec4(ep * cs, em * cs));
+        }
+      }
     }
   }
 }

@@ -1,0 +1,79 @@
+// waveint.glsl: exact integrals of e^L over a triangle on which L is linear
+// (complex), by divided differences of exp at the corner values
+// (Hermite-Genocchi, docs/physics.md "Linear wave kinematics and
+// pressure"): integral(e^L dA) = 2 A exp[L0, L1, L2] and the barycentric
+// moments integral(lambda_i e^L dA) = 2 A exp[Li, Li, Lj, Lk]. Complex
+// numbers are vec2 (re, im).
+
+// k h beyond which the finite-depth profile's second exponential,
+// e^(-k (zs + 2 h)) <= e^(-k h) of the surface value, is below float's
+// resolution and dropped (gl.cc gwave sets e2kh = 0)
+const float WI_KHMAX = 17.0;
+
+vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
+vec2 cexp(vec2 z) { return exp(z.x) * vec2(cos(z.y), sin(z.y)); }
+
+// nodes 0, x, y within WI_TAYLOR of each other (|x|, |y| <= WI_TAYLOR):
+// s0 = exp[0,x,y], sa = exp[0,0,x,y], sb = exp[0,x,x,y], as the Taylor
+// series exp[z_1..z_n] = sum_{m>=n-1} h_{m-n+1}(z) / m! (h: complete
+// homogeneous symmetric polynomials; h_n(x,y) = x h_{n-1}(x,y) + y^n,
+// h_n(x,x,y) = x h_{n-1}(x,x,y) + h_n(x,y)), WI_TERMS terms: the first left
+// out is below (WI_TERMS + 1) / (WI_TERMS + 2)! = 2.5e-7 of 1 at r = 1,
+// 2e-6 of the sums (1/2, 1/6), far below the parity tolerance (1e-4). A
+// fixed count: llvmpipe runs a loop with per-lane exits (or a nested loop)
+// in the hot path several times slower than the terms it would save
+const float WI_TAYLOR = 1.0;
+const int WI_TERMS = 9;
+void ddTaylor(vec2 x, vec2 y, out vec2 s0, out vec2 sa, out vec2 sb) {
+  vec2 g = vec2(1.0, 0.0), u = g, yn = g;
+  float f2 = 0.5, f3 = 1.0 / 6.0;  // 1/(n+2)!, 1/(n+3)!
+  s0 = f2 * g;
+  sa = f3 * g;
+  sb = f3 * u;
+  for (int n = 1; n < WI_TERMS; n++) {
+    f2 = f3;
+    f3 /= float(n + 3);
+    yn = cmul(yn, y);
+    g = cmul(x, g) + yn;
+    u = cmul(x, u) + g;
+    s0 += f2 * g;
+    sa += f3 * g;
+    sb += f3 * u;
+  }
+}
+
+// parts of a piece: one whose node gap r (max of |x|, |y|, |y - x|)
+// exceeds WI_TAYLOR is split into n^2 similar triangles of gap r / n
+// (n <= 64), each summed by its series about its own corner 0; the
+// series' terms then stay below e^WI_TAYLOR, so float round-off stays
+// below 3e-7 of the largest |e^L| (pieces up to 64 units of r: some 10
+// wavelengths). NaN: one part, and the NaN reaches the sums
+int triParts(vec2 x, vec2 y) {
+  float r = max(length(x), max(length(y), length(y - x)));
+  float nr = ceil(r / WI_TAYLOR);
+  return nr > 1.0 ? int(min(nr, 64.0)) : 1;
+}
+
+// adds the integrals of e^L over part k of n^2 of a triangle on which L is
+// linear with corner values L0 + (0, x, y), e0 = e^L0, a2 twice its area:
+// S += integral e^L dA, M1, M2 += integral lambda_1,2 e^L dA (the
+// corner-0 moment is S - M1 - M2). Part k: cell (i, j) = (k / n, k % n) of
+// the n x n grid of barycentrics (alpha, beta), its lower triangle if
+// inside, else the upper triangle of the mirrored cell; part 0's corner 0
+// is the piece's (cexp(0) = 1 exactly)
+void triPart(vec2 x, vec2 y, vec2 e0, float a2, int n, int k, inout vec2 S, inout vec2 M1,
+             inout vec2 M2) {
+  int i = k / n, j = k - i * n;
+  bool up = i + j <= n - 1;
+  vec2 c = up ? vec2(i, j) : vec2(n - i, n - j);   // corner 0 in units 1/n
+  float sg = up ? 1.0 : -1.0, fn = float(n);        // corners 1, 2 at c + sg (1,0), (0,1)
+  vec2 xs = x / fn, ys = y / fn, s0, sa, sb;
+  ddTaylor(sg * xs, sg * ys, s0, sa, sb);
+  vec2 e = cmul(e0, cexp(c.x * xs + c.y * ys));
+  vec2 m0 = cmul(e, sa), m1 = cmul(e, sb), m2 = cmul(e, s0 - sa - sb);
+  float w = a2 / (fn * fn);
+  S += w * cmul(e, s0);
+  // parent barycentrics alpha, beta of the part's three corners
+  M1 += w / fn * (c.x * m0 + (c.x + sg) * m1 + c.x * m2);
+  M2 += w / fn * (c.y * m0 + c.y * m1 + (c.y + sg) * m2);
+}
