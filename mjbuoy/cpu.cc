@@ -147,10 +147,11 @@ static void vertexWaves(const WaveTab& t, size_t nw, double zs,
 // the dynamic pressure integrals Pd, Pr (docs/physics.md, "Pressure") and
 // the integral of the water's wave velocity V over the wet polygon of wt,
 // in closed form on the fan from one of its hull vertices (waveint.h);
-// fc the triangle's global vertex indices, v0 the hull's first
+// fc the triangle's global vertex indices, v0 the hull's first; Pr only
+// with moments
 static void wetWaves(const Sea& sea, const WaveTab& t, size_t nw, const Wet& wt, const int* fc,
-                     int v0, const double* lab, const HullScr& hs, double* Pd, double Pr[3],
-                     double V[3]) {
+                     int v0, const double* lab, const HullScr& hs, bool moments, double* Pd,
+                     double Pr[3], double V[3]) {
   *Pd = 0;
   for (int j = 0; j < 3; j++) Pr[j] = V[j] = 0;
   double zq[4], lq[4][2];
@@ -183,7 +184,7 @@ static void wetWaves(const Sea& sea, const WaveTab& t, size_t nw, const Wet& wt,
     const double zs[3] = {zq[s0], zq[i1], zq[i2]};
     const double l3[3][2] = {{lq[s0][0], lq[s0][1]}, {lq[i1][0], lq[i1][1]},
                              {lq[i2][0], lq[i2][1]}};
-    pieceIntegrals(t, sea, E0, hs.SC + 2 * nw * v, q, zs, l3, area, Pd, Pr, V);
+    pieceIntegrals(t, sea, E0, hs.SC + 2 * nw * v, q, zs, l3, area, moments, Pd, Pr, V);
   }
 }
 
@@ -314,7 +315,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     for (int j = 0; j < 3; j++) uq[j] = j < 2 ? sea.current[j] : 0;
     if (nw > 0) {
       double Pd, Prd[3], V[3];
-      wetWaves(sea, s->tab, nw, wt, fc, hl.v0, s->lab.data(), hs, &Pd, Prd, V);
+      wetWaves(sea, s->tab, nw, wt, fc, hl.v0, s->lab.data(), hs, linear, &Pd, Prd, V);
       for (int j = 0; j < 3; j++) uq[j] += V[j] / wt.area;
       if (linear) {
         hydrostaticLevel(sea, wt, com, &P, Pr);

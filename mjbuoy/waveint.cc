@@ -174,8 +174,8 @@ static int above(const WaveTab& t, double x) {
 
 void pieceIntegrals(const WaveTab& t, const Sea& sea, const double* const E0[4],
                     const double* sc0, const double q[3][3], const double zs[3],
-                    const double lab[3][2], double area, double* P, double Pr[3],
-                    double V[3]) {
+                    const double lab[3][2], double area, bool moments, double* P,
+                    double Pr[3], double V[3]) {
   KernIn in;
   in.k = t.k.data();
   in.kdx = t.kdx.data();
@@ -194,6 +194,7 @@ void pieceIntegrals(const WaveTab& t, const Sea& sea, const double* const E0[4],
     rho = std::max(rho, std::fabs(in.dz[c]) + std::sqrt(std::max(hp, hl)));
   }
   in.rho = rho;
+  in.mom = moments;
   const double zmax = std::max({zs[0], zs[1], zs[2]}), zmin = std::min({zs[0], zs[1], zs[2]});
   // past this k the piece is too coarse for the series: subdivided
   const int jfb = rho > 0 ? above(t, kRMax / rho) : t.n;

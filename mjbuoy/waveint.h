@@ -57,11 +57,12 @@ void subdivided(double L0r, double phr, double phi, double u1r, double u1i, doub
 // ([0] real, [1] imaginary; [2], [3] the finite-depth second exponent),
 // sc0 the sin and cos of its phases (Sea::solve order); zs[c] the
 // stretched height of each corner, lab[c] its Gerstner label [m]; area
-// the piece's [m^2]
+// the piece's [m^2]; moments false: Pr is not computed (Kerner's pressure
+// needs the velocity only)
 void pieceIntegrals(const WaveTab& t, const Sea& sea, const double* const E0[4],
                     const double* sc0, const double q[3][3], const double zs[3],
-                    const double lab[3][2], double area, double* P, double Pr[3],
-                    double V[3]);
+                    const double lab[3][2], double area, bool moments, double* P,
+                    double Pr[3], double V[3]);
 
 }  // namespace mjb
 

@@ -28,8 +28,8 @@ struct Vec {
 };
 
 // components [j, j + W): their series to the degree the widest needs
-// (the last: k ascending), accumulated into acc[7]
-template <int W>
+// (the last: k ascending), accumulated into acc[7]; MOM false: S only
+template <int W, bool MOM>
 static inline void seriesChunk(const KernIn& in, int j, typename Vec<W>::T* acc) {
   typedef typename Vec<W>::T V;
   typedef Vec<W> L;
@@ -56,15 +56,17 @@ static inline void seriesChunk(const KernIn& in, int j, typename Vec<W>::T* acc)
     t = hr * ur[0] - hi * ui[0] + pr;
     hi = hr * ui[0] + hi * ur[0] + pi;
     hr = t;
+    const double c2 = kInvF2[m];
+    Sr += c2 * hr;
+    Si += c2 * hi;
+    if (!MOM) continue;
     t = gr * ur[0] - gi * ui[0] + hr;
     gi = gr * ui[0] + gi * ur[0] + hi;
     gr = t;
     t = fr * ur[1] - fi * ui[1] + hr;
     fi = fr * ui[1] + fi * ur[1] + hi;
     fr = t;
-    const double c2 = kInvF2[m], c3 = kInvF3[m];
-    Sr += c2 * hr;
-    Si += c2 * hi;
+    const double c3 = kInvF3[m];
     T0r += c3 * hr;
     T0i += c3 * hi;
     T1r += c3 * gr;
@@ -76,9 +78,11 @@ static inline void seriesChunk(const KernIn& in, int j, typename Vec<W>::T* acc)
   const V wp = L::ld(in.wp + j);
   const V Ir = er * Sr - ei * Si, Ii = er * Si + ei * Sr;
   acc[0] += wp * Ir;
-  acc[1] += wp * (er * T0r - ei * T0i);
-  acc[2] += wp * (er * T1r - ei * T1i);
-  acc[3] += wp * (er * T2r - ei * T2i);
+  if (MOM) {
+    acc[1] += wp * (er * T0r - ei * T0i);
+    acc[2] += wp * (er * T1r - ei * T1i);
+    acc[3] += wp * (er * T2r - ei * T2i);
+  }
   acc[4] += L::ld(in.wux + j) * Ir;
   acc[5] += L::ld(in.wuy + j) * Ir;
   acc[6] += L::ld(in.wz + j) * Ii;
@@ -90,8 +94,13 @@ static void seriesRange(const KernIn& in, int j0, int j1, double out[7]) {
   typename Vec<W>::T acc[7] = {};
   typename Vec<1>::T acc1[7] = {};
   int j = j0;
-  for (; j + W <= j1; j += W) seriesChunk<W>(in, j, acc);
-  for (; j < j1; j++) seriesChunk<1>(in, j, acc1);
+  if (in.mom) {
+    for (; j + W <= j1; j += W) seriesChunk<W, true>(in, j, acc);
+    for (; j < j1; j++) seriesChunk<1, true>(in, j, acc1);
+  } else {
+    for (; j + W <= j1; j += W) seriesChunk<W, false>(in, j, acc);
+    for (; j < j1; j++) seriesChunk<1, false>(in, j, acc1);
+  }
   for (int i = 0; i < 7; i++) out[i] += Vec<W>::sum(acc[i]) + Vec<1>::sum(acc1[i]);
 }
 

@@ -22,6 +22,7 @@ struct KernIn {
   double dl[2][2];   // their Gerstner label minus corner 0's [m]
   double sgn;        // +1: exponent k z'; -1: -k (z' + 2 h)
   double rho;        // |u_c| <= k rho for every component
+  int mom;           // 0: only S (velocity, pressure force), T_c left at 0
 };
 
 // out += sums over components j in [j0, j1) of w Re(e^L0 S) (pressure),

@@ -109,7 +109,8 @@ ST libST(cld u1, cld u2, int level) {
                    {double(u1.real()), double(u2.real())},
                    {{double(u1.imag()), 0}, {double(u2.imag()), 0}},
                    {{0, 0}, {0, 0}}, 1, std::max(std::abs(double(u1.real())) + std::abs(double(u1.imag())),
-                                                 std::abs(double(u2.real())) + std::abs(double(u2.imag())))};
+                                                 std::abs(double(u2.real())) + std::abs(double(u2.imag()))),
+                   1};
     for (double& o : out[part]) o = 0;
     if (level == mjb::kSimdScalar) mjb::seriesScalar(in, 0, 1, out[part]);
     if (level == mjb::kSimdAvx2) mjb::seriesAvx2(in, 0, 1, out[part]);
@@ -297,7 +298,7 @@ void closedForm(const mjb::Sea& sea, const mjb::WaveNow* wn, const double q[3][3
   x[1] = u[2] * v[0] - u[0] * v[2];
   x[2] = u[0] * v[1] - u[1] * v[0];
   const double area = 0.5 * std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-  mjb::pieceIntegrals(tab, sea, E0, sc0.data(), q, zs, lab, area, &out->P, out->R, out->V);
+  mjb::pieceIntegrals(tab, sea, E0, sc0.data(), q, zs, lab, area, true, &out->P, out->R, out->V);
 }
 
 // force, moment and velocity integrals over one wet piece, closed form
