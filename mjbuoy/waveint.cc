@@ -191,7 +191,8 @@ void pieceIntegrals(const WaveTab& t, const Sea& sea, const double* const E0[4],
       hp += in.dp[c][j] * in.dp[c][j];
       hl += in.dl[c][j] * in.dl[c][j];
     }
-    rho = std::max(rho, std::fabs(in.dz[c]) + std::sqrt(std::max(hp, hl)));
+    // |u_c| = k |(dz, D . dx)| <= k sqrt(dz^2 + |dx|^2)
+    rho = std::max(rho, std::sqrt(in.dz[c] * in.dz[c] + std::max(hp, hl)));
   }
   in.rho = rho;
   in.mom = moments;
