@@ -22,12 +22,24 @@ static size_t maxItems(const Buoy& b) {
   return n;
 }
 
+// most vertices of one hull
+static size_t maxVerts(const Buoy& b) {
+  size_t n = 1;
+  for (const Hull& h : b.hull) n = std::max(n, size_t(h.nv));
+  return n;
+}
+
+// doubles per wave of e^L at a vertex: real and imaginary part of one
+// exponent, two at finite depth (waveint.h; depth does not change after attach)
+static size_t eStride(const Sea& sea) { return sea.depth > 0 ? 4 : 2; }
+
 // per thread: 4 per wave for solve(), then x, y, a0, a1, z, stretched
-// height z', 2 per wave (phases) and 4 per wave (e^L of both exponents,
-// waveint.h) for every point of a hull, and 2 per wave of exp arguments
+// height z' and 2 per wave (phases) for every point of a hull, e^L
+// (eStride per wave) for every vertex of a hull, and 2 per wave of exp
+// arguments
 static size_t scratchSize(const Buoy& b) {
   size_t nw = std::max(b.wcap, b.cfg.sea.waves.size());
-  return 6 * nw + (6 + 6 * nw) * maxItems(b);
+  return 6 * nw + (6 + 2 * nw) * maxItems(b) + eStride(b.cfg.sea) * nw * maxVerts(b);
 }
 
 void makeState(const Buoy& b, State* s) {
@@ -166,8 +178,9 @@ static void wetWaves(const Sea& sea, const WaveTab& t, size_t nw, const Wet& wt,
   }
   if (s0 < 0) return;  // no hull vertex is wet: cannot happen for nq > 0
   const int v = fc[wt.qa[s0]] - v0;
-  const double* Ev = hs.E + 4 * nw * v;
-  const double* const E0[4] = {Ev, Ev + nw, Ev + 2 * nw, Ev + 3 * nw};
+  const double* Ev = hs.E + eStride(sea) * nw * v;
+  const double* const E0[4] = {Ev, Ev + nw, t.finite ? Ev + 2 * nw : nullptr,
+                               t.finite ? Ev + 3 * nw : nullptr};
   for (int m = 1; m + 1 < wt.nq; m++) {
     const int i1 = (s0 + m) % wt.nq, i2 = (s0 + m + 1) % wt.nq;
     const double q[3][3] = {{wt.q[s0][0], wt.q[s0][1], wt.q[s0][2]},
@@ -234,7 +247,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   hs.ZS = hs.Z + mi;
   hs.SC = hs.ZS + mi;
   hs.E = hs.SC + 2 * nw * mi;
-  hs.arg = hs.E + 4 * nw * mi;
+  hs.arg = hs.E + eStride(sea) * nw * hl.nv;
   double *X = hs.X, *Y = hs.Y, *A0 = hs.A0, *A1 = hs.A1, *Z = hs.Z;
   for (int q = 0; q < hl.nv; q++) {
     const int i = hl.v0 + q;
@@ -261,7 +274,8 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     // wet vertices (h <= 0) can be a wet piece's corner 0: e^L there
     if (nw > 0 && s->h[i] <= 0) {
       hs.ZS[q] = stretch(sea.depth, s->rel[3 * i + 2] + com[2] - sea.level, Z[q] - sea.level);
-      vertexWaves(s->tab, nw, hs.ZS[q], hs.SC + 2 * nw * q, hs.E + 4 * nw * q, hs.arg);
+      vertexWaves(s->tab, nw, hs.ZS[q], hs.SC + 2 * nw * q, hs.E + eStride(sea) * nw * q,
+                  hs.arg);
     }
   }
 
