@@ -61,10 +61,9 @@ void seriesSums(const KernIn& in, int j0, int j1, double out[7]) {
 void WaveTab::reserve(size_t cap) {
   perm.resize(cap);
   for (auto* v : {&k, &kdx, &kdy, &gm, &wp[0], &wux[0], &wuy[0], &wz[0], &wp[1], &wux[1],
-                  &wuy[1], &wz[1], &e2kh}) {
+                  &wuy[1], &wz[1]}) {
     v->assign(cap, 0);
   }
-  tmp.assign(2 * cap, 0);
 }
 
 void WaveTab::fill(const Sea& sea, const WaveNow* w) {
@@ -94,7 +93,6 @@ void WaveTab::fill(const Sea& sea, const WaveNow* w) {
     // cosh/sinh(kh) and sinh/sinh(kh) the same over 1 - e^(-2kh) (with
     // the second exponent subtracted for sinh): Dean & Dalrymple ch. 4
     const double D = c.k * depth, e2 = std::exp(-2 * D), sd = -std::expm1(-2 * D);
-    e2kh[j] = e2;
     wp[0][j] = wp[1][j] = c.amp / (1 + e2);
     wux[0][j] = wux[1][j] = c.ao * c.dx / sd;
     wuy[0][j] = wuy[1][j] = c.ao * c.dy / sd;

@@ -11,8 +11,8 @@
 //   integral lambda_c e^L dA = 2 area e^L0 T_c,  T_c = exp[u_c, 0, u1, u2]
 //                            = sum h_m(u_c, 0, u1, u2) / (m + 3)!
 // (h_m the complete homogeneous symmetric polynomials), summed to double
-// round-off; components whose |u| exceeds kRMax are split into four
-// halves of the piece until it does not.
+// round-off; for components whose |u| exceeds kRMax the piece is split
+// into four half-size triangles until it does not.
 #ifndef MJBUOY_WAVEINT_H_
 #define MJBUOY_WAVEINT_H_
 
@@ -36,8 +36,6 @@ struct WaveTab {
   // x and y [m/s] and of Im(I) in the vertical velocity [m/s]; [1]: the
   // finite-depth second exponent
   std::vector<double> wp[2], wux[2], wuy[2], wz[2];
-  std::vector<double> e2kh;             // e^(-2 k h) (finite depth)
-  std::vector<double> tmp;              // 2 per component: scratch of fill
   // room for cap components (no allocation in fill)
   void reserve(size_t cap);
   // from the call's constants (Sea::now)
@@ -46,14 +44,15 @@ struct WaveTab {
 
 // one component by subdivision (any |u|): S and T_c of the triangle with
 // corner 0 at exponent L0r + i theta0 (ph = e^(i theta0)) and corners 1, 2
-// at u1, u2 from it, split in four until |u| <= kRMax (at most 8 levels)
+// at u1, u2 from it, split into four half-size triangles (edge midpoints)
+// until |u| <= kRMax (at most 8 levels)
 void subdivided(double L0r, double phr, double phi, double u1r, double u1i, double u2r,
                 double u2i, double S[2], double T[3][2]);
 
 // the integrals over one wet piece of corners q[3] (relative to the COM):
 // P += integral p_d dA [N], Pr += integral p_d r dA [N m], V += integral
-// (u - current) dA [m^3/s]. Corner 0 is a vertex of the hull (index iv
-// among the hull's vertices); E0 holds e^L there per sorted component
+// (u - current) dA [m^3/s]. Corner 0 is a vertex of the hull, whose e^L
+// was computed once per step; E0 holds e^L there per sorted component
 // ([0] real, [1] imaginary; [2], [3] the finite-depth second exponent),
 // sc0 the sin and cos of its phases (Sea::solve order); zs[c] the
 // stretched height of each corner, lab[c] its Gerstner label [m]; area
