@@ -12,7 +12,12 @@ extern "C" __m256d _ZGVdN4v_exp(__m256d);
 
 namespace mjb {
 
-// the tail of n % 4 through a zero-padded vector
+// the tail of n % 4 through masked loads and stores (no stack buffer: an
+// over-aligned one breaks under AddressSanitizer's fake stack)
+static __m256i tailMask(int r) {
+  return _mm256_set_epi64x(r > 3 ? -1 : 0, r > 2 ? -1 : 0, r > 1 ? -1 : 0, r > 0 ? -1 : 0);
+}
+
 void vSinCosAvx2(int n, const double* x, double* s, double* c) {
   int i = 0;
   for (; i + 4 <= n; i += 4) {
@@ -22,15 +27,11 @@ void vSinCosAvx2(int n, const double* x, double* s, double* c) {
     _mm256_storeu_pd(c + i, vc);
   }
   if (i < n) {
-    double b[4] = {0, 0, 0, 0}, bs[4], bc[4];
-    for (int j = i; j < n; j++) b[j - i] = x[j];
-    __m256d v = _mm256_loadu_pd(b);
-    _mm256_storeu_pd(bs, _ZGVdN4v_sin(v));
-    _mm256_storeu_pd(bc, _ZGVdN4v_cos(v));
-    for (int j = i; j < n; j++) {
-      s[j] = bs[j - i];
-      c[j] = bc[j - i];
-    }
+    const __m256i m = tailMask(n - i);
+    __m256d v = _mm256_maskload_pd(x + i, m);
+    __m256d vs = _ZGVdN4v_sin(v), vc = _ZGVdN4v_cos(v);
+    _mm256_maskstore_pd(s + i, m, vs);
+    _mm256_maskstore_pd(c + i, m, vc);
   }
 }
 
@@ -38,10 +39,8 @@ void vExpAvx2(int n, const double* x, double* y) {
   int i = 0;
   for (; i + 4 <= n; i += 4) _mm256_storeu_pd(y + i, _ZGVdN4v_exp(_mm256_loadu_pd(x + i)));
   if (i < n) {
-    double b[4] = {0, 0, 0, 0}, by[4];
-    for (int j = i; j < n; j++) b[j - i] = x[j];
-    _mm256_storeu_pd(by, _ZGVdN4v_exp(_mm256_loadu_pd(b)));
-    for (int j = i; j < n; j++) y[j] = by[j - i];
+    const __m256i m = tailMask(n - i);
+    _mm256_maskstore_pd(y + i, m, _ZGVdN4v_exp(_mm256_maskload_pd(x + i, m)));
   }
 }
 

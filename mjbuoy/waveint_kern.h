@@ -18,13 +18,25 @@ struct Vec {
     __builtin_memcpy(&v, p, sizeof v);
     return v;
   }
-  // lanes in order (for W = 1 GCC makes T a plain double)
-  static double sum(T v) {
-    double a[W], s = 0;
-    __builtin_memcpy(a, &v, sizeof v);
-    for (int i = 0; i < W; i++) s += a[i];
+  // lanes in order (no stack array: an over-aligned one breaks under
+  // AddressSanitizer's fake stack)
+  // (through a template: GCC checks v[i] of the dependent vector type only
+  // when instantiated)
+  template <class U>
+  static double lanes(U v) {
+    double s = 0;
+    for (int i = 0; i < W; i++) s += v[i];
     return s;
   }
+  static double sum(T v) { return lanes(v); }
+};
+
+// W = 1: GCC makes T a plain double
+template <>
+struct Vec<1> {
+  typedef double T;
+  static T ld(const double* p) { return *p; }
+  static double sum(T v) { return v; }
 };
 
 // components [j, j + W): their series to the degree the widest needs
