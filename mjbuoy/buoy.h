@@ -11,6 +11,7 @@
 #include "mjbuoy.h"
 #include "radiation.h"
 #include "sensor.h"
+#include "waveint.h"
 
 namespace mjb {
 
@@ -57,6 +58,7 @@ struct TriState {
   std::vector<double> c;       // wet centroid relative to the body COM, 3 each [m]
   std::vector<double> n;       // outward unit normal, 3 each
   std::vector<double> v;       // flow-relative centroid velocity, 3 each [m/s]
+  std::vector<double> u;       // water velocity, mean over the wet part, 3 each [m/s]
 };
 
 // per-mjData state; sized at creation, never resized while stepping
@@ -73,10 +75,10 @@ struct State {
   std::vector<double> off, offNew;
   std::vector<double> hoff, hoffNew;  // the same for each hull's COM [m]
   std::vector<WaveNow> wn;     // wave constants of this call
+  WaveTab tab;                 // the same by wave number, for waveint.h
   // per thread: Newton and structure-of-arrays scratch (cpu.cc
-  // scratchSize), per doubles each; wet triangle list, mi ints each
+  // scratchSize), per doubles each
   std::vector<double> scr;
-  std::vector<int> idx;
   size_t per = 0, mi = 0;
   double crest = 0;            // highest possible surface height [m]
   std::vector<char> bad;       // per body: state not finite in the last call

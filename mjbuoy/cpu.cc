@@ -9,6 +9,8 @@
 #include "pool.h"
 #include "pressure.h"
 #include "rigid.h"
+#include "vmath.h"
+#include "waveint.h"
 #include "wavepress.h"
 
 namespace mjb {
@@ -20,11 +22,24 @@ static size_t maxItems(const Buoy& b) {
   return n;
 }
 
-// per thread: 4 per wave for solve(), then x, y, a0, a1, z and 2 per wave
-// for every point of a hull
+// most vertices of one hull
+static size_t maxVerts(const Buoy& b) {
+  size_t n = 1;
+  for (const Hull& h : b.hull) n = std::max(n, size_t(h.nv));
+  return n;
+}
+
+// doubles per wave of e^L at a vertex: real and imaginary part of one
+// exponent, two at finite depth (waveint.h; depth does not change after attach)
+static size_t eStride(const Sea& sea) { return sea.depth > 0 ? 4 : 2; }
+
+// per thread: 4 per wave for solve(), then x, y, a0, a1, z, stretched
+// height z' and 2 per wave (phases) for every point of a hull, e^L
+// (eStride per wave) for every vertex of a hull, and 2 per wave of exp
+// arguments
 static size_t scratchSize(const Buoy& b) {
   size_t nw = std::max(b.wcap, b.cfg.sea.waves.size());
-  return 4 * nw + (5 + 2 * nw) * maxItems(b);
+  return 6 * nw + (6 + 2 * nw) * maxItems(b) + eStride(b.cfg.sea) * nw * maxVerts(b);
 }
 
 void makeState(const Buoy& b, State* s) {
@@ -44,6 +59,7 @@ void makeState(const Buoy& b, State* s) {
   s->tri.c.assign(3 * nt, 0);
   s->tri.n.assign(3 * nt, 0);
   s->tri.v.assign(3 * nt, 0);
+  s->tri.u.assign(3 * nt, 0);
   s->curA.assign(nt, 0);
   s->prevA.assign(nt, 0);
   s->curV.assign(3 * nt, 0);
@@ -53,10 +69,10 @@ void makeState(const Buoy& b, State* s) {
   s->hoff.assign(2 * b.hull.size(), 0);
   s->hoffNew.assign(2 * b.hull.size(), 0);
   s->wn.assign(std::max(b.wcap, b.cfg.sea.waves.size()), WaveNow{});
+  s->tab.reserve(std::max(b.wcap, b.cfg.sea.waves.size()));
   s->mi = maxItems(b);
   s->per = scratchSize(b);
   s->scr.assign(s->per * std::max(1, b.nthreads), 0);
-  s->idx.assign(s->mi * std::max(1, b.nthreads), 0);
   s->key = -1;
   s->hasPrev = false;
 }
@@ -112,6 +128,79 @@ static void add(double* w, const double* f, const double* c) {
   }
 }
 
+// per-hull structure-of-arrays scratch of hullWrench (scratchSize): label
+// search points, then per vertex the stretched height, phases and e^L
+struct HullScr {
+  double *X, *Y, *A0, *A1, *Z, *ZS, *SC, *E, *arg;
+};
+
+// e^L of every component at a wet vertex (waveint.h): L = k z' + i theta,
+// and at finite depth also -k (z' + 2 h) + i theta; one exp per component
+// and exponent (vectorised), the phases' sin and cos from the label search
+static void vertexWaves(const WaveTab& t, size_t nw, double zs,
+                        const double* sc, double* E, double* arg) {
+  const int n = t.n;
+  for (int j = 0; j < n; j++) arg[j] = t.k[j] * zs;
+  if (t.finite) {
+    for (int j = 0; j < n; j++) arg[n + j] = -t.k[j] * (zs + 2 * t.depth);
+  }
+  vExp(t.finite ? 2 * n : n, arg, arg);
+  for (int f = 0; f < (t.finite ? 2 : 1); f++) {
+    double* er = E + 2 * f * nw;
+    double* ei = er + nw;
+    for (int j = 0; j < n; j++) {
+      const int i = t.perm[j];
+      er[j] = arg[f * n + j] * sc[2 * i + 1];
+      ei[j] = arg[f * n + j] * sc[2 * i];
+    }
+  }
+}
+
+// the dynamic pressure integrals Pd, Pr (docs/physics.md, "Pressure") and
+// the integral of the water's wave velocity V over the wet polygon of wt,
+// in closed form on the fan from one of its hull vertices (waveint.h);
+// fc the triangle's global vertex indices, v0 the hull's first; Pr only
+// with moments
+static void wetWaves(const Sea& sea, const WaveTab& t, size_t nw, const Wet& wt, const int* fc,
+                     int v0, const double* lab, const HullScr& hs, bool moments, double* Pd,
+                     double Pr[3], double V[3]) {
+  *Pd = 0;
+  for (int j = 0; j < 3; j++) Pr[j] = V[j] = 0;
+  double zq[4], lq[4][2];
+  int s0 = -1;
+  for (int i = 0; i < wt.nq; i++) {
+    const int a = fc[wt.qa[i]], b = fc[wt.qb[i]];
+    const double u = wt.qt[i];
+    if (u == 0 && s0 < 0) s0 = i;
+    // a cut point lies on the surface: z' = 0; labels linear along the edge
+    zq[i] = u == 0 ? hs.ZS[a - v0] : 0;
+    for (int j = 0; j < 2; j++) lq[i][j] = lab[2 * a + j] + u * (lab[2 * b + j] - lab[2 * a + j]);
+  }
+  if (s0 < 0) return;  // no hull vertex is wet: cannot happen for nq > 0
+  const int v = fc[wt.qa[s0]] - v0;
+  const double* Ev = hs.E + eStride(sea) * nw * v;
+  const double* const E0[4] = {Ev, Ev + nw, t.finite ? Ev + 2 * nw : nullptr,
+                               t.finite ? Ev + 3 * nw : nullptr};
+  for (int m = 1; m + 1 < wt.nq; m++) {
+    const int i1 = (s0 + m) % wt.nq, i2 = (s0 + m + 1) % wt.nq;
+    const double q[3][3] = {{wt.q[s0][0], wt.q[s0][1], wt.q[s0][2]},
+                            {wt.q[i1][0], wt.q[i1][1], wt.q[i1][2]},
+                            {wt.q[i2][0], wt.q[i2][1], wt.q[i2][2]}};
+    double u[3], w[3], c[3];
+    for (int j = 0; j < 3; j++) {
+      u[j] = q[1][j] - q[0][j];
+      w[j] = q[2][j] - q[0][j];
+    }
+    cross(u, w, c);
+    const double area = 0.5 * dot(c, wt.n);
+    if (!(area > 0)) continue;
+    const double zs[3] = {zq[s0], zq[i1], zq[i2]};
+    const double l3[3][2] = {{lq[s0][0], lq[s0][1]}, {lq[i1][0], lq[i1][1]},
+                             {lq[i2][0], lq[i2][1]}};
+    pieceIntegrals(t, sea, E0, hs.SC + 2 * nw * v, q, zs, l3, area, moments, Pd, Pr, V);
+  }
+}
+
 // forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
 // is the body's wrench of force family p; slot picks the thread's scratch
 static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6],
@@ -149,12 +238,17 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   // step (zero after a restart), which moves by mm per step, and runs for
   // all vertices at once (structure of arrays)
   const size_t nw = sea.waves.size(), mi = s->mi;
-  double* X = sc + 4 * nw;
-  double* Y = X + mi;
-  double* A0 = Y + mi;
-  double* A1 = A0 + mi;
-  double* Z = A1 + mi;
-  double* SC = Z + mi;
+  HullScr hs;
+  hs.X = sc + 4 * nw;
+  hs.Y = hs.X + mi;
+  hs.A0 = hs.Y + mi;
+  hs.A1 = hs.A0 + mi;
+  hs.Z = hs.A1 + mi;
+  hs.ZS = hs.Z + mi;
+  hs.SC = hs.ZS + mi;
+  hs.E = hs.SC + 2 * nw * mi;
+  hs.arg = hs.E + eStride(sea) * nw * hl.nv;
+  double *X = hs.X, *Y = hs.Y, *A0 = hs.A0, *A1 = hs.A1, *Z = hs.Z;
   for (int q = 0; q < hl.nv; q++) {
     const int i = hl.v0 + q;
     const double* p = b.vert.data() + 3 * i;
@@ -167,7 +261,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     A0[q] = X[q] + s->off[2 * i];
     A1[q] = Y[q] + s->off[2 * i + 1];
   }
-  sea.solveMany(wn, hl.nv, X, Y, A0, A1, Z, SC, tmp);
+  sea.solveMany(wn, hl.nv, X, Y, A0, A1, Z, hs.SC, tmp);
   for (int q = 0; q < hl.nv; q++) {
     const int i = hl.v0 + q;
     s->lab[2 * i] = A0[q];
@@ -177,6 +271,12 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
       s->offNew[2 * i + 1] = A1[q] - Y[q];
     }
     s->h[i] = s->rel[3 * i + 2] + com[2] - Z[q];
+    // wet vertices (h <= 0) can be a wet piece's corner 0: e^L there
+    if (nw > 0 && s->h[i] <= 0) {
+      hs.ZS[q] = stretch(sea.depth, s->rel[3 * i + 2] + com[2] - sea.level, Z[q] - sea.level);
+      vertexWaves(s->tab, nw, hs.ZS[q], hs.SC + 2 * nw * q, hs.E + eStride(sea) * nw * q,
+                  hs.arg);
+    }
   }
 
   // the hull's flow: its COM velocity relative to the water there; the
@@ -223,16 +323,19 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     if (!(wt.area > 0)) continue;
     const double* n = wt.n;
     double mo[3], P = rg * wt.dA, Pr[3] = {rg * wt.drA[0], rg * wt.drA[1], rg * wt.drA[2]};
-    if (linear) {
-      // the surface the cut used: the vertices' heights and labels
-      Surf sf;
-      for (int e = 0; e < 3; e++) {
-        std::memcpy(sf.p[e], p[e], sizeof(p[e]));
-        sf.eta[e] = p[e][2] + com[2] - h[e] - sea.level;
-        sf.lab[e][0] = s->lab[2 * fc[e]];
-        sf.lab[e][1] = s->lab[2 * fc[e] + 1];
+    // the water's mean wave velocity over the wet part, and with linear
+    // pressure the dynamic part, both in closed form (waveint.h)
+    double* uq = &s->tri.u[3 * k];
+    for (int j = 0; j < 3; j++) uq[j] = j < 2 ? sea.current[j] : 0;
+    if (nw > 0) {
+      double Pd, Prd[3], V[3];
+      wetWaves(sea, s->tab, nw, wt, fc, hl.v0, s->lab.data(), hs, linear, &Pd, Prd, V);
+      for (int j = 0; j < 3; j++) uq[j] += V[j] / wt.area;
+      if (linear) {
+        hydrostaticLevel(sea, wt, com, &P, Pr);
+        P += Pd;
+        for (int j = 0; j < 3; j++) Pr[j] += Prd[j];
       }
-      linearPressure(sea, wn, wt, sf, com, &P, Pr);
     }
     cross(Pr, n, mo);
     for (int j = 0; j < 3; j++) {
@@ -262,41 +365,22 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     sbar /= wet;
   }
 
-  // pass 2: hydrodynamic forces at each wet centroid. Water velocity there
-  // first, for all wet centroids at once; Newton starts from the mean of
-  // the vertex labels, which is within a few mm of the answer
-  int* idx = s->idx.data() + mi * slot;
-  int nwet = 0;
+  // pass 2: hydrodynamic forces at each wet centroid, with the water's
+  // velocity averaged over the wet part (pass 1; docs/physics.md, "Cost")
+  const double slamdt = s->hasPrev ? t - s->tprev : 0;
   for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
     double* v = &s->tri.v[3 * k];
     if (!(s->tri.area[k] > 0)) {
       v[0] = v[1] = v[2] = 0;
       continue;
     }
-    const double* c = &s->tri.c[3 * k];
-    const int* fc = b.face.data() + 3 * k;
-    const double* l0 = &s->lab[2 * fc[0]];
-    const double* l1 = &s->lab[2 * fc[1]];
-    const double* l2 = &s->lab[2 * fc[2]];
-    idx[nwet] = k;
-    X[nwet] = c[0] + com[0];
-    Y[nwet] = c[1] + com[1];
-    A0[nwet] = (l0[0] + l1[0] + l2[0]) * (1.0 / 3);
-    A1[nwet] = (l0[1] + l1[1] + l2[1]) * (1.0 / 3);
-    nwet++;
-  }
-  sea.solveMany(wn, nwet, X, Y, A0, A1, Z, SC, tmp);
-  const double slamdt = s->hasPrev ? t - s->tprev : 0;
-  for (int q = 0; q < nwet; q++) {
-    const int k = idx[q];
     double A = s->tri.area[k];
-    double* v = &s->tri.v[3 * k];
     const double* c = &s->tri.c[3 * k];
     const double* n = &s->tri.n[3 * k];
+    const double* uwk = &s->tri.u[3 * k];
     double wc[3];
-    sea.velocitySC(wn, SC + 2 * nw * q, c[2] + com[2] - sea.level, Z[q] - sea.level, uw);
     cross(vel, c, wc);
-    for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uw[j];
+    for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uwk[j];
 
     double g[3];
     if (par.viscous > 0) {
@@ -411,6 +495,7 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   // per-call wave constants, and the highest crest: level + sum |A|
   const Sea& sea = b.cfg.sea;
   sea.now(d->time, s->wn.data());
+  if (!sea.waves.empty()) s->tab.fill(sea, s->wn.data());
   s->crest = sea.level;
   for (const Wave& wv : sea.waves) s->crest += std::fabs(wv.amp);
   // large scenes: chunks of hulls shared among the pool's threads; a chunk

@@ -25,6 +25,8 @@ void wetTriangle(const double p[3][3], const double h[3], Wet* w) {
     // is c; the same arithmetic as the fan below, without the clipping
     for (int i = 0; i < 3; i++) {
       for (int j = 0; j < 3; j++) w->q[i][j] = p[i][j];
+      w->qa[i] = w->qb[i] = i;
+      w->qt[i] = 0;
     }
     w->nq = 3;
     double A = 0.5 * (c[0] * w->n[0] + c[1] * w->n[1] + c[2] * w->n[2]);
@@ -47,6 +49,8 @@ void wetTriangle(const double p[3][3], const double h[3], Wet* w) {
     int k = (i + 1) % 3;
     if (h[i] <= 0) {
       for (int j = 0; j < 3; j++) q[nq][j] = p[i][j];
+      w->qa[nq] = w->qb[nq] = i;
+      w->qt[nq] = 0;
       d[nq++] = -h[i];
     }
     if ((h[i] < 0 && h[k] > 0) || (h[i] > 0 && h[k] < 0)) {
@@ -55,6 +59,9 @@ void wetTriangle(const double p[3][3], const double h[3], Wet* w) {
       int a = h[i] < 0 ? i : k, b = h[i] < 0 ? k : i;
       double t = h[a] / (h[a] - h[b]);
       for (int j = 0; j < 3; j++) q[nq][j] = p[a][j] + t * (p[b][j] - p[a][j]);
+      w->qa[nq] = a;
+      w->qb[nq] = b;
+      w->qt[nq] = t;
       d[nq++] = 0;
     }
   }

@@ -23,6 +23,10 @@ struct Wet {
   double n[3];    // outward unit normal of the triangle (0 if degenerate)
   double q[4][3]; // wet polygon, parent's winding
   int nq;         // its vertex count: 0, 3 or 4
+  // where each polygon vertex comes from: p[qa] + qt (p[qb] - p[qa]);
+  // qt = 0 for a vertex of the triangle (then qb = qa)
+  int qa[4], qb[4];
+  double qt[4];
 };
 
 // p: the three vertices [m], counter-clockwise seen from outside, relative

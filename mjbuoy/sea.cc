@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "vmath.h"
+
 namespace mjb {
 
 static const double kDeg = M_PI / 180;
@@ -39,7 +41,7 @@ double Sea::fold() const {
 // surface at eta: the height zs in [-h, 0] at which the linear profiles are
 // evaluated, so the surface maps to zs = 0. Deep water: zs = z - eta; depth
 // h: zs = (z - eta) h / (h + eta)
-static double stretch(double depth, double z, double eta) {
+double stretch(double depth, double z, double eta) {
   if (!(depth > 0)) return std::fmin(z - eta, 0.0);
   if (!(depth + eta > 0)) return -depth;  // surface at or below the bed: all at the bed
   return std::fmin(std::fmax((z - eta) * depth / (depth + eta), -depth), 0.0);
@@ -275,12 +277,14 @@ double Sea::solve(const WaveNow* w, double x, double y, double a[2], double* sc,
     case 4: z = solveN<4>(w, ng, level, x, y, a, sc, tmp); break;
     default: z = solveN<0>(w, ng, level, x, y, a, sc, tmp);
   }
-  // Airy components: a direct sum at the physical point
-  const int n = order.size();
+  // Airy components: a direct sum at the physical point, the phases' sin
+  // and cos vectorised (vmath.h): th and cos in tmp, sin in tmp + n
+  const int n = order.size(), na = n - ng;
+  for (int i = ng; i < n; i++) tmp[i - ng] = w[i].k * (w[i].dx * x + w[i].dy * y) - w[i].wt + w[i].ph;
+  vSinCos(na, tmp, tmp + n, tmp);
   for (int i = ng; i < n; i++) {
-    double th = w[i].k * (w[i].dx * x + w[i].dy * y) - w[i].wt + w[i].ph;
-    double s = std::sin(th), c = std::cos(th);
-    sc[2 * i] = s;
+    const double c = tmp[i - ng];
+    sc[2 * i] = tmp[n + i - ng];
     sc[2 * i + 1] = c;
     z += w[i].amp * c;
   }

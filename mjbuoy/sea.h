@@ -37,6 +37,12 @@ struct WaveNow {
   double aoo;        // A omega^2 [m/s^2]
 };
 
+// Wheeler (1970) stretching: the height z' in [-h, 0] at which the linear
+// profiles of a point z above the level under a surface at eta are taken
+// (deep water, depth 0: z' = min(z - eta, 0); depth h:
+// (z - eta) h / (h + eta), clamped) [m]
+double stretch(double depth, double z, double eta);
+
 struct Sea {
   double rho = 1000;        // water density [kg/m^3]
   double level = 0;         // still water level: height of the orbit centres [m]

@@ -69,17 +69,14 @@ void dynamicPiece(const Sea& sea, const WaveNow* wn, const double* q0, const dou
   }
 }
 
-void linearPressure(const Sea& sea, const WaveNow* wn, const Wet& w, const Surf& s,
-                    const double com[3], double* P, double Pr[3]) {
+void hydrostaticLevel(const Sea& sea, const Wet& w, const double com[3], double* P,
+                      double Pr[3]) {
   *P = 0;
   Pr[0] = Pr[1] = Pr[2] = 0;
   const double rg = sea.rho * sea.g;
-  // hydrostatic rho g (level - z), linear: the fan formulas of wetTriangle
-  double d[4], e[4], l[4][2];
-  for (int i = 0; i < w.nq; i++) {
-    d[i] = sea.level - (w.q[i][2] + com[2]);
-    s.at(w.q[i], e + i, l[i]);
-  }
+  // rho g (level - z), linear: the fan formulas of wetTriangle
+  double d[4];
+  for (int i = 0; i < w.nq; i++) d[i] = sea.level - (w.q[i][2] + com[2]);
   for (int t = 1; t + 1 < w.nq; t++) {
     const double *a = w.q[0], *b = w.q[t], *c = w.q[t + 1];
     double u[3], v[3];
@@ -94,9 +91,18 @@ void linearPressure(const Sea& sea, const WaveNow* wn, const Wet& w, const Surf&
     for (int j = 0; j < 3; j++) {
       Pr[j] += rg * A / 12 * (d[0] * a[j] + d[t] * b[j] + d[t + 1] * c[j] + sd * (a[j] + b[j] + c[j]));
     }
+  }
+}
+
+void linearPressure(const Sea& sea, const WaveNow* wn, const Wet& w, const Surf& s,
+                    const double com[3], double* P, double Pr[3]) {
+  hydrostaticLevel(sea, w, com, P, Pr);
+  double e[4], l[4][2];
+  for (int i = 0; i < w.nq; i++) s.at(w.q[i], e + i, l[i]);
+  for (int t = 1; t + 1 < w.nq; t++) {
     const double pe[3] = {e[0], e[t], e[t + 1]};
     const double pl[3][2] = {{l[0][0], l[0][1]}, {l[t][0], l[t][1]}, {l[t + 1][0], l[t + 1][1]}};
-    dynamicPiece(sea, wn, a, b, c, w.n, com, pe, pl, P, Pr);
+    dynamicPiece(sea, wn, w.q[0], w.q[t], w.q[t + 1], w.n, com, pe, pl, P, Pr);
   }
 }
 

@@ -4,7 +4,9 @@
 // p = rho g (level - z) + sum_i p_d,i below the instantaneous surface. The
 // hydrostatic part is linear in position and integrated exactly; the
 // dynamic part with Radon's 7-point rule of degree 5 on each fan piece of
-// the wet polygon.
+// the wet polygon. The cpu backend integrates the dynamic part in closed
+// form instead (waveint.h); this rule stays as an independent reference
+// for the tests.
 #ifndef MJBUOY_WAVEPRESS_H_
 #define MJBUOY_WAVEPRESS_H_
 
@@ -31,6 +33,12 @@ struct Surf {
 void dynamicPiece(const Sea& sea, const WaveNow* wn, const double* q0, const double* q1,
                   const double* q2, const double n[3], const double com[3], const double e[3],
                   const double l[3][2], double* P, double Pr[3]);
+
+// the hydrostatic part rho g (level - z) of the linear pressure over the
+// wet polygon of w (vertices relative to com), exactly (fan formulas of
+// wetTriangle): P = integral(p dA) [N], Pr = integral(p r dA) [N m]
+void hydrostaticLevel(const Sea& sea, const Wet& w, const double com[3], double* P,
+                      double Pr[3]);
 
 // the total linear pressure over the wet polygon of w (from wetTriangle,
 // vertices relative to com) of the triangle whose surface is s:

@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 pkgs=(
   cmake g++ make pkg-config
   libmujoco-dev libqhull-dev   # MuJoCo 2.2.2; its CMake config names qhull's include dir
+  libc6-dev                    # libmvec: vector sin, cos, exp of the cpu backend (comes with g++)
   libeigen3-dev                # small fixed-size linear algebra in tests
   libgtest-dev                 # unit tests
   libcli11-dev                 # command-line parsing of the tools

@@ -55,6 +55,7 @@ static bool addRadiation(mjbBuoy* b, const mjModel* m) {
   }
   return true;
 }
+static std::string gpress = "linear";  // mjbuoy.sea.pressure: linear or kerner
 
 // the sea entries of --sea: jonswap is a 64-component short-crested sea
 // (Hs 0.6 m, Tp 5 s, spreading s = 10 about 20 deg)
@@ -74,7 +75,7 @@ static std::string scene(const std::string& meshes, int boats, int tris) {
   s << "<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" << meshes
     << "/wigley_" << tris << ".obj\"/></asset><custom>"
     << "<text name=\"mjbuoy.hulls\" data=\"h*\"/>"
-    << seaEntries();
+    << seaEntries() << "<text name=\"mjbuoy.sea.pressure\" data=\"" << gpress << "\"/>";
   if (gthreads >= 0) s << "<numeric name=\"mjbuoy.threads\" data=\"" << gthreads << "\"/>";
   s << "</custom><worldbody>";
   int side = std::ceil(std::sqrt(boats));
@@ -120,7 +121,7 @@ static void timed(const mjModel* m, mjData* d) {
 
 struct Cell {
   int boats, tris, ntri;
-  std::string backend;
+  std::string backend, sea, pressure;
   double hydro, step, bare;  // ms per step (median of repetitions)
   double cpu;                // CPU ms (all threads) in mjbuoy per step (median)
   std::vector<std::pair<std::string, double>> stages;
@@ -190,8 +191,8 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
   const char* sn[8];
   double ms[8];
   int ns = mjb_stageTimes(b, sn, ms, 8);
-  *c = Cell{boats, tris, mjb_info(b).ntri, mjb_info(b).backend, median(hydro), median(full),
-            median(bare), median(cpu), {}};
+  *c = Cell{boats, tris, mjb_info(b).ntri, mjb_info(b).backend, gsea, gpress, median(hydro),
+            median(full), median(bare), median(cpu), {}};
   for (int i = 0; i < ns; i++) c->stages.emplace_back(sn[i], ms[i]);
   mjb_unbindData(b, d);
   mj_deleteData(d);
@@ -250,8 +251,13 @@ int main(int argc, char** argv) {
   app.add_option("--threads", gthreads, "cpu threads (mjbuoy.threads; 0 = auto, the default)")
       ->check(Finite(0, 64));
   app.add_option("--json", json, "also write the results as JSON (replaced only when complete)");
-  app.add_option("--sea", gsea, "flat, swell (one Gerstner wave, the default) or jonswap "
-                 "(64 components)")->check(CLI::IsMember({"flat", "swell", "jonswap"}));
+  std::vector<std::string> seas = {"swell"}, pressures = {"linear"};
+  app.add_option("--sea", seas, "seas, each measured in turn in every cell: flat, swell (one "
+                 "Gerstner wave, the default) or jonswap (64 components)")
+      ->check(CLI::IsMember({"flat", "swell", "jonswap"}));
+  app.add_option("--pressure", pressures, "pressure models (mjbuoy.sea.pressure), each "
+                 "measured in turn: linear (the default) or kerner")
+      ->check(CLI::IsMember({"linear", "kerner"}));
   app.add_option("--radiation", gradiation, "give every boat synthetic radiation coefficients "
                  "with this memory length [s] (0: added mass and its Kirchhoff terms only)")
       ->check(Finite(0, 60));
@@ -277,28 +283,40 @@ int main(int argc, char** argv) {
 
   std::fprintf(stderr, "mjbuoy-bench: Wigley meshes from %s\n", meshes.c_str());
   std::vector<Cell> cells;
-  int total = boats.size() * tris.size() * backends.size(), done = 0;
+  int total = boats.size() * tris.size() * backends.size() * seas.size() * pressures.size();
+  int done = 0;
   auto start = Clock::now();
-  std::printf("| backend | boats | tris/boat | triangles | hydro ms/step | step ms | bare step ms "
-              "| step/bare | Mtri/s | paper GPU ms | hydro/paper |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| backend | sea | pressure | boats | tris/boat | triangles | hydro ms/step | step ms "
+              "| bare step ms | step/bare | Mtri/s | paper GPU ms | hydro/paper |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  // the seas and pressure models side by side in every cell, one after the other
+  std::vector<std::pair<std::string, std::string>> kinds;
+  for (const std::string& sea : seas) {
+    for (const std::string& pm : pressures) kinds.emplace_back(sea, pm);
+  }
   for (int t : tris) {
     for (int n : boats) {
       for (const std::string& be : backends) {
-        Cell c;
-        // fewer steps for huge cells so the grid finishes in minutes
-        int st = std::max(2, std::min(steps, int(2e6 / double(n * t)) + 2));
-        if (!run(meshes, n, t, be, st, reps, &c)) return 1;
-        cells.push_back(c);
-        double p = paper(n, t);
-        std::printf("| %s | %d | %d | %d | %.3f | %.3f | %.3f | %.2f | %.1f | %s | %s |\n",
-                    be.c_str(), n, t, c.ntri, c.hydro, c.step, c.bare, c.step / c.bare,
-                    c.ntri / c.hydro / 1e3, std::isnan(p) ? "" : std::to_string(p).c_str(),
-                    std::isnan(p) ? "" : std::to_string(c.hydro / p).c_str());
-        std::fflush(stdout);
-        double el = std::chrono::duration<double>(Clock::now() - start).count();
-        done++;
-        std::fprintf(stderr, "\rmjbuoy-bench: %d/%d cells, %.0f s elapsed, ~%.0f s left   ",
-                     done, total, el, el / done * (total - done));
+        for (const auto& kind : kinds) {
+          gsea = kind.first;
+          gpress = kind.second;
+          Cell c;
+          // fewer steps for huge cells so the grid finishes in minutes
+          int st = std::max(2, std::min(steps, int(2e6 / double(n * t)) + 2));
+          if (!run(meshes, n, t, be, st, reps, &c)) return 1;
+          cells.push_back(c);
+          double p = paper(n, t);
+          std::printf("| %s | %s | %s | %d | %d | %d | %.3f | %.3f | %.3f | %.2f | %.1f | %s | %s |\n",
+                      be.c_str(), gsea.c_str(), gpress.c_str(), n, t, c.ntri, c.hydro, c.step,
+                      c.bare, c.step / c.bare, c.ntri / c.hydro / 1e3,
+                      std::isnan(p) ? "" : std::to_string(p).c_str(),
+                      std::isnan(p) ? "" : std::to_string(c.hydro / p).c_str());
+          std::fflush(stdout);
+          double el = std::chrono::duration<double>(Clock::now() - start).count();
+          done++;
+          std::fprintf(stderr, "\rmjbuoy-bench: %d/%d cells, %.0f s elapsed, ~%.0f s left   ",
+                       done, total, el, el / done * (total - done));
+        }
       }
     }
   }
@@ -314,9 +332,11 @@ int main(int argc, char** argv) {
     std::fprintf(f, "[\n");
     for (size_t i = 0; i < cells.size(); i++) {
       const Cell& c = cells[i];
-      std::fprintf(f, "  {\"backend\": \"%s\", \"boats\": %d, \"tris\": %d, \"triangles\": %d, "
+      std::fprintf(f, "  {\"backend\": \"%s\", \"sea\": \"%s\", \"pressure\": \"%s\", "
+                   "\"boats\": %d, \"tris\": %d, \"triangles\": %d, "
                    "\"hydro_ms\": %.6f, \"hydro_cpu_ms\": %.6f, \"step_ms\": %.6f, \"bare_ms\": %.6f, \"stages\": {",
-                   c.backend.c_str(), c.boats, c.tris, c.ntri, c.hydro, c.cpu, c.step, c.bare);
+                   c.backend.c_str(), c.sea.c_str(), c.pressure.c_str(), c.boats, c.tris, c.ntri,
+                   c.hydro, c.cpu, c.step, c.bare);
       for (size_t j = 0; j < c.stages.size(); j++) {
         std::fprintf(f, "%s\"%s\": %.6f", j ? ", " : "", c.stages[j].first.c_str(),
                      c.stages[j].second);

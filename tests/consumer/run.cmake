@@ -62,7 +62,7 @@ if(STEP STREQUAL "tree")
   # tree's): one tiny cell
   run(${P}/bin/mjbuoy-bench --boats 1 --tris 64 --steps 1 --reps 1 --backend cpu)
   if(NOT err MATCHES "Wigley meshes from ${P}/share/mjbuoy/models/meshes\n" OR
-     NOT out MATCHES "\n\| cpu \| 1 \| 64 \| ")
+     NOT out MATCHES "\n\| cpu \| swell \| linear \| 1 \| 64 \| ")
     message(FATAL_ERROR "FAIL installed mjbuoy-bench:\n${out}\n${err}")
   endif()
   message("installed tools: --version of ${tools}; mjbuoy-bench: ${err}")

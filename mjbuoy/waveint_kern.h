@@ -1,0 +1,122 @@
+// waveint_kern: the series of waveint.h for W components at once (GCC
+// vector extensions), included by one file per instruction set. Everything
+// here is static: no inline function compiled for AVX can be shared with
+// the scalar path. Includes nothing but waveker.h.
+#ifndef MJBUOY_WAVEINT_KERN_H_
+#define MJBUOY_WAVEINT_KERN_H_
+
+#include "waveker.h"
+
+namespace mjb {
+namespace {
+
+template <int W>
+struct Vec {
+  typedef double T __attribute__((vector_size(8 * W)));
+  static T ld(const double* p) {
+    T v;
+    __builtin_memcpy(&v, p, sizeof v);
+    return v;
+  }
+  // lanes in order (no stack array: an over-aligned one breaks under
+  // AddressSanitizer's fake stack)
+  // (through a template: GCC checks v[i] of the dependent vector type only
+  // when instantiated)
+  template <class U>
+  static double lanes(U v) {
+    double s = 0;
+    for (int i = 0; i < W; i++) s += v[i];
+    return s;
+  }
+  static double sum(T v) { return lanes(v); }
+};
+
+// W = 1: GCC makes T a plain double
+template <>
+struct Vec<1> {
+  typedef double T;
+  static T ld(const double* p) { return *p; }
+  static double sum(T v) { return v; }
+};
+
+// components [j, j + W): their series to the degree the widest needs
+// (the last: k ascending), accumulated into acc[7]; MOM false: S only
+template <int W, bool MOM>
+static inline void seriesChunk(const KernIn& in, int j, typename Vec<W>::T* acc) {
+  typedef typename Vec<W>::T V;
+  typedef Vec<W> L;
+  const V k = L::ld(in.k + j), kdx = L::ld(in.kdx + j), kdy = L::ld(in.kdy + j);
+  const V gm = L::ld(in.gm + j);
+  // corner differences of the exponent: u = sgn k dz + i k D.(dx)
+  V ur[2], ui[2];
+  for (int c = 0; c < 2; c++) {
+    V X = in.dp[c][0] + gm * (in.dl[c][0] - in.dp[c][0]);
+    V Y = in.dp[c][1] + gm * (in.dl[c][1] - in.dp[c][1]);
+    ur[c] = (in.sgn * in.dz[c]) * k;
+    ui[c] = kdx * X + kdy * Y;
+  }
+  const int N = seriesTerms(in.k[j + W - 1] * in.rho);
+  // h_m(u1, u2) = u1 h_(m-1) + u2^m; g_m = h_m(u1, u1, u2) = u1 g_(m-1) + h_m;
+  // f_m = h_m(u1, u2, u2) = u2 f_(m-1) + h_m; h_m(0, 0, u1, u2) = h_m
+  V pr = V{} + 1, pi = V{}, hr = pr, hi = pi, gr = pr, gi = pi, fr = pr, fi = pi;
+  V Sr = V{} + kInvF2[0], Si = V{}, T0r = V{} + kInvF3[0], T0i = V{};
+  V T1r = T0r, T1i = V{}, T2r = T0r, T2i = V{};
+  for (int m = 1; m < N; m++) {
+    V t = pr * ur[1] - pi * ui[1];
+    pi = pr * ui[1] + pi * ur[1];
+    pr = t;
+    t = hr * ur[0] - hi * ui[0] + pr;
+    hi = hr * ui[0] + hi * ur[0] + pi;
+    hr = t;
+    const double c2 = kInvF2[m];
+    Sr += c2 * hr;
+    Si += c2 * hi;
+    if (!MOM) continue;
+    t = gr * ur[0] - gi * ui[0] + hr;
+    gi = gr * ui[0] + gi * ur[0] + hi;
+    gr = t;
+    t = fr * ur[1] - fi * ui[1] + hr;
+    fi = fr * ui[1] + fi * ur[1] + hi;
+    fr = t;
+    const double c3 = kInvF3[m];
+    T0r += c3 * hr;
+    T0i += c3 * hi;
+    T1r += c3 * gr;
+    T1i += c3 * gi;
+    T2r += c3 * fr;
+    T2i += c3 * fi;
+  }
+  const V er = L::ld(in.e0r + j), ei = L::ld(in.e0i + j);
+  const V wp = L::ld(in.wp + j);
+  const V Ir = er * Sr - ei * Si, Ii = er * Si + ei * Sr;
+  acc[0] += wp * Ir;
+  if (MOM) {
+    acc[1] += wp * (er * T0r - ei * T0i);
+    acc[2] += wp * (er * T1r - ei * T1i);
+    acc[3] += wp * (er * T2r - ei * T2i);
+  }
+  acc[4] += L::ld(in.wux + j) * Ir;
+  acc[5] += L::ld(in.wuy + j) * Ir;
+  acc[6] += L::ld(in.wz + j) * Ii;
+}
+
+// [j0, j1): chunks of W, the rest one at a time
+template <int W>
+static void seriesRange(const KernIn& in, int j0, int j1, double out[7]) {
+  typename Vec<W>::T acc[7] = {};
+  typename Vec<1>::T acc1[7] = {};
+  int j = j0;
+  if (in.mom) {
+    for (; j + W <= j1; j += W) seriesChunk<W, true>(in, j, acc);
+    for (; j < j1; j++) seriesChunk<1, true>(in, j, acc1);
+  } else {
+    for (; j + W <= j1; j += W) seriesChunk<W, false>(in, j, acc);
+    for (; j < j1; j++) seriesChunk<1, false>(in, j, acc1);
+  }
+  for (int i = 0; i < 7; i++) out[i] += Vec<W>::sum(acc[i]) + Vec<1>::sum(acc1[i]);
+}
+
+}  // namespace
+}  // namespace mjb
+
+#endif  // MJBUOY_WAVEINT_KERN_H_

@@ -1,0 +1,47 @@
+// waveker: the plain-data interface of waveint's series kernels, one per
+// instruction set (waveint_kern.h); no includes, no inline functions, so a
+// file compiled for AVX shares no code with the scalar path
+#ifndef MJBUOY_WAVEKER_H_
+#define MJBUOY_WAVEKER_H_
+
+namespace mjb {
+
+// series about corner 0 is used while max |u_c| <= kRMax (its terms peak
+// at e^r, so at most e^4 of round-off is lost); kNMax terms always suffice
+static const double kRMax = 4;
+static const int kNMax = 64;
+
+// the data of one piece of one exponent family, for the kernels: corner 0
+// (whose e^L0 is known) and corners 1, 2 as differences from it
+struct KernIn {
+  const double *k, *kdx, *kdy, *gm;      // WaveTab's arrays
+  const double *wp, *wux, *wuy, *wz;     // the family's weights
+  const double *e0r, *e0i;               // e^L0 per component
+  double dz[2];      // stretched height z' of corners 1, 2 minus corner 0 [m]
+  double dp[2][2];   // their horizontal position minus corner 0's [m]
+  double dl[2][2];   // their Gerstner label minus corner 0's [m]
+  double sgn;        // +1: exponent k z'; -1: -k (z' + 2 h)
+  double rho;        // |u_c| <= k rho for every component
+  int mom;           // 0: only S (velocity, pressure force), T_c left at 0
+};
+
+// out += sums over components j in [j0, j1) of w Re(e^L0 S) (pressure),
+// w Re(e^L0 T_c) for c = 0, 1, 2, wux Re(e^L0 S), wuy Re(..), wz Im(..)
+// (7 values; times 2 area they are the integrals); every component in the
+// range must have k rho <= kRMax. By level: glibc-free arithmetic only, so
+// levels differ by FMA contraction and summation order
+void seriesSums(const KernIn& in, int j0, int j1, double out[7]);
+void seriesScalar(const KernIn& in, int j0, int j1, double out[7]);
+void seriesAvx2(const KernIn& in, int j0, int j1, double out[7]);
+void seriesAvx512(const KernIn& in, int j0, int j1, double out[7]);
+
+// the number of series terms for radius r <= kRMax: the first term left
+// out is below 2^-54 of the leading one (docs/physics.md, "Cost")
+int seriesTerms(double r);
+// 1/(m+2)! and 1/(m+3)! for m < kNMax
+extern const double* kInvF2;
+extern const double* kInvF3;
+
+}  // namespace mjb
+
+#endif  // MJBUOY_WAVEKER_H_
