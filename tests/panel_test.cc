@@ -346,13 +346,117 @@ TEST(Panel, BadInputIsNamed) {
   EXPECT_NE(err.find("deep water"), std::string::npos) << err;
 }
 
+// ---- panels from a hull's triangles ----
+
+// a MuJoCo-style box (8 vertices, 12 triangles, counterclockwise from
+// outside) of half sizes (hx, hy, hz)
+void boxMesh(double hx, double hy, double hz, std::vector<float>* v, std::vector<int>* f) {
+  v->clear();
+  for (int i = 0; i < 8; i++) {
+    v->push_back((float)((i & 1) ? hx : -hx));
+    v->push_back((float)((i & 2) ? hy : -hy));
+    v->push_back((float)((i & 4) ? hz : -hz));
+  }
+  *f = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+        2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+}
+
+// geometry of a panel mesh: sum n_z a, volume sum (c . n) a / 3 (closed by
+// the waterplane, where c . n = z = 0), total area
+void panelSums(const PanelMesh& m, double* nz, double* vol, double* area) {
+  *nz = *vol = *area = 0;
+  for (int f = 0; f < m.nface(); f++) {
+    const int* q = &m.face[4 * f];
+    mjb::Panel p;
+    ASSERT_TRUE(mjb::makePanel(&m.vert[3 * q[0]], &m.vert[3 * q[1]], &m.vert[3 * q[2]],
+                               q[3] < 0 ? nullptr : &m.vert[3 * q[3]], &p));
+    *nz += p.n[2] * p.area;
+    *vol += (p.c[0] * p.n[0] + p.c[1] * p.n[1] + p.c[2] * p.n[2]) * p.area / 3;
+    *area += p.area;
+  }
+}
+
+// the box clipped at its waterline: displaced volume, waterplane area (as
+// the lid's area and as minus sum n_z a of the wetted panels, Gauss) by
+// hand, upright and turned 90 degrees about x
+TEST(Panel, HullPanelsClipABox) {
+  std::vector<float> v;
+  std::vector<int> f;
+  boxMesh(1, 0.5, 0.3, &v, &f);
+  const double pos[3] = {0.4, -0.2, 0.1};
+  const double s = std::sqrt(0.5);
+  const double quats[2][4] = {{1, 0, 0, 0}, {s, s, 0, 0}};
+  // upright: draft 0.3 - 0.1, waterplane 2 x 1; turned: draft 0.5 - 0.1,
+  // waterplane 2 x 0.6
+  const double draft[2] = {0.2, 0.4}, wp[2] = {2.0, 1.2};
+  for (int q = 0; q < 2; q++) {
+    for (int refine : {0, 2}) {
+      PanelMesh body, lid;
+      std::string note;
+      ASSERT_TRUE(mjb::hullPanels(v.data(), 8, f.data(), 12, pos, quats[q], refine, &body, &lid, &note)) << note;
+      EXPECT_TRUE(note.empty()) << note;
+      double nz, vol, area, lnz, lvol, larea;
+      panelSums(body, &nz, &vol, &area);
+      panelSums(lid, &lnz, &lvol, &larea);
+      EXPECT_NEAR(vol, wp[q] * draft[q], 1e-5) << "quat " << q;
+      EXPECT_NEAR(-nz, wp[q], 1e-5) << "quat " << q;
+      EXPECT_NEAR(larea, wp[q], 1e-5) << "quat " << q;
+      for (size_t i = 2; i < body.vert.size(); i += 3) EXPECT_LE(body.vert[i], 1e-9);
+    }
+  }
+  // a box above the water has no wetted panels: a clear error
+  PanelMesh body, lid;
+  std::string note;
+  const double high[3] = {0, 0, 5}, one[4] = {1, 0, 0, 0};
+  EXPECT_FALSE(mjb::hullPanels(v.data(), 8, f.data(), 12, high, one, 0, &body, &lid, &note));
+  EXPECT_NE(note.find("no triangle"), std::string::npos) << note;
+}
+
+// a closed triangulated sphere floating at its equator gives the hemisphere:
+// heave A33 and B33 at kR = 1 within 4% of Hulme (1982)
+TEST(Panel, HullPanelsSphereIsHulmesHemisphere) {
+  std::vector<float> v;
+  std::vector<int> f;
+  const int nt = 20, na = 24;  // polar rings over the whole sphere, around
+  v.insert(v.end(), {0, 0, -1});
+  for (int i = 1; i < nt; i++)
+    for (int k = 0; k < na; k++) {
+      double t = kPi * i / nt, a = 2 * kPi * k / na;
+      v.insert(v.end(), {(float)(std::sin(t) * std::cos(a)), (float)(std::sin(t) * std::sin(a)), (float)-std::cos(t)});
+    }
+  v.insert(v.end(), {0, 0, 1});
+  int top = (int)v.size() / 3 - 1;
+  auto id = [&](int i, int k) { return 1 + (i - 1) * na + (k % na); };
+  for (int k = 0; k < na; k++) f.insert(f.end(), {0, id(1, k + 1), id(1, k)});
+  for (int i = 1; i + 1 < nt; i++)
+    for (int k = 0; k < na; k++) {
+      f.insert(f.end(), {id(i, k), id(i, k + 1), id(i + 1, k + 1)});
+      f.insert(f.end(), {id(i, k), id(i + 1, k + 1), id(i + 1, k)});
+    }
+  for (int k = 0; k < na; k++) f.insert(f.end(), {top, id(nt - 1, k), id(nt - 1, k + 1)});
+  const double pos[3] = {0, 0, 0}, q[4] = {1, 0, 0, 0};
+  PanelMesh body, lid;
+  std::string note;
+  ASSERT_TRUE(mjb::hullPanels(v.data(), (int)v.size() / 3, f.data(), (int)f.size() / 3, pos, q, 0, &body, &lid,
+                              &note))
+      << note;
+  HydroCoef h;
+  h.rho = kRho;
+  std::string err;
+  ASSERT_TRUE(mjb::panelSolve(body, lid, {std::sqrt(1.0 * kG)}, {0.0}, &h, &err)) << err;
+  const HulmeRow& r = hulmeAt(kHulmeHeave, kNHeave, 1.0);
+  EXPECT_LT(relErr(a33(h, 0), r.A), 0.04) << a33(h, 0);
+  EXPECT_LT(relErr(b33(h, 0), r.B), 0.04) << b33(h, 0);
+}
+
 // ---- converged validation (label panel) ----
 
 // heave and surge against Hulme's tables at every tabulated kR from 0.1 to 5
 // within 3% at 16 x 32 (512 panels), no lid; prints the convergence table
-// (8 x 16, 12 x 24, 16 x 32) and the solve time. Surge near the mesh's
-// irregular frequency (kR 3.6-4.4 at these meshes, see docs/physics.md
-// section 13) is printed but not asserted.
+// (8 x 16, 12 x 24, 16 x 32) and the solve time. Without the lid the
+// meshes have irregular frequencies near kR = 2.6 (heave) and 4.0 (surge)
+// (docs/physics.md section 13): kR = 2.5 and surge at kR = 4 are printed,
+// not asserted (PanelConverged.HemisphereHulmeWithLid covers them).
 TEST(PanelConverged, HemisphereHulme) {
   std::vector<double> kr;
   for (const HulmeRow& r : kHulmeHeave) kr.push_back(r.kR);
@@ -372,6 +476,7 @@ TEST(PanelConverged, HemisphereHulme) {
                 a33(hs[0], w), a33(hs[1], w), a33(hs[2], w), h.A, b33(hs[0], w), b33(hs[1], w), b33(hs[2], w),
                 h.B, a11(hs[2], w), s.A, b11(hs[2], w), s.B);
     const HydroCoef& c = hs[2];
+    if (kr[w] > 2.4 && kr[w] < 2.8) continue;
     EXPECT_LT(relErr(a33(c, w), h.A), 0.03) << "kR " << kr[w];
     EXPECT_LT(relErr(b33(c, w), h.B), 0.03) << "kR " << kr[w];
     if (kr[w] > 3.5 && kr[w] < 4.5) continue;
@@ -383,10 +488,11 @@ TEST(PanelConverged, HemisphereHulme) {
 }
 
 // the same with the lid (irregular frequencies removed), 16 x 32 + 256 lid
-// panels: heave within 3% to kR = 2 (the lid costs accuracy above, see
-// docs/physics.md section 13); prints the comparison to kR = 5
+// panels: heave within 3% to kR = 2, within 10% for A33 and 25% for the
+// small B33 above (the lid's slow convergence there, docs/physics.md
+// section 13); prints the comparison to kR = 5
 TEST(PanelConverged, HemisphereHulmeWithLid) {
-  std::vector<double> kr = {0.1, 0.2, 0.5, 1.0, 1.4, 2.0, 3.0, 4.0, 5.0};
+  std::vector<double> kr = {0.1, 0.2, 0.5, 1.0, 1.4, 2.0, 2.5, 3.0, 4.0, 5.0};
   double sec;
   HydroCoef c = solveHemisphere(16, 32, kr, true, &sec);
   std::printf("[panel] hemisphere 16 x 32 + lid: %.1f s for %d frequencies\n", sec, (int)kr.size());
@@ -394,9 +500,9 @@ TEST(PanelConverged, HemisphereHulmeWithLid) {
     const HulmeRow& h = hulmeAt(kHulmeHeave, kNHeave, kr[w]);
     std::printf("[panel] lid kR %.1f A33 %.4f (Hulme %.4f) B33 %.4f (%.4f) Haskind %.3f\n", kr[w], a33(c, w), h.A,
                 b33(c, w), h.B, haskindRatio(c, w));
-    if (kr[w] > 2.01) continue;
-    EXPECT_LT(relErr(a33(c, w), h.A), 0.03) << "kR " << kr[w];
-    EXPECT_LT(relErr(b33(c, w), h.B), 0.03) << "kR " << kr[w];
+    double tol = kr[w] < 2.01 ? 0.03 : 0.25;
+    EXPECT_LT(relErr(a33(c, w), h.A), kr[w] < 2.01 ? 0.03 : 0.1) << "kR " << kr[w];
+    EXPECT_LT(relErr(b33(c, w), h.B), tol) << "kR " << kr[w];
   }
 }
 
