@@ -11,6 +11,12 @@ namespace mjb {
 double struveH0(double x);
 double struveH1(double x);
 
+// Bessel functions J0, J1, Y0, Y1 together (power series, A&S 9.1.10-11,
+// below x = 8; Hankel's asymptotic expansion, A&S 9.2.5-10, above): about
+// 1e-9 absolute, several times faster than std::cyl_bessel_j/neumann;
+// x > 0
+void bessel01(double x, double* j0, double* j1, double* y0, double* y1);
+
 // wave part of the pulsating source, nondimensional: for X = K R >= 0 and
 // Y = -K (z + zeta) >= 0 (K = omega^2 / g),
 //   F(X, Y) = PV int_0^inf exp(-u Y) J0(u X) / (u - 1) du
@@ -22,6 +28,7 @@ double struveH1(double x);
 //   G = 1/r + 1/r' + 2 K F + 2 pi i K e^-Y J0(X)
 struct WaveF {
   double F, FX, FY;
+  double J0, J1;  // J0(X), J1(X), for the imaginary part
 };
 WaveF greenWave(double X, double Y);
 

@@ -244,11 +244,11 @@ void waveIntegral(const std::vector<QPoint>& q, double K, const double* x, bool 
     double X = K * R, Y = -K * (x[2] + t.p[2]);
     if (Y < 0) Y = 0;
     WaveF f = greenWave(X, Y);
-    double ey = std::exp(-Y), j0 = std::cyl_bessel_j(0.0, X);
+    double ey = std::exp(-Y), j0 = f.J0;
     // G_w = 2K F + 2 pi i K e^-Y J0(X)
     ss += t.w * cplx(2 * K * f.F, 2 * kPi * K * ey * j0);
     if (grad) {
-      double j1 = std::cyl_bessel_j(1.0, X);
+      double j1 = f.J1;
       // d/dR = K d/dX, d/dz = -K d/dY
       cplx dR = K * cplx(2 * K * f.FX, -2 * kPi * K * ey * j1);
       cplx dz = -K * cplx(2 * K * f.FY, -2 * kPi * K * ey * j0);
@@ -440,7 +440,8 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
         out->Xre[o] = (fk + fd).real();
         out->Xim[o] = (fk + fd).imag();
       }
-    if (!finiteAll(&out->A[36 * w], 36) || !finiteAll(&out->B[36 * w], 36)) {
+    if (!finiteAll(&out->A[36 * w], 36) || !finiteAll(&out->B[36 * w], 36) ||
+        !finiteAll(&out->Xre[6 * w * nh], 6 * nh) || !finiteAll(&out->Xim[6 * w * nh], 6 * nh)) {
       char b[200];
       std::snprintf(b, sizeof b, "panel: non-finite coefficients at omega = %g rad/s", om);
       *err = b;

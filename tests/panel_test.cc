@@ -169,6 +169,18 @@ TEST(Panel, GreenWaveFarFieldAndSurfaceCondition) {
   }
 }
 
+// the series / Hankel-expansion Bessel functions against libstdc++'s
+TEST(Panel, BesselMatchesStd) {
+  for (double x = 0.001; x < 60; x *= 1.07) {
+    double j0, j1, y0, y1;
+    mjb::bessel01(x, &j0, &j1, &y0, &y1);
+    EXPECT_NEAR(j0, std::cyl_bessel_j(0.0, x), 1e-8) << x;
+    EXPECT_NEAR(j1, std::cyl_bessel_j(1.0, x), 1e-8) << x;
+    EXPECT_NEAR(y0, std::cyl_neumann(0.0, x), 1e-8 * (1 + std::fabs(y0))) << x;
+    EXPECT_NEAR(y1, std::cyl_neumann(1.0, x), 1e-8 * (1 + std::fabs(y1))) << x;
+  }
+}
+
 // ---- flat-panel Rankine integrals ----
 
 TEST(Panel, RankinePanelMatchesQuadrature) {
