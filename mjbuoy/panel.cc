@@ -35,11 +35,20 @@ void parallelRows(int n, Fn body) {
     for (int i = 0; i < n; i++) body(i);
     return;
   }
+  // a thread that cannot start has its rows run here (never an abort)
   std::vector<std::thread> th;
-  for (int t = 0; t < nt; t++)
-    th.emplace_back([=]() {
-      for (int i = t; i < n; i += nt) body(i);
-    });
+  std::vector<int> here;
+  for (int t = 0; t < nt; t++) {
+    try {
+      th.emplace_back([=]() {
+        for (int i = t; i < n; i += nt) body(i);
+      });
+    } catch (...) {
+      here.push_back(t);
+    }
+  }
+  for (int t : here)
+    for (int i = t; i < n; i += nt) body(i);
   for (auto& t : th) t.join();
 }
 
