@@ -270,6 +270,26 @@ TEST(Panel, HemisphereHaskind) {
   EXPECT_LT(std::hypot(l.FKre[2], l.FKim[2]), kRho * kG * kPi * kR * kR);
 }
 
+// long waves (kR = 0.02) pass the hemisphere as a slowly varying pressure
+// (the long-wave approximation, e.g. Newman 1977 "Marine Hydrodynamics"
+// section 6.17): Froude-Krylov heave rho g (A_wp - k V) a, in phase with the
+// crest at the reference point (omega^2 = g k); surge rho V du/dt =
+// -i rho g k V a (the fluid acceleration leads the elevation by 90 degrees
+// for Re(a e^{-i omega t})); the total heave force adds the added-mass term,
+// rho g A_wp - omega^2 (rho V + A33) with A33 -> 0.8310 rho V (Hulme).
+// This pins the phase convention of hydrocoef.h.
+TEST(Panel, FroudeKrylovLongWave) {
+  const double kr = 0.02;
+  HydroCoef h = solveHemisphere(12, 24, {kr}, false);
+  double k = kr / kR, vol = 2.0 / 3.0 * kPi * kR * kR * kR;
+  double awp = kPi * kR * kR;
+  EXPECT_NEAR(h.FKre[2] / (kRho * kG * (awp - k * vol)), 1, 0.015);
+  EXPECT_NEAR(h.FKim[2] / (kRho * kG * awp), 0, 0.01);
+  EXPECT_NEAR(h.FKim[0] / (-kRho * kG * k * vol), 1, 0.03);
+  EXPECT_NEAR(h.FKre[0] / (kRho * kG * k * vol), 0, 0.05);
+  EXPECT_NEAR(h.Xre[2] / (kRho * kG * (awp - k * vol * (1 + kHeaveZero))), 1, 0.015);
+}
+
 // an asymmetric hull (a sheared, bent, offset cylinder, reference point off
 // its axis): A and B symmetric within the discretization (Frobenius norm of
 // the antisymmetric part below 2% of the matrix) and B positive semi-definite
