@@ -28,9 +28,10 @@ for a in "$@"; do
   esac
 done
 
-# the 600 s soak runs (label soak, README "Long tests") only when a label is
-# asked for, e.g. bash scripts/test.sh -L soak
-exclude=(-LE soak)
+# the 600 s soak runs (label soak, README "Long tests") and the converged
+# panel-solver validation (label panel) only when a label is asked for,
+# e.g. bash scripts/test.sh -L soak
+exclude=(-LE 'soak|panel')
 for a in "${args[@]+"${args[@]}"}"; do
   case $a in
     -LE* | --label-exclude*) ;;

@@ -1,0 +1,463 @@
+// boundary-element solve of the radiation and diffraction problems
+// (docs/physics.md section 13): constant-strength sources on flat panels,
+// collocation at the centroids, the deep-water Green function of green.h,
+// an interior lid (phi = 0 on the waterplane inside the hull) against
+// irregular frequencies
+#include "panel.h"
+
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <thread>
+
+#include <Eigen/Dense>
+
+#include "gauss.h"
+#include "green.h"
+#include "rankine.h"
+
+namespace mjb {
+
+namespace {
+
+typedef std::complex<double> cplx;
+typedef Eigen::MatrixXd MatR;
+typedef Eigen::MatrixXcd MatC;
+const double kPi = 3.14159265358979323846;
+
+// runs body(i) for i in [0, n) on up to hardware_concurrency threads
+// (rows interleaved: near and far rows cost about the same)
+template <class Fn>
+void parallelRows(int n, Fn body) {
+  int nt = (int)std::thread::hardware_concurrency();
+  nt = nt < 1 ? 1 : (nt > 8 ? 8 : nt);
+  if (nt == 1 || n < 64) {
+    for (int i = 0; i < n; i++) body(i);
+    return;
+  }
+  // a thread that cannot start has its rows run here (never an abort)
+  std::vector<std::thread> th;
+  std::vector<int> here;
+  for (int t = 0; t < nt; t++) {
+    try {
+      th.emplace_back([=]() {
+        for (int i = t; i < n; i += nt) body(i);
+      });
+    } catch (...) {
+      here.push_back(t);
+    }
+  }
+  for (int t : here)
+    for (int i = t; i < n; i += nt) body(i);
+  for (auto& t : th) t.join();
+}
+
+// quadrature point of a panel: position and weight [m^2]
+struct QPoint {
+  double p[3], w;
+};
+
+// 2x2 Gauss on the bilinear map of a quad, 3 interior points on a triangle
+void panelRule(const Panel& pn, std::vector<QPoint>* q) {
+  q->clear();
+  if (pn.nv == 3) {
+    const double b[3][3] = {{2. / 3, 1. / 6, 1. / 6}, {1. / 6, 2. / 3, 1. / 6}, {1. / 6, 1. / 6, 2. / 3}};
+    for (int i = 0; i < 3; i++) {
+      QPoint t;
+      for (int k = 0; k < 3; k++) t.p[k] = b[i][0] * pn.v[0][k] + b[i][1] * pn.v[1][k] + b[i][2] * pn.v[2][k];
+      t.w = pn.area / 3;
+      q->push_back(t);
+    }
+    return;
+  }
+  const double g = 0.5 / std::sqrt(3.0);
+  double wsum = 0;
+  for (int a = 0; a < 2; a++)
+    for (int b = 0; b < 2; b++) {
+      double u = 0.5 + (a ? g : -g), v = 0.5 + (b ? g : -g);
+      QPoint t;
+      double du[3], dv[3];
+      for (int k = 0; k < 3; k++) {
+        t.p[k] = (1 - u) * (1 - v) * pn.v[0][k] + u * (1 - v) * pn.v[1][k] + u * v * pn.v[2][k] +
+                 (1 - u) * v * pn.v[3][k];
+        du[k] = -(1 - v) * pn.v[0][k] + (1 - v) * pn.v[1][k] + v * pn.v[2][k] - v * pn.v[3][k];
+        dv[k] = -(1 - u) * pn.v[0][k] - u * pn.v[1][k] + u * pn.v[2][k] + (1 - u) * pn.v[3][k];
+      }
+      double c[3] = {du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2],
+                     du[0] * dv[1] - du[1] * dv[0]};
+      t.w = 0.25 * std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+      wsum += t.w;
+      q->push_back(t);
+    }
+  for (auto& t : *q) t.w *= pn.area / wsum;
+}
+
+// Duffy rule about the centroid (its 1/r and log singularity integrated
+// exactly by the Jacobian u): triangles (c, v_k, v_k+1), 6x6 Gauss
+void duffyRule(const Panel& pn, std::vector<QPoint>* q) {
+  q->clear();
+  const GaussRule& g = gaussRule(6);
+  for (int e = 0; e < pn.nv; e++) {
+    const double* a = pn.v[e];
+    const double* b = pn.v[(e + 1) % pn.nv];
+    double ea[3], eb[3], cr[3];
+    for (int k = 0; k < 3; k++) {
+      ea[k] = a[k] - pn.c[k];
+      eb[k] = b[k] - pn.c[k];
+    }
+    cr[0] = ea[1] * eb[2] - ea[2] * eb[1];
+    cr[1] = ea[2] * eb[0] - ea[0] * eb[2];
+    cr[2] = ea[0] * eb[1] - ea[1] * eb[0];
+    double at = std::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);  // 2 x area
+    for (int i = 0; i < g.n; i++)
+      for (int j = 0; j < g.n; j++) {
+        double u = 0.5 * (g.x[i] + 1), v = 0.5 * (g.x[j] + 1);
+        QPoint t;
+        for (int k = 0; k < 3; k++) t.p[k] = pn.c[k] + u * (ea[k] + v * (eb[k] - ea[k]));
+        t.w = 0.25 * g.w[i] * g.w[j] * u * at;
+        q->push_back(t);
+      }
+  }
+}
+
+// the problem: panels (body first, then lid) and their rules
+struct Problem {
+  std::vector<Panel> pn;
+  int nb = 0, nl = 0;
+  std::vector<std::vector<QPoint>> near, self;
+  double gn[6];  // scratch
+};
+
+bool buildPanels(const PanelMesh& m, bool lid, Problem* pb, std::string* err) {
+  const char* what = lid ? "lid" : "body";
+  int nv = (int)m.vert.size() / 3;
+  if (m.vert.size() % 3 || m.face.size() % 4) {
+    *err = std::string("panel ") + what + ": vert must hold 3 and face 4 numbers per entry";
+    return false;
+  }
+  for (int f = 0; f < m.nface(); f++) {
+    const int* fi = &m.face[4 * f];
+    int n = fi[3] < 0 ? 3 : 4;
+    for (int k = 0; k < n; k++)
+      if (fi[k] < 0 || fi[k] >= nv) {
+        char b[200];
+        std::snprintf(b, sizeof b, "panel %s face %d: vertex index %d outside 0..%d", what, f, fi[k], nv - 1);
+        *err = b;
+        return false;
+      }
+    const double* p[4];
+    for (int k = 0; k < n; k++) p[k] = &m.vert[3 * fi[k]];
+    for (int k = 0; k < n; k++)
+      for (int c = 0; c < 3; c++)
+        if (!std::isfinite(p[k][c])) {
+          char b[200];
+          std::snprintf(b, sizeof b, "panel %s face %d: vertex %d is not finite", what, f, fi[k]);
+          *err = b;
+          return false;
+        }
+    Panel pn;
+    if (!makePanel(p[0], p[1], p[2], n == 4 ? p[3] : nullptr, &pn)) {
+      char b[200];
+      std::snprintf(b, sizeof b, "panel %s face %d: degenerate (zero area); remove it", what, f);
+      *err = b;
+      return false;
+    }
+    double tol = 1e-6 * (1 + pn.diam);
+    for (int k = 0; k < pn.nv; k++)
+      if ((lid && std::fabs(pn.v[k][2]) > tol) || (!lid && pn.v[k][2] > tol)) {
+        char b[200];
+        std::snprintf(b, sizeof b, "panel %s face %d: vertex z = %g m, accepted %s (clip the mesh at the waterline)",
+                      what, f, pn.v[k][2], lid ? "0" : "<= 0");
+        *err = b;
+        return false;
+      }
+    if (lid) pn.v[0][2] = pn.v[1][2] = pn.v[2][2] = pn.v[3][2] = pn.c[2] = 0;
+    pb->pn.push_back(pn);
+  }
+  return true;
+}
+
+// generalized normal: n, (c - ref) x n
+void genNormal(const Panel& p, const double* ref, double* g) {
+  double r[3] = {p.c[0] - ref[0], p.c[1] - ref[1], p.c[2] - ref[2]};
+  g[0] = p.n[0];
+  g[1] = p.n[1];
+  g[2] = p.n[2];
+  g[3] = r[1] * p.n[2] - r[2] * p.n[1];
+  g[4] = r[2] * p.n[0] - r[0] * p.n[2];
+  g[5] = r[0] * p.n[1] - r[1] * p.n[0];
+}
+
+// mirror image of a panel in z = 0
+Panel mirror(const Panel& p) {
+  double v[4][3];
+  for (int i = 0; i < p.nv; i++) {
+    v[i][0] = p.v[i][0];
+    v[i][1] = p.v[i][1];
+    v[i][2] = -p.v[i][2];
+  }
+  Panel m;
+  makePanel(v[0], v[1], v[2], p.nv == 4 ? v[3] : nullptr, &m);
+  return m;
+}
+
+// Rankine parts: S (potential, all rows) and D (normal derivative, body
+// rows) of 1/r and of the image 1/r' separately
+struct Rankine {
+  MatR Sd, Si, Dd, Di;
+};
+
+void rankineMatrices(const Problem& pb, Rankine* rk) {
+  int n = pb.nb + pb.nl, nb = pb.nb;
+  rk->Sd.resize(n, n);
+  rk->Si.resize(n, n);
+  rk->Dd.resize(nb, n);
+  rk->Di.resize(nb, n);
+  std::vector<Panel> im(n);
+  for (int j = 0; j < n; j++) im[j] = mirror(pb.pn[j]);
+  parallelRows(n, [&](int i) {
+    const Panel& pi = pb.pn[i];
+    for (int j = 0; j < n; j++) {
+      double phi, g[3], phm, gm[3];
+      rankinePanel(pb.pn[j], pi.c, &phi, g);
+      rankinePanel(im[j], pi.c, &phm, gm);
+      rk->Sd(i, j) = phi;
+      rk->Si(i, j) = phm;
+      if (i < nb) {
+        rk->Dd(i, j) = g[0] * pi.n[0] + g[1] * pi.n[1] + g[2] * pi.n[2];
+        rk->Di(i, j) = gm[0] * pi.n[0] + gm[1] * pi.n[1] + gm[2] * pi.n[2];
+      }
+    }
+  });
+  // the flat self term (0) misses the curvature part of the principal
+  // value, -(H/2) int dS/r: an O(h) error. The wetted surface and its
+  // image close, so int over x of dG/dn_x (1/r) = -2 pi for each source
+  // panel (Gauss); the column sums fix each diagonal to O(h^2)
+  for (int j = 0; j < nb; j++) {
+    double s = 0;
+    for (int i = 0; i < nb; i++) {
+      if (i != j) s += pb.pn[i].area * rk->Dd(i, j);
+      s += pb.pn[i].area * rk->Di(i, j);
+    }
+    rk->Dd(j, j) = (-2 * kPi * pb.pn[j].area - s) / pb.pn[j].area;
+  }
+}
+
+// wave part of G integrated over panel j at x: potential and gradient
+void waveIntegral(const std::vector<QPoint>& q, double K, const double* x, bool grad, cplx* s,
+                  cplx g[3]) {
+  cplx ss = 0, gg[3] = {0, 0, 0};
+  for (const QPoint& t : q) {
+    double dx = x[0] - t.p[0], dy = x[1] - t.p[1];
+    double R = std::sqrt(dx * dx + dy * dy);
+    double X = K * R, Y = -K * (x[2] + t.p[2]);
+    if (Y < 0) Y = 0;
+    WaveF f = greenWave(X, Y);
+    double ey = std::exp(-Y), j0 = f.J0;
+    // G_w = 2K F + 2 pi i K e^-Y J0(X)
+    ss += t.w * cplx(2 * K * f.F, 2 * kPi * K * ey * j0);
+    if (grad) {
+      double j1 = f.J1;
+      // d/dR = K d/dX, d/dz = -K d/dY
+      cplx dR = K * cplx(2 * K * f.FX, -2 * kPi * K * ey * j1);
+      cplx dz = -K * cplx(2 * K * f.FY, -2 * kPi * K * ey * j0);
+      double ux = R > 0 ? dx / R : 0, uy = R > 0 ? dy / R : 0;
+      gg[0] += t.w * dR * ux;
+      gg[1] += t.w * dR * uy;
+      gg[2] += t.w * dz;
+    }
+  }
+  *s = ss;
+  if (grad) {
+    g[0] = gg[0];
+    g[1] = gg[1];
+    g[2] = gg[2];
+  }
+}
+
+// frequency-dependent wave matrices WS (all rows) and WD (body rows)
+void waveMatrices(const Problem& pb, double K, MatC* WS, MatC* WD) {
+  int n = pb.nb + pb.nl, nb = pb.nb;
+  WS->resize(n, n);
+  WD->resize(nb, n);
+  parallelRows(n, [&](int i) {
+    std::vector<QPoint> one(1);
+    const Panel& pi = pb.pn[i];
+    bool grad = i < nb;
+    for (int j = 0; j < n; j++) {
+      const Panel& pj = pb.pn[j];
+      const std::vector<QPoint>* q;
+      double dx = pi.c[0] - pj.c[0], dy = pi.c[1] - pj.c[1], dz = pi.c[2] + pj.c[2];
+      double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+      if (i == j && i >= nb) {
+        q = &pb.self[j];
+      } else if (d < 2 * pj.diam) {
+        q = &pb.near[j];
+      } else {
+        one[0].p[0] = pj.c[0];
+        one[0].p[1] = pj.c[1];
+        one[0].p[2] = pj.c[2];
+        one[0].w = pj.area;
+        q = &one;
+      }
+      cplx s, g[3];
+      waveIntegral(*q, K, pi.c, grad, &s, g);
+      (*WS)(i, j) = s;
+      if (grad) (*WD)(i, j) = g[0] * pi.n[0] + g[1] * pi.n[1] + g[2] * pi.n[2];
+    }
+  });
+}
+
+bool finiteAll(const double* a, int n) {
+  for (int i = 0; i < n; i++)
+    if (!std::isfinite(a[i])) return false;
+  return true;
+}
+
+}  // namespace
+
+bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,
+                const std::vector<double>& heading, HydroCoef* out, std::string* err) {
+  Problem pb;
+  if (!buildPanels(body, false, &pb, err)) return false;
+  pb.nb = (int)pb.pn.size();
+  if (pb.nb == 0) {
+    *err = "panel body: no panels";
+    return false;
+  }
+  if (!buildPanels(lid, true, &pb, err)) return false;
+  pb.nl = (int)pb.pn.size() - pb.nb;
+  for (size_t w = 0; w < omega.size(); w++)
+    if (!(omega[w] > 0 && std::isfinite(omega[w])) || (w && !(omega[w] > omega[w - 1]))) {
+      char b[200];
+      std::snprintf(b, sizeof b, "panel omega[%d] = %g rad/s: accepted finite, > 0 and increasing", (int)w, omega[w]);
+      *err = b;
+      return false;
+    }
+  for (size_t h = 0; h < heading.size(); h++)
+    if (!std::isfinite(heading[h])) {
+      char b[200];
+      std::snprintf(b, sizeof b, "panel heading[%d] = %g rad: accepted finite", (int)h, heading[h]);
+      *err = b;
+      return false;
+    }
+  if (!(out->rho > 0) || !(out->g > 0) || out->depth != 0) {
+    *err = "panel: rho and g must be > 0 and depth 0 (deep water only)";
+    return false;
+  }
+  int n = pb.nb + pb.nl, nb = pb.nb, nh = (int)heading.size(), nw = (int)omega.size();
+  pb.near.resize(n);
+  pb.self.resize(n);
+  for (int j = 0; j < n; j++) {
+    panelRule(pb.pn[j], &pb.near[j]);
+    if (j >= nb) duffyRule(pb.pn[j], &pb.self[j]);
+  }
+  const double* ref = out->ref;
+  double rho = out->rho, grav = out->g;
+  // generalized normals times area, body panels
+  MatR Nn(nb, 6), Na(nb, 6);
+  for (int i = 0; i < nb; i++) {
+    double gn[6];
+    genNormal(pb.pn[i], ref, gn);
+    for (int k = 0; k < 6; k++) {
+      Nn(i, k) = gn[k];
+      Na(i, k) = gn[k] * pb.pn[i].area;
+    }
+  }
+  Rankine rk;
+  rankineMatrices(pb, &rk);
+
+  // infinite frequency: G = 1/r - 1/r' (phi = 0 on z = 0), body only
+  {
+    MatR M = rk.Dd.leftCols(nb) - rk.Di.leftCols(nb);
+    M.diagonal().array() -= 2 * kPi;
+    MatR sig = M.partialPivLu().solve(Nn);
+    MatR phi = (rk.Sd.topLeftCorner(nb, nb) - rk.Si.topLeftCorner(nb, nb)) * sig;
+    MatR Ai = -rho * Na.transpose() * phi;
+    for (int a = 0; a < 6; a++)
+      for (int b = 0; b < 6; b++) out->Ainf[6 * a + b] = Ai(a, b);
+    if (!finiteAll(out->Ainf, 36)) {
+      *err = "panel: non-finite infinite-frequency added mass (check the mesh for coincident panels)";
+      return false;
+    }
+  }
+
+  out->omega = omega;
+  out->heading = heading;
+  out->A.assign(36 * nw, 0);
+  out->B.assign(36 * nw, 0);
+  out->Xre.assign(6 * nw * nh, 0);
+  out->Xim.assign(6 * nw * nh, 0);
+  out->FKre.assign(6 * nw * nh, 0);
+  out->FKim.assign(6 * nw * nh, 0);
+  MatC WS, WD;
+  for (int w = 0; w < nw; w++) {
+    double om = omega[w], K = om * om / grav;
+    waveMatrices(pb, K, &WS, &WD);
+    MatC M(n, n);
+    M.topRows(nb) = (rk.Dd + rk.Di).cast<cplx>() + WD;
+    // lid rows: no vertical velocity on the lid's interior side,
+    // dphi/dz(0-) = K phi + 4 pi sigma = 0 (the free-surface condition of G
+    // plus the jump of the doubled source sheet)
+    if (pb.nl)
+      M.bottomRows(pb.nl) =
+          K * ((rk.Sd.bottomRows(pb.nl) + rk.Si.bottomRows(pb.nl)).cast<cplx>() + WS.bottomRows(pb.nl));
+    for (int i = 0; i < nb; i++) M(i, i) -= 2 * kPi;
+    for (int i = nb; i < n; i++) M(i, i) += 4 * kPi;
+    // right-hand sides: 6 radiation modes (dphi/dn = n_j), nh diffraction
+    // problems (dphi_D/dn = -dphi_0/dn)
+    MatC rhs = MatC::Zero(n, 6 + nh);
+    rhs.block(0, 0, nb, 6) = Nn.cast<cplx>();
+    // incident potential per unit amplitude: phi0 = -i g/omega e^{Kz} e^{iK(x cos b + y sin b)}
+    MatC phi0(nb, nh);
+    for (int h = 0; h < nh; h++) {
+      double cb = std::cos(heading[h]), sb = std::sin(heading[h]);
+      for (int i = 0; i < nb; i++) {
+        const Panel& p = pb.pn[i];
+        double ph = K * ((p.c[0] - ref[0]) * cb + (p.c[1] - ref[1]) * sb);
+        cplx e = std::exp(K * p.c[2]) * cplx(std::cos(ph), std::sin(ph));
+        cplx f0 = cplx(0, -grav / om) * e;
+        phi0(i, h) = f0;
+        cplx dn = f0 * (cplx(0, K * cb) * p.n[0] + cplx(0, K * sb) * p.n[1] + K * p.n[2]);
+        rhs(i, 6 + h) = -dn;
+      }
+    }
+    MatC sig = M.partialPivLu().solve(rhs);
+    MatC S = (rk.Sd.topRows(nb) + rk.Si.topRows(nb)).cast<cplx>() + WS.topRows(nb);
+    MatC phi = S * sig;
+    // radiation force per unit velocity: -i omega rho int phi_j n_i dS
+    //   = i omega A_ij - B_ij
+    MatC P = Na.transpose().cast<cplx>() * phi;
+    for (int a = 0; a < 6; a++)
+      for (int b = 0; b < 6; b++) {
+        out->A[36 * w + 6 * a + b] = -rho * P(a, b).real();
+        out->B[36 * w + 6 * a + b] = -rho * om * P(a, b).imag();
+      }
+    // exciting force: -i omega rho int (phi0 + phiD) n dS
+    for (int h = 0; h < nh; h++)
+      for (int a = 0; a < 6; a++) {
+        cplx fk = 0, fd = 0;
+        for (int i = 0; i < nb; i++) {
+          fk += phi0(i, h) * Na(i, a);
+          fd += phi(i, 6 + h) * Na(i, a);
+        }
+        fk *= cplx(0, -om * rho);
+        fd *= cplx(0, -om * rho);
+        int o = (w * nh + h) * 6 + a;
+        out->FKre[o] = fk.real();
+        out->FKim[o] = fk.imag();
+        out->Xre[o] = (fk + fd).real();
+        out->Xim[o] = (fk + fd).imag();
+      }
+    if (!finiteAll(&out->A[36 * w], 36) || !finiteAll(&out->B[36 * w], 36) ||
+        !finiteAll(&out->Xre[6 * w * nh], 6 * nh) || !finiteAll(&out->Xim[6 * w * nh], 6 * nh)) {
+      char b[200];
+      std::snprintf(b, sizeof b, "panel: non-finite coefficients at omega = %g rad/s", om);
+      *err = b;
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace mjb
