@@ -178,8 +178,9 @@ long stepsFor(const mjModel* m, double T) { return std::lround(T / m->opt.timest
 //
 // Under an irregular sea the mean of E over a third is itself random: the
 // sea's wave groups make it differ from third to third with no growth at
-// all, by more than the margins above (measured on W576_JONSWAP_long: the
-// thirds' means differ by 26 J, the margin is 34 J). So for irregular seas
+// all, by as much as the margins above or more (measured: W576_JONSWAP_long
+// over 120 s, the thirds' means differ by 26 J against a margin of 34 J;
+// W64_JONSWAP_short over 60 s, by 84 J against 27 J). So for irregular seas
 // the limit adds 3 sqrt(2) sigma_w, three standard deviations of the
 // difference of two independent window means, each of standard deviation
 //   sigma_w^2 = (eps KE_mid)^2 + 2 sd_mid^2 / (w_min T_w)^2:

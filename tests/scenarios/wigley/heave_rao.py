@@ -13,8 +13,10 @@ waterplane W): F = rho g A [ int_W e^{ikx} dA - k int_V e^{kz} e^{ikx} dV ].
 For a wall-sided hull of draft T this is rho g A e^{-kT} int_W e^{ikx} dA
 (the box of seakeeping texts, e.g. Journee and Massie 2001, Offshore
 Hydromechanics, ch. 6); the Wigley's sections narrow with depth, so the
-exact volume integral is used (it lies between the wall-sided values for
-the mean draft V / A_W and the full draft).
+exact volume integral is used: its depth factor is within 0.3% of the
+wall-sided e^{-k T_m} at the mean draft T_m = V / A_W = 0.135 m for w up to
+1.4 wp of the Tp 2.5 s sea (0.947, 0.917, 0.847 at w = 2, 2.51, 3.5 rad/s),
+and well above e^{-k T} at the full wet draft 0.216 m (0.916, 0.870, 0.764).
 
 Heave RAO: H(w) = F / (A (c - (m + a) w^2 + i b w)), c = rho g A_W.
 mjbuoy has no radiation (added mass a, wave damping): a = 0 is its
