@@ -63,9 +63,10 @@ struct Case {
 
 // The irregular sea of the JONSWAP cases (docs/mjcf.md section 8): 64
 // components, seed 2026, gamma 3.3, travelling along +x (the boat's
-// length), long-crested (s = 0) or short-crested (s = 10, a wind sea's
-// typical spreading: Mitsuyasu et al. 1975, J. Phys. Oceanogr. 5:750-760,
-// s_max about 10 for wind seas). Tp = 2.5 s puts the peak wavelength
+// length), long-crested (s = 0) or short-crested (s = 10 in
+// cos^2s(b / 2), the spreading Goda recommends for wind waves: Goda 2000,
+// Random Seas and Design of Maritime Structures, s_max = 10, after
+// Mitsuyasu et al. 1975, J. Phys. Oceanogr. 5:750-760). Tp = 2.5 s puts the peak wavelength
 // Lp = g Tp^2 / (2 pi) = 9.76 m between the dissertation's 7.854 and
 // 12.566 m, i.e. 2.4 hull lengths (L = 4 m; theirs: 1.96 and 3.14).
 // Hs = 0.65 m gives the significant steepness Sp = Hs / Lp = 1/15, the
