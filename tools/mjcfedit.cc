@@ -2,6 +2,7 @@
 // a MuJoCo VFS (mjcfedit.h)
 #include "mjcfedit.h"
 
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <memory>
