@@ -14,6 +14,9 @@ check_tools.py BUILD_TOOLS_DIR MODELS_DIR CASE, CASE one of:
             with the option, the value and a compact range; clear messages
             for <init body="pattern"> and a model error after loading
             (items 11, 16)
+  seaset    mjbuoy-sim --set/--spectrum/--calm change the sea the model
+            compiles with (--print-sea), bad entries are refused naming them
+            and their range, the model file and its directory are untouched
   render    (label render) a failing ffmpeg is reported with its own
             reason and a non-zero exit (not SIGPIPE), nothing is left
             behind; a video name that is not .mp4 is refused up front (12)
@@ -227,6 +230,101 @@ def options(tools, models, tmp):
     refused(p, "--ctrl with 2 values for 0 actuators", "--ctrl", "0 actuator")
     check("LeakSanitizer" not in p.stderr, "no leak on the error exit (LeakSanitizer)")
     no_temps(tmp, "options")
+
+
+def sea_table(p):
+    """--print-sea: [(amplitude, omega, k, direction, phase, steepness)], Hs"""
+    rows, hs = [], None
+    for line in p.stdout.splitlines():
+        if line.startswith("# Hs = "):
+            hs = float(line.split("=")[2].split()[0])
+        elif line and not line.startswith("#"):
+            rows.append([float(x) for x in line.split()[1:]])
+    return rows, hs
+
+
+def seaset(tools, models, tmp):
+    sim = os.path.join(tools, "mjbuoy-sim")
+    model = barge(tmp, models)
+    before = digest(model)
+    # a JONSWAP sea (docs/mjcf.md section 8) on the calm barge. Equal-energy
+    # bins: every component has A = sqrt(2 m0 / n), m0 = Hs^2 / 16 (Hs = 4
+    # sqrt(m0), DNV-RP-C205 (2010) 3.5.5) less the energy outside the default
+    # range 0.5 wp to 4 wp: above 4 wp a PM tail holds 1 - exp(-5/4 4^-4) =
+    # 0.49% of m0 (JONSWAP's A_g = 0.66 shrinks that tail; below 0.5 wp,
+    # exp(-20)), and the JONSWAP normalisation keeps m0 within 0.12%: A within
+    # 0.5% of sqrt(2 m0 / n)
+    def jonswap(hs, tp, extra=()):
+        args = [sim, model, "--calm", "--print-sea",
+                "--set", "mjbuoy.spectrum.s.type=jonswap", "--set", "mjbuoy.spectrum.s.hs=%g" % hs,
+                "--set", "mjbuoy.spectrum.s.tp=%g" % tp, "--set", "mjbuoy.spectrum.s.seed=7"]
+        p = run(args + list(extra), cwd=tmp)
+        check(p.returncode == 0, "--set jonswap hs=%g tp=%g: exit status 0" % (hs, tp))
+        return sea_table(p)
+    seas = {}
+    for hs, tp in ((0.5, 4), (2, 4), (2, 8)):
+        rows, printed = jonswap(hs, tp)
+        seas[hs, tp] = rows
+        check(len(rows) == 64, "hs=%g tp=%g: 64 components (the default), got %d" % (hs, tp, len(rows)))
+        a = (2 * hs * hs / 16 / 64) ** 0.5
+        worst = max(abs(r[0] / a - 1) for r in rows) if rows else 1
+        check(worst < 0.005, "hs=%g tp=%g: every amplitude within 0.5%% of sqrt(2 Hs^2/16 / 64) = "
+              "%.6g m (worst %.3g%%)" % (hs, tp, a, 100 * worst))
+        check(printed is not None and abs(printed / hs - 1) < 0.005,
+              "hs=%g: printed Hs %s within 0.5%%" % (hs, printed))
+    # Hs scales the amplitudes only (S is proportional to Hs^2): same
+    # seed, same frequencies, amplitudes x4 exactly
+    lo, hi = seas[0.5, 4], seas[2, 4]
+    check(len(lo) == len(hi) and all(abs(h[0] / l[0] - 4) < 1e-8 and abs(h[1] / l[1] - 1) < 1e-8
+                                     for l, h in zip(lo, hi)),
+          "hs 0.5 -> 2: every amplitude x4, frequencies unchanged")
+    # Tp scales the frequencies: S(w) with wp = 2 pi / Tp is a function of
+    # w / wp (times Hs^2 / wp), so the equal-energy quantiles scale as 1/Tp
+    # and deep-water k = w^2 / g as 1/Tp^2
+    t4, t8 = seas[2, 4], seas[2, 8]
+    check(len(t4) == len(t8) and all(abs(b[1] / a[1] - 0.5) < 1e-6 and
+                                     abs(b[2] / a[2] - 0.25) < 1e-6 for a, b in zip(t4, t8)),
+          "tp 4 -> 8: every omega x1/2, every k x1/4")
+    # --spectrum is shorthand for the same entries
+    p = run([sim, model, "--calm", "--print-sea", "--spectrum", "s=jonswap:hs=2,tp=4,seed=7"], cwd=tmp)
+    check(sea_table(p)[0] == hi, "--spectrum s=jonswap:hs=2,tp=4,seed=7 gives the --set sea")
+    # overriding an entry of a model with two spectra: models/jonswap.xml's
+    # wind sea (32 components, after the swell's 8 in label order) doubles,
+    # the swell stays; run in the models directory, which must not change
+    jm = os.path.join(models, "jonswap.xml")
+    listing, jd = sorted(os.listdir(models)), digest(jm)
+    p0 = run([sim, jm, "--print-sea"], cwd=tmp)
+    p1 = run([sim, jm, "--print-sea", "--set", "mjbuoy.spectrum.windsea.hs=1"], cwd=tmp)
+    r0, r1 = sea_table(p0)[0], sea_table(p1)[0]
+    check(len(r0) == 40 and len(r1) == 40, "models/jonswap.xml: 8 + 32 components")
+    check(r0[:8] == r1[:8], "the swell is unchanged")
+    check(all(abs(b[0] / a[0] - 2) < 1e-9 for a, b in zip(r0[8:], r1[8:])),
+          "windsea hs 0.5 -> 1: its amplitudes x2")
+    a = (2 * 1.0 / 16 / 32) ** 0.5
+    check(all(abs(b[0] / a - 1) < 0.005 for b in r1[8:]),
+          "windsea amplitudes within 0.5%% of sqrt(2 (1 m)^2/16 / 32) = %.6g m" % a)
+    check(digest(jm) == jd and sorted(os.listdir(models)) == listing,
+          "models/jonswap.xml and its directory are untouched")
+    # bad names and values: refused before simulating, naming the entry and
+    # (mjbuoy's own validation) the accepted range or fields
+    bad = (
+        (["--set", "foo.bar=1"], "foo.bar", "mjbuoy."),
+        (["--set", "mjbuoy.sea.level"], "mjbuoy.sea.level", "NAME=VALUE"),
+        (["--set", "mjbuoy.hull.damping=abc"], "mjbuoy.hull.damping", "abc", "<numeric>"),
+        (["--set", "mjbuoy.sea.level=1", "--set", "mjbuoy.sea.level=2"], "mjbuoy.sea.level", "once"),
+        (["--spectrum", "jonswap:hs=80,tp=4"], "mjbuoy.spectrum.cli.hs", "80", "<= 50"),
+        (["--set", "mjbuoy.spectrum.s.type=jonswap", "--set", "mjbuoy.spectrum.s.hz=1"],
+         "mjbuoy.spectrum.s.hz", "spectrum fields are"),
+        (["--spectrum", "storm:hs=1,tp=4"], "storm", "pm, jonswap, table"),
+        (["--spectrum", "jonswap:hs=1"], "needs hs and tp"),
+        (["--set", "mjbuoy.wind.speed=-3"], "mjbuoy.wind.speed", "-3", "<= 100"),
+    )
+    for args, *words in bad:
+        p = run([sim, model, "--print-sea"] + args, cwd=tmp)
+        refused(p, " ".join(args), *words)
+        check(not p.stdout, "%s: nothing printed" % " ".join(args))
+    check(digest(model) == before, "the model file is unchanged")
+    check(sorted(os.listdir(tmp)) == ["barge.xml"], "no other file in its directory")
 
 
 def render(tools, models, tmp):

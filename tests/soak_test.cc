@@ -1,5 +1,7 @@
 // stability soak (issue "Hydrodynamics"): a Wigley boat of each of the
-// dissertation's five resolutions on each of its three Gerstner seas, with
+// dissertation's five resolutions on each of its three Gerstner seas, and
+// of the three coarser ones on an irregular JONSWAP sea, long- and
+// short-crested (issue 13; kJonswapHs below), with
 // mjbuoy's default hydrodynamic forces only (no simple damping), for
 // MJBUOY_SOAK_SECONDS of simulated time (default 120); and the demo fleet.
 //
@@ -25,6 +27,7 @@
 #include <malloc.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -53,9 +56,28 @@ double soakSeconds() {
 
 struct Case {
   int tris;     // models/meshes/wigley_<tris>.obj
-  double amp;   // wave amplitude [m]
+  double amp;   // wave amplitude [m]; JONSWAP: the significant amplitude Hs / 2
   double freq;  // GPU Gems spatial frequency [rad/m]: wavelength 2 pi / freq
+  double spread = -1;  // >= 0: JONSWAP sea (kJonswap) with this spreading s
 };
+
+// The irregular sea of the JONSWAP cases (docs/mjcf.md section 8): 64
+// components, seed 2026, gamma 3.3, travelling along +x (the boat's
+// length), long-crested (s = 0) or short-crested (s = 10 in
+// cos^2s(b / 2), the spreading Goda recommends for wind waves: Goda 2000,
+// Random Seas and Design of Maritime Structures, s_max = 10, after
+// Mitsuyasu et al. 1975, J. Phys. Oceanogr. 5:750-760). Tp = 2.5 s puts the peak wavelength
+// Lp = g Tp^2 / (2 pi) = 9.76 m between the dissertation's 7.854 and
+// 12.566 m, i.e. 2.4 hull lengths (L = 4 m; theirs: 1.96 and 3.14).
+// Hs = 0.65 m gives the significant steepness Sp = Hs / Lp = 1/15, the
+// limit of real wind seas (DNV-RP-C205 (2010) 3.5.5.4; steeper irregular
+// waves break): the dissertation's regular waves, H / lambda = 0.13 to
+// 0.20, are beyond what a linear irregular sea holds. Its largest waves,
+// about 1.7 Hs = 1.1 m in 300 waves (Rayleigh distribution: H_max about
+// Hs sqrt(ln N / 2), Longuet-Higgins 1952, J. Mar. Res. 11:245-266), are
+// as high as the dissertation's (1.0, 1.6 and 2.0 m) and, against a hull
+// 0.4 m deep, as violent: the deck and the keel leave the water.
+const double kJonswapHs = 0.65, kJonswapTp = 2.5;
 
 // "0.8" -> "0p8"
 std::string num(double x) {
@@ -67,6 +89,9 @@ std::string num(double x) {
 }
 
 std::string caseName(const Case& c) {
+  if (c.spread >= 0) {
+    return "W" + std::to_string(c.tris) + (c.spread > 0 ? "_JONSWAP_short" : "_JONSWAP_long");
+  }
   return "W" + std::to_string(c.tris) + "_A" + num(c.amp) + "_F" + num(c.freq);
 }
 
@@ -78,15 +103,26 @@ void PrintTo(const Case& c, std::ostream* os) { *os << caseName(c); }
 // mjbuoy.hull.damping: only mjbuoy's default hydrodynamic forces damp it.
 // The hydrodynamic parameters can be overridden through `extra` entries.
 std::string boatXML(const Case& c, const std::string& extra = "") {
-  char wave[128];
-  std::snprintf(wave, sizeof(wave), "%.17g %.17g 0 0 0.5", c.amp, 2 * M_PI / c.freq);
+  char wave[512];
+  if (c.spread >= 0) {
+    std::snprintf(wave, sizeof(wave),
+                  "<text name=\"mjbuoy.spectrum.sea.type\" data=\"jonswap\"/>"
+                  "<numeric name=\"mjbuoy.spectrum.sea.hs\" data=\"%.17g\"/>"
+                  "<numeric name=\"mjbuoy.spectrum.sea.tp\" data=\"%.17g\"/>"
+                  "<numeric name=\"mjbuoy.spectrum.sea.spreading\" data=\"%.17g\"/>"
+                  "<numeric name=\"mjbuoy.spectrum.sea.components\" data=\"64\"/>"
+                  "<numeric name=\"mjbuoy.spectrum.sea.seed\" data=\"2026\"/>",
+                  2 * c.amp, kJonswapTp, c.spread);
+  } else {
+    std::snprintf(wave, sizeof(wave), "<numeric name=\"mjbuoy.wave.sea\" data=\"%.17g %.17g 0 0 0.5\"/>",
+                  c.amp, 2 * M_PI / c.freq);
+  }
   return std::string(
              "<mujoco model=\"soak\">"
              "<option timestep=\"0.002\"/>"
              "<custom>"
              "<numeric name=\"mjbuoy.sea.density\" data=\"1000\"/>"
-             "<numeric name=\"mjbuoy.sea.level\" data=\"0\"/>"
-             "<numeric name=\"mjbuoy.wave.sea\" data=\"") + wave + "\"/>"
+             "<numeric name=\"mjbuoy.sea.level\" data=\"0\"/>") + wave +
          "<text name=\"mjbuoy.hulls\" data=\"wigley_hull\"/>" + extra +
          "</custom>"
          "<asset><mesh name=\"wigley\" file=\"" MJB_MODELS "/meshes/wigley_" +
@@ -140,27 +176,81 @@ long stepsFor(const mjModel* m, double T) { return std::lround(T / m->opt.timest
 // for A = 0.8 m), the tolerance keeping the test meaningful when E is near
 // zero. A steady growth of E by more than this margin per third fails:
 // about 4 J/s over 120 s, 1 J/s over 600 s (SoakCriterion checks it).
+//
+// Under an irregular sea the mean of E over a third is itself random: the
+// sea's wave groups make it differ from third to third with no growth at
+// all, by as much as the margins above or more (measured: W576_JONSWAP_long
+// over 120 s, the thirds' means differ by 26 J against a margin of 34 J;
+// W64_JONSWAP_short over 60 s, by 84 J against 27 J). So for irregular seas
+// the limit adds 3 sqrt(2) sigma_w, three standard deviations of the
+// difference of two independent window means, each of standard deviation
+//   sigma_w^2 = (eps KE_mid)^2 + 2 sd_mid^2 / (w_min T_w)^2:
+// the kinetic energy is the mean square of Gaussian velocities, whose
+// window mean has the normalised random error eps = sqrt(2 pi / (B_e T_w))
+// (Bendat and Piersol, Random Data, 4th ed. 2010, eq. 8.115 with B_e in
+// rad/s), B_e = (int S dw)^2 / int S^2 dw the sea's effective bandwidth
+// (the response's is wider, so eps is an upper bound); the potential energy
+// is linear in the motion, and the window mean of a process with no energy
+// below w_min has variance <= 2 sd^2 / (w_min T_w)^2 (its spectrum times
+// sinc^2(w T_w / 2), averaged); sd_mid (of E) bounds PE's sd. For the soak
+// sea (Tp 2.5 s, gamma 3.3, w_min = 0.5 wp): B_e = 1.647 rad/s, eps = 0.31
+// for 40 s windows (120 s runs), 0.14 for 200 s. The term scales with the
+// run's own KE and spread, not with a trend: a steady gain still fails
+// once it exceeds the margins; SoakCriterion.IrregularSea checks both sides.
 struct EnergyStats {
-  double meanMid = 0, meanLast = 0, absMid = 0, sdMid = 0, limit = 0, maxE = -1e300;
+  double meanMid = 0, meanLast = 0, absMid = 0, sdMid = 0, keMid = 0, sigmaW = 0, limit = 0,
+         maxE = -1e300;
 };
 
-EnergyStats energyStats(const std::vector<double>& e, double mass, double amp) {
+// the sea's statistics for the irregular-sea term: effective bandwidth B_e
+// [rad/s] and lowest frequency w_min [rad/s]; be = 0 for a regular sea
+struct SeaStats {
+  double be = 0, wmin = 0, dt = 0.002;  // dt: sample interval [s]
+};
+
+// kinetic energy ke (same samples as e) is used only for irregular seas
+EnergyStats energyStats(const std::vector<double>& e, double mass, double amp,
+                        const SeaStats& sea = SeaStats(), const std::vector<double>* ke = nullptr) {
   EnergyStats s;
   size_t n = e.size(), a = n / 3, b = 2 * n / 3;
   if (n < 3) return s;
   for (size_t i = a; i < b; i++) {
     s.meanMid += e[i];
     s.absMid += std::fabs(e[i]);
+    if (ke) s.keMid += (*ke)[i];
   }
   s.meanMid /= (b - a);
   s.absMid /= (b - a);
+  s.keMid /= (b - a);
   for (size_t i = a; i < b; i++) s.sdMid += (e[i] - s.meanMid) * (e[i] - s.meanMid);
   s.sdMid = std::sqrt(s.sdMid / (b - a));
   for (size_t i = b; i < n; i++) s.meanLast += e[i];
   s.meanLast /= (n - b);
   for (double x : e) s.maxE = std::fmax(s.maxE, x);
   s.limit = s.meanMid + 0.10 * s.absMid + 0.02 * mass * kG * amp;
+  if (sea.be > 0 && ke) {
+    double tw = (b - a) * sea.dt;  // window [s]
+    double eps = std::sqrt(2 * M_PI / (sea.be * tw)), lin = std::sqrt(2.0) / (sea.wmin * tw);
+    s.sigmaW = std::hypot(eps * s.keMid, lin * s.sdMid);
+    s.limit += 3 * std::sqrt(2.0) * s.sigmaW;
+  }
   return s;
+}
+
+// JONSWAP (DNV-RP-C205 (2010) eq. 3.5.5.4, gamma 3.3) over mjbuoy's default
+// range 0.5 wp to 4 wp: B_e and w_min
+SeaStats jonswapStats(double tp) {
+  const double wp = 2 * M_PI / tp, g = 3.3;
+  const int n = 4000;
+  double m0 = 0, s2 = 0, dw = 3.5 * wp / n;
+  for (int i = 0; i < n; i++) {
+    double w = wp * (0.5 + 3.5 * (i + 0.5) / n), sg = w <= wp ? 0.07 : 0.09;
+    double S = std::pow(wp / w, 5) * std::exp(-1.25 * std::pow(wp / w, 4)) *
+               std::pow(g, std::exp(-(w - wp) * (w - wp) / (2 * sg * sg * wp * wp)));
+    m0 += S * dw;  // the constant factor cancels in B_e
+    s2 += S * S * dw;
+  }
+  return {m0 * m0 / s2, 0.5 * wp, 0.002};
 }
 
 struct Result {
@@ -194,6 +284,74 @@ TEST(SoakCriterion, RejectsGrowingEnergy) {
   EXPECT_FALSE(passes(0, 0.01));
 }
 
+// the criterion on synthetic irregular runs shaped like the boat's on the
+// soak's JONSWAP sea (measured on W576_JONSWAP_long over 120 s: E swings
+// with sd about 280 J about a mean near 0): heave z(t) and velocity v(t) of
+// 176.2 kg from 64 random-phase components of the sea's spectrum (equal
+// energy bins, as mjbuoy discretises), sigma_z = 0.15 m. Over 20 seeds the
+// spread of (mean of the last third - mean of the middle third) stays within
+// the derived sqrt(2) sigma_w (it is an upper bound; 1.3x allows for the
+// sampling error of a standard deviation from 20 values, 1/sqrt(38) = 16%,
+// twice); every stationary run passes and every run gaining 5 J/s fails.
+// (Measured: spread 8.5 J, sqrt(2) sigma_w 13.3 J, the margins without the
+// term 32 J: here they alone would hold 3.8 spreads; the boat's KE is larger.)
+TEST(SoakCriterion, IrregularSea) {
+  const double dt = 0.002, T = 120, mass = 176.2, A = kJonswapHs / 2, sz = 0.15;
+  const SeaStats sea = jonswapStats(kJonswapTp);
+  const double wp = 2 * M_PI / kJonswapTp;
+  // equal-energy frequencies of the spectrum (the inverse of its cumulative integral)
+  const int nc = 64, ng = 4000;
+  std::vector<double> cum(ng + 1, 0), wg(ng + 1);
+  for (int i = 0; i <= ng; i++) {
+    double w = wp * (0.5 + 3.5 * i / ng), sg = w <= wp ? 0.07 : 0.09;
+    wg[i] = w;
+    double S = std::pow(wp / w, 5) * std::exp(-1.25 * std::pow(wp / w, 4)) *
+               std::pow(3.3, std::exp(-(w - wp) * (w - wp) / (2 * sg * sg * wp * wp)));
+    if (i) cum[i] = cum[i - 1] + S;
+  }
+  int clean = 0, cleanNoTerm = 0, grow = 0;
+  const int seeds = 20;
+  double d1 = 0, d2 = 0, sw = 0, margin = 0;
+  for (int seed = 1; seed <= seeds; seed++) {
+    std::srand(seed);
+    std::vector<double> w(nc), ph(nc);
+    for (int j = 0; j < nc; j++) {
+      double q = (j + std::rand() / (RAND_MAX + 1.0)) / nc * cum[ng];
+      int i = int(std::lower_bound(cum.begin(), cum.end(), q) - cum.begin());
+      w[j] = wg[std::min(i, ng)];
+      ph[j] = 2 * M_PI * std::rand() / (RAND_MAX + 1.0);
+    }
+    const double a = sz * std::sqrt(2.0 / nc);
+    std::vector<double> e0, e5, ke;
+    for (long k = 0; k < std::lround(T / dt); k++) {
+      double t = k * dt, z = 0, v = 0;
+      for (int j = 0; j < nc; j++) {
+        z += a * std::cos(w[j] * t + ph[j]);
+        v -= a * w[j] * std::sin(w[j] * t + ph[j]);
+      }
+      double kin = 0.5 * mass * v * v, e = mass * kG * z + kin;
+      ke.push_back(kin);
+      e0.push_back(e);
+      e5.push_back(e + 5 * t);
+    }
+    EnergyStats s0 = energyStats(e0, mass, A, sea, &ke), s5 = energyStats(e5, mass, A, sea, &ke);
+    EnergyStats r0 = energyStats(e0, mass, A);
+    clean += s0.meanLast <= s0.limit;
+    double d = s0.meanLast - s0.meanMid;
+    d1 += d, d2 += d * d, sw += std::sqrt(2.0) * s0.sigmaW / seeds;
+    margin += (r0.limit - r0.meanMid) / seeds;
+    cleanNoTerm += r0.meanLast <= r0.limit;
+    grow += s5.meanLast > s5.limit;
+  }
+  EXPECT_EQ(clean, seeds) << "stationary irregular runs that pass";
+  double sdD = std::sqrt(std::fmax(0.0, d2 / seeds - (d1 / seeds) * (d1 / seeds)));
+  std::printf("[soak] criterion on %d synthetic irregular runs: sd of (E_last - E_mid) %.2f J, "
+              "sqrt(2) sigma_w %.2f J, margin without the term %.2f J, %d pass without it\n",
+              seeds, sdD, sw, margin, cleanNoTerm);
+  EXPECT_LE(sdD, 1.3 * sw) << "the derived sigma_w does not cover the spread of the thirds' means";
+  EXPECT_EQ(grow, seeds) << "runs gaining 5 J/s that fail";
+}
+
 // run one boat case for T simulated seconds; failures are reported as
 // non-fatal expectations (the first excursion out of bounds and their
 // count), the run stops early only when the state diverges (badStep)
@@ -206,8 +364,9 @@ Result runBoat(const Case& c, double T, const std::string& extra = "") {
   s.m->opt.enableflags |= mjENBL_ENERGY;
   int b = s.body("wigley");
   const double lim = 75 * M_PI / 180, mass = s.m->body_subtreemass[b];
-  std::vector<double> energy;
+  std::vector<double> energy, kinetic;
   energy.reserve(size_t(T / s.m->opt.timestep) + 2);
+  kinetic.reserve(size_t(T / s.m->opt.timestep) + 2);
   auto t0 = std::chrono::steady_clock::now();
   std::clock_t c0 = std::clock();
   for (long k = 0, nk = stepsFor(s.m, T); k < nk; k++) {
@@ -234,6 +393,7 @@ Result runBoat(const Case& c, double T, const std::string& extra = "") {
       r.latePitch = std::fmax(r.latePitch, std::fabs(pitch));
     }
     energy.push_back(s.d->energy[0] + s.d->energy[1]);
+    kinetic.push_back(s.d->energy[1]);
     if ((std::fabs(roll) >= lim || std::fabs(pitch) >= lim || !(dz < 2)) && !r.out++) {
       ADD_FAILURE() << "first excursion at t " << t << ": roll " << roll * 180 / M_PI
                     << " deg, pitch " << pitch * 180 / M_PI << " deg, |z - eta| " << dz
@@ -243,7 +403,12 @@ Result runBoat(const Case& c, double T, const std::string& extra = "") {
   if (r.out) ADD_FAILURE() << r.out << " steps out of bounds";
   r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
-  r.E = energyStats(energy, mass, c.amp);
+  SeaStats sea;
+  if (c.spread >= 0) {
+    sea = jonswapStats(kJonswapTp);
+    sea.dt = s.m->opt.timestep;
+  }
+  r.E = energyStats(energy, mass, c.amp, sea, &kinetic);
   return r;
 }
 
@@ -251,10 +416,11 @@ void report(const std::string& name, const Result& r) {
   const double deg = 180 / M_PI;
   std::printf("[soak] %s T %.0f s wall %.1f s cpu %.1f s max|roll| %.2f deg max|pitch| %.2f deg "
               "(after T/3: %.2f, %.2f) max|z-eta| %.3f m E_mid %.1f J E_last %.1f J "
-              "sd_mid %.1f J E_max %.1f J limit %.1f J steps out of bounds %ld\n",
+              "sd_mid %.1f J KE_mid %.1f J sigma_w %.1f J E_max %.1f J limit %.1f J "
+              "steps out of bounds %ld\n",
               name.c_str(), r.simT, r.wall, r.cpu, r.maxRoll * deg, r.maxPitch * deg,
               r.lateRoll * deg, r.latePitch * deg, r.maxDz, r.E.meanMid, r.E.meanLast,
-              r.E.sdMid, r.E.maxE, r.E.limit, r.out);
+              r.E.sdMid, r.E.keMid, r.E.sigmaW, r.E.maxE, r.E.limit, r.out);
   std::fflush(stdout);
   auto rec = [](const char* k, double v) {
     char b[64];
@@ -273,6 +439,7 @@ void report(const std::string& name, const Result& r) {
   rec("energy_mean_last_J", r.E.meanLast);
   rec("energy_sd_mid_J", r.E.sdMid);
   rec("energy_limit_J", r.E.limit);
+  rec("energy_sigma_w_J", r.E.sigmaW);
 }
 
 class Soak : public ::testing::TestWithParam<Case> {};
@@ -294,6 +461,16 @@ std::vector<Case> matrix() {
   for (int n : {64, 256, 576, 2800, 7744}) {
     for (auto sea : {std::pair<double, double>{0.8, 0.8}, {0.5, 0.8}, {1.0, 0.5}}) {
       v.push_back({n, sea.first, sea.second});
+    }
+  }
+  // cost: tests/CMakeLists.txt. Not W64_JONSWAP_short: the 64-triangle
+  // boat rolls past the 75 deg bound there (75.9 deg at t = 445 s of 600;
+  // 70.4 deg within 120 s), as on the steepest Gerstner sea it tilts most
+  // (docs/scenarios.md): its faceted hull is too coarse for roll in a
+  // short-crested sea (README "Long tests")
+  for (int n : {64, 256, 576}) {
+    for (double s : {0.0, 10.0}) {
+      if (n > 64 || s == 0) v.push_back({n, kJonswapHs / 2, 0, s});
     }
   }
   return v;

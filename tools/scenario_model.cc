@@ -12,6 +12,7 @@
 
 #include <tinyxml2.h>
 
+#include "mjcfedit.h"
 #include "scenario.h"
 
 namespace scn {
@@ -28,54 +29,9 @@ Sim::~Sim() {
   if (m) mj_deleteModel(m);
 }
 
-// the <custom> children of the model, in document order
-static std::vector<XMLElement*> customs(XMLElement* root) {
-  std::vector<XMLElement*> v;
-  for (XMLElement* c = root->FirstChildElement("custom"); c; c = c->NextSiblingElement("custom")) {
-    v.push_back(c);
-  }
-  return v;
-}
-
-static XMLElement* findEntry(XMLElement* root, const std::string& name) {
-  for (XMLElement* c : customs(root)) {
-    for (XMLElement* e = c->FirstChildElement(); e; e = e->NextSiblingElement()) {
-      const char* n = e->Attribute("name");
-      if (n && name == n) return e;
-    }
-  }
-  return nullptr;
-}
-
-static void setEntry(tinyxml2::XMLDocument& doc, XMLElement* root, const std::string& name,
-                     const std::string& data, bool text) {
-  XMLElement* e = findEntry(root, name);
-  if (!e) {
-    std::vector<XMLElement*> cs = customs(root);
-    XMLElement* c = cs.empty() ? nullptr : cs[0];
-    if (!c) {
-      c = doc.NewElement("custom");
-      root->InsertFirstChild(c);
-    }
-    e = doc.NewElement(text ? "text" : "numeric");
-    e->SetAttribute("name", name.c_str());
-    c->InsertEndChild(e);
-  }
-  e->SetName(text ? "text" : "numeric");
-  e->DeleteAttribute("size");  // numeric size must not contradict the new data
-  e->SetAttribute("data", data.c_str());
-}
-
-static void removeEntries(XMLElement* root, const std::string& name, bool prefix) {
-  for (XMLElement* c : customs(root)) {
-    for (XMLElement* e = c->FirstChildElement(); e;) {
-      XMLElement* next = e->NextSiblingElement();
-      const char* n = e->Attribute("name");
-      if (n && (prefix ? std::string(n).rfind(name, 0) == 0 : name == n)) c->DeleteChild(e);
-      e = next;
-    }
-  }
-}
+using mjbtool::findEntry;
+using mjbtool::removeEntries;
+using mjbtool::setEntry;
 
 std::string editModel(const Scenario& s) {
   tinyxml2::XMLDocument doc;
@@ -86,10 +42,7 @@ std::string editModel(const Scenario& s) {
   if (!root || std::string(root->Name()) != "mujoco") {
     throw Invalid(s.file, s.line, "model " + s.model + " is not MJCF (root element <mujoco>)");
   }
-  if (s.calm) {  // no listed waves and no spectra (docs/mjcf.md section 8)
-    removeEntries(root, "mjbuoy.wave.", true);
-    removeEntries(root, "mjbuoy.spectrum.", true);
-  }
+  if (s.calm) mjbtool::removeSea(root);  // no listed waves and no spectra (docs/mjcf.md section 8)
   for (const Entry& e : s.entries) {
     if (e.remove) {
       removeEntries(root, e.name, false);
@@ -260,20 +213,9 @@ std::unique_ptr<Sim> loadScenario(Scenario& s, const std::string& backend) {
     if (!mjb_checkMeshFile(mf.file.c_str(), cerr, sizeof(cerr))) throw Invalid(s.file, mf.line, cerr);
   }
   // compile from memory under a name in the model's directory
-  fs::path model(s.model);
-  std::string vname = ".mjbuoy-scenario-" + model.filename().string();
-  std::unique_ptr<mjVFS> vfs(new mjVFS);
-  mj_defaultVFS(vfs.get());
-  if (mj_makeEmptyFileVFS(vfs.get(), vname.c_str(), (int)xml.size()) != 0) {
-    throw Invalid(s.file, s.line, "cannot create the in-memory model file");
-  }
-  int id = mj_findFileVFS(vfs.get(), vname.c_str());
-  std::memcpy(vfs->filedata[id], xml.data(), xml.size());
   auto sim = std::make_unique<Sim>();
   char err[2048] = "";
-  std::string vpath = (model.parent_path() / vname).string();
-  sim->m = mj_loadXML(vpath.c_str(), vfs.get(), err, sizeof(err));
-  mj_deleteVFS(vfs.get());
+  sim->m = mjbtool::loadFromMemory(s.model, xml, "mjbuoy-scenario", err, sizeof(err));
   if (!sim->m) throw Invalid(s.file, s.line, "cannot load model " + s.model_attr + ": " + err);
   if (s.timestep > 0) sim->m->opt.timestep = s.timestep;
   bool energy = false;

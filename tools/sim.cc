@@ -24,6 +24,7 @@
 #include "outfile.h"
 #include "plot.h"
 #include "render.h"
+#include "simsea.h"
 
 // roll, pitch, yaw [deg] of rotation matrix R (row-major), marine
 // convention R = Rz(yaw) Ry(pitch) Rx(roll) (intrinsic z, y', x'')
@@ -175,6 +176,17 @@ int main(int argc, char** argv) {
                "draw the wet part of each hull (below the exact surface) in magenta");
   bool printSea = false;
   app.add_flag("--print-sea", printSea, "print the sea's wave components and wind, then exit");
+  std::vector<std::string> sets, spectra;
+  bool calm = false;
+  app.add_option("--set", sets, "NAME=VALUE: set or override the mjbuoy.* custom entry NAME "
+                 "(repeatable; numbers make a <numeric>, else <text>, an existing entry keeps "
+                 "its kind), e.g. --set mjbuoy.spectrum.sea.hs=1; the model file is not changed")
+      ->allow_extra_args(false);
+  app.add_option("--spectrum", spectra, "[LABEL=]TYPE[:FIELD=VALUE,...]: add a spectrum "
+                 "(label default cli), e.g. --spectrum jonswap:hs=1,tp=6,spreading=10")
+      ->allow_extra_args(false);
+  app.add_flag("--calm", calm, "delete the model's waves and spectra (mjbuoy.wave.*, "
+               "mjbuoy.airy.*, mjbuoy.spectrum.*) before --set and --spectrum");
   app.add_option("--plot", plot, "plot heave, roll and pitch of the hull bodies (PNG, gnuplot)");
   app.add_option("--progress", progress,
                  "progress on stderr: auto (bar on a terminal, lines when rendering), bar, "
@@ -247,6 +259,15 @@ int main(int argc, char** argv) {
     }
   }
 
+  mjbsim::Edits edits;
+  {
+    std::string e = mjbsim::parseEdits(sets, spectra, calm, &edits);
+    if (!e.empty()) {
+      std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
+      return 1;
+    }
+  }
+
   Scene sc;
   char err[1024] = "";
   // mesh files MuJoCo 2.2 would load broken (mjbuoy.h)
@@ -254,15 +275,24 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "mjbuoy-sim: cannot load %s: %s\n", model.c_str(), err);
     return 1;
   }
-  sc.m = mj_loadXML(model.c_str(), nullptr, err, sizeof(err));
-  if (!sc.m) {
-    std::fprintf(stderr, "mjbuoy-sim: cannot load %s: %s\n", model.c_str(), err);
-    return 1;
+  if (edits.empty()) {
+    sc.m = mj_loadXML(model.c_str(), nullptr, err, sizeof(err));
+    if (!sc.m) {
+      std::fprintf(stderr, "mjbuoy-sim: cannot load %s: %s\n", model.c_str(), err);
+      return 1;
+    }
+  } else {  // the edited model from memory: the file is only read
+    std::string e;
+    sc.m = mjbsim::loadEdited(model, edits, &e);
+    if (!sc.m) {
+      std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
+      return 1;
+    }
   }
   mjModel* m = sc.m;
   sc.b = mjb_attach(m, backend.empty() ? nullptr : backend.c_str(), err, sizeof(err));
   if (!sc.b) {
-    std::fprintf(stderr, "mjbuoy-sim: %s: %s\n", model.c_str(), err);
+    std::fprintf(stderr, "mjbuoy-sim: %s: %s\n", model.c_str(), mjbsim::blame(edits, err).c_str());
     return 1;
   }
   mjbBuoy* b = sc.b;
