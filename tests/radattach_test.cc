@@ -1,6 +1,7 @@
 // panel solver wired to the time-domain radiation at attach
 // (docs/physics.md section 14, "From the panel solver"; docs/mjcf.md,
 // "Radiation")
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <sstream>
@@ -258,8 +259,10 @@ TEST(RadAttach, HemisphereHeaveDecayMatchesHulme) {
               Tp, dp, 2 * M_PI / wr, 2 * M_PI * wi / wr);
 
   for (bool rad : {false, true}) {
+    auto t0 = std::chrono::steady_clock::now();
     Scene s(hemisphereModel(rad));
     ASSERT_TRUE(s.ok()) << s.err;
+    std::printf("attach %.2f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     std::vector<double> t, x;
     decay(s, 12, &t, &x);
     ASSERT_GE(t.size(), 8u);
