@@ -264,6 +264,13 @@ TEST(RadAttach, HemisphereHeaveDecayMatchesHulme) {
     Scene s(hemisphereModel(rad));
     ASSERT_TRUE(s.ok()) << s.err;
     std::printf("attach %.2f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    // heave inertia in MuJoCo's qM: m + A33_inf, A33_inf -> 0.5 m (Hulme
+    // 1982, the kR -> inf limit), within 3% on this mesh; m alone without
+    mj_forward(s.m, s.d);
+    double qm = s.d->qM[s.m->dof_Madr[2]];
+    // (the mass is written to the MJCF with 6 digits)
+    EXPECT_NEAR(qm / m, rad ? 1.5 : 1.0, rad ? 0.03 * 1.5 : 1e-5);
+    std::printf("heave inertia / m = %.4f\n", qm / m);
     std::vector<double> t, x;
     decay(s, 12, &t, &x);
     ASSERT_GE(t.size(), 8u);
@@ -371,6 +378,41 @@ TEST(RadAttach, BoxHeaveDecayMatchesItsFrequencyDomain) {
               T, dl, Tp, dp, body.nface(), lid.nface(), 2 * M_PI * std::sqrt(m / C));
   EXPECT_NEAR(T / Tp, 1, 0.05);
   EXPECT_NEAR(dl / dp, 1, 0.05);
+}
+
+}  // namespace
+
+namespace {
+
+// the switches: global off, body "a" on by override, "b" default off,
+// hull "c" on a body welded (no joint) to "d" switched on by naming the
+// hull's body: the coefficients go to the group's top body "d". A_inf
+// heave adds to MuJoCo's heave inertia (qM) of exactly the bodies on
+TEST(RadAttach, PerBodySwitchesAndWeldedHulls) {
+  std::string box = "type=\"box\" size=\"0.5 0.5 0.5\" mass=\"500\" contype=\"0\" conaffinity=\"0\"";
+  std::string xml =
+      "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"ha hb hc\"/>"
+      "<text name=\"mjbuoy.radiation.body.a\" data=\"on\"/>"
+      "<text name=\"mjbuoy.radiation.body.c\" data=\"on\"/>"
+      "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 6\"/>"
+      "</custom><worldbody>"
+      "<body name=\"a\"><freejoint/><geom name=\"ha\" " + box + "/></body>"
+      "<body name=\"b\" pos=\"5 0 0\"><freejoint/><geom name=\"hb\" " + box + "/></body>"
+      "<body name=\"d\" pos=\"10 0 0\"><freejoint/><geom type=\"sphere\" size=\"0.1\" pos=\"0 0 1\" mass=\"1\"/>"
+      "<body name=\"c\"><geom name=\"hc\" " + box + "/></body></body>"
+      "</worldbody></mujoco>";
+  Scene s(xml);
+  ASSERT_TRUE(s.ok()) << s.err;
+  mj_forward(s.m, s.d);
+  auto heave = [&](const char* b) {
+    int j = s.m->body_jntadr[s.body(b)];
+    return s.d->qM[s.m->dof_Madr[s.m->jnt_dofadr[j] + 2]];
+  };
+  EXPECT_GT(heave("a"), 1.2 * 500);
+  EXPECT_NEAR(heave("b"), 500, 1e-9);
+  EXPECT_GT(heave("d"), 1.2 * 501);
+  // A33_inf of the same wet surface on "a" and on the welded group "d"
+  EXPECT_NEAR(heave("a") - 500, heave("d") - 501, 1e-6 * heave("a"));
 }
 
 }  // namespace
