@@ -520,3 +520,5 @@ std::string mjb::setHydroCoef(mjbBuoy* b, int body, const HydroCoef& c, double t
   for (auto& kv : b->data) radMakeState(b->b.rad, &kv.second->rad);
   return "";
 }
+
+const mjb::Buoy* mjb::buoyOf(const mjbBuoy* b) { return b ? &b->b : nullptr; }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
 
 #include "buoy.h"
 #include "coefxform.h"
@@ -151,7 +152,9 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
                           fmt(100 * asym) + "% asymmetric (made symmetric); refine its panels "
                           "(mjbuoy.radiation.refine)");
   }
-  return setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
+  err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
+  if (err.empty()) B->coef.emplace_back(root, std::move(c));
+  return err;
 }
 
 std::string attachRadiation(Buoy* B) {
