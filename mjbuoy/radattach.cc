@@ -146,6 +146,24 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   for (int i = 0; i < 9; i++) Rd[i] = R[i];
   err = coefTransform(&c, p, Rd, pn);
   if (!err.empty()) return who + ": " + err;
+  // potential flow radiates energy: B_ii >= 0; a coarse mesh (or the lid
+  // at high kR) can give small negative values, which the memory turns
+  // into a source of energy
+  for (int i = 0; i < 6; i++) {
+    double big = 0, low = 0, wl = 0;
+    for (int w = 0; w < c.nw(); w++) {
+      double b = c.B[36 * w + 7 * i];
+      big = std::max(big, std::fabs(b));
+      if (b < low) low = b, wl = c.omega[w];
+    }
+    if (low < -0.01 * big) {
+      static const char* kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+      B->cfg.warn.push_back(who.substr(8) + ": the panel solver's " + kDof[i] + " damping is " +
+                            fmt(low) + " at omega " + fmt(wl) + " rad/s (below -1% of its peak " +
+                            fmt(big) + "); refine its panels (mjbuoy.radiation.refine) or lower "
+                            "the highest frequency (mjbuoy.radiation.omega)");
+    }
+  }
   double asym = symmetrize(&c);
   if (asym > kAsymWarn) {
     B->cfg.warn.push_back(who.substr(8) + ": the panel solver's added mass or damping is " +
@@ -177,6 +195,10 @@ std::string attachRadiation(Buoy* B) {
       roots.push_back(r);
   }
   if (roots.empty()) return "";
+  if (B->cfg.sea.depth > 0) {
+    B->cfg.warn.push_back("radiation: the panel solver is for deep water; mjbuoy.sea.depth = " +
+                          fmt(B->cfg.sea.depth) + " m is not used for the radiation coefficients");
+  }
   // the initial pose: qpos0 (mj_makeData resets to it)
   std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m), mj_deleteData);
   if (!d) return "mjbuoy: radiation: could not allocate an mjData for the initial pose";

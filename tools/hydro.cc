@@ -81,6 +81,7 @@ int main(int argc, char** argv) {
     mj_deleteModel(m);
     return 1;
   }
+  if (mjb_warnings(b)[0]) std::fprintf(stderr, "%s", mjb_warnings(b));
   const mjb::Buoy* B = mjb::buoyOf(b);
   int rc = 0;
   if (B->coef.empty()) {
