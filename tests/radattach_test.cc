@@ -416,3 +416,36 @@ TEST(RadAttach, PerBodySwitchesAndWeldedHulls) {
 }
 
 }  // namespace
+
+namespace {
+
+// several hulls on one body are solved together: two 1 m boxes 8 m apart
+// on one body interact little at infinite frequency (the far field of a
+// heaving body's A_inf potential decays as a dipole, 1/r^2, its effect on
+// the other hull as (size / r)^3 ~ 0.2%), so the pair's heave A33_inf is
+// twice one box's within 2%
+TEST(RadAttach, TwoHullsOnOneBodyAreSolvedTogether) {
+  std::string box = "type=\"box\" size=\"0.5 0.5 0.5\" mass=\"500\" contype=\"0\" conaffinity=\"0\"";
+  std::string head =
+      "<mujoco><custom><text name=\"mjbuoy.radiation\" data=\"on\"/>"
+      "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 4\"/>";
+  Scene one(head + "<text name=\"mjbuoy.hulls\" data=\"l\"/></custom><worldbody>"
+            "<body name=\"cat\"><freejoint/><geom name=\"l\" " + box + "/></body></worldbody></mujoco>");
+  Scene two(head + "<text name=\"mjbuoy.hulls\" data=\"l r\"/></custom><worldbody>"
+            "<body name=\"cat\"><freejoint/><geom name=\"l\" pos=\"0 -4 0\" " + box + "/>"
+            "<geom name=\"r\" pos=\"0 4 0\" " + box + "/></body></worldbody></mujoco>");
+  ASSERT_TRUE(one.ok()) << one.err;
+  ASSERT_TRUE(two.ok()) << two.err;
+  mj_forward(one.m, one.d);
+  mj_forward(two.m, two.d);
+  double a1 = one.d->qM[one.m->dof_Madr[2]] - 500, a2 = two.d->qM[two.m->dof_Madr[2]] - 1000;
+  std::printf("heave A_inf: one box %.2f kg, two boxes %.2f kg; warnings: %s\n", a1, a2,
+              mjb_warnings(two.b));
+  EXPECT_GT(a1, 0);
+  EXPECT_NEAR(a2 / (2 * a1), 1, 0.02);
+  // two waterplanes: no lid, and a warning naming the body says so
+  EXPECT_NE(std::string(mjb_warnings(two.b)).find("radiation of body \"cat\": no interior lid"),
+            std::string::npos);
+}
+
+}  // namespace
