@@ -99,6 +99,35 @@ static void groupMesh(const Buoy& B, const mjData* d, int root, std::vector<floa
   }
 }
 
+// warnings on c, then its symmetric part (who names the body)
+static void checkCoef(Buoy* B, const std::string& who, HydroCoef* cp) {
+  HydroCoef& c = *cp;
+  // potential flow radiates energy: B_ii >= 0; a coarse mesh (or the lid
+  // at high kR) can give small negative values, which the memory turns
+  // into a source of energy
+  for (int i = 0; i < 6; i++) {
+    double big = 0, low = 0, wl = 0;
+    for (int w = 0; w < c.nw(); w++) {
+      double b = c.B[36 * w + 7 * i];
+      big = std::max(big, std::fabs(b));
+      if (b < low) low = b, wl = c.omega[w];
+    }
+    if (low < -0.01 * big) {
+      static const char* kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+      B->cfg.warn.push_back(who.substr(8) + ": the panel solver's " + kDof[i] + " damping is " +
+                            fmt(low) + " at omega " + fmt(wl) + " rad/s (below -1% of its peak " +
+                            fmt(big) + "); refine its panels (mjbuoy.radiation.refine) or lower "
+                            "the highest frequency (mjbuoy.radiation.omega)");
+    }
+  }
+  double asym = symmetrize(cp);
+  if (asym > kAsymWarn) {
+    B->cfg.warn.push_back(who.substr(8) + ": the panel solver's added mass or damping is " +
+                          fmt(100 * asym) + "% asymmetric (made symmetric); refine its panels "
+                          "(mjbuoy.radiation.refine)");
+  }
+}
+
 // coefficients of one group; "" or the error
 static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   const mjModel* m = B->m;
@@ -146,30 +175,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   for (int i = 0; i < 9; i++) Rd[i] = R[i];
   err = coefTransform(&c, p, Rd, pn);
   if (!err.empty()) return who + ": " + err;
-  // potential flow radiates energy: B_ii >= 0; a coarse mesh (or the lid
-  // at high kR) can give small negative values, which the memory turns
-  // into a source of energy
-  for (int i = 0; i < 6; i++) {
-    double big = 0, low = 0, wl = 0;
-    for (int w = 0; w < c.nw(); w++) {
-      double b = c.B[36 * w + 7 * i];
-      big = std::max(big, std::fabs(b));
-      if (b < low) low = b, wl = c.omega[w];
-    }
-    if (low < -0.01 * big) {
-      static const char* kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
-      B->cfg.warn.push_back(who.substr(8) + ": the panel solver's " + kDof[i] + " damping is " +
-                            fmt(low) + " at omega " + fmt(wl) + " rad/s (below -1% of its peak " +
-                            fmt(big) + "); refine its panels (mjbuoy.radiation.refine) or lower "
-                            "the highest frequency (mjbuoy.radiation.omega)");
-    }
-  }
-  double asym = symmetrize(&c);
-  if (asym > kAsymWarn) {
-    B->cfg.warn.push_back(who.substr(8) + ": the panel solver's added mass or damping is " +
-                          fmt(100 * asym) + "% asymmetric (made symmetric); refine its panels "
-                          "(mjbuoy.radiation.refine)");
-  }
+  checkCoef(B, who, &c);
   err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
   if (err.empty()) B->coef.emplace_back(root, std::move(c));
   return err;
