@@ -3,6 +3,7 @@
 #define MJBUOY_BUOY_H_
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <mujoco/mujoco.h>
@@ -50,7 +51,13 @@ struct Buoy {
   size_t wcap = 0;             // wave components reserved (cpu scratch, gl buffers)
   Wind wind;                   // wind.cc
   Radiation rad;               // radiation.h: bodies with added mass and memory
+  // the panel solver's coefficients set at attach (radattach.cc): body id
+  // and its HydroCoef (about the body COM, body axes), for mjbuoy-hydro
+  std::vector<std::pair<int, HydroCoef>> coef;
 };
+
+// the static data of an attached model (glue.cc; tools only)
+const Buoy* buoyOf(const mjbBuoy* b);
 
 // wet triangle data of one call, and the slamming history
 struct TriState {

@@ -1,5 +1,6 @@
 // parse and validate the "mjbuoy.*" <custom> entries (schema: docs/mjcf.md)
 #include "config.h"
+#include "radconfig.h"
 #include "seaconfig.h"
 
 #include <fnmatch.h>
@@ -172,7 +173,7 @@ static std::string fieldList(const Field* fs, int n) {
 static const char kNumericNames[] =
     "mjbuoy.sea.<field>, mjbuoy.wave.<label>, mjbuoy.airy.<label>, "
     "mjbuoy.spectrum.<label>.<field>, mjbuoy.wind.<field>, mjbuoy.hull.<param>, "
-    "mjbuoy.geom.<geom>.<param>, mjbuoy.threads";
+    "mjbuoy.geom.<geom>.<param>, mjbuoy.threads, mjbuoy.radiation.<field>";
 
 // hull geom list: whitespace-separated geom names or fnmatch patterns. A
 // pattern skips geoms that cannot be hulls ("*" with a floor in the scene);
@@ -251,7 +252,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
     if (!has(name)) continue;
     const char* key = name + np;
     const char* text = m->text_data + m->text_adr[i];
-    if (isSeaExtra(key)) continue;  // seaconfig.cc
+    if (isSeaExtra(key) || isRadEntry(key)) continue;  // seaconfig.cc, radconfig.cc
     if (!std::strcmp(key, "hulls")) {
       anyHullList = true;
       std::string e = parseHulls(m, name, text, &is);
@@ -274,8 +275,8 @@ std::string parseConfig(const mjModel* m, Config* c) {
     } else {
       return "mjbuoy: unknown entry " + tag("text", name) +
              "; text entries are mjbuoy.hulls, mjbuoy.backend, mjbuoy.sea.pressure, "
-             "mjbuoy.sensor.<sensor>, mjbuoy.spectrum.<label>.type, mjbuoy.wind.gust and "
-             "mjbuoy.wind.geoms (numeric entries: " +
+             "mjbuoy.sensor.<sensor>, mjbuoy.spectrum.<label>.type, mjbuoy.wind.gust, "
+             "mjbuoy.wind.geoms and mjbuoy.radiation[.<field>] (numeric entries: " +
              kNumericNames + "; see docs/mjcf.md)";
     }
   }
@@ -311,7 +312,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
     any = true;
     const char* key = name + np;
     const mjtNum* v = m->numeric_data + m->numeric_adr[i];
-    if (isSeaExtra(key)) continue;  // seaconfig.cc
+    if (isSeaExtra(key) || isRadEntry(key)) continue;  // seaconfig.cc, radconfig.cc
     if (!std::strncmp(key, "sea.", 4)) {
       const Field* f = findField(kSeaFields, nsf, key + 4);
       if (!f) {
@@ -409,6 +410,8 @@ std::string parseConfig(const mjModel* m, Config* c) {
            "amplitudes of the mjbuoy.wave.* and mjbuoy.airy.* entries";
   }
   std::string ex = parseSeaExtra(m, gid, c);
+  if (!ex.empty()) return ex;
+  ex = parseRadConfig(m, &c->rad);
   if (!ex.empty()) return ex;
   c->sea.derive();
   double q = c->sea.fold();

@@ -7,6 +7,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include "radconfig.h"
 #include "sea.h"
 #include "wind.h"
 
@@ -32,6 +33,7 @@ struct Config {
   std::vector<mjbSpectrum> spec;   // spectra as given (table not kept), seaconfig.cc
   WindParams wind;                 // wind entries, seaconfig.cc
   int capacity = 0;                // mjbuoy.sea.capacity: components reserved
+  RadConfig rad;                   // mjbuoy.radiation*, radconfig.cc
 };
 
 // a number as messages print it (10 significant digits), and an entry as

@@ -12,6 +12,7 @@
 #include "buoy.h"
 #include "hull.h"
 #include "pool.h"
+#include "radattach.h"
 #include "radiation.h"
 #include "mjbuoy.h"
 #include "seasetter.h"
@@ -342,11 +343,20 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
       B.cfg.backend = "cpu";
     }
   }
+  // radiation (opt-in, seconds per hull: docs/mjcf.md)
+  e = mjb::attachRadiation(&B);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    mjb::restoreModel(m, B.rad);
+    mjb::glFree(&B);
+    return nullptr;
+  }
   for (const std::string& w : warn) B.warnings += "mjbuoy: warning: " + w + "\n";
   if (B.cfg.backend == "cpu") threads(&B);
   e = mjb::parseSensors(&B);
   if (!e.empty()) {
     copyError(e, error, error_sz);
+    mjb::restoreModel(m, B.rad);
     mjb::glFree(&B);
     mjb::poolFree(B.pool);
     return nullptr;
@@ -510,3 +520,5 @@ std::string mjb::setHydroCoef(mjbBuoy* b, int body, const HydroCoef& c, double t
   for (auto& kv : b->data) radMakeState(b->b.rad, &kv.second->rad);
   return "";
 }
+
+const mjb::Buoy* mjb::buoyOf(const mjbBuoy* b) { return b ? &b->b : nullptr; }

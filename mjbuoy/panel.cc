@@ -450,7 +450,8 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
         out->Xim[o] = (fk + fd).imag();
       }
     if (!finiteAll(&out->A[36 * w], 36) || !finiteAll(&out->B[36 * w], 36) ||
-        !finiteAll(&out->Xre[6 * w * nh], 6 * nh) || !finiteAll(&out->Xim[6 * w * nh], 6 * nh)) {
+        !finiteAll(out->Xre.data() + 6 * w * nh, 6 * nh) ||
+        !finiteAll(out->Xim.data() + 6 * w * nh, 6 * nh)) {  // data(): no headings is allowed
       char b[200];
       std::snprintf(b, sizeof b, "panel: non-finite coefficients at omega = %g rad/s", om);
       *err = b;

@@ -17,6 +17,8 @@ check_tools.py BUILD_TOOLS_DIR MODELS_DIR CASE, CASE one of:
   seaset    mjbuoy-sim --set/--spectrum/--calm change the sea the model
             compiles with (--print-sea), bad entries are refused naming them
             and their range, the model file and its directory are untouched
+  hydro     mjbuoy-hydro's tables are consistent (A_inf symmetric, K(0)
+            from B); no radiation and a full disk are refused (issue 16)
   render    (label render) a failing ffmpeg is reported with its own
             reason and a non-zero exit (not SIGPIPE), nothing is left
             behind; a video name that is not .mp4 is refused up front (12)
@@ -360,6 +362,56 @@ def render(tools, models, tmp):
     refused(p, "--render /dev/full", "/dev/full", "No space left on device")
     check(not os.listdir(logs), "no temporary video or log left in $TMPDIR (%s)" % os.listdir(logs))
     no_temps(tmp, "render")
+
+
+def hydro(tools, models, tmp):
+    """mjbuoy-hydro on a floating box with radiation on: its tables are
+    consistent (A_inf symmetric; K(0) = (2/pi) int_0^inf B dw, with B linear
+    between the printed frequencies and from 0 at w = 0: the trapezoid rule
+    is exact, docs/physics.md section 14); a model without radiation and a
+    full disk are refused by name"""
+    exe = os.path.join(tools, "mjbuoy-hydro")
+    box = os.path.join(tmp, "box.xml")
+    xml = ('<mujoco><custom><text name="mjbuoy.hulls" data="hull"/>%s'
+           '<numeric name="mjbuoy.radiation.omega" data="1 9 6"/></custom><worldbody>'
+           '<body name="boat"><freejoint/><geom name="hull" type="box" size="0.5 0.5 0.5" '
+           'mass="500"/></body></worldbody></mujoco>')
+    open(box, "w").write(xml % '<text name="mjbuoy.radiation" data="on"/>')
+    out = os.path.join(tmp, "box.txt")
+    p = run([exe, box, "--kt-step", "0.1", "-o", out], cwd=tmp)
+    check(p.returncode == 0, "mjbuoy-hydro box.xml: exit 0")
+    lines = open(out).read().split("\n") if os.path.exists(out) else []
+    check(any('body "boat"' in l for l in lines), "the table names body boat")
+    blocks, cur = [], []
+    for l in lines:
+        if l.startswith("#") or not l.strip():
+            if cur:
+                blocks.append(cur)
+            cur = []
+        else:
+            cur.append([float(x) for x in l.split()])
+    if cur:
+        blocks.append(cur)
+    check(len(blocks) == 3, "three tables: A_inf, A and B, K(t) (%d)" % len(blocks))
+    if len(blocks) == 3:
+        a, ab, k = blocks
+        big = max(abs(x) for r in a for x in r)
+        check(all(abs(a[i][j] - a[j][i]) <= 1e-5 * big for i in range(6) for j in range(6)),
+              "A_inf symmetric")
+        check(a[2][2] > 0, "heave A_inf > 0 (%g kg)" % a[2][2])
+        w = [0.0] + [r[0] for r in ab]
+        b = [0.0] + [r[9] for r in ab]
+        k0 = 2 / 3.141592653589793 * sum(0.5 * (b[i] + b[i + 1]) * (w[i + 1] - w[i])
+                                          for i in range(len(w) - 1))
+        check(abs(k[0][3] - k0) <= 1e-4 * abs(k0), "heave K(0) %g = (2/pi) int B dw %g" % (k[0][3], k0))
+        check(abs(k[1][0] - 0.1) < 1e-9, "K(t) at the --kt-step")
+    open(box, "w").write(xml % "")
+    p = run([exe, box], cwd=tmp)
+    refused(p, "mjbuoy-hydro on a model without radiation", "mjbuoy.radiation")
+    open(box, "w").write(xml % '<text name="mjbuoy.radiation" data="on"/>')
+    p = run([exe, box, "-o", "/dev/full"], cwd=tmp)
+    refused(p, "mjbuoy-hydro -o /dev/full", "/dev/full", "No space left on device")
+    no_temps(tmp, "hydro")
 
 
 def main():

@@ -39,7 +39,7 @@ if(STEP STREQUAL "tree")
   if(NOT headers STREQUAL "mjbuoy;mjbuoy/mjbuoy.h;mjbuoy/mjbuoy_version.h")
     message(FATAL_ERROR "FAIL installed headers are ${headers}, want mjbuoy/mjbuoy.h and mjbuoy/mjbuoy_version.h")
   endif()
-  set(tools mjbuoy-sim mjbuoy-scenario mjbuoy-bench mjbuoy-hullgen mjbuoy-view mjbuoy-sweep)
+  set(tools mjbuoy-sim mjbuoy-scenario mjbuoy-bench mjbuoy-hullgen mjbuoy-view mjbuoy-sweep mjbuoy-hydro)
   foreach(f lib/cmake/mjbuoy/mjbuoyConfig.cmake lib/pkgconfig/mjbuoy.pc share/mjbuoy/models/barge.xml
       share/doc/mjbuoy/README.md)
     if(NOT EXISTS ${P}/${f})

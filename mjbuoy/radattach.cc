@@ -1,0 +1,219 @@
+// radattach: panel solver to time-domain radiation at attach (radattach.h)
+#include "radattach.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <utility>
+
+#include "buoy.h"
+#include "coefxform.h"
+#include "panelmesh.h"
+
+namespace mjb {
+
+std::vector<double> defaultOmega(double R, double g) {
+  const int n = 20;
+  double w0 = std::sqrt(g * 0.05 / R), w1 = std::sqrt(g * 5 / R);
+  std::vector<double> w(n);
+  for (int i = 0; i < n; i++) w[i] = w0 + (w1 - w0) * i / (n - 1);
+  return w;
+}
+
+double waterplaneRadius(const PanelMesh& p) {
+  double az = 0, rmax = 0;
+  for (int f = 0; f < p.nface(); f++) {
+    const int* q = &p.face[4 * f];
+    int nv = q[3] < 0 ? 3 : 4;
+    for (int k = 0; k < nv; k++) {
+      const double* a = &p.vert[3 * q[k]];
+      const double* b = &p.vert[3 * q[(k + 1) % nv]];
+      az += 0.5 * (a[0] * b[1] - a[1] * b[0]);  // z of the polygon's area vector
+      rmax = std::max(rmax, std::hypot(a[0], a[1]));
+    }
+  }
+  double r = std::sqrt(std::fabs(az) / M_PI);
+  return r > 1e-6 * rmax ? r : rmax;
+}
+
+// A, B and A_inf are symmetric in potential flow (Newman 1977, sec. 4.13:
+// Green's theorem); a collocation panel method is so only to its
+// discretisation error (0.1% on a 24 x 8 hemisphere). Replaces each matrix
+// by its symmetric part; returns the largest |M - M^T| / 2 over max |M| of
+// each matrix
+static double symmetrize(HydroCoef* c) {
+  double worst = 0;
+  auto sym = [&](double* M) {
+    double big = 0, off = 0;
+    for (int i = 0; i < 36; i++) big = std::max(big, std::fabs(M[i]));
+    for (int i = 0; i < 6; i++)
+      for (int j = 0; j < i; j++) {
+        double a = 0.5 * (M[6 * i + j] + M[6 * j + i]);
+        off = std::max(off, std::fabs(M[6 * i + j] - a));
+        M[6 * i + j] = M[6 * j + i] = a;
+      }
+    if (big > 0) worst = std::max(worst, off / big);
+  };
+  sym(c->Ainf);
+  for (int w = 0; w < c->nw(); w++) sym(&c->A[36 * w]), sym(&c->B[36 * w]);
+  return worst;
+}
+static const double kAsymWarn = 0.02;
+
+static const char* bodyName(const mjModel* m, int b) { return m->names + m->name_bodyadr[b]; }
+
+// whether the rigid group of root radiates: an override naming the root or
+// any of its hull bodies wins over mjbuoy.radiation (off over on)
+static bool groupRadiates(const Buoy& B, int root) {
+  const RadConfig& r = B.cfg.rad;
+  bool on = r.on, off = false;
+  for (const Hull& h : B.hull) {
+    if (B.m->body_weldid[h.body] != root) continue;
+    for (int b : {h.body, root}) {
+      on = on || std::count(r.onBody.begin(), r.onBody.end(), b);
+      off = off || std::count(r.offBody.begin(), r.offBody.end(), b);
+    }
+  }
+  return on && !off;
+}
+
+// the group's hull vertices in root's frame (float, as hullPanels takes
+// them) and its faces
+static void groupMesh(const Buoy& B, const mjData* d, int root, std::vector<float>* v,
+                      std::vector<int>* f) {
+  const mjModel* m = B.m;
+  const mjtNum* Rr = d->xmat + 9 * root;
+  for (const Hull& h : B.hull) {
+    if (m->body_weldid[h.body] != root) continue;
+    int v0 = v->size() / 3;
+    const mjtNum* Rb = d->xmat + 9 * h.body;
+    for (int i = h.v0; i < h.v0 + h.nv; i++) {
+      mjtNum x[3], y[3], z[3];
+      mju_rotVecMat(x, &B.vert[3 * i], Rb);
+      for (int k = 0; k < 3; k++) y[k] = x[k] + d->xpos[3 * h.body + k] - d->xpos[3 * root + k];
+      mju_rotVecMatT(z, y, Rr);
+      for (int k = 0; k < 3; k++) v->push_back((float)z[k]);
+    }
+    for (int t = h.t0; t < h.t0 + h.nt; t++)
+      for (int k = 0; k < 3; k++) f->push_back(B.face[3 * t + k] - h.v0 + v0);
+  }
+}
+
+// warnings on c, then its symmetric part (who names the body)
+static void checkCoef(Buoy* B, const std::string& who, HydroCoef* cp) {
+  HydroCoef& c = *cp;
+  // potential flow radiates energy: B_ii >= 0; a coarse mesh (or the lid
+  // at high kR) can give small negative values, which the memory turns
+  // into a source of energy
+  for (int i = 0; i < 6; i++) {
+    double big = 0, low = 0, wl = 0;
+    for (int w = 0; w < c.nw(); w++) {
+      double b = c.B[36 * w + 7 * i];
+      big = std::max(big, std::fabs(b));
+      if (b < low) low = b, wl = c.omega[w];
+    }
+    if (low < -0.01 * big) {
+      static const char* kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+      B->cfg.warn.push_back(who.substr(8) + ": the panel solver's " + kDof[i] + " damping is " +
+                            fmt(low) + " at omega " + fmt(wl) + " rad/s (below -1% of its peak " +
+                            fmt(big) + "); refine its panels (mjbuoy.radiation.refine) or lower "
+                            "the highest frequency (mjbuoy.radiation.omega)");
+    }
+  }
+  double asym = symmetrize(cp);
+  if (asym > kAsymWarn) {
+    B->cfg.warn.push_back(who.substr(8) + ": the panel solver's added mass or damping is " +
+                          fmt(100 * asym) + "% asymmetric (made symmetric); refine its panels "
+                          "(mjbuoy.radiation.refine)");
+  }
+}
+
+// coefficients of one group; "" or the error
+static std::string solveGroup(Buoy* B, const mjData* d, int root) {
+  const mjModel* m = B->m;
+  const RadConfig& rc = B->cfg.rad;
+  std::string who = std::string("mjbuoy: radiation of body \"") + bodyName(m, root) + "\"";
+  std::vector<float> v;
+  std::vector<int> f;
+  groupMesh(*B, d, root, &v, &f);
+  double pos[3] = {d->xpos[3 * root], d->xpos[3 * root + 1],
+                   d->xpos[3 * root + 2] - B->cfg.sea.level};
+  PanelMesh body, lid;
+  std::string note;
+  if (!hullPanels(v.data(), v.size() / 3, f.data(), f.size() / 3, pos, d->xquat + 4 * root,
+                  rc.refine, &body, &lid, &note)) {
+    return who + ": " + note + " at the model's initial pose (qpos0, mean sea level " +
+           fmt(B->cfg.sea.level) + " m); place the body at its floating position in the model, "
+           "or turn radiation off for it with <text name=\"mjbuoy.radiation.body." +
+           bodyName(m, root) + "\" data=\"off\"/>";
+  }
+  if (!rc.lid) {
+    lid = PanelMesh();
+  } else if (!lid.nface()) {
+    B->cfg.warn.push_back(who.substr(8) + ": no interior lid (" + note +
+                          "); its coefficients may be spoiled near irregular frequencies");
+  }
+  std::vector<double> omega;
+  if (rc.omega[2] > 0) {
+    int n = (int)rc.omega[2];
+    for (int i = 0; i < n; i++) omega.push_back(rc.omega[0] + (rc.omega[1] - rc.omega[0]) * i / (n - 1));
+  } else {
+    omega = defaultOmega(waterplaneRadius(body), B->cfg.sea.g);
+  }
+  HydroCoef c;
+  c.rho = B->cfg.sea.rho;
+  c.g = B->cfg.sea.g;
+  std::string err;
+  if (!panelSolve(body, lid, omega, {}, &c, &err)) return who + ": panel solver: " + err;
+  // panel frame: world axes, origin (x_root, y_root, sea level); the root's
+  // COM there is R ipos + (0, 0, pos z); body axes: R's columns
+  const mjtNum* R = d->xmat + 9 * root;
+  const mjtNum* ip = m->body_ipos + 3 * root;
+  double p[3], Rd[9], pn[3] = {ip[0], ip[1], ip[2]};
+  mju_rotVecMat(p, ip, R);
+  p[2] += pos[2];
+  for (int i = 0; i < 9; i++) Rd[i] = R[i];
+  err = coefTransform(&c, p, Rd, pn);
+  if (!err.empty()) return who + ": " + err;
+  checkCoef(B, who, &c);
+  err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
+  if (err.empty()) B->coef.emplace_back(root, std::move(c));
+  return err;
+}
+
+std::string attachRadiation(Buoy* B) {
+  const mjModel* m = B->m;
+  const RadConfig& rc = B->cfg.rad;
+  for (int b : rc.onBody) {
+    bool has = false;
+    for (const Hull& h : B->hull) has = has || m->body_weldid[h.body] == m->body_weldid[b];
+    if (!has) {
+      return std::string("mjbuoy: <text name=\"mjbuoy.radiation.body.") + bodyName(m, b) +
+             "\"> turns radiation on for body \"" + bodyName(m, b) +
+             "\", which carries no hull that can move; list its geoms in mjbuoy.hulls or "
+             "remove the entry";
+    }
+  }
+  std::vector<int> roots;
+  for (const Hull& h : B->hull) {
+    int r = m->body_weldid[h.body];
+    if (std::find(roots.begin(), roots.end(), r) == roots.end() && groupRadiates(*B, r))
+      roots.push_back(r);
+  }
+  if (roots.empty()) return "";
+  if (B->cfg.sea.depth > 0) {
+    B->cfg.warn.push_back("radiation: the panel solver is for deep water; mjbuoy.sea.depth = " +
+                          fmt(B->cfg.sea.depth) + " m is not used for the radiation coefficients");
+  }
+  // the initial pose: qpos0 (mj_makeData resets to it)
+  std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m), mj_deleteData);
+  if (!d) return "mjbuoy: radiation: could not allocate an mjData for the initial pose";
+  mj_kinematics(m, d.get());
+  for (int r : roots) {
+    std::string e = solveGroup(B, d.get(), r);
+    if (!e.empty()) return e;
+  }
+  return "";
+}
+
+}  // namespace mjb

@@ -1,0 +1,125 @@
+// radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, omega, refine,
+// memory} and mjbuoy.radiation.body.<body> (schema: docs/mjcf.md)
+#include "radconfig.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "config.h"
+
+namespace mjb {
+
+bool RadConfig::radiates(int body) const {
+  if (std::count(offBody.begin(), offBody.end(), body)) return false;
+  return on || std::count(onBody.begin(), onBody.end(), body);
+}
+
+bool isRadEntry(const char* key) {
+  return !std::strcmp(key, "radiation") || !std::strncmp(key, "radiation.", 10);
+}
+
+// "on" / "off" of a text entry
+static std::string onOff(const char* name, const char* text, bool* v) {
+  if (!std::strcmp(text, "on")) {
+    *v = true;
+  } else if (!std::strcmp(text, "off")) {
+    *v = false;
+  } else {
+    return "mjbuoy: " + tag("text", name) + " data = \"" + text +
+           "\" is not a switch; give \"on\" or \"off\", e.g. data=\"on\"";
+  }
+  return "";
+}
+
+static std::string parseText(const mjModel* m, const char* name, const char* text, RadConfig* r) {
+  const char* key = name + 7;
+  bool v = false;
+  std::string e = onOff(name, text, &v);
+  if (!e.empty()) return e;
+  if (!std::strcmp(key, "radiation")) {
+    r->on = v;
+  } else if (!std::strcmp(key, "radiation.lid")) {
+    r->lid = v;
+  } else if (!std::strncmp(key, "radiation.body.", 15)) {
+    int b = mj_name2id(m, mjOBJ_BODY, key + 15);
+    if (b < 0) {
+      return "mjbuoy: " + tag("text", name) + " refers to body \"" + (key + 15) +
+             "\", which does not exist; give the name of a body that carries hulls";
+    }
+    (v ? r->onBody : r->offBody).push_back(b);
+  } else {
+    return "mjbuoy: unknown entry " + tag("text", name) +
+           "; radiation text entries are mjbuoy.radiation, mjbuoy.radiation.lid and "
+           "mjbuoy.radiation.body.<body> (see docs/mjcf.md)";
+  }
+  return "";
+}
+
+// one numeric value: whole or not, range [lo, hi]
+static std::string checkRad(const char* name, const char* what, double v, double lo, double hi,
+                            bool whole, const char* unit, const char* example) {
+  if (!std::isfinite(v) || v < lo || v > hi || (whole && v != std::floor(v))) {
+    return "mjbuoy: " + tag("numeric", name) + " " + what + " = " + fmt(v) + " is out of range: " +
+           "it must be " + (whole ? "a whole number " : "") + ">= " + fmt(lo) + " and <= " +
+           fmt(hi) + " [" + unit + "]; fix its data attribute, e.g. data=\"" + example + "\"";
+  }
+  return "";
+}
+
+static std::string parseNumeric(const mjModel* m, int i, RadConfig* r) {
+  const char* name = m->names + m->name_numericadr[i];
+  const char* key = name + 7;
+  int n = m->numeric_size[i];
+  const mjtNum* v = m->numeric_data + m->numeric_adr[i];
+  struct F { const char* key; int n; const char* unit; const char* ex; };
+  static const F kF[] = {{"radiation.omega", 3, "rad/s, rad/s, count", "0.5 6 20"},
+                         {"radiation.refine", 1, "refine level", "0"},
+                         {"radiation.memory", 1, "s, 0 = automatic", "0"}};
+  const F* f = nullptr;
+  for (const F& c : kF) if (!std::strcmp(key, c.key)) f = &c;
+  if (!f) {
+    return "mjbuoy: unknown entry " + tag("numeric", name) +
+           "; radiation numeric entries are mjbuoy.radiation.omega, mjbuoy.radiation.refine "
+           "and mjbuoy.radiation.memory (see docs/mjcf.md)";
+  }
+  if (n != f->n) {
+    return "mjbuoy: " + tag("numeric", name) + " has " + std::to_string(n) + " value(s), expected " +
+           std::to_string(f->n) + " (" + f->unit + "), e.g. data=\"" + f->ex + "\"";
+  }
+  std::string e;
+  if (f == kF) {
+    // up to 10^4 rad/s (a 0.1 mm ripple); count 2..200 (each costs a solve)
+    e = checkRad(name, "value 1 (lowest omega)", v[0], 1e-3, 1e4, false, "rad/s", f->ex);
+    if (e.empty()) e = checkRad(name, "value 2 (highest omega)", v[1], v[0] * (1 + 1e-6), 1e4,
+                                false, "rad/s, above the lowest", f->ex);
+    if (e.empty()) e = checkRad(name, "value 3 (count)", v[2], 2, 200, true, "frequencies", f->ex);
+    for (int k = 0; k < 3; k++) r->omega[k] = v[k];
+  } else if (f == kF + 1) {
+    e = checkRad(name, "value", v[0], 0, 4, true, "times each panel is split in 4", f->ex);
+    r->refine = (int)v[0];
+  } else {
+    e = checkRad(name, "value", v[0], 0, 60, false, "s, 0 = automatic", f->ex);
+    r->memory = v[0];
+  }
+  return e;
+}
+
+std::string parseRadConfig(const mjModel* m, RadConfig* r) {
+  *r = RadConfig();
+  for (int i = 0; i < m->ntext; i++) {
+    const char* name = m->names + m->name_textadr[i];
+    if (std::strncmp(name, "mjbuoy.", 7) || !isRadEntry(name + 7)) continue;
+    std::string e = parseText(m, name, m->text_data + m->text_adr[i], r);
+    if (!e.empty()) return e;
+  }
+  for (int i = 0; i < m->nnumeric; i++) {
+    const char* name = m->names + m->name_numericadr[i];
+    if (std::strncmp(name, "mjbuoy.", 7) || !isRadEntry(name + 7)) continue;
+    std::string e = parseNumeric(m, i, r);
+    if (!e.empty()) return e;
+  }
+  return "";
+}
+
+}  // namespace mjb

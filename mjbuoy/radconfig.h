@@ -1,0 +1,32 @@
+// radconfig: the mjbuoy.radiation* MJCF entries (docs/mjcf.md section
+// "Radiation"), called from parseConfig
+#ifndef MJBUOY_RADCONFIG_H_
+#define MJBUOY_RADCONFIG_H_
+
+#include <string>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+namespace mjb {
+
+struct RadConfig {
+  bool on = false;              // mjbuoy.radiation: off (default) or on
+  std::vector<int> onBody;      // mjbuoy.radiation.body.<body>: on / off overrides
+  std::vector<int> offBody;
+  double omega[3] = {0, 0, 0};  // wmin, wmax [rad/s], count; count 0: from the hull size
+  int refine = 0;               // hullPanels refine level 0..4
+  bool lid = true;              // interior lid against irregular frequencies
+  double memory = 0;            // memory length [s]; 0: automatic
+  bool radiates(int body) const;
+};
+
+// whether the key after "mjbuoy." is one of these entries
+bool isRadEntry(const char* key);
+
+// read them into r; "" or the first error
+std::string parseRadConfig(const mjModel* m, RadConfig* r);
+
+}  // namespace mjb
+
+#endif  // MJBUOY_RADCONFIG_H_

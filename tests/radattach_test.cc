@@ -1,0 +1,451 @@
+// panel solver wired to the time-domain radiation at attach
+// (docs/physics.md section 14, "From the panel solver"; docs/mjcf.md,
+// "Radiation")
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "coefxform.h"
+#include "hull.h"
+#include "panelmesh.h"
+#include "radattach.h"
+#include "testutil.h"
+
+namespace {
+
+using mjbt::Scene;
+using mjbt::kG;
+using mjbt::kRho;
+
+// ---- the frame change (coefxform.h) against rigid-body mechanics ----
+
+// a sphere's added mass a I about its centre, moved to a point p off the
+// centre: the parallel-axis terms of a point mass a at d = centre - p,
+// A_FF = a I, A_FM = -a [d]x (force of a rotation about p: a w x d),
+// A_MM = a (|d|^2 I - d d^T) (Newman 1977, sec. 4.13: the added-mass
+// tensor transforms as a rigid body's inertia)
+TEST(RadAttach, MovedSphereAddedMassHasTheParallelAxisTerms) {
+  const double a = 7, c[3] = {0.3, -0.2, 0.5}, p[3] = {-0.4, 0.6, 0.1};
+  const double I3[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, pn[3] = {0, 0, 0};
+  mjb::HydroCoef h;
+  for (int k = 0; k < 3; k++) h.ref[k] = c[k];
+  for (int k = 0; k < 3; k++) h.Ainf[7 * k] = a;
+  ASSERT_EQ(mjb::coefTransform(&h, p, I3, pn), "");
+  double d[3] = {c[0] - p[0], c[1] - p[1], c[2] - p[2]};
+  double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  // [d]x w = d x w; the force of rotation rate w_j about p is a (w x d)
+  double D[9] = {0, -d[2], d[1], d[2], 0, -d[0], -d[1], d[0], 0};
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) {
+      EXPECT_NEAR(h.Ainf[6 * i + j], a * (i == j), 1e-12);
+      EXPECT_NEAR(h.Ainf[6 * i + j + 3], -a * D[3 * i + j], 1e-12) << i << j;
+      EXPECT_NEAR(h.Ainf[6 * (i + 3) + j], a * D[3 * i + j], 1e-12) << i << j;
+      EXPECT_NEAR(h.Ainf[6 * (i + 3) + j + 3], a * ((i == j) * dd - d[i] * d[j]), 1e-12);
+    }
+}
+
+// a turn about z by 90 degrees swaps surge and sway, roll and pitch:
+// A_N = R^T A R, and a
+// wave's complex amplitude moved by dx along its heading picks up the
+// phase e^{i k dx} (so X picks up e^{-i k dx}, deep water k = omega^2/g)
+TEST(RadAttach, TurnSwapsSurgeAndSwayAndMovePhasesX) {
+  mjb::HydroCoef h;
+  h.omega = {2.0};
+  h.A.assign(36, 0);
+  h.B.assign(36, 0);
+  h.A[0] = 1, h.A[7] = 2, h.A[14] = 3, h.A[21] = 4, h.A[28] = 5, h.A[35] = 6;
+  h.heading = {0.0};
+  h.Xre = {0, 0, 1, 0, 0, 0};
+  h.Xim.assign(6, 0);
+  h.FKre = h.Xre;
+  h.FKim = h.Xim;
+  const double R[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};  // new x = old y
+  const double p[3] = {0.5, 0, 0}, pn[3] = {0, 0, 0};
+  ASSERT_EQ(mjb::coefTransform(&h, p, R, pn), "");
+  EXPECT_NEAR(h.A[0], 2, 1e-12);
+  EXPECT_NEAR(h.A[7], 1, 1e-12);
+  // the reference moved by dx = 0.5 along old x adds the parallel-axis
+  // terms A33 dx^2 to old pitch (new roll) and A22 dx^2 to yaw
+  EXPECT_NEAR(h.A[21], 5 + 3 * 0.25, 1e-12);
+  EXPECT_NEAR(h.A[28], 4, 1e-12);
+  EXPECT_NEAR(h.A[35], 6 + 2 * 0.25, 1e-12);
+  double k = 4 / h.g, ph = -k * 0.5;
+  EXPECT_NEAR(h.Xre[2], std::cos(ph), 1e-12);
+  EXPECT_NEAR(h.Xim[2], std::sin(ph), 1e-12);
+  EXPECT_NEAR(h.heading[0], -M_PI / 2, 1e-12);  // waves along old x travel along new -y
+}
+
+// ---- the MJCF entries ----
+
+const char kBoxModel[] =
+    "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>%s</custom>"
+    "<worldbody><body name=\"boat\"><freejoint/>"
+    "<geom name=\"hull\" type=\"box\" size=\"0.5 0.5 0.25\" mass=\"256.25\"/>"
+    "</body></worldbody></mujoco>";
+
+std::string boxModel(const std::string& extra) {
+  char b[1024];
+  std::snprintf(b, sizeof b, kBoxModel, extra.c_str());
+  return b;
+}
+
+TEST(RadAttach, BadEntriesAreRefusedByName) {
+  struct Case { const char* xml; const char* want; };
+  const Case cs[] = {
+      {"<text name=\"mjbuoy.radiation\" data=\"yes\"/>", "mjbuoy.radiation\"> data = \"yes\""},
+      {"<text name=\"mjbuoy.radiation.body.nobody\" data=\"on\"/>", "body \"nobody\", which does not exist"},
+      {"<text name=\"mjbuoy.radiation.colour\" data=\"on\"/>", "unknown entry <text name=\"mjbuoy.radiation.colour\">"},
+      {"<numeric name=\"mjbuoy.radiation.omega\" data=\"1 0.5 10\"/>", "value 2 (highest omega) = 0.5"},
+      {"<numeric name=\"mjbuoy.radiation.omega\" data=\"1 5\"/>", "has 2 value(s), expected 3"},
+      {"<numeric name=\"mjbuoy.radiation.refine\" data=\"1.5\"/>", "mjbuoy.radiation.refine\"> value = 1.5"},
+      {"<numeric name=\"mjbuoy.radiation.memory\" data=\"-1\"/>", "must be >= 0 and <= 60"},
+  };
+  for (const Case& c : cs) {
+    Scene s(boxModel(c.xml));
+    EXPECT_FALSE(s.ok()) << c.xml;
+    EXPECT_NE(s.err.find(c.want), std::string::npos) << c.xml << "\n" << s.err;
+  }
+}
+
+// a box that does not reach the water at qpos0: the error names the body
+TEST(RadAttach, DryBodyIsNamed) {
+  std::string xml = boxModel("<text name=\"mjbuoy.radiation\" data=\"on\"/>");
+  xml.replace(xml.find("name=\"boat\""), 11, "name=\"boat\" pos=\"0 0 2\"");
+  Scene s(xml);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.err.find("radiation of body \"boat\""), std::string::npos) << s.err;
+  EXPECT_NE(s.err.find("mjbuoy.radiation.body.boat"), std::string::npos) << s.err;
+}
+
+// ---- heave free decay of a floating hemisphere (issue 16) ----
+
+// hemisphere of radius R [m] under z = 0 (nt polar rings, na around), a
+// vertical collar up to z = hc so the waterplane stays a disk while it
+// heaves, and a flat top: a closed MuJoCo mesh, counterclockwise outside
+std::string hemisphereMeshXML(double R, int nt, int na, double hc) {
+  std::vector<double> v = {0, 0, -R};
+  for (int i = 1; i <= nt + 1; i++) {
+    double th = M_PI / 2 * std::min(i, nt) / nt, r = R * std::sin(th);
+    double z = i <= nt ? -R * std::cos(th) : hc;
+    for (int a = 0; a < na; a++) {
+      double ph = 2 * M_PI * a / na;
+      v.insert(v.end(), {r * std::cos(ph), r * std::sin(ph), std::fabs(z) < 1e-12 ? 0.0 : z});
+    }
+  }
+  v.insert(v.end(), {0, 0, hc});
+  int top = v.size() / 3 - 1;
+  auto ring = [&](int i, int a) { return 1 + (i - 1) * na + (a % na); };
+  std::vector<int> f;
+  for (int a = 0; a < na; a++) f.insert(f.end(), {0, ring(1, a + 1), ring(1, a)});
+  for (int i = 1; i <= nt; i++)
+    for (int a = 0; a < na; a++) {
+      int l0 = ring(i, a), l1 = ring(i, a + 1), u0 = ring(i + 1, a), u1 = ring(i + 1, a + 1);
+      f.insert(f.end(), {l0, l1, u1, l0, u1, u0});
+    }
+  for (int a = 0; a < na; a++) f.insert(f.end(), {top, ring(nt + 1, a), ring(nt + 1, a + 1)});
+  std::ostringstream s;
+  s.precision(17);
+  s << "<mesh name=\"hemi\" vertex=\"";
+  for (double x : v) s << x << " ";
+  s << "\" face=\"";
+  for (int i : f) s << i << " ";
+  s << "\"/>";
+  return s.str();
+}
+
+// floating hemisphere of radius 1 m, mass rho 2/3 pi R^3; mjbuoy's drag,
+// viscous and slamming terms off so that only hydrostatics (and radiation)
+// act
+std::string hemisphereModel(bool radiation) {
+  const double R = 1, m = kRho * 2.0 / 3.0 * M_PI * R * R * R;
+  std::ostringstream s;
+  s << "<mujoco><option timestep=\"0.005\"/><asset>" << hemisphereMeshXML(R, 8, 24, 0.3)
+    << "</asset><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
+    << "<numeric name=\"mjbuoy.sea.density\" data=\"" << kRho << "\"/>"
+    << "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
+    << "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0.5\"/>"
+    << "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0.5\"/>"
+    << "<numeric name=\"mjbuoy.hull.slamming\" data=\"0 100 2\"/>"
+    << "<text name=\"mjbuoy.radiation\" data=\"" << (radiation ? "on" : "off") << "\"/>"
+    << "<numeric name=\"mjbuoy.radiation.omega\" data=\"0.7 7 12\"/>"
+    << "</custom><worldbody><body name=\"hemi\"><freejoint/>"
+    << "<inertial pos=\"0 0 -0.3\" mass=\"" << m << "\" diaginertia=\"" << 0.4 * m << " "
+    << 0.4 * m << " " << 0.4 * m << "\"/>"
+    << "<geom name=\"hull\" type=\"mesh\" mesh=\"hemi\" contype=\"0\" conaffinity=\"0\"/>"
+    << "</body></worldbody></mujoco>";
+  return s.str();
+}
+
+// heave maxima and minima (times [s], values [m]) of T seconds of mj_step
+// from a 5 cm push down
+void decay(Scene& s, double T, std::vector<double>* t, std::vector<double>* x) {
+  s.d->qpos[2] = -0.05;
+  mj_forward(s.m, s.d);
+  double x0 = s.d->qpos[2], x1 = x0;
+  int n = (int)std::lround(T / s.m->opt.timestep);
+  for (int k = 0; k < n; k++) {
+    mj_step(s.m, s.d);
+    double x2 = s.d->qpos[2];
+    ASSERT_TRUE(std::isfinite(x2));
+    if ((x1 - x0) * (x2 - x1) < 0) {
+      // vertex of the parabola through the last three samples
+      double h = s.m->opt.timestep, den = x0 - 2 * x1 + x2;
+      double u = 0.5 * (x0 - x2) / den;
+      t->push_back(s.d->time - h + u * h);
+      x->push_back(x1 - 0.25 * (x0 - x2) * u);
+    }
+    x0 = x1, x1 = x2;
+  }
+}
+
+// Hulme (1982), J. Fluid Mech. 121:443-463, Table 1 (as in
+// tests/panel_test.cc): kR, A33 / (rho 2/3 pi R^3), B33 / (rho 2/3 pi R^3 omega)
+const double kHulme[][3] = {
+    {0.5, 0.5861, 0.3391}, {0.6, 0.5381, 0.3271}, {0.7, 0.4999, 0.3098}, {0.8, 0.4698, 0.2899},
+    {0.9, 0.4464, 0.2691}, {1.0, 0.4284, 0.2484}, {1.2, 0.4047, 0.2096}, {1.4, 0.3924, 0.1756},
+    {1.6, 0.3871, 0.1469}, {1.8, 0.3864, 0.1229}, {2.0, 0.3884, 0.1031}};
+
+// A / m and B / (m omega) of Hulme's table, linear in kR between its rows,
+// at a complex kR (the same linear function continued off the real axis)
+typedef std::complex<double> cplx;
+void hulmeAt(cplx kr, cplx* a, cplx* b) {
+  const int n = sizeof(kHulme) / sizeof(kHulme[0]);
+  int i = 0;
+  while (i < n - 2 && kHulme[i + 1][0] < kr.real()) i++;
+  cplx s = (kr - kHulme[i][0]) / (kHulme[i + 1][0] - kHulme[i][0]);
+  *a = kHulme[i][1] + s * (kHulme[i + 1][1] - kHulme[i][1]);
+  *b = kHulme[i][2] + s * (kHulme[i + 1][2] - kHulme[i][2]);
+}
+
+// F(w) = -w^2 (m + A(w)) - i w B(w) + C, A and B from Hulme's table
+cplx heaveImpedance(cplx w, double m, double C, double R) {
+  cplx a, b;
+  hulmeAt(w * w * R / kG, &a, &b);
+  return -w * w * m * (1.0 + a) - cplx(0, 1) * w * (b * m * w) + C;
+}
+
+TEST(RadAttach, HemisphereHeaveDecayMatchesHulme) {
+  // prediction: x ~ e^{-i w t}, w = wr - i wi the root of
+  // -w^2 (m + A(w)) - i w B(w) + C = 0, C = rho g pi R^2, by complex Newton
+  // from the undamped w = sqrt(C / m); A(w) and B(w) analytic off the real
+  // axis (a decaying motion sees A + i B / w at its complex frequency: with
+  // heave damping this strong, ~8% of critical, A's slope adds ~10% to the
+  // decrement of A and B taken at the real wr, printed for comparison).
+  // Period 2 pi / wr, log decrement 2 pi wi / wr
+  const double R = 1, m = kRho * 2.0 / 3.0 * M_PI, C = kRho * kG * M_PI * R * R;
+  cplx w = std::sqrt(C / m);
+  for (int it = 0; it < 50; it++) {
+    cplx h = 1e-6 * std::abs(w);
+    cplx f = heaveImpedance(w, m, C, R);
+    w -= f / ((heaveImpedance(w + h, m, C, R) - f) / h);
+  }
+  ASSERT_LT(std::abs(heaveImpedance(w, m, C, R)), 1e-9 * C);
+  double Tp = 2 * M_PI / w.real(), dp = -2 * M_PI * w.imag() / w.real();
+  // the same with A and B frozen at the real wr (fixed point)
+  double wr = std::sqrt(C / m), wi = 0;
+  for (int it = 0; it < 50; it++) {
+    cplx a, b;
+    hulmeAt(wr * wr * R / kG, &a, &b);
+    double M = m * (1 + a.real()), Bd = b.real() * m * wr;
+    wr = std::sqrt(4 * M * C - Bd * Bd) / (2 * M);
+    wi = Bd / (2 * M);
+  }
+  std::printf("predicted (complex root): period %.4f s, log decrement %.4f; "
+              "with A, B at the real frequency: %.4f s, %.4f\n",
+              Tp, dp, 2 * M_PI / wr, 2 * M_PI * wi / wr);
+
+  for (bool rad : {false, true}) {
+    auto t0 = std::chrono::steady_clock::now();
+    Scene s(hemisphereModel(rad));
+    ASSERT_TRUE(s.ok()) << s.err;
+    std::printf("attach %.2f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    // heave inertia in MuJoCo's qM: m + A33_inf, A33_inf -> 0.5 m (Hulme
+    // 1982, the kR -> inf limit), within 3% on this mesh; m alone without
+    mj_forward(s.m, s.d);
+    double qm = s.d->qM[s.m->dof_Madr[2]];
+    // (the mass is written to the MJCF with 6 digits)
+    EXPECT_NEAR(qm / m, rad ? 1.5 : 1.0, rad ? 0.03 * 1.5 : 1e-5);
+    std::printf("heave inertia / m = %.4f\n", qm / m);
+    std::vector<double> t, x;
+    decay(s, 12, &t, &x);
+    ASSERT_GE(t.size(), 8u);
+    // period from maxima 2 apart (one cycle); decrement from successive
+    // peak-to-trough heights (independent of the equilibrium's offset)
+    // over cycles 2..4, past the start-up transient
+    int i0 = 2;
+    double T = t[i0 + 4] - t[i0 + 2];
+    double T2 = t[i0 + 2] - t[i0];
+    double h0 = std::fabs(x[i0] - x[i0 + 1]), h1 = std::fabs(x[i0 + 2] - x[i0 + 3]);
+    double h2 = std::fabs(x[i0 + 4] - x[i0 + 5]);
+    double dl = 0.5 * std::log(h0 / h2);
+    std::printf("radiation %s: period %.4f s %.4f s, log decrement %.4f (%.4f, %.4f); "
+                "predicted %.4f s, %.4f (no radiation: %.4f s, 0)\n",
+                rad ? "on " : "off", T, T2, dl, std::log(h0 / h1), std::log(h1 / h2), Tp, dp,
+                2 * M_PI * std::sqrt(m / C));
+    if (rad) {
+      EXPECT_NEAR(T / Tp, 1, 0.05);
+      EXPECT_NEAR(dl / dp, 1, 0.05);
+    } else {
+      // hydrostatics alone: undamped, T = 2 pi sqrt(m / C)
+      EXPECT_NEAR(T / (2 * M_PI * std::sqrt(m / C)), 1, 0.05);
+      EXPECT_LT(std::fabs(dl), 0.05 * dp);
+    }
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// ---- heave free decay of a floating box: time domain against frequency
+// domain (issue 16) ----
+
+// 1 m x 1 m x 1 m box floating at 0.5 m draft (m = rho 0.5 m^3), radiation
+// on with refine 1 (384 wet panels and the lid)
+std::string boxDecayModel() {
+  std::ostringstream s;
+  s << "<mujoco><option timestep=\"0.005\"/><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
+    << "<numeric name=\"mjbuoy.sea.density\" data=\"" << kRho << "\"/>"
+    << "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
+    << "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0.5\"/>"
+    << "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0.5\"/>"
+    << "<numeric name=\"mjbuoy.hull.slamming\" data=\"0 100 2\"/>"
+    << "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+    << "<numeric name=\"mjbuoy.radiation.refine\" data=\"1\"/>"
+    << "<numeric name=\"mjbuoy.radiation.omega\" data=\"0.9 9 12\"/>"
+    << "</custom><worldbody><body name=\"box\"><freejoint/>"
+    << "<inertial pos=\"0 0 -0.2\" mass=\"" << kRho * 0.5 << "\" diaginertia=\"100 100 100\"/>"
+    << "<geom name=\"hull\" type=\"box\" size=\"0.5 0.5 0.5\" contype=\"0\" conaffinity=\"0\"/>"
+    << "</body></worldbody></mujoco>";
+  return s.str();
+}
+
+TEST(RadAttach, BoxHeaveDecayMatchesItsFrequencyDomain) {
+  // the frequency-domain prediction from the same wet surface's A33(w),
+  // B33(w) (panelSolve on hullPanels of the box's hull mesh, the attach
+  // path's input): root of -w^2 (m + A(w)) - i w B(w) + C = 0, C = rho g
+  // A_wp, A and B linear in w between the table's frequencies (continued to
+  // complex w), complex Newton. The time domain gets only A_inf and K(t)
+  // from B (Cummins), so agreement checks the memory, A_inf in the inertia
+  // and the frame change on a second shape
+  Scene s(boxDecayModel());
+  ASSERT_TRUE(s.ok()) << s.err;
+  std::vector<std::string> warn;
+  mjb::Mesh mesh = mjb::hullMesh(s.m, 0, &warn);
+  std::vector<float> v(mesh.v.begin(), mesh.v.end());
+  const double pos[3] = {0, 0, 0}, quat[4] = {1, 0, 0, 0};
+  mjb::PanelMesh body, lid;
+  std::string note;
+  ASSERT_TRUE(mjb::hullPanels(v.data(), mesh.nv(), mesh.f.data(), mesh.nf(), pos, quat, 1, &body,
+                              &lid, &note)) << note;
+  std::vector<double> om;
+  for (int i = 0; i < 12; i++) om.push_back(0.9 + (9 - 0.9) * i / 11);
+  mjb::HydroCoef c;
+  c.rho = kRho;
+  c.g = kG;
+  std::string err;
+  ASSERT_TRUE(mjb::panelSolve(body, lid, om, {}, &c, &err)) << err;
+  const double m = kRho * 0.5, C = kRho * kG * 1.0;
+  auto F = [&](cplx w) {
+    int i = 0;
+    while (i < 10 && om[i + 1] < w.real()) i++;
+    cplx t = (w - om[i]) / (om[i + 1] - om[i]);
+    cplx A = c.A[36 * i + 14] + t * (c.A[36 * (i + 1) + 14] - c.A[36 * i + 14]);
+    cplx B = c.B[36 * i + 14] + t * (c.B[36 * (i + 1) + 14] - c.B[36 * i + 14]);
+    return -w * w * (m + A) - cplx(0, 1) * w * B + C;
+  };
+  cplx w = std::sqrt(C / m);
+  for (int it = 0; it < 50; it++) {
+    cplx h = 1e-6 * std::abs(w), f = F(w);
+    w -= f / ((F(w + h) - f) / h);
+  }
+  ASSERT_LT(std::abs(F(w)), 1e-9 * C);
+  double Tp = 2 * M_PI / w.real(), dp = -2 * M_PI * w.imag() / w.real();
+  std::vector<double> t, x;
+  decay(s, 12, &t, &x);
+  ASSERT_GE(t.size(), 8u);
+  int i0 = 2;
+  double T = t[i0 + 4] - t[i0 + 2];
+  double h0 = std::fabs(x[i0] - x[i0 + 1]), h2 = std::fabs(x[i0 + 4] - x[i0 + 5]);
+  double dl = 0.5 * std::log(h0 / h2);
+  std::printf("box: period %.4f s, log decrement %.4f; predicted %.4f s, %.4f "
+              "(%d panels, lid %d; no added mass %.4f s)\n",
+              T, dl, Tp, dp, body.nface(), lid.nface(), 2 * M_PI * std::sqrt(m / C));
+  EXPECT_NEAR(T / Tp, 1, 0.05);
+  EXPECT_NEAR(dl / dp, 1, 0.05);
+}
+
+}  // namespace
+
+namespace {
+
+// the switches: global off, body "a" on by override, "b" default off,
+// hull "c" on a body welded (no joint) to "d" switched on by naming the
+// hull's body: the coefficients go to the group's top body "d". A_inf
+// heave adds to MuJoCo's heave inertia (qM) of exactly the bodies on
+TEST(RadAttach, PerBodySwitchesAndWeldedHulls) {
+  std::string box = "type=\"box\" size=\"0.5 0.5 0.5\" mass=\"500\" contype=\"0\" conaffinity=\"0\"";
+  std::string xml =
+      "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"ha hb hc\"/>"
+      "<text name=\"mjbuoy.radiation.body.a\" data=\"on\"/>"
+      "<text name=\"mjbuoy.radiation.body.c\" data=\"on\"/>"
+      "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 6\"/>"
+      "</custom><worldbody>"
+      "<body name=\"a\"><freejoint/><geom name=\"ha\" " + box + "/></body>"
+      "<body name=\"b\" pos=\"5 0 0\"><freejoint/><geom name=\"hb\" " + box + "/></body>"
+      "<body name=\"d\" pos=\"10 0 0\"><freejoint/><geom type=\"sphere\" size=\"0.1\" pos=\"0 0 1\" mass=\"1\"/>"
+      "<body name=\"c\"><geom name=\"hc\" " + box + "/></body></body>"
+      "</worldbody></mujoco>";
+  Scene s(xml);
+  ASSERT_TRUE(s.ok()) << s.err;
+  mj_forward(s.m, s.d);
+  auto heave = [&](const char* b) {
+    int j = s.m->body_jntadr[s.body(b)];
+    return s.d->qM[s.m->dof_Madr[s.m->jnt_dofadr[j] + 2]];
+  };
+  EXPECT_GT(heave("a"), 1.2 * 500);
+  EXPECT_NEAR(heave("b"), 500, 1e-9);
+  EXPECT_GT(heave("d"), 1.2 * 501);
+  // A33_inf of the same wet surface on "a" and on the welded group "d"
+  EXPECT_NEAR(heave("a") - 500, heave("d") - 501, 1e-6 * heave("a"));
+}
+
+}  // namespace
+
+namespace {
+
+// several hulls on one body are solved together: two 1 m boxes 8 m apart
+// on one body interact little at infinite frequency (the far field of a
+// heaving body's A_inf potential decays as a dipole, 1/r^2, its effect on
+// the other hull as (size / r)^3 ~ 0.2%), so the pair's heave A33_inf is
+// twice one box's within 2%
+TEST(RadAttach, TwoHullsOnOneBodyAreSolvedTogether) {
+  std::string box = "type=\"box\" size=\"0.5 0.5 0.5\" mass=\"500\" contype=\"0\" conaffinity=\"0\"";
+  std::string head =
+      "<mujoco><custom><text name=\"mjbuoy.radiation\" data=\"on\"/>"
+      "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 4\"/>";
+  Scene one(head + "<text name=\"mjbuoy.hulls\" data=\"l\"/></custom><worldbody>"
+            "<body name=\"cat\"><freejoint/><geom name=\"l\" " + box + "/></body></worldbody></mujoco>");
+  Scene two(head + "<text name=\"mjbuoy.hulls\" data=\"l r\"/></custom><worldbody>"
+            "<body name=\"cat\"><freejoint/><geom name=\"l\" pos=\"0 -4 0\" " + box + "/>"
+            "<geom name=\"r\" pos=\"0 4 0\" " + box + "/></body></worldbody></mujoco>");
+  ASSERT_TRUE(one.ok()) << one.err;
+  ASSERT_TRUE(two.ok()) << two.err;
+  mj_forward(one.m, one.d);
+  mj_forward(two.m, two.d);
+  double a1 = one.d->qM[one.m->dof_Madr[2]] - 500, a2 = two.d->qM[two.m->dof_Madr[2]] - 1000;
+  std::printf("heave A_inf: one box %.2f kg, two boxes %.2f kg; warnings: %s\n", a1, a2,
+              mjb_warnings(two.b));
+  EXPECT_GT(a1, 0);
+  EXPECT_NEAR(a2 / (2 * a1), 1, 0.02);
+  // two waterplanes: no lid, and a warning naming the body says so
+  EXPECT_NE(std::string(mjb_warnings(two.b)).find("radiation of body \"cat\": no interior lid"),
+            std::string::npos);
+}
+
+}  // namespace

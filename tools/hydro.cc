@@ -1,0 +1,114 @@
+// mjbuoy-hydro: print the radiation coefficients mjbuoy computes at attach
+// for each hull body with radiation on (docs/mjcf.md section 11):
+// A_inf, A(omega), B(omega) and the retardation function K(t)
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <mujoco/mujoco.h>
+
+#include "buoy.h"
+#include "cliopt.h"
+#include "mjbuoy.h"
+#include "outfile.h"
+#include "radiation.h"
+
+static const char* kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+
+// one body's tables; false on a write error
+static bool printBody(FILE* o, const mjModel* m, int body, const mjb::HydroCoef& c, double dt,
+                      double tk) {
+  std::fprintf(o, "# body \"%s\": reference point (its COM) %.6g %.6g %.6g m in body axes, "
+               "rho %g kg/m^3, g %g m/s^2, deep water\n", m->names + m->name_bodyadr[body],
+               c.ref[0], c.ref[1], c.ref[2], c.rho, c.g);
+  std::fprintf(o, "# A_inf (6x6, rows force/moment, columns surge..yaw) [kg, kg m, kg m^2]\n");
+  for (int i = 0; i < 6; i++) {
+    for (int j = 0; j < 6; j++) std::fprintf(o, "%s%.6g", j ? " " : "", c.Ainf[6 * i + j]);
+    std::fprintf(o, "\n");
+  }
+  std::fprintf(o, "\n# omega[rad/s]");
+  for (int i = 0; i < 6; i++) std::fprintf(o, " A_%s", kDof[i]);
+  for (int i = 0; i < 6; i++) std::fprintf(o, " B_%s", kDof[i]);
+  std::fprintf(o, "   (diagonal; A [kg, kg m^2], B [kg/s, kg m^2/s])\n");
+  for (int w = 0; w < c.nw(); w++) {
+    std::fprintf(o, "%.6g", c.omega[w]);
+    for (int i = 0; i < 6; i++) std::fprintf(o, " %.6g", c.A[36 * w + 7 * i]);
+    for (int i = 0; i < 6; i++) std::fprintf(o, " %.6g", c.B[36 * w + 7 * i]);
+    std::fprintf(o, "\n");
+  }
+  int n = (int)std::floor(tk / dt) + 1;
+  std::vector<std::vector<double>> K(6, std::vector<double>(n));
+  for (int i = 0; i < 6; i++) mjb::retardation(c, i, i, dt, n, K[i].data());
+  std::fprintf(o, "\n# t[s]");
+  for (int i = 0; i < 6; i++) std::fprintf(o, " K_%s", kDof[i]);
+  std::fprintf(o, "   (retardation function, diagonal [N/m, N m/rad] per s)\n");
+  for (int k = 0; k < n; k++) {
+    std::fprintf(o, "%.6g", k * dt);
+    for (int i = 0; i < 6; i++) std::fprintf(o, " %.6g", K[i][k]);
+    std::fprintf(o, "\n");
+  }
+  std::fprintf(o, "\n");
+  return !std::ferror(o);
+}
+
+int main(int argc, char** argv) {
+  CLI::App app{"Compute and print the radiation coefficients of each hull body with "
+               "radiation on (mjbuoy.radiation, docs/mjcf.md section 11): A_inf, A(omega), "
+               "B(omega) about the body COM in body axes, and K(t)."};
+  app.set_version_flag("--version", std::string("mjbuoy-hydro ") + MJBUOY_VERSION_STRING);
+  std::string model, file;
+  double dt = 0.05, tk = 0;
+  using mjbtool::Finite;
+  app.add_option("model", model, "MJCF model with mjbuoy.radiation on")->required();
+  app.add_option("--kt-step", dt, "time step of the K(t) table [s]")->check(Finite(1e-4, 10));
+  app.add_option("--kt-length", tk, "length of the K(t) table [s]; 0: the automatic memory "
+                 "length")->check(Finite(0, mjb::kMaxMemory));
+  app.add_option("-o,--output", file, "file to write, replaced only when complete "
+                 "(default: stdout)");
+  CLI11_PARSE(app, argc, argv);
+
+  char err[1024] = "";
+  mjModel* m = mj_loadXML(model.c_str(), nullptr, err, sizeof err);
+  if (!m) {
+    std::fprintf(stderr, "mjbuoy-hydro: %s: %s\n", model.c_str(), err);
+    return 1;
+  }
+  mjbBuoy* b = mjb_attach(m, "cpu", err, sizeof err);
+  if (!b) {
+    std::fprintf(stderr, "mjbuoy-hydro: %s\n", err);
+    mj_deleteModel(m);
+    return 1;
+  }
+  if (mjb_warnings(b)[0]) std::fprintf(stderr, "%s", mjb_warnings(b));
+  const mjb::Buoy* B = mjb::buoyOf(b);
+  int rc = 0;
+  if (B->coef.empty()) {
+    std::fprintf(stderr, "mjbuoy-hydro: %s has no hull body with radiation on; add <text "
+                 "name=\"mjbuoy.radiation\" data=\"on\"/> to its <custom> section\n",
+                 model.c_str());
+    rc = 1;
+  }
+  mjbtool::OutFile of;
+  std::string e;
+  if (!rc && !file.empty() && !of.open(file, "-o", &e)) {
+    std::fprintf(stderr, "mjbuoy-hydro: %s\n", e.c_str());
+    rc = 1;
+  }
+  FILE* o = file.empty() ? stdout : of.file();
+  for (size_t i = 0; !rc && i < B->coef.size(); i++) {
+    const mjb::HydroCoef& c = B->coef[i].second;
+    double len = tk > 0 ? tk : mjb::memoryLength(c);
+    if (!printBody(o, m, B->coef[i].first, c, dt, len)) rc = 1;
+  }
+  if (!rc && (std::fflush(o) != 0 || std::ferror(o))) rc = 1;
+  if (!rc && !file.empty() && !of.commit(&e)) rc = 1;
+  if (rc && B && !B->coef.empty()) {
+    if (e.empty()) e = std::string("write failed on ") + (file.empty() ? "stdout" : file.c_str());
+    std::fprintf(stderr, "mjbuoy-hydro: %s\n", e.c_str());
+  }
+  mjb_detach(b);
+  mj_deleteModel(m);
+  return rc;
+}
