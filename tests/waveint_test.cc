@@ -211,11 +211,24 @@ void integrand(const mjb::Sea& sea, const mjb::WaveNow* wn, const mjb::Surf& sf,
   sea.velocitySC(wn, sc.data(), r[2] - sea.level, eta, v);
 }
 
+// area of triangle a b c [m^2]: half the length of the edges' cross product
+double triArea(const double* a, const double* b, const double* c) {
+  double u[3], v[3];
+  for (int j = 0; j < 3; j++) {
+    u[j] = b[j] - a[j];
+    v[j] = c[j] - a[j];
+  }
+  const double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2],
+               z = u[0] * v[1] - u[1] * v[0];
+  return 0.5 * std::sqrt(x * x + y * y + z * z);
+}
+
 // Radon's degree-5 rule (Stroud 1971, T2:5-1) on 4^lev sub-triangles:
 // P = integral p_d dA, R = integral p_d r dA, V = integral u dA
 struct Ref {
   double P = 0, R[3] = {0, 0, 0}, V[3] = {0, 0, 0};
 };
+
 void radon(const mjb::Sea& sea, const mjb::WaveNow* wn, const mjb::Surf& sf, const double* a,
            const double* b, const double* c, int lev, Ref* out) {
   if (lev > 0) {
@@ -237,15 +250,7 @@ void radon(const mjb::Sea& sea, const mjb::WaveNow* wn, const mjb::Surf& sf, con
                             {1 - 2 * ka, ka, ka},        {kb, kb, 1 - 2 * kb}, {kb, 1 - 2 * kb, kb},
                             {1 - 2 * kb, kb, kb}};
   const double wt[7] = {9.0 / 40, wa, wa, wa, wb, wb, wb};
-  double u[3], v[3], x[3];
-  for (int j = 0; j < 3; j++) {
-    u[j] = b[j] - a[j];
-    v[j] = c[j] - a[j];
-  }
-  x[0] = u[1] * v[2] - u[2] * v[1];
-  x[1] = u[2] * v[0] - u[0] * v[2];
-  x[2] = u[0] * v[1] - u[1] * v[0];
-  const double A = 0.5 * std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+  const double A = triArea(a, b, c);
   for (int i = 0; i < 7; i++) {
     double r[3], p, vel[3];
     for (int j = 0; j < 3; j++) r[j] = bar[i][0] * a[j] + bar[i][1] * b[j] + bar[i][2] * c[j];
@@ -289,15 +294,7 @@ void closedForm(const mjb::Sea& sea, const mjb::WaveNow* wn, const double q[3][3
     E[3 * nw + j] = e2 * sc0[2 * i];
   }
   const double* const E0[4] = {E.data(), E.data() + nw, E.data() + 2 * nw, E.data() + 3 * nw};
-  double u[3], v[3], x[3];
-  for (int j = 0; j < 3; j++) {
-    u[j] = q[1][j] - q[0][j];
-    v[j] = q[2][j] - q[0][j];
-  }
-  x[0] = u[1] * v[2] - u[2] * v[1];
-  x[1] = u[2] * v[0] - u[0] * v[2];
-  x[2] = u[0] * v[1] - u[1] * v[0];
-  const double area = 0.5 * std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+  const double area = triArea(q[0], q[1], q[2]);
   mjb::pieceIntegrals(tab, sea, E0, sc0.data(), q, zs, lab, area, true, &out->P, out->R, out->V);
 }
 
@@ -336,15 +333,12 @@ TEST(WaveInt, PieceIntegralsAgainstFineSubdivision) {
       Ref cf, rf;
       closedForm(sea, wn.data(), q, &sf, &cf);
       radon(sea, wn.data(), sf, q[0], q[1], q[2], 7, &rf);
-      double u[3], v[3], x[3], rmax = 0, s2 = 0;
+      double u[3], v[3], rmax = 0, s2 = 0;
       for (int j = 0; j < 3; j++) {
         u[j] = q[1][j] - q[0][j];
         v[j] = q[2][j] - q[0][j];
       }
-      x[0] = u[1] * v[2] - u[2] * v[1];
-      x[1] = u[2] * v[0] - u[0] * v[2];
-      x[2] = u[0] * v[1] - u[1] * v[0];
-      const double area = 0.5 * std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+      const double area = triArea(q[0], q[1], q[2]);
       for (int c = 0; c < 3; c++) {
         rmax = std::max(rmax, std::sqrt(q[c][0] * q[c][0] + q[c][1] * q[c][1] + q[c][2] * q[c][2]));
         double d2 = 0;
