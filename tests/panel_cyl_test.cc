@@ -34,9 +34,10 @@ const double kM = kRho * kPi * kR * kR * kT;  // displaced mass
 // lid, meshes nz x nr x na (side rows, bottom rings, around) 6 x 10 x 64
 // (1024 panels) and 9 x 15 x 96 (2304), whose differences shrink as O(h)
 // (256 -> 1024 -> 2304 panels: A11 at kR = 0.2 moves by -0.0113 then
-// -0.0040, ratio 2.8 against 3.0 for O(h)); the rows are the Richardson
-// extrapolation 3 f(2304) - 2 f(1024) (docs/physics.md section 13 lists the
-// raw values; they differ from these by at most 1.7% where asserted).
+// -0.0040, B33 at kR = 2 by +0.0035 then +0.0013: ratios 2.8 and 2.7
+// against 3.0 for O(h)); the rows are the Richardson extrapolation
+// 3 f(2304) - 2 f(1024), which differs from the raw 2304-panel values by at
+// most 3.1% (B33 at kR = 2) where asserted (docs/physics.md section 13).
 // A / (rho V), B / (rho V omega), pitch / (rho V R^2), surge-pitch / (rho V R),
 // V = pi R^2 T; B55 (under 0.002) is not compared.
 struct NemohRow {
@@ -118,12 +119,13 @@ void expectNemoh(const HydroCoef& h, int w, double kr, double tol, bool heave = 
 // ---- coarse: default run ----
 
 // 3 x 5 x 32 (256 panels), no lid, kR = 0.5 and 1: surge, heave, pitch and
-// the coupling within 3% of NEMOH (measured at this mesh: at most 2.2%, B11
-// at kR = 1; the converged mesh below is within 0.8%)
+// the coupling within 4% of NEMOH: measured at this mesh at most 2.3% (B11),
+// the discretization error (2304 panels are within 0.8% at these kR, the
+// change 256 -> 2304 is 0.7% to 1.7%), plus a margin
 TEST(Panel, CylinderCoarse) {
   const std::vector<double> kr = {0.5, 1.0};
   HydroCoef h = solveCyl(3, 5, 32, kr, false);
-  for (int w = 0; w < h.nw(); w++) expectNemoh(h, w, kr[w], 0.03);
+  for (int w = 0; w < h.nw(); w++) expectNemoh(h, w, kr[w], 0.04);
 }
 
 // at the irregular frequency K R = j01 coth(j01 T/R) = 2.882: without the lid
@@ -146,9 +148,10 @@ TEST(Panel, CylinderIrregularFrequencyLid) {
 // NEMOH: surge and pitch to kR = 2.5, heave to kR = 2 (above, heave is in
 // the band of the irregular frequency at 2.882 and is printed only; kR = 3.5
 // lies between it and surge's at 4.0: printed only). Then the irregular
-// frequency at 9 x 15 x 96 without the lid (A33 spoiled, surge not) and at
-// 6 x 10 x 64 with the lid (640 lid panels): A33 within 3% of the
-// interpolated reference, B33 within 15% (the lid's error, see above)
+// frequency at 9 x 15 x 96 without the lid (A33 spoiled, surge not) and
+// every kR at 6 x 10 x 64 with the lid (640 lid panels): A33 within 3%, at
+// 2.882 of the interpolated reference, and B33 there within 15% (the lid's
+// error, see above)
 TEST(PanelConverged, CylinderNemoh) {
   std::vector<double> kr;
   for (const NemohRow& r : kNemoh) kr.push_back(r.kR);
@@ -178,19 +181,36 @@ TEST(PanelConverged, CylinderNemoh) {
     else if (kr[w] < 2.6)
       expectNemoh(hs[2], w, kr[w], 0.03, false);
   }
-  double sec;
   HydroCoef bare = solveCyl(9, 15, 96, {kKirr}, false);
-  HydroCoef lid = solveCyl(6, 10, 64, {kKirr}, true, &sec);
-  std::printf("[panel] K R %.3f: no lid A33 %.4f B33 %.4f A11 %.4f B11 %.4f; lid (%.1f s) A33 %.4f B33 %.4f A11 "
-              "%.4f B11 %.4f; reference %.4f %.4f %.4f %.4f\n",
-              kKirr, coefA(bare, 0, 2, 2), coefB(bare, 0, 2, 2), coefA(bare, 0, 0, 0), coefB(bare, 0, 0, 0), sec,
-              coefA(lid, 0, 2, 2), coefB(lid, 0, 2, 2), coefA(lid, 0, 0, 0), coefB(lid, 0, 0, 0), kIrrA33, kIrrB33,
-              kIrrA11, kIrrB11);
+  std::printf("[panel] K R %.3f no lid: A33 %.4f B33 %.4f A11 %.4f B11 %.4f; reference %.4f %.4f %.4f %.4f\n", kKirr,
+              coefA(bare, 0, 2, 2), coefB(bare, 0, 2, 2), coefA(bare, 0, 0, 0), coefB(bare, 0, 0, 0), kIrrA33,
+              kIrrB33, kIrrA11, kIrrB11);
   EXPECT_GT(relErr(coefA(bare, 0, 2, 2), kIrrA33), 0.10);
   EXPECT_LT(relErr(coefA(bare, 0, 0, 0), kIrrA11), 0.03);
   EXPECT_LT(relErr(coefB(bare, 0, 0, 0), kIrrB11), 0.03);
-  EXPECT_LT(relErr(coefA(lid, 0, 2, 2), kIrrA33), 0.03);
-  EXPECT_LT(relErr(coefB(lid, 0, 2, 2), kIrrB33), 0.15);
+  // with the lid, every tabulated kR and K R = 2.882: A33 within 3% (the
+  // lid's error in surge, larger, is printed: docs/physics.md section 13)
+  std::vector<double> kl = kr;
+  kl.insert(kl.end() - 1, kKirr);
+  double sec;
+  HydroCoef lid = solveCyl(6, 10, 64, kl, true, &sec);
+  std::printf("[panel] lid, 1024 + 640 panels, %.1f s: kR | A11 NEMOH | B11 NEMOH | A33 NEMOH | B33 NEMOH\n", sec);
+  for (size_t w = 0; w < kl.size(); w++) {
+    bool irr = std::fabs(kl[w] - kKirr) < 1e-9;
+    double ref[4];
+    if (irr) {
+      ref[0] = kIrrA11, ref[1] = kIrrB11, ref[2] = kIrrA33, ref[3] = kIrrB33;
+    } else {
+      const NemohRow& r = nemohAt(kl[w]);
+      ref[0] = r.A11, ref[1] = r.B11, ref[2] = r.A33, ref[3] = r.B33;
+    }
+    std::printf("[panel] lid %.3f | %.4f %.4f | %.4f %.4f | %.4f %.4f | %.4f %.4f\n", kl[w], coefA(lid, w, 0, 0), ref[0],
+                coefB(lid, w, 0, 0), ref[1], coefA(lid, w, 2, 2), ref[2], coefB(lid, w, 2, 2), ref[3]);
+    EXPECT_LT(relErr(coefA(lid, w, 2, 2), ref[2]), 0.03) << "lid kR " << kl[w];
+    if (irr) {
+      EXPECT_LT(relErr(coefB(lid, w, 2, 2), ref[3]), 0.15);
+    }
+  }
 }
 
 }  // namespace
