@@ -51,7 +51,6 @@ const NemohRow kNemoh[] = {
     {2.0, 0.1809, 0.3915, 0.9591, 0.0826, 0.1327, -0.0335},
     {2.5, 0.1092, 0.3254, 0.9881, 0.0430, 0.1328, -0.0261},
     {3.5, 0.0621, 0.2216, 1.0162, 0.0143, 0.1322, -0.0148}};
-const int kNNemoh = sizeof(kNemoh) / sizeof(kNemoh[0]);
 
 // the first irregular frequency of the surface (interior Dirichlet problem
 // J0(j01 r/R) sinh(j01 (z+T)/R), as in panel_test.cc):
