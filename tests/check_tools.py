@@ -407,8 +407,8 @@ def hydro(tools, models, tmp):
                                           for i in range(len(w) - 1))
         check(abs(k[0][3] - k0) <= 1e-4 * abs(k0), "heave K(0) %g = (2/pi) int B dw %g" % (k[0][3], k0))
         check(abs(k[1][0] - 0.1) < 1e-9, "K(t) at the --kt-step")
-        # Haskind, deep water (Newman 1977, "Marine Hydrodynamics", sec.
-        # 6.19; docs/physics.md section 15): B33 = omega k / (4 pi rho g^2)
+        # Haskind, deep water (Newman 1962, J. Ship Res. 6(3):10-17;
+        # docs/physics.md section 15): B33 = omega k / (4 pi rho g^2)
         # int_0^2pi |X3|^2 dbeta, X3 from the diffraction solves and B33
         # from the radiation solve, within 2%; the trapezoid rule over the
         # uniform headings (exact for a trigonometric polynomial) at the

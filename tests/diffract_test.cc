@@ -38,8 +38,9 @@ const double kHulme[][3] = {
 // the frequency-domain heave RAO |X3 / (C - w^2 (m + A33) - i w B33)| of
 // row r: A33, B33 from Hulme, C = rho g pi R^2, and |X3| from the Haskind
 // relation for an axisymmetric body in deep water, |X3|^2 = 2 rho g^2 B33 /
-// (w k) (Newman 1977, "Marine Hydrodynamics", sec. 6.19; docs/physics.md
-// section 15), so nothing here comes from the code under test
+// (w k) (Newman 1962, J. Ship Res. 6(3):10-17; Newman 1977, "Marine
+// Hydrodynamics", ch. 6; docs/physics.md section 15), so nothing here
+// comes from the code under test
 double expectedRAO(int r) {
   const double k = kHulme[r][0] / kR, w = std::sqrt(kG * k);
   const double A = kHulme[r][1] * kM, B = kHulme[r][2] * kM * w, C = kRho * kG * M_PI * kR * kR;

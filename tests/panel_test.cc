@@ -354,7 +354,8 @@ HydroCoef solveWarped(const std::vector<double>& om, int nh, int refine = 1, boo
 }
 
 // Haskind in its general form on the asymmetric hull (deep water; Newman
-// 1977, "Marine Hydrodynamics", sec. 6.19; docs/physics.md section 15):
+// 1962, J. Ship Res. 6(3):10-17; Newman 1977, "Marine Hydrodynamics",
+// ch. 6; docs/physics.md section 15):
 // B_ij = omega k / (4 pi rho g^2) Re int_0^2pi X_i X_j^* dbeta, every
 // dof pair, within 2% of sqrt(B_ii B_jj). X from the diffraction solves,
 // B from the radiation solves: independent; the heading integral of a
