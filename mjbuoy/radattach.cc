@@ -225,6 +225,12 @@ std::string attachRadiation(Buoy* B) {
     B->cfg.warn.push_back("radiation: the panel solver is for deep water; mjbuoy.sea.depth = " +
                           fmt(B->cfg.sea.depth) + " m is not used for the radiation coefficients");
   }
+  if (B->cfg.sea.kerner && rc.diffraction) {
+    B->cfg.warn.push_back("radiation: mjbuoy.sea.pressure = kerner is not linear theory's "
+                          "Froude-Krylov pressure, to which the diffraction force "
+                          "(mjbuoy.radiation.diffraction) adds; use pressure linear, or turn "
+                          "diffraction off");
+  }
   // the initial pose: qpos0 (mj_makeData resets to it)
   std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m), mj_deleteData);
   if (!d) return "mjbuoy: radiation: could not allocate an mjData for the initial pose";

@@ -218,3 +218,23 @@ TEST(Diffraction, WrenchTurnsWithTheBodyAndTheWave) {
 }
 
 }  // namespace
+
+namespace {
+
+// Kerner's pressure is not the linear Froude-Krylov pressure the
+// diffraction force completes: attach warns, naming both entries
+TEST(Diffraction, KernerPressureIsWarnedAbout) {
+  std::string xml = boxModel(0, 0);
+  xml.replace(xml.find("</custom>"), 9,
+              "<text name=\"mjbuoy.sea.pressure\" data=\"kerner\"/></custom>");
+  Scene s(xml);
+  ASSERT_TRUE(s.ok()) << s.err;
+  std::string w = mjb_warnings(s.b);
+  EXPECT_NE(w.find("mjbuoy.sea.pressure = kerner"), std::string::npos) << w;
+  EXPECT_NE(w.find("mjbuoy.radiation.diffraction"), std::string::npos) << w;
+  Scene l(boxModel(0, 0));
+  ASSERT_TRUE(l.ok()) << l.err;
+  EXPECT_EQ(std::string(mjb_warnings(l.b)).find("kerner"), std::string::npos);
+}
+
+}  // namespace
