@@ -415,7 +415,10 @@ def hydro(tools, models, tmp):
         # frequencies with kR <= 0.5 (R = sqrt(A_wp / pi)): omega 1 and 2.6
         # rad/s. This coarse box (4 x 4 squares a face) is 4.6% off at kR =
         # 1 with the lid, 2.7% without (docs/physics.md section 15)
-        pi, rho, g = 3.141592653589793, 1000.0, 9.81
+        pi = 3.141592653589793
+        head = [l for l in lines if l.startswith("# body")]
+        rho = float(head[0].split("rho ")[1].split()[0]) if head else 1000.0
+        g = float(head[0].split(" g ")[1].split()[0]) if head else 9.81
         rwp = (1.0 / pi) ** 0.5
         n = 0
         for r in ab:
