@@ -9,6 +9,7 @@
 #include <mujoco/mujoco.h>
 
 #include "config.h"
+#include "diffract.h"
 #include "mjbuoy.h"
 #include "radiation.h"
 #include "sensor.h"
@@ -54,6 +55,7 @@ struct Buoy {
   // the panel solver's coefficients set at attach (radattach.cc): body id
   // and its HydroCoef (about the body COM, body axes), for mjbuoy-hydro
   std::vector<std::pair<int, HydroCoef>> coef;
+  Diffraction diff;            // diffract.h: diffraction excitation of those bodies
 };
 
 // the static data of an attached model (glue.cc; tools only)
@@ -110,6 +112,10 @@ struct State {
   const void* buf = nullptr;
   long vcount = -1;
   RadState rad;                // radiation.h: memory history, qM stamp
+  // diffraction (diffract.h): per body of Buoy::diff its world wrench at
+  // the COM, and whether a non-finite one was named
+  std::vector<double> dwrench;
+  std::vector<char> dtold;
 };
 
 // slamming clock (cpu.cc): kSameStep for another call at the current step's

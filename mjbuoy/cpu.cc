@@ -53,6 +53,8 @@ void makeState(const Buoy& b, State* s) {
   s->told.assign(b.m->nbody, 0);
   s->badPart.assign(b.m->nbody * mjbNPART, 0);
   s->toldPart.assign(b.m->nbody * mjbNPART, 0);
+  s->dwrench.assign(6 * b.diff.db.size(), 0);
+  s->dtold.assign(b.diff.db.size(), 0);
   s->notices.clear();
   s->notices.reserve(4096);
   s->tri.area.assign(nt, 0);

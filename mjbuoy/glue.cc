@@ -92,6 +92,8 @@ void renew(State* s, const mjData* d) {
   std::fill(s->part.begin(), s->part.end(), 0.0);
   std::fill(s->bad.begin(), s->bad.end(), 0);
   std::fill(s->told.begin(), s->told.end(), 0);
+  std::fill(s->dwrench.begin(), s->dwrench.end(), 0.0);
+  std::fill(s->dtold.begin(), s->dtold.end(), 0);
   s->notices.clear();
   s->key = -1;
   s->hasPrev = false;
@@ -162,6 +164,17 @@ void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
   }
   // added mass into qM, Kirchhoff and memory forces (radstep.cc)
   mjb::radiationStep(b->b.rad, m, d, &s->rad, &s->notices);
+  // diffraction excitation of the same bodies, per wave component (diffract.cc)
+  const mjb::Diffraction& df = b->b.diff;
+  if (!df.db.empty()) {
+    mjb::diffractionStep(df, b->b.cfg.sea, m, d, s->dwrench.data(), s->dtold.data(),
+                         &s->notices);
+    for (size_t i = 0; i < df.db.size(); i++) {
+      const mjtNum* w = s->dwrench.data() + 6 * i;
+      int bd = df.db[i].body;
+      applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
+    }
+  }
   s->vcount = d->timer[mjTIMER_VELOCITY].number;
 }
 

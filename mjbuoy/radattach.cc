@@ -8,6 +8,7 @@
 
 #include "buoy.h"
 #include "coefxform.h"
+#include "diffract.h"
 #include "panelmesh.h"
 
 namespace mjb {
@@ -164,7 +165,11 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   c.rho = B->cfg.sea.rho;
   c.g = B->cfg.sea.g;
   std::string err;
-  if (!panelSolve(body, lid, omega, {}, &c, &err)) return who + ": panel solver: " + err;
+  // diffraction: a uniform heading set, interpolated at the components'
+  // headings relative to the body's yaw (docs/physics.md section 15)
+  std::vector<double> head;
+  for (int h = 0; rc.diffraction && h < kDiffHeadings; h++) head.push_back(2 * M_PI * h / kDiffHeadings);
+  if (!panelSolve(body, lid, omega, head, &c, &err)) return who + ": panel solver: " + err;
   // panel frame: world axes, origin (x_root, y_root, sea level); the root's
   // COM there is R ipos + (0, 0, pos z); body axes: R's columns
   const mjtNum* R = d->xmat + 9 * root;
@@ -173,12 +178,27 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   mju_rotVecMat(p, ip, R);
   p[2] += pos[2];
   for (int i = 0; i < 9; i++) Rd[i] = R[i];
+  // the exciting force about the COM, kept in world axes at qpos0 (any
+  // initial rotation; the step turns it with the body's yaw)
+  HydroCoef cx;
+  if (rc.diffraction) {
+    cx = c;
+    const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    err = coefTransform(&cx, p, I, p);
+    if (!err.empty()) return who + ": " + err;
+    cx.A.clear();
+    cx.B.clear();
+  }
+  for (auto* v : {&c.heading, &c.Xre, &c.Xim, &c.FKre, &c.FKim}) v->clear();
   err = coefTransform(&c, p, Rd, pn);
   if (!err.empty()) return who + ": " + err;
   checkCoef(B, who, &c);
   err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
-  if (err.empty()) B->coef.emplace_back(root, std::move(c));
-  return err;
+  if (!err.empty()) return err;
+  if (rc.diffraction) err = setDiffraction(root, Rd, cx, B->wcap, &B->diff);
+  if (!err.empty()) return err + " (body \"" + bodyName(m, root) + "\")";
+  B->coef.emplace_back(root, std::move(c));
+  return "";
 }
 
 std::string attachRadiation(Buoy* B) {
@@ -205,6 +225,12 @@ std::string attachRadiation(Buoy* B) {
     B->cfg.warn.push_back("radiation: the panel solver is for deep water; mjbuoy.sea.depth = " +
                           fmt(B->cfg.sea.depth) + " m is not used for the radiation coefficients");
   }
+  if (B->cfg.sea.kerner && rc.diffraction) {
+    B->cfg.warn.push_back("radiation: mjbuoy.sea.pressure = kerner is not linear theory's "
+                          "Froude-Krylov pressure, to which the diffraction force "
+                          "(mjbuoy.radiation.diffraction) adds; use pressure linear, or turn "
+                          "diffraction off");
+  }
   // the initial pose: qpos0 (mj_makeData resets to it)
   std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m), mj_deleteData);
   if (!d) return "mjbuoy: radiation: could not allocate an mjData for the initial pose";
@@ -213,6 +239,7 @@ std::string attachRadiation(Buoy* B) {
     std::string e = solveGroup(B, d.get(), r);
     if (!e.empty()) return e;
   }
+  diffSea(B->cfg.sea, &B->diff);
   return "";
 }
 

@@ -1,5 +1,5 @@
-// radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, omega, refine,
-// memory} and mjbuoy.radiation.body.<body> (schema: docs/mjcf.md)
+// radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, diffraction,
+// omega, refine, memory} and mjbuoy.radiation.body.<body> (schema: docs/mjcf.md)
 #include "radconfig.h"
 
 #include <algorithm>
@@ -41,6 +41,8 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
     r->on = v;
   } else if (!std::strcmp(key, "radiation.lid")) {
     r->lid = v;
+  } else if (!std::strcmp(key, "radiation.diffraction")) {
+    r->diffraction = v;
   } else if (!std::strncmp(key, "radiation.body.", 15)) {
     int b = mj_name2id(m, mjOBJ_BODY, key + 15);
     if (b < 0) {
@@ -50,8 +52,8 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
     (v ? r->onBody : r->offBody).push_back(b);
   } else {
     return "mjbuoy: unknown entry " + tag("text", name) +
-           "; radiation text entries are mjbuoy.radiation, mjbuoy.radiation.lid and "
-           "mjbuoy.radiation.body.<body> (see docs/mjcf.md)";
+           "; radiation text entries are mjbuoy.radiation, mjbuoy.radiation.lid, "
+           "mjbuoy.radiation.diffraction and mjbuoy.radiation.body.<body> (see docs/mjcf.md)";
   }
   return "";
 }

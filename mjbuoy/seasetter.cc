@@ -106,6 +106,7 @@ int setSea(Buoy* b, const mjbSea& sea, char* error, int error_sz) {
     at += sea.spectrum[i].n;
   }
   s.derive();
+  diffSea(s, &b->diff);  // each component's row in the diffraction tables
   s.current[0] = sea.current[0];
   s.current[1] = sea.current[1];
   Wind& w = b->wind;

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "coefxform.h"
+#include "hemisphere.h"
 #include "hull.h"
 #include "panelmesh.h"
 #include "radattach.h"
@@ -19,6 +20,7 @@
 namespace {
 
 using mjbt::Scene;
+using mjbt::hemisphereMeshXML;
 using mjbt::kG;
 using mjbt::kRho;
 
@@ -98,6 +100,8 @@ TEST(RadAttach, BadEntriesAreRefusedByName) {
   struct Case { const char* xml; const char* want; };
   const Case cs[] = {
       {"<text name=\"mjbuoy.radiation\" data=\"yes\"/>", "mjbuoy.radiation\"> data = \"yes\""},
+      {"<text name=\"mjbuoy.radiation.diffraction\" data=\"1\"/>",
+       "mjbuoy.radiation.diffraction\"> data = \"1\" is not a switch; give \"on\" or \"off\""},
       {"<text name=\"mjbuoy.radiation.body.nobody\" data=\"on\"/>", "body \"nobody\", which does not exist"},
       {"<text name=\"mjbuoy.radiation.colour\" data=\"on\"/>", "unknown entry <text name=\"mjbuoy.radiation.colour\">"},
       {"<numeric name=\"mjbuoy.radiation.omega\" data=\"1 0.5 10\"/>", "value 2 (highest omega) = 0.5"},
@@ -123,40 +127,6 @@ TEST(RadAttach, DryBodyIsNamed) {
 }
 
 // ---- heave free decay of a floating hemisphere (issue 16) ----
-
-// hemisphere of radius R [m] under z = 0 (nt polar rings, na around), a
-// vertical collar up to z = hc so the waterplane stays a disk while it
-// heaves, and a flat top: a closed MuJoCo mesh, counterclockwise outside
-std::string hemisphereMeshXML(double R, int nt, int na, double hc) {
-  std::vector<double> v = {0, 0, -R};
-  for (int i = 1; i <= nt + 1; i++) {
-    double th = M_PI / 2 * std::min(i, nt) / nt, r = R * std::sin(th);
-    double z = i <= nt ? -R * std::cos(th) : hc;
-    for (int a = 0; a < na; a++) {
-      double ph = 2 * M_PI * a / na;
-      v.insert(v.end(), {r * std::cos(ph), r * std::sin(ph), std::fabs(z) < 1e-12 ? 0.0 : z});
-    }
-  }
-  v.insert(v.end(), {0, 0, hc});
-  int top = v.size() / 3 - 1;
-  auto ring = [&](int i, int a) { return 1 + (i - 1) * na + (a % na); };
-  std::vector<int> f;
-  for (int a = 0; a < na; a++) f.insert(f.end(), {0, ring(1, a + 1), ring(1, a)});
-  for (int i = 1; i <= nt; i++)
-    for (int a = 0; a < na; a++) {
-      int l0 = ring(i, a), l1 = ring(i, a + 1), u0 = ring(i + 1, a), u1 = ring(i + 1, a + 1);
-      f.insert(f.end(), {l0, l1, u1, l0, u1, u0});
-    }
-  for (int a = 0; a < na; a++) f.insert(f.end(), {top, ring(nt + 1, a), ring(nt + 1, a + 1)});
-  std::ostringstream s;
-  s.precision(17);
-  s << "<mesh name=\"hemi\" vertex=\"";
-  for (double x : v) s << x << " ";
-  s << "\" face=\"";
-  for (int i : f) s << i << " ";
-  s << "\"/>";
-  return s.str();
-}
 
 // floating hemisphere of radius 1 m, mass rho 2/3 pi R^3; mjbuoy's drag,
 // viscous and slamming terms off so that only hydrostatics (and radiation)

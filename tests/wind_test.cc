@@ -272,6 +272,57 @@ void changeSeaMatchesFreshAttach(const char* backend) {
 TEST(SetSea, TakesEffectAtOnceWithoutAllocatingCpu) { changeSeaMatchesFreshAttach("cpu"); }
 TEST(SetSea, TakesEffectAtOnceWithoutAllocatingGl) { changeSeaMatchesFreshAttach("gl"); }
 
+// a box with radiation and diffraction (docs/physics.md section 15): the
+// component rows of the diffraction table are rewritten by mjb_setSea
+// without allocating, steps allocate nothing, and the result is the fresh
+// attach's with the same waves (steepness 0: Airy) in the model
+std::string radBoxXml(const std::string& waves) {
+  return R"(<mujoco><option timestep="0.01"/><custom>
+    <text name="mjbuoy.hulls" data="box"/>
+    <text name="mjbuoy.radiation" data="on"/>
+    <numeric name="mjbuoy.radiation.omega" data="1 9 4"/>
+    <numeric name="mjbuoy.sea.capacity" data="8"/>)" + waves + R"(</custom>
+    <worldbody><body name="b"><freejoint/>
+      <geom name="box" type="box" size="1 0.5 0.5" mass="1000"/>
+    </body></worldbody></mujoco>)";
+}
+
+TEST(SetSea, DiffractionFollowsWithoutAllocating) {
+  const double w[3][5] = {{0.1, 6, 30, 10, 0}, {0.05, 3, -60, 80, 0}, {0.08, 12, 170, 0, 0}};
+  std::string ws;
+  for (int i = 0; i < 3; i++) {
+    char b[200];
+    std::snprintf(b, sizeof b, "<numeric name=\"mjbuoy.wave.w%d\" data=\"%g %g %g %g %g\"/>", i,
+                  w[i][0], w[i][1], w[i][2], w[i][3], w[i][4]);
+    ws += b;
+  }
+  Scene a(radBoxXml("<numeric name=\"mjbuoy.airy.x\" data=\"0.1 20 0 0\"/>")), b(radBoxXml(ws));
+  ASSERT_TRUE(a.ok() && b.ok()) << a.err << b.err;
+  for (int i = 0; i < 20; i++) mj_step(a.m, a.d);
+  mjbSea sea = {};
+  sea.wave = &w[0][0];
+  sea.nwave = 3;
+  char e[512] = "";
+  long n0 = gnew;
+  ASSERT_EQ(mjb_setSea(a.b, &sea, e, sizeof e), 1) << e;
+  EXPECT_EQ(gnew - n0, 0);
+  n0 = gnew;
+  for (int i = 0; i < 20; i++) mj_step(a.m, a.d);
+  EXPECT_EQ(gnew - n0, 0);
+  // the same state (memory restarted in both) in both models
+  mj_resetData(a.m, a.d);
+  for (Scene* c : {&a, &b}) {
+    c->d->time = 1.7;
+    c->d->qpos[0] = 0.3, c->d->qpos[2] = -0.05;
+    c->d->qvel[1] = 0.1;
+    mj_forward(c->m, c->d);
+  }
+  for (int j = 0; j < a.m->nv; j++) {
+    EXPECT_NEAR(a.d->qfrc_passive[j], b.d->qfrc_passive[j],
+                1e-7 * (1 + std::fabs(b.d->qfrc_passive[j]))) << j;
+  }
+}
+
 TEST(SetSea, RejectsBadInputAndKeepsTheSea) {
   Scene s(seaXml(true));
   ASSERT_TRUE(s.ok()) << s.err;

@@ -1,6 +1,7 @@
 // mjbuoy-hydro: print the radiation coefficients mjbuoy computes at attach
 // for each hull body with radiation on (docs/mjcf.md section 11):
-// A_inf, A(omega), B(omega) and the retardation function K(t)
+// A_inf, A(omega), B(omega), the retardation function K(t) and the
+// exciting force X(omega, heading) with its Froude-Krylov part
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -53,10 +54,41 @@ static bool printBody(FILE* o, const mjModel* m, int body, const mjb::HydroCoef&
   return !std::ferror(o);
 }
 
+// the exciting force table of the body's diffraction (when on); false on a
+// write error
+static bool printX(FILE* o, const mjb::DiffBody& b) {
+  const mjb::HydroCoef& c = b.c;
+  std::fprintf(o, "# exciting force X per unit wave amplitude and its Froude-Krylov part FK, "
+               "about the COM, in the world axes of the initial pose (qpos0); heading: "
+               "direction of travel from +x [deg]; phase [deg]: the force is Re(a X "
+               "e^{-i omega t}) for a wave of complex amplitude a at the COM\n# omega[rad/s] "
+               "heading[deg]");
+  for (const char* w : {"X", "FK"}) {
+    for (int i = 0; i < 6; i++) std::fprintf(o, " |%s_%s|", w, kDof[i]);
+    for (int i = 0; i < 6; i++) std::fprintf(o, " arg%s_%s", w, kDof[i]);
+  }
+  std::fprintf(o, "   ([N/m, N m/m], deg)\n");
+  for (int w = 0; w < c.nw(); w++)
+    for (int h = 0; h < c.nh(); h++) {
+      std::fprintf(o, "%.6g %.6g", c.omega[w], c.heading[h] * 180 / M_PI);
+      size_t k = 6 * ((size_t)w * c.nh() + h);
+      for (const auto* p : {&c.Xre, &c.FKre}) {
+        const double* re = p->data() + k;
+        const double* im = (p == &c.Xre ? c.Xim : c.FKim).data() + k;
+        for (int i = 0; i < 6; i++) std::fprintf(o, " %.6g", std::hypot(re[i], im[i]));
+        for (int i = 0; i < 6; i++) std::fprintf(o, " %.6g", std::atan2(im[i], re[i]) * 180 / M_PI);
+      }
+      std::fprintf(o, "\n");
+    }
+  std::fprintf(o, "\n");
+  return !std::ferror(o);
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"Compute and print the radiation coefficients of each hull body with "
                "radiation on (mjbuoy.radiation, docs/mjcf.md section 11): A_inf, A(omega), "
-               "B(omega) about the body COM in body axes, and K(t)."};
+               "B(omega) about the body COM in body axes, K(t), and the exciting force X(omega, heading) "
+               "with its Froude-Krylov part (with mjbuoy.radiation.diffraction on)."};
   app.set_version_flag("--version", std::string("mjbuoy-hydro ") + MJBUOY_VERSION_STRING);
   std::string model, file;
   double dt = 0.05, tk = 0;
@@ -101,6 +133,8 @@ int main(int argc, char** argv) {
     const mjb::HydroCoef& c = B->coef[i].second;
     double len = tk > 0 ? tk : mjb::memoryLength(c);
     if (!printBody(o, m, B->coef[i].first, c, dt, len)) rc = 1;
+    for (const mjb::DiffBody& db : B->diff.db)
+      if (!rc && db.body == B->coef[i].first && !printX(o, db)) rc = 1;
   }
   if (!rc && (std::fflush(o) != 0 || std::ferror(o))) rc = 1;
   if (!rc && !file.empty() && !of.commit(&e)) rc = 1;
