@@ -9,12 +9,14 @@
 #include <ctime>
 #include <filesystem>
 #include <system_error>
+#include <unistd.h>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include <mujoco/mujoco.h>
 
+#include "benchcmp.h"
 #include "cliopt.h"
 #include "guard.h"
 #include "mjbuoy.h"  // and mjbuoy_version.h
@@ -215,6 +217,149 @@ static double paper(int boats, int tris) {
   return NAN;
 }
 
+// one cell of --baseline: this bench and the baseline's, each as a child
+// process running the cell once (--reps 1), alternating A/B reps times
+struct CmpCell {
+  std::string backend, sea, pressure;
+  int boats, tris;
+  double hydro = 0, bhydro = 0, ratio = 0, step = 0, bstep = 0, sratio = 0;
+  double newton = NAN, bnewton = NAN;
+};
+
+static bool compareCell(const std::string& self, const std::string& base,
+                        const std::vector<std::string>& common, const std::string& dir,
+                        int reps, CmpCell* c) {
+  std::vector<double> ha, hb, sa, sb, rh, rs;
+  mjbtool::CmpRun a, b;
+  for (int r = 0; r < reps; r++) {
+    std::string e;
+    if (!mjbtool::benchChild(self, common, dir, &a, &e) ||
+        !mjbtool::benchChild(base, common, dir, &b, &e)) {
+      std::fprintf(stderr, "mjbuoy-bench: --baseline: %s\n", e.c_str());
+      return false;
+    }
+    ha.push_back(a.hydro);
+    hb.push_back(b.hydro);
+    sa.push_back(a.step);
+    sb.push_back(b.step);
+    rh.push_back(b.hydro / a.hydro);
+    rs.push_back(b.step / a.step);
+  }
+  c->hydro = median(ha);
+  c->bhydro = median(hb);
+  c->step = median(sa);
+  c->bstep = median(sb);
+  c->ratio = median(rh);  // of the pairs: each pair ran back to back
+  c->sratio = median(rs);
+  c->newton = a.newton;
+  c->bnewton = b.newton;
+  return true;
+}
+
+static std::string num(double v, const char* fmt) {
+  if (!std::isfinite(v)) return "";
+  char s[64];
+  std::snprintf(s, sizeof(s), fmt, v);
+  return s;
+}
+
+// --baseline: every cell of the grid run by both builds, side by side
+static int compareGrid(const std::string& base, const std::string& meshes,
+                       const std::vector<int>& tris, const std::vector<int>& boats,
+                       const std::vector<std::string>& backends,
+                       const std::vector<std::pair<std::string, std::string>>& kinds,
+                       int steps, int reps, std::vector<CmpCell>* out) {
+  char exe[4096];
+  ssize_t n = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
+  if (n <= 0) {
+    std::fprintf(stderr, "mjbuoy-bench: --baseline: cannot find this executable\n");
+    return 1;
+  }
+  exe[n] = 0;
+  char tmpl[] = "/tmp/mjbuoy-bench-XXXXXX";
+  const char* dir = mkdtemp(tmpl);
+  if (!dir) {
+    std::fprintf(stderr, "mjbuoy-bench: --baseline: cannot create a directory in /tmp\n");
+    return 1;
+  }
+  std::printf("| backend | sea | pressure | boats | tris/boat | hydro ms | baseline hydro ms | "
+              "baseline/this hydro | step ms | baseline step ms | baseline/this step | "
+              "newton/solve | baseline newton/solve |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  int rc = 0;
+  for (int t : tris) {
+    for (int nb : boats) {
+      for (const std::string& be : backends) {
+        for (const auto& kind : kinds) {
+          std::vector<std::string> common = {
+              "--meshes", meshes, "--boats", std::to_string(nb), "--tris", std::to_string(t),
+              "--backend", be, "--sea", kind.first, "--pressure", kind.second,
+              "--steps", std::to_string(steps), "--reps", "1"};
+          if (gthreads >= 0) {
+            common.push_back("--threads");
+            common.push_back(std::to_string(gthreads));
+          }
+          if (gradiation >= 0) {
+            common.push_back("--radiation");
+            common.push_back(num(gradiation, "%.17g"));
+          }
+          CmpCell c{be, kind.first, kind.second, nb, t};
+          if (!compareCell(exe, base, common, dir, reps, &c)) {
+            rc = 1;
+            break;
+          }
+          out->push_back(c);
+          std::printf("| %s | %s | %s | %d | %d | %.3f | %.3f | %.2f | %.3f | %.3f | %.2f | %s | "
+                      "%s |\n", be.c_str(), c.sea.c_str(), c.pressure.c_str(), nb, t, c.hydro,
+                      c.bhydro, c.ratio, c.step, c.bstep, c.sratio,
+                      num(c.newton, "%.3f").c_str(), num(c.bnewton, "%.3f").c_str());
+          std::fflush(stdout);
+        }
+        if (rc) break;
+      }
+      if (rc) break;
+    }
+    if (rc) break;
+  }
+  std::remove((std::string(dir) + "/cell.json").c_str());
+  std::remove((std::string(dir) + "/stderr.txt").c_str());
+  rmdir(dir);
+  return rc;
+}
+
+// --baseline's --json (if given), then stdout's state: the exit status
+static int writeCompare(const std::string& json, const std::vector<CmpCell>& cc) {
+  if (!json.empty()) {
+    mjbtool::OutFile of;
+    std::string e;
+    if (!of.open(json, "--json", &e)) {
+      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
+      return 1;
+    }
+    FILE* f = of.file();
+    std::fprintf(f, "[\n");
+    for (size_t i = 0; i < cc.size(); i++) {
+      const CmpCell& c = cc[i];
+      std::fprintf(f, "  {\"backend\": \"%s\", \"sea\": \"%s\", \"pressure\": \"%s\", "
+                   "\"boats\": %d, \"tris\": %d, \"hydro_ms\": %.6f, \"baseline_hydro_ms\": "
+                   "%.6f, \"hydro_ratio\": %.6f, \"step_ms\": %.6f, \"baseline_step_ms\": %.6f, "
+                   "\"step_ratio\": %.6f}%s\n", c.backend.c_str(), c.sea.c_str(),
+                   c.pressure.c_str(), c.boats, c.tris, c.hydro, c.bhydro, c.ratio, c.step,
+                   c.bstep, c.sratio, i + 1 < cc.size() ? "," : "");
+    }
+    std::fprintf(f, "]\n");
+    if (!of.commit(&e)) {
+      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
+      return 1;
+    }
+  }
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    std::fprintf(stderr, "mjbuoy-bench: cannot write the table to stdout\n");
+    return 1;
+  }
+  return 0;
+}
+
 // the default --meshes: the installed models beside this executable
 // (PREFIX/bin/../share/mjbuoy/models/meshes, found through /proc/self/exe so
 // the installed bench works without the source tree), else the source
@@ -261,6 +406,10 @@ int main(int argc, char** argv) {
   app.add_option("--radiation", gradiation, "give every boat synthetic radiation coefficients "
                  "with this memory length [s] (0: added mass and its Kirchhoff terms only)")
       ->check(Finite(0, 60));
+  std::string baseline;
+  app.add_option("--baseline", baseline, "another build's mjbuoy-bench binary: run every cell "
+                 "with both, one repetition each in turn (A/B/A/B as child processes), and "
+                 "print each cell's times and the ratio baseline/this");
   app.add_option("--meshes", meshes, "directory of wigley_N.obj (default: the installed "
                  "share/mjbuoy/models/meshes beside this executable, else the source tree's)");
   CLI11_PARSE(app, argc, argv);
@@ -282,6 +431,21 @@ int main(int argc, char** argv) {
   }
 
   std::fprintf(stderr, "mjbuoy-bench: Wigley meshes from %s\n", meshes.c_str());
+  // the seas and pressure models side by side in every cell, one after the other
+  std::vector<std::pair<std::string, std::string>> kinds;
+  for (const std::string& sea : seas) {
+    for (const std::string& pm : pressures) kinds.emplace_back(sea, pm);
+  }
+  if (!baseline.empty()) {
+    std::string e;
+    if (!mjbtool::checkExecutable(baseline, "--baseline", &e)) {
+      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
+      return 1;
+    }
+    std::vector<CmpCell> cc;
+    if (compareGrid(baseline, meshes, tris, boats, backends, kinds, steps, reps, &cc)) return 1;
+    return writeCompare(json, cc);
+  }
   std::vector<Cell> cells;
   int total = boats.size() * tris.size() * backends.size() * seas.size() * pressures.size();
   int done = 0;
@@ -289,11 +453,6 @@ int main(int argc, char** argv) {
   std::printf("| backend | sea | pressure | boats | tris/boat | triangles | hydro ms/step | step ms "
               "| bare step ms | step/bare | Mtri/s | paper GPU ms | hydro/paper |\n"
               "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  // the seas and pressure models side by side in every cell, one after the other
-  std::vector<std::pair<std::string, std::string>> kinds;
-  for (const std::string& sea : seas) {
-    for (const std::string& pm : pressures) kinds.emplace_back(sea, pm);
-  }
   for (int t : tris) {
     for (int n : boats) {
       for (const std::string& be : backends) {
