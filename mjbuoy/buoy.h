@@ -87,6 +87,9 @@ struct State {
   // scratchSize), per doubles each
   std::vector<double> scr;
   size_t per = 0, mi = 0;
+  // per thread: surface solves done and Newton steps they took (cpu
+  // backend; mjbuoy-bench reports steps per solve)
+  std::vector<long> nsolve, niter;
   double crest = 0;            // highest possible surface height [m]
   std::vector<char> bad;       // per body: state not finite in the last call
   std::vector<char> told;      // per body: already named in notices
@@ -123,6 +126,10 @@ int stepClock(const mjModel* m, const mjData* d, State* s);
 
 // allocate s for b
 void makeState(const Buoy& b, State* s);
+
+// the cpu backend's surface solves for d so far and the Newton steps they
+// took (glue.cc; tools only): false if d has no state
+bool newtonStats(const mjbBuoy* b, const mjData* d, long* solves, long* steps);
 
 // cpu backend: fill s->wrench and s->part from d's current state
 void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s);

@@ -73,6 +73,8 @@ void makeState(const Buoy& b, State* s) {
   s->mi = maxItems(b);
   s->per = scratchSize(b);
   s->scr.assign(s->per * std::max(1, b.nthreads), 0);
+  s->nsolve.assign(std::max(1, b.nthreads), 0);
+  s->niter.assign(std::max(1, b.nthreads), 0);
   s->key = -1;
   s->hasPrev = false;
 }
@@ -261,7 +263,8 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     A0[q] = X[q] + s->off[2 * i];
     A1[q] = Y[q] + s->off[2 * i + 1];
   }
-  sea.solveMany(wn, hl.nv, X, Y, A0, A1, Z, hs.SC, tmp);
+  s->niter[slot] += sea.solveMany(wn, hl.nv, X, Y, A0, A1, Z, hs.SC, tmp);
+  s->nsolve[slot] += hl.nv + 1;  // and the COM's below
   for (int q = 0; q < hl.nv; q++) {
     const int i = hl.v0 + q;
     s->lab[2 * i] = A0[q];
@@ -285,7 +288,9 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   {
     const double* o = s->hoff.data() + 2 * ih;
     double a[2] = {com[0] + o[0], com[1] + o[1]};
-    double hz = sea.solve(wn, com[0], com[1], a, sc, tmp);
+    int nit = 0;
+    double hz = sea.solve(wn, com[0], com[1], a, sc, tmp, &nit);
+    s->niter[slot] += nit;
     if (first) {
       s->hoffNew[2 * ih] = a[0] - com[0];
       s->hoffNew[2 * ih + 1] = a[1] - com[1];

@@ -21,6 +21,7 @@
 #include "guard.h"
 #include "mjbuoy.h"  // and mjbuoy_version.h
 #include "outfile.h"
+#include "buoy.h"  // internal: mjb::newtonStats
 #include "radiation.h"  // internal: mjb::setHydroCoef until MJCF switches exist
 
 using Clock = std::chrono::steady_clock;
@@ -126,6 +127,7 @@ struct Cell {
   std::string backend, sea, pressure;
   double hydro, step, bare;  // ms per step (median of repetitions)
   double cpu;                // CPU ms (all threads) in mjbuoy per step (median)
+  double newton;             // cpu backend: Newton steps per surface solve (NaN: none)
   std::vector<std::pair<std::string, double>> stages;
 };
 
@@ -170,6 +172,8 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
   // convolution's steady cost
   int warm = 5 + (gradiation > 0 ? int(std::ceil(gradiation / m->opt.timestep)) : 0);
   for (int i = 0; i < warm; i++) mj_step(m, d);
+  long ns0 = 0, ni0 = 0, ns1 = 0, ni1 = 0;
+  mjb::newtonStats(b, d, &ns0, &ni0);
   for (int r = 0; r < reps; r++) {
     ghydro = gcpu = 0;
     auto t0 = Clock::now();
@@ -181,6 +185,7 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
     if (mjbtool::diverged(d, &why)) break;
   }
   mjcb_passive = ginner;
+  mjb::newtonStats(b, d, &ns1, &ni1);
   if (!why.empty()) {
     std::fprintf(stderr, "mjbuoy-bench: %d boats x %d triangles on %s diverged: %s\n", boats,
                  tris, be.c_str(), why.c_str());
@@ -194,7 +199,8 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
   double ms[8];
   int ns = mjb_stageTimes(b, sn, ms, 8);
   *c = Cell{boats, tris, mjb_info(b).ntri, mjb_info(b).backend, gsea, gpress, median(hydro),
-            median(full), median(bare), median(cpu), {}};
+            median(full), median(bare), median(cpu),
+            ns1 > ns0 ? double(ni1 - ni0) / (ns1 - ns0) : NAN, {}};
   for (int i = 0; i < ns; i++) c->stages.emplace_back(sn[i], ms[i]);
   mjb_unbindData(b, d);
   mj_deleteData(d);
@@ -493,9 +499,11 @@ int main(int argc, char** argv) {
       const Cell& c = cells[i];
       std::fprintf(f, "  {\"backend\": \"%s\", \"sea\": \"%s\", \"pressure\": \"%s\", "
                    "\"boats\": %d, \"tris\": %d, \"triangles\": %d, "
-                   "\"hydro_ms\": %.6f, \"hydro_cpu_ms\": %.6f, \"step_ms\": %.6f, \"bare_ms\": %.6f, \"stages\": {",
+                   "\"hydro_ms\": %.6f, \"hydro_cpu_ms\": %.6f, \"step_ms\": %.6f, \"bare_ms\": %.6f, ",
                    c.backend.c_str(), c.sea.c_str(), c.pressure.c_str(), c.boats, c.tris, c.ntri,
                    c.hydro, c.cpu, c.step, c.bare);
+      if (std::isfinite(c.newton)) std::fprintf(f, "\"newton_per_solve\": %.6f, ", c.newton);
+      std::fprintf(f, "\"stages\": {");
       for (size_t j = 0; j < c.stages.size(); j++) {
         std::fprintf(f, "%s\"%s\": %.6f", j ? ", " : "", c.stages[j].first.c_str(),
                      c.stages[j].second);
