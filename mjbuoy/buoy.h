@@ -81,6 +81,14 @@ struct State {
   // the same bits; offNew is written by the first call of this step
   std::vector<double> off, offNew;
   std::vector<double> hoff, hoffNew;  // the same for each hull's COM [m]
+  // the two steps before off's (offOld, then offOld2; hoffOld, hoffOld2),
+  // so the guess extrapolates the last three steps' offsets in time
+  // (cpu.cc guessWeights); per hull whether offNew, off, offOld, offOld2
+  // hold a solve (1) or are cold (0), and the times off, offOld, offOld2
+  // were taken [s]
+  std::vector<double> offOld, hoffOld, offOld2, hoffOld2;
+  std::vector<char> hv, hvNew, hvOld, hvOld2;
+  double tgOff = 0, tgOld = 0, tgOld2 = 0;
   std::vector<WaveNow> wn;     // wave constants of this call
   WaveTab tab;                 // the same by wave number, for waveint.h
   // per thread: Newton and structure-of-arrays scratch (cpu.cc
