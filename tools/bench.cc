@@ -229,13 +229,14 @@ struct CmpCell {
   std::string backend, sea, pressure;
   int boats, tris;
   double hydro = 0, bhydro = 0, ratio = 0, step = 0, bstep = 0, sratio = 0;
+  double cpu = 0, bcpu = 0, cratio = 0;  // CPU time of all threads in mjbuoy
   double newton = NAN, bnewton = NAN;
 };
 
 static bool compareCell(const std::string& self, const std::string& base,
                         const std::vector<std::string>& common, const std::string& dir,
                         int reps, CmpCell* c) {
-  std::vector<double> ha, hb, sa, sb, rh, rs;
+  std::vector<double> ha, hb, sa, sb, rh, rs, ca, cb, rc;
   mjbtool::CmpRun a, b;
   for (int r = 0; r < reps; r++) {
     std::string e;
@@ -250,7 +251,13 @@ static bool compareCell(const std::string& self, const std::string& base,
     sb.push_back(b.step);
     rh.push_back(b.hydro / a.hydro);
     rs.push_back(b.step / a.step);
+    ca.push_back(a.cpu);
+    cb.push_back(b.cpu);
+    rc.push_back(b.cpu / a.cpu);
   }
+  c->cpu = median(ca);
+  c->bcpu = median(cb);
+  c->cratio = median(rc);
   c->hydro = median(ha);
   c->bhydro = median(hb);
   c->step = median(sa);
@@ -289,9 +296,10 @@ static int compareGrid(const std::string& base, const std::string& meshes,
     return 1;
   }
   std::printf("| backend | sea | pressure | boats | tris/boat | hydro ms | baseline hydro ms | "
-              "baseline/this hydro | step ms | baseline step ms | baseline/this step | "
-              "newton/solve | baseline newton/solve |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "baseline/this hydro | hydro CPU ms | baseline hydro CPU ms | baseline/this CPU | "
+              "step ms | baseline step ms | baseline/this step | newton/solve | "
+              "baseline newton/solve |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int rc = 0;
   for (int t : tris) {
     for (int nb : boats) {
@@ -315,9 +323,10 @@ static int compareGrid(const std::string& base, const std::string& meshes,
             break;
           }
           out->push_back(c);
-          std::printf("| %s | %s | %s | %d | %d | %.3f | %.3f | %.2f | %.3f | %.3f | %.2f | %s | "
-                      "%s |\n", be.c_str(), c.sea.c_str(), c.pressure.c_str(), nb, t, c.hydro,
-                      c.bhydro, c.ratio, c.step, c.bstep, c.sratio,
+          std::printf("| %s | %s | %s | %d | %d | %.3f | %.3f | %.2f | %.3f | %.3f | %.2f | "
+                      "%.3f | %.3f | %.2f | %s | %s |\n", be.c_str(), c.sea.c_str(),
+                      c.pressure.c_str(), nb, t, c.hydro, c.bhydro, c.ratio, c.cpu, c.bcpu,
+                      c.cratio, c.step, c.bstep, c.sratio,
                       num(c.newton, "%.3f").c_str(), num(c.bnewton, "%.3f").c_str());
           std::fflush(stdout);
         }
@@ -349,9 +358,10 @@ static int writeCompare(const std::string& json, const std::vector<CmpCell>& cc)
       std::fprintf(f, "  {\"backend\": \"%s\", \"sea\": \"%s\", \"pressure\": \"%s\", "
                    "\"boats\": %d, \"tris\": %d, \"hydro_ms\": %.6f, \"baseline_hydro_ms\": "
                    "%.6f, \"hydro_ratio\": %.6f, \"step_ms\": %.6f, \"baseline_step_ms\": %.6f, "
-                   "\"step_ratio\": %.6f}%s\n", c.backend.c_str(), c.sea.c_str(),
+                   "\"step_ratio\": %.6f, \"hydro_cpu_ms\": %.6f, \"baseline_hydro_cpu_ms\": "
+                   "%.6f, \"cpu_ratio\": %.6f}%s\n", c.backend.c_str(), c.sea.c_str(),
                    c.pressure.c_str(), c.boats, c.tris, c.hydro, c.bhydro, c.ratio, c.step,
-                   c.bstep, c.sratio, i + 1 < cc.size() ? "," : "");
+                   c.bstep, c.sratio, c.cpu, c.bcpu, c.cratio, i + 1 < cc.size() ? "," : "");
     }
     std::fprintf(f, "]\n");
     if (!of.commit(&e)) {

@@ -64,6 +64,7 @@ bool benchChild(const std::string& exe, const std::vector<std::string>& args,
   std::string out = slurp(js);
   r->hydro = field(out, "hydro_ms");
   r->step = field(out, "step_ms");
+  r->cpu = field(out, "hydro_cpu_ms");
   r->newton = field(out, "newton_per_solve");
   if (!WIFEXITED(st) || WEXITSTATUS(st) != 0 || !std::isfinite(r->hydro)) {
     std::string cmd;

@@ -10,10 +10,11 @@
 
 namespace mjbtool {
 
-// one child run's numbers (its --json): ms per step; newton iterations per
+// one child run's numbers (its --json): ms per step (hydro wall and CPU
+// time, full step); newton iterations per
 // surface solve (cpu backend), NaN when the build does not report them
 struct CmpRun {
-  double hydro = 0, step = 0, newton = 0;
+  double hydro = 0, cpu = 0, step = 0, newton = 0;
 };
 
 // run exe once with args plus --json dir/NAME, its stdout discarded and its
