@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <sstream>
 #include <string>
 #include <ctime>
@@ -289,10 +291,13 @@ static int compareGrid(const std::string& base, const std::string& meshes,
     return 1;
   }
   exe[n] = 0;
-  char tmpl[] = "/tmp/mjbuoy-bench-XXXXXX";
-  const char* dir = mkdtemp(tmpl);
+  // the children's JSON and stderr: a private directory in $TMPDIR (or /tmp)
+  const char* td = std::getenv("TMPDIR");
+  std::string tmpl = std::string(td && *td ? td : "/tmp") + "/mjbuoy-bench-XXXXXX";
+  const char* dir = mkdtemp(&tmpl[0]);
   if (!dir) {
-    std::fprintf(stderr, "mjbuoy-bench: --baseline: cannot create a directory in /tmp\n");
+    std::fprintf(stderr, "mjbuoy-bench: --baseline: cannot create a directory like %s: %s\n",
+                 tmpl.c_str(), std::strerror(errno));
     return 1;
   }
   std::printf("| backend | sea | pressure | boats | tris/boat | hydro ms | baseline hydro ms | "
