@@ -23,6 +23,7 @@
 #include "guard.h"
 #include "mjbuoy.h"  // and mjbuoy_version.h
 #include "outfile.h"
+#include "roofline.h"
 #include "buoy.h"  // internal: mjb::newtonStats
 #include "radiation.h"  // internal: mjb::setHydroCoef until MJCF switches exist
 
@@ -133,6 +134,21 @@ struct Cell {
   std::vector<std::pair<std::string, double>> stages;
 };
 
+// the reference kernel's CPU ns per triangle on a sea (roofline.h), once
+// per sea: components of flat 0, swell 1, jonswap 64
+static double roofline(const std::string& sea) {
+  static double ns[3] = {-1, -1, -1};
+  const int i = sea == "flat" ? 0 : sea == "swell" ? 1 : 2;
+  if (ns[i] < 0) ns[i] = mjbtool::rooflineNs(i == 0 ? 0 : i == 1 ? 1 : 64);
+  return ns[i];
+}
+
+// a cell's fraction of the roofline: the kernel's time for its triangles
+// over mjbuoy's CPU time (all threads) per step
+static double fraction(const std::string& sea, int ntri, double cpuMs) {
+  return roofline(sea) * ntri / (cpuMs * 1e6);
+}
+
 static double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
@@ -232,6 +248,7 @@ struct CmpCell {
   int boats, tris;
   double hydro = 0, bhydro = 0, ratio = 0, step = 0, bstep = 0, sratio = 0;
   double cpu = 0, bcpu = 0, cratio = 0;  // CPU time of all threads in mjbuoy
+  int ntri = 0;
   double newton = NAN, bnewton = NAN;
 };
 
@@ -266,6 +283,7 @@ static bool compareCell(const std::string& self, const std::string& base,
   c->bstep = median(sb);
   c->ratio = median(rh);  // of the pairs: each pair ran back to back
   c->sratio = median(rs);
+  c->ntri = a.ntri;
   c->newton = a.newton;
   c->bnewton = b.newton;
   return true;
@@ -303,8 +321,8 @@ static int compareGrid(const std::string& base, const std::string& meshes,
   std::printf("| backend | sea | pressure | boats | tris/boat | hydro ms | baseline hydro ms | "
               "baseline/this hydro | hydro CPU ms | baseline hydro CPU ms | baseline/this CPU | "
               "step ms | baseline step ms | baseline/this step | newton/solve | "
-              "baseline newton/solve |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "baseline newton/solve | roofline |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int rc = 0;
   for (int t : tris) {
     for (int nb : boats) {
@@ -329,10 +347,11 @@ static int compareGrid(const std::string& base, const std::string& meshes,
           }
           out->push_back(c);
           std::printf("| %s | %s | %s | %d | %d | %.3f | %.3f | %.2f | %.3f | %.3f | %.2f | "
-                      "%.3f | %.3f | %.2f | %s | %s |\n", be.c_str(), c.sea.c_str(),
+                      "%.3f | %.3f | %.2f | %s | %s | %.3f |\n", be.c_str(), c.sea.c_str(),
                       c.pressure.c_str(), nb, t, c.hydro, c.bhydro, c.ratio, c.cpu, c.bcpu,
                       c.cratio, c.step, c.bstep, c.sratio,
-                      num(c.newton, "%.3f").c_str(), num(c.bnewton, "%.3f").c_str());
+                      num(c.newton, "%.3f").c_str(), num(c.bnewton, "%.3f").c_str(),
+                      fraction(c.sea, c.ntri, c.cpu));
           std::fflush(stdout);
         }
         if (rc) break;
@@ -472,8 +491,8 @@ int main(int argc, char** argv) {
   int done = 0;
   auto start = Clock::now();
   std::printf("| backend | sea | pressure | boats | tris/boat | triangles | hydro ms/step | step ms "
-              "| bare step ms | step/bare | Mtri/s | paper GPU ms | hydro/paper |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "| bare step ms | step/bare | Mtri/s | paper GPU ms | hydro/paper | roofline |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int t : tris) {
     for (int n : boats) {
       for (const std::string& be : backends) {
@@ -486,11 +505,12 @@ int main(int argc, char** argv) {
           if (!run(meshes, n, t, be, st, reps, &c)) return 1;
           cells.push_back(c);
           double p = paper(n, t);
-          std::printf("| %s | %s | %s | %d | %d | %d | %.3f | %.3f | %.3f | %.2f | %.1f | %s | %s |\n",
-                      be.c_str(), gsea.c_str(), gpress.c_str(), n, t, c.ntri, c.hydro, c.step,
-                      c.bare, c.step / c.bare, c.ntri / c.hydro / 1e3,
+          std::printf("| %s | %s | %s | %d | %d | %d | %.3f | %.3f | %.3f | %.2f | %.1f | %s | %s "
+                      "| %.3f |\n", be.c_str(), gsea.c_str(), gpress.c_str(), n, t, c.ntri,
+                      c.hydro, c.step, c.bare, c.step / c.bare, c.ntri / c.hydro / 1e3,
                       std::isnan(p) ? "" : std::to_string(p).c_str(),
-                      std::isnan(p) ? "" : std::to_string(c.hydro / p).c_str());
+                      std::isnan(p) ? "" : std::to_string(c.hydro / p).c_str(),
+                      fraction(gsea, c.ntri, c.cpu));
           std::fflush(stdout);
           double el = std::chrono::duration<double>(Clock::now() - start).count();
           done++;
@@ -518,6 +538,8 @@ int main(int argc, char** argv) {
                    c.backend.c_str(), c.sea.c_str(), c.pressure.c_str(), c.boats, c.tris, c.ntri,
                    c.hydro, c.cpu, c.step, c.bare);
       if (std::isfinite(c.newton)) std::fprintf(f, "\"newton_per_solve\": %.6f, ", c.newton);
+      std::fprintf(f, "\"roofline_ns\": %.6f, \"roofline_fraction\": %.6f, ", roofline(c.sea),
+                   fraction(c.sea, c.ntri, c.cpu));
       std::fprintf(f, "\"stages\": {");
       for (size_t j = 0; j < c.stages.size(); j++) {
         std::fprintf(f, "%s\"%s\": %.6f", j ? ", " : "", c.stages[j].first.c_str(),

@@ -65,6 +65,7 @@ bool benchChild(const std::string& exe, const std::vector<std::string>& args,
   r->hydro = field(out, "hydro_ms");
   r->step = field(out, "step_ms");
   r->cpu = field(out, "hydro_cpu_ms");
+  r->ntri = int(field(out, "triangles"));
   r->newton = field(out, "newton_per_solve");
   if (!WIFEXITED(st) || WEXITSTATUS(st) != 0 || !std::isfinite(r->hydro)) {
     std::string cmd;

@@ -15,6 +15,7 @@ namespace mjbtool {
 // surface solve (cpu backend), NaN when the build does not report them
 struct CmpRun {
   double hydro = 0, cpu = 0, step = 0, newton = 0;
+  int ntri = 0;  // triangles in the scene
 };
 
 // run exe once with args plus --json dir/NAME, its stdout discarded and its
