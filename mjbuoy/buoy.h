@@ -83,12 +83,23 @@ struct State {
   // the same bits; offNew is written by the first call of this step
   std::vector<double> off, offNew;
   std::vector<double> hoff, hoffNew;  // the same for each hull's COM [m]
+  // the two steps before off's (offOld, then offOld2; hoffOld, hoffOld2),
+  // so the guess extrapolates the last three steps' offsets in time
+  // (cpu.cc guessWeights); per hull whether offNew, off, offOld, offOld2
+  // hold a solve (1) or are cold (0), and the times off, offOld, offOld2
+  // were taken [s]
+  std::vector<double> offOld, hoffOld, offOld2, hoffOld2;
+  std::vector<char> hv, hvNew, hvOld, hvOld2;
+  double tgOff = 0, tgOld = 0, tgOld2 = 0;
   std::vector<WaveNow> wn;     // wave constants of this call
   WaveTab tab;                 // the same by wave number, for waveint.h
   // per thread: Newton and structure-of-arrays scratch (cpu.cc
   // scratchSize), per doubles each
   std::vector<double> scr;
   size_t per = 0, mi = 0;
+  // per thread: surface solves done and Newton steps they took (cpu
+  // backend; mjbuoy-bench reports steps per solve)
+  std::vector<long> nsolve, niter;
   double crest = 0;            // highest possible surface height [m]
   std::vector<char> bad;       // per body: state not finite in the last call
   std::vector<char> told;      // per body: already named in notices
@@ -129,6 +140,10 @@ int stepClock(const mjModel* m, const mjData* d, State* s);
 
 // allocate s for b
 void makeState(const Buoy& b, State* s);
+
+// the cpu backend's surface solves for d so far and the Newton steps they
+// took (glue.cc; tools only): false if d has no state
+bool newtonStats(const mjbBuoy* b, const mjData* d, long* solves, long* steps);
 
 // cpu backend: fill s->wrench and s->part from d's current state
 void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s);

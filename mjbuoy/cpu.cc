@@ -70,11 +70,21 @@ void makeState(const Buoy& b, State* s) {
   s->offNew.assign(b.vert.size() / 3 * 2, 0);
   s->hoff.assign(2 * b.hull.size(), 0);
   s->hoffNew.assign(2 * b.hull.size(), 0);
+  s->offOld.assign(b.vert.size() / 3 * 2, 0);
+  s->offOld2.assign(b.vert.size() / 3 * 2, 0);
+  s->hoffOld.assign(2 * b.hull.size(), 0);
+  s->hoffOld2.assign(2 * b.hull.size(), 0);
+  s->hv.assign(b.hull.size(), 0);
+  s->hvNew.assign(b.hull.size(), 0);
+  s->hvOld.assign(b.hull.size(), 0);
+  s->hvOld2.assign(b.hull.size(), 0);
   s->wn.assign(std::max(b.wcap, b.cfg.sea.waves.size()), WaveNow{});
   s->tab.reserve(std::max(b.wcap, b.cfg.sea.waves.size()));
   s->mi = maxItems(b);
   s->per = scratchSize(b);
   s->scr.assign(s->per * std::max(1, b.nthreads), 0);
+  s->nsolve.assign(std::max(1, b.nthreads), 0);
+  s->niter.assign(std::max(1, b.nthreads), 0);
   s->key = -1;
   s->hasPrev = false;
 }
@@ -203,6 +213,33 @@ static void wetWaves(const Sea& sea, const WaveTab& t, size_t nw, const Wet& wt,
   }
 }
 
+// the weights L of off, offOld, offOld2 in hull ih's label guesses at time
+// t: the Lagrange polynomial through the last three steps' offsets
+// (times tgOff, tgOld, tgOld2) evaluated at t, when all three were solved;
+// through the last two, or the last alone, when fewer were. The offset
+// moves smoothly with the sea and the hull, so the quadratic guess is off
+// by O(dt^3) (nanometres at dt = 2 ms) where the last step's label was off
+// by O(dt) (millimetres), and Newton, converging quadratically, reaches its
+// tolerance in one step instead of two; the tolerance is unchanged, so the
+// labels differ only within it. Beyond two steps ahead (a jump in time) the
+// polynomial is not trusted: the last offset alone
+static void guessWeights(const State& s, int ih, double t, double L[3]) {
+  const double t0 = s.tgOff, t1 = s.tgOld, t2 = s.tgOld2;
+  L[0] = s.hv[ih] ? 1 : 0;
+  L[1] = L[2] = 0;
+  if (!s.hv[ih] || !s.hvOld[ih] || !(t0 > t1) || !(t - t0 <= 2 * (t0 - t1)) || !(t >= t0)) {
+    return;
+  }
+  if (s.hvOld2[ih] && t1 > t2) {
+    L[0] = (t - t1) * (t - t2) / ((t0 - t1) * (t0 - t2));
+    L[1] = (t - t0) * (t - t2) / ((t1 - t0) * (t1 - t2));
+    L[2] = (t - t0) * (t - t1) / ((t2 - t0) * (t2 - t1));
+  } else {
+    L[0] = (t - t1) / (t0 - t1);
+    L[1] = (t - t0) / (t1 - t0);
+  }
+}
+
 // forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
 // is the body's wrench of force family p; slot picks the thread's scratch
 static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6],
@@ -231,9 +268,13 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
       // the next step's guesses: cold, as after a restart
       std::memset(&s->offNew[2 * hl.v0], 0, 2 * hl.nv * sizeof(double));
       s->hoffNew[2 * ih] = s->hoffNew[2 * ih + 1] = 0;
+      s->hvNew[ih] = 0;
     }
     return;
   }
+  if (first) s->hvNew[ih] = 1;
+  double L[3];
+  guessWeights(*s, ih, t, L);
 
   // vertices: body frame -> relative to COM, and height above the surface;
   // the label search starts from the vertex's label offset of the last
@@ -260,10 +301,12 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     }
     X[q] = r[0] + com[0];
     Y[q] = r[1] + com[1];
-    A0[q] = X[q] + s->off[2 * i];
-    A1[q] = Y[q] + s->off[2 * i + 1];
+    const double *o = &s->off[2 * i], *o1 = &s->offOld[2 * i], *o2 = &s->offOld2[2 * i];
+    A0[q] = X[q] + (L[0] * o[0] + L[1] * o1[0] + L[2] * o2[0]);
+    A1[q] = Y[q] + (L[0] * o[1] + L[1] * o1[1] + L[2] * o2[1]);
   }
-  sea.solveMany(wn, hl.nv, X, Y, A0, A1, Z, hs.SC, tmp);
+  s->niter[slot] += sea.solveMany(wn, hl.nv, X, Y, A0, A1, Z, hs.SC, tmp);
+  s->nsolve[slot] += hl.nv + 1;  // and the COM's below
   for (int q = 0; q < hl.nv; q++) {
     const int i = hl.v0 + q;
     s->lab[2 * i] = A0[q];
@@ -285,9 +328,12 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   // wetted length L is the wet extent along it (body x when at rest)
   double uw[3], vr[3], dir[3];
   {
-    const double* o = s->hoff.data() + 2 * ih;
-    double a[2] = {com[0] + o[0], com[1] + o[1]};
-    double hz = sea.solve(wn, com[0], com[1], a, sc, tmp);
+    const double *o = &s->hoff[2 * ih], *o1 = &s->hoffOld[2 * ih], *o2 = &s->hoffOld2[2 * ih];
+    double a[2] = {com[0] + (L[0] * o[0] + L[1] * o1[0] + L[2] * o2[0]),
+                   com[1] + (L[0] * o[1] + L[1] * o1[1] + L[2] * o2[1])};
+    int nit = 0;
+    double hz = sea.solve(wn, com[0], com[1], a, sc, tmp, &nit);
+    s->niter[slot] += nit;
     if (first) {
       s->hoffNew[2 * ih] = a[0] - com[0];
       s->hoffNew[2 * ih + 1] = a[1] - com[1];
@@ -448,6 +494,7 @@ static void hullRange(const Job& j, int h0, int h1, int slot) {
         const Hull& hl = b.hull[ih];
         std::memset(&s->offNew[2 * hl.v0], 0, 2 * hl.nv * sizeof(double));
         s->hoffNew[2 * ih] = s->hoffNew[2 * ih + 1] = 0;
+        s->hvNew[ih] = 0;
       }
       continue;
     }
@@ -484,15 +531,30 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   if (clock == kNewStep) {
     std::swap(s->prevA, s->curA);
     std::swap(s->prevV, s->curV);
+    // guesses: the last step's become the older, this one's the last
+    std::swap(s->offOld2, s->offOld);
+    std::swap(s->offOld, s->off);
     std::swap(s->off, s->offNew);
+    std::swap(s->hoffOld2, s->hoffOld);
+    std::swap(s->hoffOld, s->hoff);
     std::swap(s->hoff, s->hoffNew);
+    std::swap(s->hvOld2, s->hvOld);
+    std::swap(s->hvOld, s->hv);
+    std::swap(s->hv, s->hvNew);
+    s->tgOld2 = s->tgOld;
+    s->tgOld = s->tgOff;
+    s->tgOff = s->tprev;
   }
   if (clock == kRestart) {
     // label guesses start cold so a rerun repeats the first bit for bit
-    std::fill(s->off.begin(), s->off.end(), 0.0);
-    std::fill(s->hoff.begin(), s->hoff.end(), 0.0);
-    std::fill(s->offNew.begin(), s->offNew.end(), 0.0);
-    std::fill(s->hoffNew.begin(), s->hoffNew.end(), 0.0);
+    for (std::vector<double>* v : {&s->off, &s->offNew, &s->offOld, &s->offOld2, &s->hoff,
+                                   &s->hoffNew, &s->hoffOld, &s->hoffOld2}) {
+      std::fill(v->begin(), v->end(), 0.0);
+    }
+    for (std::vector<char>* v : {&s->hv, &s->hvNew, &s->hvOld, &s->hvOld2}) {
+      std::fill(v->begin(), v->end(), 0);
+    }
+    s->tgOff = s->tgOld = s->tgOld2 = 0;
   }
   // per-call wave constants, and the highest crest: level + sum |A|
   const Sea& sea = b.cfg.sea;

@@ -535,3 +535,14 @@ std::string mjb::setHydroCoef(mjbBuoy* b, int body, const HydroCoef& c, double t
 }
 
 const mjb::Buoy* mjb::buoyOf(const mjbBuoy* b) { return b ? &b->b : nullptr; }
+
+bool mjb::newtonStats(const mjbBuoy* b, const mjData* d, long* solves, long* steps) {
+  State* s = b ? state(const_cast<mjbBuoy*>(b), d, false) : nullptr;
+  if (!s) return false;
+  *solves = *steps = 0;
+  for (size_t i = 0; i < s->nsolve.size(); i++) {
+    *solves += s->nsolve[i];
+    *steps += s->niter[i];
+  }
+  return true;
+}

@@ -202,7 +202,7 @@ static inline void shift(double s, double c, double d, double* out) {
 // unroll and the phases stay in registers (N = 0: any n, phases in sc/tmp)
 template <int N>
 static double solveN(const WaveNow* w, int n, double level, double x, double y, double a[2],
-                     double* sc, double* tmp) {
+                     double* sc, double* tmp, int* nit) {
   if (N > 0) n = N;
   double lc[N > 0 ? 2 * N : 1], ln[N > 0 ? 2 * N : 1];
   double* cur = N > 0 ? lc : sc;
@@ -230,7 +230,8 @@ static double solveN(const WaveNow* w, int n, double level, double x, double y, 
     r2 = f0 * f0 + f1 * f1;
   };
   eval(a, cur);
-  for (int it = 0; it < 50 && r2 > 1e-24; it++) {
+  int it = 0;
+  for (; it < 50 && r2 > 1e-24; it++) {
     double det = j00 * j11 - j01 * j01;
     double s0 = (j11 * f0 - j01 * f1) / det;
     double s1 = (j00 * f1 - j01 * f0) / det;
@@ -256,8 +257,12 @@ static double solveN(const WaveNow* w, int n, double level, double x, double y, 
     a[0] = b[0];
     a[1] = b[1];
     for (int i = 0; i < 2 * n; i++) cur[i] = nxt[i];
-    if (r2 >= prev) break;  // no further progress in double
+    if (r2 >= prev) {  // no further progress in double
+      it++;
+      break;
+    }
   }
+  if (nit) *nit += it;
   double z = level;
   for (int i = 0; i < n; i++) z += w[i].amp * cur[2 * i + 1];
   if (N > 0) {
@@ -267,15 +272,15 @@ static double solveN(const WaveNow* w, int n, double level, double x, double y, 
 }
 
 double Sea::solve(const WaveNow* w, double x, double y, double a[2], double* sc,
-                  double* tmp) const {
+                  double* tmp, int* nit) const {
   double z;
   switch (ng) {
     case 0: a[0] = x; a[1] = y; z = level; break;
-    case 1: z = solveN<1>(w, ng, level, x, y, a, sc, tmp); break;
-    case 2: z = solveN<2>(w, ng, level, x, y, a, sc, tmp); break;
-    case 3: z = solveN<3>(w, ng, level, x, y, a, sc, tmp); break;
-    case 4: z = solveN<4>(w, ng, level, x, y, a, sc, tmp); break;
-    default: z = solveN<0>(w, ng, level, x, y, a, sc, tmp);
+    case 1: z = solveN<1>(w, ng, level, x, y, a, sc, tmp, nit); break;
+    case 2: z = solveN<2>(w, ng, level, x, y, a, sc, tmp, nit); break;
+    case 3: z = solveN<3>(w, ng, level, x, y, a, sc, tmp, nit); break;
+    case 4: z = solveN<4>(w, ng, level, x, y, a, sc, tmp, nit); break;
+    default: z = solveN<0>(w, ng, level, x, y, a, sc, tmp, nit);
   }
   // Airy components: a direct sum at the physical point, the phases' sin
   // and cos vectorised (vmath.h): th and cos in tmp, sin in tmp + n
@@ -291,18 +296,20 @@ double Sea::solve(const WaveNow* w, double x, double y, double a[2], double* sc,
   return z;
 }
 
-void Sea::solveMany(const WaveNow* w, int m, const double* x, const double* y, double* a0,
+long Sea::solveMany(const WaveNow* w, int m, const double* x, const double* y, double* a0,
                     double* a1, double* z, double* sc, double* tmp) const {
   // one point after the other: a lockstep version over SSE2 lanes (the
   // masked Newton updates in GCC vector types) measured no faster, the
   // out-of-order core already overlaps the independent solves
   const int n = waves.size();
+  int nit = 0;
   for (int i = 0; i < m; i++) {
     double a[2] = {a0[i], a1[i]};
-    z[i] = solve(w, x[i], y[i], a, sc + 2 * n * i, tmp);
+    z[i] = solve(w, x[i], y[i], a, sc + 2 * n * i, tmp, &nit);
     a0[i] = a[0];
     a1[i] = a[1];
   }
+  return nit;
 }
 
 void Sea::velocitySC(const WaveNow* w, const double* sc, double z, double eta, double v[3],

@@ -93,13 +93,15 @@ struct Sea {
   // surface height of the particle found (heightOf); sc gets sin and cos of
   // each component's phase there and tmp is scratch (2 per wave each).
   // Iterates reuse the phase by angle addition, so only the guess costs one
-  // sin and cos per component: the result differs from label() by round-off
+  // sin and cos per component: the result differs from label() by round-off.
+  // nit (if given) gets the Newton steps taken added
   double solve(const WaveNow* w, double x, double y, double a[2], double* sc,
-               double* tmp) const;
+               double* tmp, int* nit = nullptr) const;
   // solve() for m points, same bits: positions x, y; guesses in a0, a1
   // become labels; z gets heights and sc 2 per wave per point (point-major,
-  // as solve's sc); tmp is scratch of 2 per wave
-  void solveMany(const WaveNow* w, int m, const double* x, const double* y, double* a0,
+  // as solve's sc); tmp is scratch of 2 per wave. Returns the Newton steps
+  // taken in all
+  long solveMany(const WaveNow* w, int m, const double* x, const double* y, double* a0,
                  double* a1, double* z, double* sc, double* tmp) const;
   // velocity() and acceleration (acc may be null) from the phases solve()
   // left in sc, at height z above the level of a point whose surface is at

@@ -221,6 +221,21 @@ def options(tools, models, tmp):
     p = run([os.path.join(tools, "mjbuoy-bench"), "--boats", "0"], cwd=tmp)
     refused(p, "mjbuoy-bench --boats 0", "--boats", "[1, 100000]")
     check("h*" not in p.stderr, "mjbuoy-bench --boats 0: no internal hull pattern in the message")
+    # --baseline: a missing binary is refused by name; this build against
+    # itself gives one row per cell with both times, and no files left over
+    bench = os.path.join(tools, "mjbuoy-bench")
+    p = run([bench, "--baseline", os.path.join(tmp, "none")], cwd=tmp)
+    refused(p, "mjbuoy-bench --baseline to a missing file", "--baseline", "not an executable")
+    p = run([bench, "--baseline", bench, "--boats", "1", "--tris", "64", "--backend", "cpu",
+             "--steps", "2", "--reps", "2"], cwd=tmp, env=dict(os.environ, TMPDIR=tmp))
+    rows = [l for l in p.stdout.splitlines() if l.startswith("| cpu | swell | linear | 1 | 64 |")]
+    check(p.returncode == 0 and len(rows) == 1, "mjbuoy-bench --baseline: exit 0, one row")
+    if rows:
+        c = [x.strip() for x in rows[0].strip().strip("|").split("|")]
+        check(len(c) == 17 and all(float(x) > 0 for x in c[5:14] + c[16:]),
+              "mjbuoy-bench --baseline: times and ratios positive (%s)" % c)
+        check(c[14] != "" and c[14] == c[15], "the same build's Newton steps per solve on both sides")
+    no_temps(tmp, "mjbuoy-bench --baseline")
     # <init body="bar*">: patterns are not supported there (not "no free joint")
     sc = os.path.join(tmp, "sc.xml")
     open(sc, "w").write('<scenario model="barge.xml" duration="0.05">\n'

@@ -4,21 +4,27 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <sstream>
 #include <string>
 #include <ctime>
 #include <filesystem>
 #include <system_error>
+#include <unistd.h>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include <mujoco/mujoco.h>
 
+#include "benchcmp.h"
 #include "cliopt.h"
 #include "guard.h"
 #include "mjbuoy.h"  // and mjbuoy_version.h
 #include "outfile.h"
+#include "roofline.h"
+#include "buoy.h"  // internal: mjb::newtonStats
 #include "radiation.h"  // internal: mjb::setHydroCoef until MJCF switches exist
 
 using Clock = std::chrono::steady_clock;
@@ -124,8 +130,24 @@ struct Cell {
   std::string backend, sea, pressure;
   double hydro, step, bare;  // ms per step (median of repetitions)
   double cpu;                // CPU ms (all threads) in mjbuoy per step (median)
+  double newton;             // cpu backend: Newton steps per surface solve (NaN: none)
   std::vector<std::pair<std::string, double>> stages;
 };
+
+// the reference kernel's CPU ns per triangle on a sea (roofline.h), once
+// per sea: components of flat 0, swell 1, jonswap 64
+static double roofline(const std::string& sea) {
+  static double ns[3] = {-1, -1, -1};
+  const int i = sea == "flat" ? 0 : sea == "swell" ? 1 : 2;
+  if (ns[i] < 0) ns[i] = mjbtool::rooflineNs(i == 0 ? 0 : i == 1 ? 1 : 64);
+  return ns[i];
+}
+
+// a cell's fraction of the roofline: the kernel's time for its triangles
+// over mjbuoy's CPU time (all threads) per step
+static double fraction(const std::string& sea, int ntri, double cpuMs) {
+  return roofline(sea) * ntri / (cpuMs * 1e6);
+}
 
 static double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -168,6 +190,8 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
   // convolution's steady cost
   int warm = 5 + (gradiation > 0 ? int(std::ceil(gradiation / m->opt.timestep)) : 0);
   for (int i = 0; i < warm; i++) mj_step(m, d);
+  long ns0 = 0, ni0 = 0, ns1 = 0, ni1 = 0;
+  mjb::newtonStats(b, d, &ns0, &ni0);
   for (int r = 0; r < reps; r++) {
     ghydro = gcpu = 0;
     auto t0 = Clock::now();
@@ -179,6 +203,7 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
     if (mjbtool::diverged(d, &why)) break;
   }
   mjcb_passive = ginner;
+  mjb::newtonStats(b, d, &ns1, &ni1);
   if (!why.empty()) {
     std::fprintf(stderr, "mjbuoy-bench: %d boats x %d triangles on %s diverged: %s\n", boats,
                  tris, be.c_str(), why.c_str());
@@ -192,7 +217,8 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
   double ms[8];
   int ns = mjb_stageTimes(b, sn, ms, 8);
   *c = Cell{boats, tris, mjb_info(b).ntri, mjb_info(b).backend, gsea, gpress, median(hydro),
-            median(full), median(bare), median(cpu), {}};
+            median(full), median(bare), median(cpu),
+            ns1 > ns0 ? double(ni1 - ni0) / (ns1 - ns0) : NAN, {}};
   for (int i = 0; i < ns; i++) c->stages.emplace_back(sn[i], ms[i]);
   mjb_unbindData(b, d);
   mj_deleteData(d);
@@ -213,6 +239,165 @@ static double paper(int boats, int tris) {
     }
   }
   return NAN;
+}
+
+// one cell of --baseline: this bench and the baseline's, each as a child
+// process running the cell once (--reps 1), alternating A/B reps times
+struct CmpCell {
+  std::string backend, sea, pressure;
+  int boats, tris;
+  double hydro = 0, bhydro = 0, ratio = 0, step = 0, bstep = 0, sratio = 0;
+  double cpu = 0, bcpu = 0, cratio = 0;  // CPU time of all threads in mjbuoy
+  int ntri = 0;
+  double newton = NAN, bnewton = NAN;
+};
+
+static bool compareCell(const std::string& self, const std::string& base,
+                        const std::vector<std::string>& common, const std::string& dir,
+                        int reps, CmpCell* c) {
+  std::vector<double> ha, hb, sa, sb, rh, rs, ca, cb, rc;
+  mjbtool::CmpRun a, b;
+  for (int r = 0; r < reps; r++) {
+    std::string e;
+    if (!mjbtool::benchChild(self, common, dir, &a, &e) ||
+        !mjbtool::benchChild(base, common, dir, &b, &e)) {
+      std::fprintf(stderr, "mjbuoy-bench: --baseline: %s\n", e.c_str());
+      return false;
+    }
+    ha.push_back(a.hydro);
+    hb.push_back(b.hydro);
+    sa.push_back(a.step);
+    sb.push_back(b.step);
+    rh.push_back(b.hydro / a.hydro);
+    rs.push_back(b.step / a.step);
+    ca.push_back(a.cpu);
+    cb.push_back(b.cpu);
+    rc.push_back(b.cpu / a.cpu);
+  }
+  c->cpu = median(ca);
+  c->bcpu = median(cb);
+  c->cratio = median(rc);
+  c->hydro = median(ha);
+  c->bhydro = median(hb);
+  c->step = median(sa);
+  c->bstep = median(sb);
+  c->ratio = median(rh);  // of the pairs: each pair ran back to back
+  c->sratio = median(rs);
+  c->ntri = a.ntri;
+  c->newton = a.newton;
+  c->bnewton = b.newton;
+  return true;
+}
+
+static std::string num(double v, const char* fmt) {
+  if (!std::isfinite(v)) return "";
+  char s[64];
+  std::snprintf(s, sizeof(s), fmt, v);
+  return s;
+}
+
+// --baseline: every cell of the grid run by both builds, side by side
+static int compareGrid(const std::string& base, const std::string& meshes,
+                       const std::vector<int>& tris, const std::vector<int>& boats,
+                       const std::vector<std::string>& backends,
+                       const std::vector<std::pair<std::string, std::string>>& kinds,
+                       int steps, int reps, std::vector<CmpCell>* out) {
+  char exe[4096];
+  ssize_t n = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
+  if (n <= 0) {
+    std::fprintf(stderr, "mjbuoy-bench: --baseline: cannot find this executable\n");
+    return 1;
+  }
+  exe[n] = 0;
+  // the children's JSON and stderr: a private directory in $TMPDIR (or /tmp)
+  const char* td = std::getenv("TMPDIR");
+  std::string tmpl = std::string(td && *td ? td : "/tmp") + "/mjbuoy-bench-XXXXXX";
+  const char* dir = mkdtemp(&tmpl[0]);
+  if (!dir) {
+    std::fprintf(stderr, "mjbuoy-bench: --baseline: cannot create a directory like %s: %s\n",
+                 tmpl.c_str(), std::strerror(errno));
+    return 1;
+  }
+  std::printf("| backend | sea | pressure | boats | tris/boat | hydro ms | baseline hydro ms | "
+              "baseline/this hydro | hydro CPU ms | baseline hydro CPU ms | baseline/this CPU | "
+              "step ms | baseline step ms | baseline/this step | newton/solve | "
+              "baseline newton/solve | roofline |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  int rc = 0;
+  for (int t : tris) {
+    for (int nb : boats) {
+      for (const std::string& be : backends) {
+        for (const auto& kind : kinds) {
+          std::vector<std::string> common = {
+              "--meshes", meshes, "--boats", std::to_string(nb), "--tris", std::to_string(t),
+              "--backend", be, "--sea", kind.first, "--pressure", kind.second,
+              "--steps", std::to_string(steps), "--reps", "1"};
+          if (gthreads >= 0) {
+            common.push_back("--threads");
+            common.push_back(std::to_string(gthreads));
+          }
+          if (gradiation >= 0) {
+            common.push_back("--radiation");
+            common.push_back(num(gradiation, "%.17g"));
+          }
+          CmpCell c{be, kind.first, kind.second, nb, t};
+          if (!compareCell(exe, base, common, dir, reps, &c)) {
+            rc = 1;
+            break;
+          }
+          out->push_back(c);
+          std::printf("| %s | %s | %s | %d | %d | %.3f | %.3f | %.2f | %.3f | %.3f | %.2f | "
+                      "%.3f | %.3f | %.2f | %s | %s | %.3f |\n", be.c_str(), c.sea.c_str(),
+                      c.pressure.c_str(), nb, t, c.hydro, c.bhydro, c.ratio, c.cpu, c.bcpu,
+                      c.cratio, c.step, c.bstep, c.sratio,
+                      num(c.newton, "%.3f").c_str(), num(c.bnewton, "%.3f").c_str(),
+                      fraction(c.sea, c.ntri, c.cpu));
+          std::fflush(stdout);
+        }
+        if (rc) break;
+      }
+      if (rc) break;
+    }
+    if (rc) break;
+  }
+  std::remove((std::string(dir) + "/cell.json").c_str());
+  std::remove((std::string(dir) + "/stderr.txt").c_str());
+  rmdir(dir);
+  return rc;
+}
+
+// --baseline's --json (if given), then stdout's state: the exit status
+static int writeCompare(const std::string& json, const std::vector<CmpCell>& cc) {
+  if (!json.empty()) {
+    mjbtool::OutFile of;
+    std::string e;
+    if (!of.open(json, "--json", &e)) {
+      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
+      return 1;
+    }
+    FILE* f = of.file();
+    std::fprintf(f, "[\n");
+    for (size_t i = 0; i < cc.size(); i++) {
+      const CmpCell& c = cc[i];
+      std::fprintf(f, "  {\"backend\": \"%s\", \"sea\": \"%s\", \"pressure\": \"%s\", "
+                   "\"boats\": %d, \"tris\": %d, \"hydro_ms\": %.6f, \"baseline_hydro_ms\": "
+                   "%.6f, \"hydro_ratio\": %.6f, \"step_ms\": %.6f, \"baseline_step_ms\": %.6f, "
+                   "\"step_ratio\": %.6f, \"hydro_cpu_ms\": %.6f, \"baseline_hydro_cpu_ms\": "
+                   "%.6f, \"cpu_ratio\": %.6f}%s\n", c.backend.c_str(), c.sea.c_str(),
+                   c.pressure.c_str(), c.boats, c.tris, c.hydro, c.bhydro, c.ratio, c.step,
+                   c.bstep, c.sratio, c.cpu, c.bcpu, c.cratio, i + 1 < cc.size() ? "," : "");
+    }
+    std::fprintf(f, "]\n");
+    if (!of.commit(&e)) {
+      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
+      return 1;
+    }
+  }
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    std::fprintf(stderr, "mjbuoy-bench: cannot write the table to stdout\n");
+    return 1;
+  }
+  return 0;
 }
 
 // the default --meshes: the installed models beside this executable
@@ -261,6 +446,10 @@ int main(int argc, char** argv) {
   app.add_option("--radiation", gradiation, "give every boat synthetic radiation coefficients "
                  "with this memory length [s] (0: added mass and its Kirchhoff terms only)")
       ->check(Finite(0, 60));
+  std::string baseline;
+  app.add_option("--baseline", baseline, "another build's mjbuoy-bench binary: run every cell "
+                 "with both, one repetition each in turn (A/B/A/B as child processes), and "
+                 "print each cell's times and the ratio baseline/this");
   app.add_option("--meshes", meshes, "directory of wigley_N.obj (default: the installed "
                  "share/mjbuoy/models/meshes beside this executable, else the source tree's)");
   CLI11_PARSE(app, argc, argv);
@@ -282,18 +471,28 @@ int main(int argc, char** argv) {
   }
 
   std::fprintf(stderr, "mjbuoy-bench: Wigley meshes from %s\n", meshes.c_str());
-  std::vector<Cell> cells;
-  int total = boats.size() * tris.size() * backends.size() * seas.size() * pressures.size();
-  int done = 0;
-  auto start = Clock::now();
-  std::printf("| backend | sea | pressure | boats | tris/boat | triangles | hydro ms/step | step ms "
-              "| bare step ms | step/bare | Mtri/s | paper GPU ms | hydro/paper |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   // the seas and pressure models side by side in every cell, one after the other
   std::vector<std::pair<std::string, std::string>> kinds;
   for (const std::string& sea : seas) {
     for (const std::string& pm : pressures) kinds.emplace_back(sea, pm);
   }
+  if (!baseline.empty()) {
+    std::string e;
+    if (!mjbtool::checkExecutable(baseline, "--baseline", &e)) {
+      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
+      return 1;
+    }
+    std::vector<CmpCell> cc;
+    if (compareGrid(baseline, meshes, tris, boats, backends, kinds, steps, reps, &cc)) return 1;
+    return writeCompare(json, cc);
+  }
+  std::vector<Cell> cells;
+  int total = boats.size() * tris.size() * backends.size() * seas.size() * pressures.size();
+  int done = 0;
+  auto start = Clock::now();
+  std::printf("| backend | sea | pressure | boats | tris/boat | triangles | hydro ms/step | step ms "
+              "| bare step ms | step/bare | Mtri/s | paper GPU ms | hydro/paper | roofline |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int t : tris) {
     for (int n : boats) {
       for (const std::string& be : backends) {
@@ -306,11 +505,12 @@ int main(int argc, char** argv) {
           if (!run(meshes, n, t, be, st, reps, &c)) return 1;
           cells.push_back(c);
           double p = paper(n, t);
-          std::printf("| %s | %s | %s | %d | %d | %d | %.3f | %.3f | %.3f | %.2f | %.1f | %s | %s |\n",
-                      be.c_str(), gsea.c_str(), gpress.c_str(), n, t, c.ntri, c.hydro, c.step,
-                      c.bare, c.step / c.bare, c.ntri / c.hydro / 1e3,
+          std::printf("| %s | %s | %s | %d | %d | %d | %.3f | %.3f | %.3f | %.2f | %.1f | %s | %s "
+                      "| %.3f |\n", be.c_str(), gsea.c_str(), gpress.c_str(), n, t, c.ntri,
+                      c.hydro, c.step, c.bare, c.step / c.bare, c.ntri / c.hydro / 1e3,
                       std::isnan(p) ? "" : std::to_string(p).c_str(),
-                      std::isnan(p) ? "" : std::to_string(c.hydro / p).c_str());
+                      std::isnan(p) ? "" : std::to_string(c.hydro / p).c_str(),
+                      fraction(gsea, c.ntri, c.cpu));
           std::fflush(stdout);
           double el = std::chrono::duration<double>(Clock::now() - start).count();
           done++;
@@ -334,9 +534,13 @@ int main(int argc, char** argv) {
       const Cell& c = cells[i];
       std::fprintf(f, "  {\"backend\": \"%s\", \"sea\": \"%s\", \"pressure\": \"%s\", "
                    "\"boats\": %d, \"tris\": %d, \"triangles\": %d, "
-                   "\"hydro_ms\": %.6f, \"hydro_cpu_ms\": %.6f, \"step_ms\": %.6f, \"bare_ms\": %.6f, \"stages\": {",
+                   "\"hydro_ms\": %.6f, \"hydro_cpu_ms\": %.6f, \"step_ms\": %.6f, \"bare_ms\": %.6f, ",
                    c.backend.c_str(), c.sea.c_str(), c.pressure.c_str(), c.boats, c.tris, c.ntri,
                    c.hydro, c.cpu, c.step, c.bare);
+      if (std::isfinite(c.newton)) std::fprintf(f, "\"newton_per_solve\": %.6f, ", c.newton);
+      std::fprintf(f, "\"roofline_ns\": %.6f, \"roofline_fraction\": %.6f, ", roofline(c.sea),
+                   fraction(c.sea, c.ntri, c.cpu));
+      std::fprintf(f, "\"stages\": {");
       for (size_t j = 0; j < c.stages.size(); j++) {
         std::fprintf(f, "%s\"%s\": %.6f", j ? ", " : "", c.stages[j].first.c_str(),
                      c.stages[j].second);
