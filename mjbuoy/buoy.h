@@ -10,6 +10,7 @@
 
 #include "config.h"
 #include "mjbuoy.h"
+#include "radcache.h"
 #include "radiation.h"
 #include "sensor.h"
 #include "waveint.h"
@@ -54,6 +55,7 @@ struct Buoy {
   // the panel solver's coefficients set at attach (radattach.cc): body id
   // and its HydroCoef (about the body COM, body axes), for mjbuoy-hydro
   std::vector<std::pair<int, HydroCoef>> coef;
+  RadCacheStats radcache;      // the panel solver's cache at attach (radcache.h)
 };
 
 // the static data of an attached model (glue.cc; tools only)

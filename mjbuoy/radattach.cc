@@ -9,6 +9,7 @@
 #include "buoy.h"
 #include "coefxform.h"
 #include "panelmesh.h"
+#include "radcache.h"
 
 namespace mjb {
 
@@ -62,10 +63,33 @@ static const double kAsymWarn = 0.02;
 
 static const char* bodyName(const mjModel* m, int b) { return m->names + m->name_bodyadr[b]; }
 
+// whether the rigid group of root can move: not welded to the world, not
+// mocap, some joint between it and the world (added mass needs a dof)
+static bool groupMoves(const mjModel* m, int root) {
+  if (root <= 0 || m->body_mocapid[root] >= 0) return false;
+  for (int b = root; b > 0; b = m->body_parentid[b])
+    if (m->body_dofnum[b]) return true;
+  return false;
+}
+
+// whether an entry names the group of root: mjbuoy.radiation.body.<b> on
+// for root or one of its hull bodies
+static bool namedOn(const Buoy& B, int root) {
+  const RadConfig& r = B.cfg.rad;
+  for (const Hull& h : B.hull) {
+    if (B.m->body_weldid[h.body] != root) continue;
+    for (int b : {h.body, root})
+      if (std::count(r.onBody.begin(), r.onBody.end(), b)) return true;
+  }
+  return false;
+}
+
 // whether the rigid group of root radiates: an override naming the root or
-// any of its hull bodies wins over mjbuoy.radiation (off over on)
+// any of its hull bodies wins over mjbuoy.radiation (off over on); on by
+// default for a group that can move
 static bool groupRadiates(const Buoy& B, int root) {
   const RadConfig& r = B.cfg.rad;
+  if (!groupMoves(B.m, root)) return false;
   bool on = r.on, off = false;
   for (const Hull& h : B.hull) {
     if (B.m->body_weldid[h.body] != root) continue;
@@ -128,6 +152,29 @@ static void checkCoef(Buoy* B, const std::string& who, HydroCoef* cp) {
   }
 }
 
+// panelSolve through the cache (radcache.h): a file whose key matches is
+// used as it is, else the solution is computed and stored; every cache
+// problem is a warning, never an error
+static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
+                        const PanelMesh& lid, const std::vector<double>& omega, HydroCoef* c,
+                        std::string* err) {
+  std::string dir = radCacheDir(B->cfg.rad.cache), key, note;
+  if (!dir.empty()) {
+    key = radCacheKey(body, lid, omega, {}, *c);
+    if (radCacheLoad(dir, key, c, &note)) return B->radcache.hit++, true;
+    if (!note.empty()) B->cfg.warn.push_back(who.substr(8) + ": " + note);
+  }
+  B->radcache.miss++;
+  if (!panelSolve(body, lid, omega, {}, c, err)) return false;
+  if (dir.empty()) return true;
+  if (radCacheStore(dir, key, *c, &note)) {
+    B->radcache.write++;
+  } else {
+    B->cfg.warn.push_back(who.substr(8) + ": " + note);
+  }
+  return true;
+}
+
 // coefficients of one group; "" or the error
 static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   const mjModel* m = B->m;
@@ -142,6 +189,15 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   std::string note;
   if (!hullPanels(v.data(), v.size() / 3, f.data(), f.size() / 3, pos, d->xquat + 4 * root,
                   rc.refine, &body, &lid, &note)) {
+    if (!(rc.given && rc.on) && !namedOn(*B, root)) {
+      // on by default only: the body keeps running without radiation
+      B->cfg.warn.push_back(who.substr(8) + " is off: " + note + " at the model's initial pose "
+                            "(qpos0, mean sea level " + fmt(B->cfg.sea.level) + " m); place "
+                            "the body at its floating position in the model for added mass "
+                            "and radiation damping, or set <text name=\"mjbuoy.radiation.body." +
+                            bodyName(m, root) + "\" data=\"off\"/>");
+      return "";
+    }
     return who + ": " + note + " at the model's initial pose (qpos0, mean sea level " +
            fmt(B->cfg.sea.level) + " m); place the body at its floating position in the model, "
            "or turn radiation off for it with <text name=\"mjbuoy.radiation.body." +
@@ -164,7 +220,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   c.rho = B->cfg.sea.rho;
   c.g = B->cfg.sea.g;
   std::string err;
-  if (!panelSolve(body, lid, omega, {}, &c, &err)) return who + ": panel solver: " + err;
+  if (!cachedSolve(B, who, body, lid, omega, &c, &err)) return who + ": panel solver: " + err;
   // panel frame: world axes, origin (x_root, y_root, sea level); the root's
   // COM there is R ipos + (0, 0, pos z); body axes: R's columns
   const mjtNum* R = d->xmat + 9 * root;
@@ -186,7 +242,9 @@ std::string attachRadiation(Buoy* B) {
   const RadConfig& rc = B->cfg.rad;
   for (int b : rc.onBody) {
     bool has = false;
-    for (const Hull& h : B->hull) has = has || m->body_weldid[h.body] == m->body_weldid[b];
+    for (const Hull& h : B->hull)
+      has = has || (m->body_weldid[h.body] == m->body_weldid[b] &&
+                    groupMoves(m, m->body_weldid[b]));
     if (!has) {
       return std::string("mjbuoy: <text name=\"mjbuoy.radiation.body.") + bodyName(m, b) +
              "\"> turns radiation on for body \"" + bodyName(m, b) +

@@ -384,7 +384,8 @@ TEST(RadAttach, BoxHeaveDecayMatchesItsFrequencyDomain) {
 
 namespace {
 
-// the switches: global off, body "a" on by override, "b" default off,
+// the switches: global off, body "a" on by override, "b" off (the global
+// switch),
 // hull "c" on a body welded (no joint) to "d" switched on by naming the
 // hull's body: the coefficients go to the group's top body "d". A_inf
 // heave adds to MuJoCo's heave inertia (qM) of exactly the bodies on
@@ -392,6 +393,7 @@ TEST(RadAttach, PerBodySwitchesAndWeldedHulls) {
   std::string box = "type=\"box\" size=\"0.5 0.5 0.5\" mass=\"500\" contype=\"0\" conaffinity=\"0\"";
   std::string xml =
       "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"ha hb hc\"/>"
+      "<text name=\"mjbuoy.radiation\" data=\"off\"/>"
       "<text name=\"mjbuoy.radiation.body.a\" data=\"on\"/>"
       "<text name=\"mjbuoy.radiation.body.c\" data=\"on\"/>"
       "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 6\"/>"

@@ -56,7 +56,10 @@ static bool printBody(FILE* o, const mjModel* m, int body, const mjb::HydroCoef&
 int main(int argc, char** argv) {
   CLI::App app{"Compute and print the radiation coefficients of each hull body with "
                "radiation on (mjbuoy.radiation, docs/mjcf.md section 11): A_inf, A(omega), "
-               "B(omega) about the body COM in body axes, and K(t)."};
+               "B(omega) about the body COM in body axes, and K(t). The panel solutions go "
+               "into the radiation cache (mjbuoy.radiation.cache, else $MJBUOY_RADIATION_CACHE, "
+               "else $XDG_CACHE_HOME/mjbuoy or ~/.cache/mjbuoy), so running it once "
+               "precomputes them for every later attach of the model."};
   app.set_version_flag("--version", std::string("mjbuoy-hydro ") + MJBUOY_VERSION_STRING);
   std::string model, file;
   double dt = 0.05, tk = 0;
@@ -83,6 +86,10 @@ int main(int argc, char** argv) {
   }
   if (mjb_warnings(b)[0]) std::fprintf(stderr, "%s", mjb_warnings(b));
   const mjb::Buoy* B = mjb::buoyOf(b);
+  std::string dir = mjb::radCacheDir(B->cfg.rad.cache);
+  std::fprintf(stderr, "mjbuoy-hydro: radiation cache %s: %d body(ies) read, %d computed, %d "
+               "written\n", dir.empty() ? "off" : dir.c_str(), B->radcache.hit, B->radcache.miss,
+               B->radcache.write);
   int rc = 0;
   if (B->coef.empty()) {
     std::fprintf(stderr, "mjbuoy-hydro: %s has no hull body with radiation on; add <text "
