@@ -203,6 +203,16 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
            "or turn radiation off for it with <text name=\"mjbuoy.radiation.body." +
            bodyName(m, root) + "\" data=\"off\"/>";
   }
+  int np = body.nface() + (rc.lid ? lid.nface() : 0);
+  if (np > kDefaultPanels && !(rc.given && rc.on) && !namedOn(*B, root)) {
+    // on by default only within the issue's cost bound (seconds at attach)
+    B->cfg.warn.push_back(who.substr(8) + " is off: " + std::to_string(np) + " wet panels, "
+                          "above the " + std::to_string(kDefaultPanels) + " radiation solves "
+                          "by default (seconds at attach); switch it on explicitly with <text "
+                          "name=\"mjbuoy.radiation\" data=\"on\"/> (minutes, cached), or "
+                          "coarsen the hull below the waterline");
+    return "";
+  }
   if (!rc.lid) {
     lid = PanelMesh();
   } else if (!lid.nface()) {
@@ -220,7 +230,13 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   c.rho = B->cfg.sea.rho;
   c.g = B->cfg.sea.g;
   std::string err;
-  if (!cachedSolve(B, who, body, lid, omega, &c, &err)) return who + ": panel solver: " + err;
+  if (!cachedSolve(B, who, body, lid, omega, &c, &err)) {
+    if (!(rc.given && rc.on) && !namedOn(*B, root)) {
+      B->cfg.warn.push_back(who.substr(8) + " is off: panel solver: " + err);
+      return "";
+    }
+    return who + ": panel solver: " + err;
+  }
   // panel frame: world axes, origin (x_root, y_root, sea level); the root's
   // COM there is R ipos + (0, 0, pos z); body axes: R's columns
   const mjtNum* R = d->xmat + 9 * root;
