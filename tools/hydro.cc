@@ -11,6 +11,7 @@
 
 #include "buoy.h"
 #include "cliopt.h"
+#include "hydroplot.h"
 #include "mjbuoy.h"
 #include "outfile.h"
 #include "radiation.h"
@@ -70,6 +71,11 @@ int main(int argc, char** argv) {
                  "length")->check(Finite(0, mjb::kMaxMemory));
   app.add_option("-o,--output", file, "file to write, replaced only when complete "
                  "(default: stdout)");
+  std::string png, pbody;
+  app.add_option("--plot", png, "also draw A_ii(omega), B_ii(omega) and K_ii(t) of one body "
+                 "into this PNG with gnuplot (package gnuplot-nox)");
+  app.add_option("--plot-body", pbody, "the body --plot draws (default: the first with "
+                 "radiation)");
   CLI11_PARSE(app, argc, argv);
 
   char err[1024] = "";
@@ -110,6 +116,26 @@ int main(int argc, char** argv) {
     if (!printBody(o, m, B->coef[i].first, c, dt, len)) rc = 1;
   }
   if (!rc && (std::fflush(o) != 0 || std::ferror(o))) rc = 1;
+  if (!rc && !png.empty()) {
+    size_t i = 0;
+    while (!pbody.empty() && i < B->coef.size() &&
+           pbody != m->names + m->name_bodyadr[B->coef[i].first])
+      i++;
+    if (i == B->coef.size()) {
+      e = "--plot-body " + pbody + ": no body of that name has radiation";
+      rc = 1;
+    } else {
+      const mjb::HydroCoef& c = B->coef[i].second;
+      double len = tk > 0 ? tk : mjb::memoryLength(c);
+      int n = (int)std::floor(len / dt) + 1;
+      std::vector<std::vector<double>> K(6, std::vector<double>(n));
+      for (int k = 0; k < 6; k++) mjb::retardation(c, k, k, dt, n, K[k].data());
+      std::string name = m->names + m->name_bodyadr[B->coef[i].first];
+      if (!mjbhydro::plotCoef(png, "radiation of body " + name + " (" + model + ")", c, K, dt,
+                              &e))
+        rc = 1;
+    }
+  }
   if (!rc && !file.empty() && !of.commit(&e)) rc = 1;
   if (rc && B && !B->coef.empty()) {
     if (e.empty()) e = std::string("write failed on ") + (file.empty() ? "stdout" : file.c_str());
