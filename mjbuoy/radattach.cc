@@ -85,8 +85,8 @@ static bool namedOn(const Buoy& B, int root) {
 }
 
 // whether the rigid group of root radiates: an override naming the root or
-// any of its hull bodies wins over mjbuoy.radiation (off over on); on by
-// default for a group that can move
+// any of its hull bodies wins over mjbuoy.radiation (off over on); a group
+// that cannot move (static, mocap) never radiates
 static bool groupRadiates(const Buoy& B, int root) {
   const RadConfig& r = B.cfg.rad;
   if (!groupMoves(B.m, root)) return false;
