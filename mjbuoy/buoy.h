@@ -11,6 +11,7 @@
 #include "config.h"
 #include "diffract.h"
 #include "mjbuoy.h"
+#include "radcache.h"
 #include "radiation.h"
 #include "sensor.h"
 #include "waveint.h"
@@ -56,6 +57,7 @@ struct Buoy {
   // and its HydroCoef (about the body COM, body axes), for mjbuoy-hydro
   std::vector<std::pair<int, HydroCoef>> coef;
   Diffraction diff;            // diffract.h: diffraction excitation of those bodies
+  RadCacheStats radcache;      // the panel solver's cache at attach (radcache.h)
 };
 
 // the static data of an attached model (glue.cc; tools only)

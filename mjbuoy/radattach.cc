@@ -10,6 +10,7 @@
 #include "coefxform.h"
 #include "diffract.h"
 #include "panelmesh.h"
+#include "radcache.h"
 
 namespace mjb {
 
@@ -63,10 +64,33 @@ static const double kAsymWarn = 0.02;
 
 static const char* bodyName(const mjModel* m, int b) { return m->names + m->name_bodyadr[b]; }
 
+// whether the rigid group of root can move: not welded to the world, not
+// mocap, some joint between it and the world (added mass needs a dof)
+static bool groupMoves(const mjModel* m, int root) {
+  if (root <= 0 || m->body_mocapid[root] >= 0) return false;
+  for (int b = root; b > 0; b = m->body_parentid[b])
+    if (m->body_dofnum[b]) return true;
+  return false;
+}
+
+// whether an entry names the group of root: mjbuoy.radiation.body.<b> on
+// for root or one of its hull bodies
+static bool namedOn(const Buoy& B, int root) {
+  const RadConfig& r = B.cfg.rad;
+  for (const Hull& h : B.hull) {
+    if (B.m->body_weldid[h.body] != root) continue;
+    for (int b : {h.body, root})
+      if (std::count(r.onBody.begin(), r.onBody.end(), b)) return true;
+  }
+  return false;
+}
+
 // whether the rigid group of root radiates: an override naming the root or
-// any of its hull bodies wins over mjbuoy.radiation (off over on)
+// any of its hull bodies wins over mjbuoy.radiation (off over on); a group
+// that cannot move (static, mocap) never radiates
 static bool groupRadiates(const Buoy& B, int root) {
   const RadConfig& r = B.cfg.rad;
+  if (!groupMoves(B.m, root)) return false;
   bool on = r.on, off = false;
   for (const Hull& h : B.hull) {
     if (B.m->body_weldid[h.body] != root) continue;
@@ -129,6 +153,29 @@ static void checkCoef(Buoy* B, const std::string& who, HydroCoef* cp) {
   }
 }
 
+// panelSolve through the cache (radcache.h): a file whose key matches is
+// used as it is, else the solution is computed and stored; every cache
+// problem is a warning, never an error
+static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
+                        const PanelMesh& lid, const std::vector<double>& omega,
+                        const std::vector<double>& head, HydroCoef* c, std::string* err) {
+  std::string dir = radCacheDir(B->cfg.rad.cache), key, note;
+  if (!dir.empty()) {
+    key = radCacheKey(body, lid, omega, head, *c);
+    if (radCacheLoad(dir, key, c, &note)) return B->radcache.hit++, true;
+    if (!note.empty()) B->cfg.warn.push_back(who.substr(8) + ": " + note);
+  }
+  B->radcache.miss++;
+  if (!panelSolve(body, lid, omega, head, c, err)) return false;
+  if (dir.empty()) return true;
+  if (radCacheStore(dir, key, *c, &note)) {
+    B->radcache.write++;
+  } else {
+    B->cfg.warn.push_back(who.substr(8) + ": " + note);
+  }
+  return true;
+}
+
 // coefficients of one group; "" or the error
 static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   const mjModel* m = B->m;
@@ -143,10 +190,29 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   std::string note;
   if (!hullPanels(v.data(), v.size() / 3, f.data(), f.size() / 3, pos, d->xquat + 4 * root,
                   rc.refine, &body, &lid, &note)) {
+    if (!(rc.given && rc.on) && !namedOn(*B, root)) {
+      // on by default only: the body keeps running without radiation
+      B->cfg.warn.push_back(who.substr(8) + " is off: " + note + " at the model's initial pose "
+                            "(qpos0, mean sea level " + fmt(B->cfg.sea.level) + " m); place "
+                            "the body at its floating position in the model for added mass "
+                            "and radiation damping, or set <text name=\"mjbuoy.radiation.body." +
+                            bodyName(m, root) + "\" data=\"off\"/>");
+      return "";
+    }
     return who + ": " + note + " at the model's initial pose (qpos0, mean sea level " +
            fmt(B->cfg.sea.level) + " m); place the body at its floating position in the model, "
            "or turn radiation off for it with <text name=\"mjbuoy.radiation.body." +
            bodyName(m, root) + "\" data=\"off\"/>";
+  }
+  int np = body.nface() + (rc.lid ? lid.nface() : 0);
+  if (np > kDefaultPanels && !(rc.given && rc.on) && !namedOn(*B, root)) {
+    // on by default only within the issue's cost bound (seconds at attach)
+    B->cfg.warn.push_back(who.substr(8) + " is off: " + std::to_string(np) + " wet panels, "
+                          "above the " + std::to_string(kDefaultPanels) + " radiation solves "
+                          "by default (seconds at attach); switch it on explicitly with <text "
+                          "name=\"mjbuoy.radiation\" data=\"on\"/> (minutes, cached), or "
+                          "coarsen the hull below the waterline");
+    return "";
   }
   if (!rc.lid) {
     lid = PanelMesh();
@@ -169,7 +235,13 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   // headings relative to the body's yaw (docs/physics.md section 15)
   std::vector<double> head;
   for (int h = 0; rc.diffraction && h < kDiffHeadings; h++) head.push_back(2 * M_PI * h / kDiffHeadings);
-  if (!panelSolve(body, lid, omega, head, &c, &err)) return who + ": panel solver: " + err;
+  if (!cachedSolve(B, who, body, lid, omega, head, &c, &err)) {
+    if (!(rc.given && rc.on) && !namedOn(*B, root)) {
+      B->cfg.warn.push_back(who.substr(8) + " is off: panel solver: " + err);
+      return "";
+    }
+    return who + ": panel solver: " + err;
+  }
   // panel frame: world axes, origin (x_root, y_root, sea level); the root's
   // COM there is R ipos + (0, 0, pos z); body axes: R's columns
   const mjtNum* R = d->xmat + 9 * root;
@@ -206,7 +278,9 @@ std::string attachRadiation(Buoy* B) {
   const RadConfig& rc = B->cfg.rad;
   for (int b : rc.onBody) {
     bool has = false;
-    for (const Hull& h : B->hull) has = has || m->body_weldid[h.body] == m->body_weldid[b];
+    for (const Hull& h : B->hull)
+      has = has || (m->body_weldid[h.body] == m->body_weldid[b] &&
+                    groupMoves(m, m->body_weldid[b]));
     if (!has) {
       return std::string("mjbuoy: <text name=\"mjbuoy.radiation.body.") + bodyName(m, b) +
              "\"> turns radiation on for body \"" + bodyName(m, b) +

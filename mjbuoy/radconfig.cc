@@ -1,4 +1,4 @@
-// radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, diffraction,
+// radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, diffraction, cache,
 // omega, refine, memory} and mjbuoy.radiation.body.<body> (schema: docs/mjcf.md)
 #include "radconfig.h"
 
@@ -34,11 +34,20 @@ static std::string onOff(const char* name, const char* text, bool* v) {
 
 static std::string parseText(const mjModel* m, const char* name, const char* text, RadConfig* r) {
   const char* key = name + 7;
+  if (!std::strcmp(key, "radiation.cache")) {
+    if (!*text) {
+      return "mjbuoy: " + tag("text", name) + " is empty; give a directory for the panel "
+             "solver's cache files or \"off\", e.g. data=\"/tmp/mjbuoy-cache\"";
+    }
+    r->cache = text;
+    return "";
+  }
   bool v = false;
   std::string e = onOff(name, text, &v);
   if (!e.empty()) return e;
   if (!std::strcmp(key, "radiation")) {
     r->on = v;
+    r->given = true;
   } else if (!std::strcmp(key, "radiation.lid")) {
     r->lid = v;
   } else if (!std::strcmp(key, "radiation.diffraction")) {
@@ -53,7 +62,7 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
   } else {
     return "mjbuoy: unknown entry " + tag("text", name) +
            "; radiation text entries are mjbuoy.radiation, mjbuoy.radiation.lid, "
-           "mjbuoy.radiation.diffraction and mjbuoy.radiation.body.<body> (see docs/mjcf.md)";
+           "mjbuoy.radiation.diffraction, mjbuoy.radiation.cache and mjbuoy.radiation.body.<body> (see docs/mjcf.md)";
   }
   return "";
 }

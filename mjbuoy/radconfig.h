@@ -12,6 +12,7 @@ namespace mjb {
 
 struct RadConfig {
   bool on = false;              // mjbuoy.radiation: off (default) or on
+  bool given = false;           // mjbuoy.radiation was in the model
   std::vector<int> onBody;      // mjbuoy.radiation.body.<body>: on / off overrides
   std::vector<int> offBody;
   double omega[3] = {0, 0, 0};  // wmin, wmax [rad/s], count; count 0: from the hull size
@@ -19,6 +20,7 @@ struct RadConfig {
   bool lid = true;              // interior lid against irregular frequencies
   bool diffraction = true;      // diffraction excitation (docs/physics.md section 15)
   double memory = 0;            // memory length [s]; 0: automatic
+  std::string cache;            // mjbuoy.radiation.cache: directory or "off"; "": default
   bool radiates(int body) const;
 };
 

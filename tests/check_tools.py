@@ -18,8 +18,9 @@ check_tools.py BUILD_TOOLS_DIR MODELS_DIR CASE, CASE one of:
             compiles with (--print-sea), bad entries are refused naming them
             and their range, the model file and its directory are untouched
   hydro     mjbuoy-hydro's tables are consistent (A_inf symmetric, K(0)
-            from B, Haskind between X3 and B33); no radiation and a full
-            disk are refused (issue 16)
+            from B, Haskind between X3 and B33); a second run reads the
+            cache and prints the same tables; --plot writes a PNG (with
+            gnuplot); no radiation and a full disk are refused (issue 16)
   render    (label render) a failing ffmpeg is reported with its own
             reason and a non-zero exit (not SIGPIPE), nothing is left
             behind; a video name that is not .mp4 is refused up front (12)
@@ -448,6 +449,19 @@ def hydro(tools, models, tmp):
                   (w, r[9], hask))
         check(n == 2, "Haskind checked at 2 frequencies (%d)" % n)
         check(len(x) == 6 * 36, "X at 6 frequencies x 36 headings (%d rows)" % len(x))
+    # the cache (docs/mjcf.md section 11): a first run in an empty cache
+    # directory solves and writes, a second reads and prints the same tables
+    env = dict(os.environ, MJBUOY_RADIATION_CACHE=os.path.join(tmp, "radcache"))
+    p1 = run([exe, box], cwd=tmp, env=env)
+    p2 = run([exe, box], cwd=tmp, env=env)
+    check("0 body(ies) read, 1 computed, 1 written" in p1.stderr, "first run solves and caches")
+    check("1 body(ies) read, 0 computed, 0 written" in p2.stderr, "second run reads the cache")
+    check(p1.returncode == 0 and p1.stdout == p2.stdout, "cached tables equal the computed ones")
+    if shutil.which("gnuplot"):
+        png = os.path.join(tmp, "hydro.png")
+        p = run([exe, box, "--plot", png], cwd=tmp, env=env)
+        check(p.returncode == 0 and os.path.exists(png) and
+              open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n", "--plot writes a PNG")
     open(box, "w").write(xml % "")
     p = run([exe, box], cwd=tmp)
     refused(p, "mjbuoy-hydro on a model without radiation", "mjbuoy.radiation")

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "buoy.h"
 #include "coefxform.h"
 #include "hemisphere.h"
 #include "hull.h"
@@ -354,7 +355,8 @@ TEST(RadAttach, BoxHeaveDecayMatchesItsFrequencyDomain) {
 
 namespace {
 
-// the switches: global off, body "a" on by override, "b" default off,
+// the switches: global off, body "a" on by override, "b" off (the global
+// switch),
 // hull "c" on a body welded (no joint) to "d" switched on by naming the
 // hull's body: the coefficients go to the group's top body "d". A_inf
 // heave adds to MuJoCo's heave inertia (qM) of exactly the bodies on
@@ -362,6 +364,7 @@ TEST(RadAttach, PerBodySwitchesAndWeldedHulls) {
   std::string box = "type=\"box\" size=\"0.5 0.5 0.5\" mass=\"500\" contype=\"0\" conaffinity=\"0\"";
   std::string xml =
       "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"ha hb hc\"/>"
+      "<text name=\"mjbuoy.radiation\" data=\"off\"/>"
       "<text name=\"mjbuoy.radiation.body.a\" data=\"on\"/>"
       "<text name=\"mjbuoy.radiation.body.c\" data=\"on\"/>"
       "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 6\"/>"
@@ -416,6 +419,49 @@ TEST(RadAttach, TwoHullsOnOneBodyAreSolvedTogether) {
   // two waterplanes: no lid, and a warning naming the body says so
   EXPECT_NE(std::string(mjb_warnings(two.b)).find("radiation of body \"cat\": no interior lid"),
             std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+// with mjbuoy.radiation on, only hull bodies that can move radiate: a hull
+// welded to the world and a mocap hull are skipped (no error, no inertia
+// change), a free body and a hinged one get A_inf. Expected: the free box's
+// heave qM grows by its A33_inf (> 0, the box at half draft); the hinge's
+// qM by the added inertia about the hinge axis, J^T A_inf J with J the
+// hinge's body-frame Jacobian at the COM (radstep.cc), > 0 since the COM is
+// 1 m from the axis and A33_inf > 0; the static and mocap hulls change
+// nothing (they attached at all: before, the static one was an error)
+TEST(RadAttach, OnlyBodiesThatCanMoveRadiate) {
+  std::string box = "type=\"box\" size=\"0.5 0.5 0.25\" mass=\"256.25\" contype=\"0\" conaffinity=\"0\"";
+  std::string xml =
+      "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"hf hs hm hh\"/>"
+      "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+      "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 4\"/>"
+      "</custom><worldbody>"
+      "<body name=\"free\"><freejoint/><geom name=\"hf\" " + box + "/></body>"
+      "<body name=\"static\" pos=\"5 0 0\"><geom name=\"hs\" " + box + "/></body>"
+      "<body name=\"mocap\" pos=\"10 0 0\" mocap=\"true\"><geom name=\"hm\" " + box + "/></body>"
+      "<body name=\"arm\" pos=\"15 0 0\"><joint name=\"hinge\" type=\"hinge\" axis=\"0 1 0\" pos=\"-1 0 0\"/>"
+      "<geom name=\"hh\" " + box + "/></body>"
+      "</worldbody></mujoco>";
+  std::string off = xml;
+  off.replace(off.find("data=\"on\""), 9, "data=\"off\"");
+  Scene s(xml), o(off);
+  ASSERT_TRUE(s.ok()) << s.err;
+  ASSERT_TRUE(o.ok()) << o.err;
+  const mjb::Buoy* B = mjb::buoyOf(s.b);
+  std::vector<int> got;
+  for (const auto& c : B->coef) got.push_back(c.first);
+  EXPECT_EQ(got, (std::vector<int>{s.body("free"), s.body("arm")}));
+  mj_forward(s.m, s.d);
+  mj_forward(o.m, o.d);
+  int hz = s.m->dof_Madr[2], hh = s.m->dof_Madr[s.m->jnt_dofadr[mj_name2id(s.m, mjOBJ_JOINT, "hinge")]];
+  EXPECT_GT(s.d->qM[hz] - o.d->qM[hz], 0.1 * 256.25);
+  // hinge about y through (-1, 0, 0): heave of the COM at 1 m arm, so at
+  // least A33_inf * 1 m^2 of the free box (same wet surface) is added
+  EXPECT_GT(s.d->qM[hh] - o.d->qM[hh], 0.99 * (s.d->qM[hz] - o.d->qM[hz]));
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "buoy.h"
 #include "cliopt.h"
+#include "hydroplot.h"
 #include "mjbuoy.h"
 #include "outfile.h"
 #include "radiation.h"
@@ -88,7 +89,10 @@ int main(int argc, char** argv) {
   CLI::App app{"Compute and print the radiation coefficients of each hull body with "
                "radiation on (mjbuoy.radiation, docs/mjcf.md section 11): A_inf, A(omega), "
                "B(omega) about the body COM in body axes, K(t), and the exciting force X(omega, heading) "
-               "with its Froude-Krylov part (with mjbuoy.radiation.diffraction on)."};
+               "with its Froude-Krylov part (with mjbuoy.radiation.diffraction on). The panel "
+               "solutions go into the radiation cache (mjbuoy.radiation.cache, else "
+               "$MJBUOY_RADIATION_CACHE, else $XDG_CACHE_HOME/mjbuoy or ~/.cache/mjbuoy), so running "
+               "it once precomputes them for every later attach of the model."};
   app.set_version_flag("--version", std::string("mjbuoy-hydro ") + MJBUOY_VERSION_STRING);
   std::string model, file;
   double dt = 0.05, tk = 0;
@@ -99,6 +103,11 @@ int main(int argc, char** argv) {
                  "length")->check(Finite(0, mjb::kMaxMemory));
   app.add_option("-o,--output", file, "file to write, replaced only when complete "
                  "(default: stdout)");
+  std::string png, pbody;
+  app.add_option("--plot", png, "also draw A_ii(omega), B_ii(omega) and K_ii(t) of one body "
+                 "into this PNG with gnuplot (package gnuplot-nox)");
+  app.add_option("--plot-body", pbody, "the body --plot draws (default: the first with "
+                 "radiation)");
   CLI11_PARSE(app, argc, argv);
 
   char err[1024] = "";
@@ -115,6 +124,10 @@ int main(int argc, char** argv) {
   }
   if (mjb_warnings(b)[0]) std::fprintf(stderr, "%s", mjb_warnings(b));
   const mjb::Buoy* B = mjb::buoyOf(b);
+  std::string dir = mjb::radCacheDir(B->cfg.rad.cache);
+  std::fprintf(stderr, "mjbuoy-hydro: radiation cache %s: %d body(ies) read, %d computed, %d "
+               "written\n", dir.empty() ? "off" : dir.c_str(), B->radcache.hit, B->radcache.miss,
+               B->radcache.write);
   int rc = 0;
   if (B->coef.empty()) {
     std::fprintf(stderr, "mjbuoy-hydro: %s has no hull body with radiation on; add <text "
@@ -137,6 +150,26 @@ int main(int argc, char** argv) {
       if (!rc && db.body == B->coef[i].first && !printX(o, db)) rc = 1;
   }
   if (!rc && (std::fflush(o) != 0 || std::ferror(o))) rc = 1;
+  if (!rc && !png.empty()) {
+    size_t i = 0;
+    while (!pbody.empty() && i < B->coef.size() &&
+           pbody != m->names + m->name_bodyadr[B->coef[i].first])
+      i++;
+    if (i == B->coef.size()) {
+      e = "--plot-body " + pbody + ": no body of that name has radiation";
+      rc = 1;
+    } else {
+      const mjb::HydroCoef& c = B->coef[i].second;
+      double len = tk > 0 ? tk : mjb::memoryLength(c);
+      int n = (int)std::floor(len / dt) + 1;
+      std::vector<std::vector<double>> K(6, std::vector<double>(n));
+      for (int k = 0; k < 6; k++) mjb::retardation(c, k, k, dt, n, K[k].data());
+      std::string name = m->names + m->name_bodyadr[B->coef[i].first];
+      if (!mjbhydro::plotCoef(png, "radiation of body " + name + " (" + model + ")", c, K, dt,
+                              &e))
+        rc = 1;
+    }
+  }
   if (!rc && !file.empty() && !of.commit(&e)) rc = 1;
   if (rc && B && !B->coef.empty()) {
     if (e.empty()) e = std::string("write failed on ") + (file.empty() ? "stdout" : file.c_str());

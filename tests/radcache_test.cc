@@ -1,0 +1,266 @@
+// the panel solver's cache (mjbuoy/radcache.h; docs/mjcf.md section 11,
+// "Cache"): exact round trip, hits, misses, corrupt and foreign files
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "buoy.h"
+#include "radcache.h"
+#include "testutil.h"
+
+namespace {
+
+using mjbt::Scene;
+
+// a fresh empty directory under $TMPDIR, removed with its files at the end
+struct TmpDir {
+  std::string path;
+  TmpDir() {
+    const char* t = std::getenv("TMPDIR");
+    std::string p = std::string(t && *t ? t : "/tmp") + "/mjbuoy-radcache-XXXXXX";
+    std::vector<char> b(p.begin(), p.end());
+    b.push_back(0);
+    if (mkdtemp(b.data())) path = b.data();
+  }
+  ~TmpDir() {
+    if (!path.empty()) std::system(("rm -rf '" + path + "'").c_str());
+  }
+};
+
+std::string slurp(const std::string& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+void spit(const std::string& p, const std::string& s) {
+  std::ofstream f(p, std::ios::binary | std::ios::trunc);
+  f << s;
+}
+
+// a 1 m x 1 m x 0.5 m box centred on the mean sea level at qpos0 (the
+// panel solver takes its lower half) with radiation at 4 frequencies; extra goes into
+// <custom>, size is the box's half sizes, omega mjbuoy.radiation.omega
+std::string box(const std::string& dir, const std::string& extra = "",
+                const char* size = "0.5 0.5 0.25", const char* omega = "1 9 4") {
+  return "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
+         "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+         "<text name=\"mjbuoy.radiation.cache\" data=\"" + dir + "\"/>"
+         "<numeric name=\"mjbuoy.radiation.omega\" data=\"" + omega + "\"/>" + extra +
+         "</custom><worldbody><body name=\"boat\"><freejoint/>"
+         "<geom name=\"hull\" type=\"box\" size=\"" + size + "\" mass=\"256.25\"/>"
+         "</body></worldbody></mujoco>";
+}
+
+const mjb::RadCacheStats& stats(const Scene& s) { return mjb::buoyOf(s.b)->radcache; }
+const mjb::HydroCoef& coef(const Scene& s) { return mjb::buoyOf(s.b)->coef.at(0).second; }
+
+// bit-identical: every double of both the same bytes
+void expectSame(const mjb::HydroCoef& a, const mjb::HydroCoef& b) {
+  EXPECT_EQ(std::memcmp(a.Ainf, b.Ainf, sizeof a.Ainf), 0);
+  EXPECT_EQ(std::memcmp(a.ref, b.ref, sizeof a.ref), 0);
+  EXPECT_EQ(a.omega, b.omega);
+  EXPECT_EQ(a.A, b.A);
+  EXPECT_EQ(a.B, b.B);
+  EXPECT_EQ(a.heading, b.heading);
+  EXPECT_EQ(a.Xre, b.Xre);
+  EXPECT_EQ(a.Xim, b.Xim);
+  EXPECT_EQ(a.FKre, b.FKre);
+  EXPECT_EQ(a.FKim, b.FKim);
+}
+
+// store then load gives back the same bits, X and FK included, values that
+// do not survive a decimal round trip at 6 digits included (1/3, 1e-300)
+TEST(RadCache, RoundTripIsBitIdentical) {
+  TmpDir t;
+  ASSERT_FALSE(t.path.empty());
+  mjb::HydroCoef c;
+  c.rho = 1025.0 / 3, c.g = 9.80665, c.depth = 0;
+  c.ref[0] = 1.0 / 3, c.ref[1] = -1e-300, c.ref[2] = 0.1;
+  c.omega = {0.5, 1.0 / 7, 3};
+  c.heading = {0, M_PI / 3};
+  for (int i = 0; i < 36; i++) c.Ainf[i] = std::sqrt(i + 0.5);
+  for (int i = 0; i < 36 * 3; i++) c.A.push_back(std::exp(0.01 * i)), c.B.push_back(-1.0 / (i + 3));
+  for (int i = 0; i < 36; i++) {
+    c.Xre.push_back(std::sin(i)), c.Xim.push_back(std::cos(i));
+    c.FKre.push_back(i / 7.0), c.FKim.push_back(-i / 11.0);
+  }
+  mjb::PanelMesh p;
+  p.vert = {0, 0, -1, 1, 0, 0, 0, 1, 0};
+  p.face = {0, 1, 2, -1};
+  std::string key = mjb::radCacheKey(p, mjb::PanelMesh(), c.omega, c.heading, c), note;
+  ASSERT_TRUE(mjb::radCacheStore(t.path, key, c, &note)) << note;
+  mjb::HydroCoef r;
+  ASSERT_TRUE(mjb::radCacheLoad(t.path, key, &r, &note)) << note;
+  expectSame(c, r);
+  EXPECT_EQ(std::memcmp(&c.rho, &r.rho, 8), 0);
+  EXPECT_EQ(std::memcmp(&c.g, &r.g, 8), 0);
+  // another mesh is another key: a plain miss, no note
+  p.vert[2] = -1.0000001;
+  std::string k2 = mjb::radCacheKey(p, mjb::PanelMesh(), c.omega, c.heading, c);
+  EXPECT_NE(k2, key);
+  EXPECT_FALSE(mjb::radCacheLoad(t.path, k2, &r, &note));
+  EXPECT_EQ(note, "");
+}
+
+// the second attach of the same model reads the file the first one wrote
+// and gets the same coefficients (and so the same inertia matrix)
+TEST(RadCache, SecondAttachHitsTheCache) {
+  TmpDir t;
+  Scene a(box(t.path));
+  ASSERT_TRUE(a.ok()) << a.err;
+  EXPECT_EQ(stats(a).miss, 1);
+  EXPECT_EQ(stats(a).write, 1);
+  EXPECT_EQ(stats(a).hit, 0);
+  Scene b(box(t.path));
+  ASSERT_TRUE(b.ok()) << b.err;
+  EXPECT_EQ(stats(b).hit, 1);
+  EXPECT_EQ(stats(b).miss, 0);
+  EXPECT_EQ(stats(b).write, 0);
+  EXPECT_STREQ(mjb_warnings(b.b), mjb_warnings(a.b));
+  expectSame(coef(a), coef(b));
+  mj_forward(a.m, a.d);
+  mj_forward(b.m, b.d);
+  for (int i = 0; i < a.m->nM; i++) EXPECT_EQ(a.d->qM[i], b.d->qM[i]) << i;
+}
+
+// a cache file damaged in one byte, cut short, or emptied is never used:
+// recomputed (same result as a cold solve), named in a warning, rewritten
+TEST(RadCache, CorruptFileIsRecomputed) {
+  TmpDir t;
+  Scene a(box(t.path));
+  ASSERT_TRUE(a.ok()) << a.err;
+  mjb::HydroCoef ref = coef(a);
+  std::string file;
+  // the one file the first attach wrote
+  FILE* p = popen(("ls '" + t.path + "'").c_str(), "r");
+  char line[512] = "";
+  ASSERT_TRUE(p && std::fgets(line, sizeof line, p));
+  pclose(p);
+  line[std::strcspn(line, "\n")] = 0;
+  file = t.path + "/" + line;
+  std::string good = slurp(file);
+  ASSERT_GT(good.size(), 100u);
+  struct Case { const char* what; std::string bytes; const char* want; };
+  std::string flip = good;
+  flip[flip.size() / 2] ^= 0x10;  // one bit in the middle of the coefficients
+  const Case cs[] = {{"bit flip", flip, "checksum"},
+                     {"truncated", good.substr(0, good.size() - 9), "checksum"},
+                     {"header only", good.substr(0, 12), "truncated"}};
+  for (const Case& c : cs) {
+    spit(file, c.bytes);
+    Scene s(box(t.path));
+    ASSERT_TRUE(s.ok()) << s.err;
+    EXPECT_EQ(stats(s).hit, 0) << c.what;
+    EXPECT_EQ(stats(s).miss, 1) << c.what;
+    EXPECT_EQ(stats(s).write, 1) << c.what;
+    std::string w = mjb_warnings(s.b);
+    EXPECT_NE(w.find(file), std::string::npos) << c.what << ": " << w;
+    EXPECT_NE(w.find(c.want), std::string::npos) << c.what << ": " << w;
+    expectSame(ref, coef(s));
+    EXPECT_EQ(slurp(file), good) << c.what << ": rewritten whole";
+  }
+}
+
+// a file of the user's at the cache file's name is not a cache file: it is
+// neither read nor replaced
+TEST(RadCache, ForeignFileIsLeftAlone) {
+  TmpDir t;
+  Scene a(box(t.path));
+  ASSERT_TRUE(a.ok()) << a.err;
+  FILE* p = popen(("ls '" + t.path + "'").c_str(), "r");
+  char line[512] = "";
+  ASSERT_TRUE(p && std::fgets(line, sizeof line, p));
+  pclose(p);
+  line[std::strcspn(line, "\n")] = 0;
+  std::string file = t.path + "/" + line, mine = "my notes, not a cache file\n";
+  spit(file, mine);
+  Scene s(box(t.path));
+  ASSERT_TRUE(s.ok()) << s.err;
+  EXPECT_EQ(stats(s).miss, 1);
+  EXPECT_EQ(stats(s).write, 0);
+  EXPECT_NE(std::string(mjb_warnings(s.b)).find("is not an mjbuoy cache file"), std::string::npos)
+      << mjb_warnings(s.b);
+  EXPECT_EQ(slurp(file), mine);
+}
+
+// every input of the solution is in the key: a changed mesh, frequency,
+// density, gravity, lid or refinement misses; an unchanged one hits
+TEST(RadCache, ChangedMeshOrSettingMisses) {
+  TmpDir t;
+  Scene a(box(t.path));
+  ASSERT_TRUE(a.ok()) << a.err;
+  struct Case { const char* what; std::string xml; };
+  const Case cs[] = {
+      {"mesh", box(t.path, "", "0.5 0.5001 0.25")},
+      {"omega", box(t.path, "", "0.5 0.5 0.25", "1 9.001 4")},
+      {"density", box(t.path, "<numeric name=\"mjbuoy.sea.density\" data=\"1020\"/>")},
+      {"gravity", box(t.path) .replace(8, 0, "<option gravity=\"0 0 -9.8\"/>")},
+      {"lid", box(t.path, "<text name=\"mjbuoy.radiation.lid\" data=\"off\"/>")},
+      {"refine", box(t.path, "<numeric name=\"mjbuoy.radiation.refine\" data=\"1\"/>")},
+  };
+  for (const Case& c : cs) {
+    Scene s(c.xml);
+    ASSERT_TRUE(s.ok()) << c.what << ": " << s.err;
+    EXPECT_EQ(stats(s).hit, 0) << c.what;
+    EXPECT_EQ(stats(s).miss, 1) << c.what;
+  }
+  Scene same(box(t.path));
+  ASSERT_TRUE(same.ok()) << same.err;
+  EXPECT_EQ(stats(same).hit, 1);
+}
+
+// a cache directory that cannot be made (its parent is a file) is a
+// warning naming it: the coefficients are computed all the same
+TEST(RadCache, UnwritableDirectoryIsAWarning) {
+  TmpDir t;
+  spit(t.path + "/file", "x");
+  std::string dir = t.path + "/file/cache";
+  Scene s(box(dir));
+  ASSERT_TRUE(s.ok()) << s.err;
+  EXPECT_EQ(stats(s).miss, 1);
+  EXPECT_EQ(stats(s).write, 0);
+  EXPECT_NE(std::string(mjb_warnings(s.b)).find("cannot make the directory " + dir),
+            std::string::npos) << mjb_warnings(s.b);
+  EXPECT_GT(coef(s).Ainf[14], 0);
+}
+
+// where the cache lives: the MJCF entry, else MJBUOY_RADIATION_CACHE, else
+// $XDG_CACHE_HOME/mjbuoy, else ~/.cache/mjbuoy; "off" turns it off
+TEST(RadCache, DirectoryPrecedence) {
+  struct Env {
+    const char* name;
+    std::string old;
+    bool had;
+    explicit Env(const char* n) : name(n) {
+      const char* v = std::getenv(n);
+      had = v, old = v ? v : "";
+    }
+    ~Env() { had ? setenv(name, old.c_str(), 1) : unsetenv(name); }
+  } e1(mjb::kRadCacheEnv), e2("XDG_CACHE_HOME"), e3("HOME");
+  setenv("HOME", "/home/u", 1);
+  unsetenv("XDG_CACHE_HOME");
+  unsetenv(mjb::kRadCacheEnv);
+  EXPECT_EQ(mjb::radCacheDir(""), "/home/u/.cache/mjbuoy");
+  setenv("XDG_CACHE_HOME", "/xdg", 1);
+  EXPECT_EQ(mjb::radCacheDir(""), "/xdg/mjbuoy");
+  setenv(mjb::kRadCacheEnv, "/ci/cache", 1);
+  EXPECT_EQ(mjb::radCacheDir(""), "/ci/cache");
+  EXPECT_EQ(mjb::radCacheDir("/model/dir"), "/model/dir");
+  EXPECT_EQ(mjb::radCacheDir("off"), "");
+  setenv(mjb::kRadCacheEnv, "off", 1);
+  EXPECT_EQ(mjb::radCacheDir(""), "");
+  EXPECT_EQ(mjb::radCacheDir("/model/dir"), "/model/dir");
+}
+
+}  // namespace
