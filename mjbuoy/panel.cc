@@ -8,12 +8,14 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <memory>
 #include <thread>
 
 #include <Eigen/Dense>
 
 #include "gauss.h"
 #include "green.h"
+#include "greentab.h"
 #include "rankine.h"
 
 namespace mjb {
@@ -244,15 +246,15 @@ void rankineMatrices(const Problem& pb, Rankine* rk) {
 }
 
 // wave part of G integrated over panel j at x: potential and gradient
-void waveIntegral(const std::vector<QPoint>& q, double K, const double* x, bool grad, cplx* s,
-                  cplx g[3]) {
+void waveIntegral(const GreenTable* tab, const std::vector<QPoint>& q, double K, const double* x,
+                  bool grad, cplx* s, cplx g[3]) {
   cplx ss = 0, gg[3] = {0, 0, 0};
   for (const QPoint& t : q) {
     double dx = x[0] - t.p[0], dy = x[1] - t.p[1];
     double R = std::sqrt(dx * dx + dy * dy);
     double X = K * R, Y = -K * (x[2] + t.p[2]);
     if (Y < 0) Y = 0;
-    WaveF f = greenWave(X, Y);
+    WaveF f = greenWaveTab(tab, X, Y);
     double ey = std::exp(-Y), j0 = f.J0;
     // G_w = 2K F + 2 pi i K e^-Y J0(X)
     ss += t.w * cplx(2 * K * f.F, 2 * kPi * K * ey * j0);
@@ -276,7 +278,7 @@ void waveIntegral(const std::vector<QPoint>& q, double K, const double* x, bool 
 }
 
 // frequency-dependent wave matrices WS (all rows) and WD (body rows)
-void waveMatrices(const Problem& pb, double K, MatC* WS, MatC* WD) {
+void waveMatrices(const Problem& pb, const GreenTable* tab, double K, MatC* WS, MatC* WD) {
   int n = pb.nb + pb.nl, nb = pb.nb;
   WS->resize(n, n);
   WD->resize(nb, n);
@@ -301,11 +303,22 @@ void waveMatrices(const Problem& pb, double K, MatC* WS, MatC* WD) {
         q = &one;
       }
       cplx s, g[3];
-      waveIntegral(*q, K, pi.c, grad, &s, g);
+      waveIntegral(tab, *q, K, pi.c, grad, &s, g);
       (*WS)(i, j) = s;
       if (grad) (*WD)(i, j) = g[0] * pi.n[0] + g[1] * pi.n[1] + g[2] * pi.n[2];
     }
   });
+}
+
+// the tabulated wave part covering every panel pair up to wavenumber K:
+// X = K R <= K (horizontal diagonal of the bounding box), Y <= 2 K depth
+std::shared_ptr<const GreenTable> waveTable(const Problem& pb, double K) {
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (const Panel& p : pb.pn)
+    for (int v = 0; v < p.nv; v++)
+      for (int k = 0; k < 3; k++) lo[k] = std::fmin(lo[k], p.v[v][k]), hi[k] = std::fmax(hi[k], p.v[v][k]);
+  double dh = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+  return greenTable(K * dh, -2 * K * lo[2]);
 }
 
 bool finiteAll(const double* a, int n) {
@@ -391,9 +404,10 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
   out->FKre.assign(6 * nw * nh, 0);
   out->FKim.assign(6 * nw * nh, 0);
   MatC WS, WD;
+  std::shared_ptr<const GreenTable> tab = waveTable(pb, omega.back() * omega.back() / grav);
   for (int w = 0; w < nw; w++) {
     double om = omega[w], K = om * om / grav;
-    waveMatrices(pb, K, &WS, &WD);
+    waveMatrices(pb, tab.get(), K, &WS, &WD);
     MatC M(n, n);
     M.topRows(nb) = (rk.Dd + rk.Di).cast<cplx>() + WD;
     // lid rows: no vertical velocity on the lid's interior side,
