@@ -30,10 +30,10 @@ const double kPi = 3.14159265358979323846;
 // runs body(i) for i in [0, n) on up to hardware_concurrency threads
 // (rows interleaved: near and far rows cost about the same)
 template <class Fn>
-void parallelRows(int n, Fn body) {
+void parallelRows(int n, Fn body, int minn = 64) {
   int nt = (int)std::thread::hardware_concurrency();
   nt = nt < 1 ? 1 : (nt > 8 ? 8 : nt);
-  if (nt == 1 || n < 64) {
+  if (nt == 1 || n < minn) {
     for (int i = 0; i < n; i++) body(i);
     return;
   }
@@ -278,7 +278,7 @@ void waveIntegral(const GreenTable* tab, const std::vector<QPoint>& q, double K,
 }
 
 // frequency-dependent wave matrices WS (all rows) and WD (body rows)
-void waveMatrices(const Problem& pb, const GreenTable* tab, double K, MatC* WS, MatC* WD) {
+void waveMatrices(const Problem& pb, const GreenTable* tab, double K, bool par, MatC* WS, MatC* WD) {
   int n = pb.nb + pb.nl, nb = pb.nb;
   WS->resize(n, n);
   WD->resize(nb, n);
@@ -307,7 +307,7 @@ void waveMatrices(const Problem& pb, const GreenTable* tab, double K, MatC* WS, 
       (*WS)(i, j) = s;
       if (grad) (*WD)(i, j) = g[0] * pi.n[0] + g[1] * pi.n[1] + g[2] * pi.n[2];
     }
-  });
+  }, par ? 64 : 1 << 30);
 }
 
 // the tabulated wave part covering every panel pair up to wavenumber K:
@@ -325,6 +325,91 @@ bool finiteAll(const double* a, int n) {
   for (int i = 0; i < n; i++)
     if (!std::isfinite(a[i])) return false;
   return true;
+}
+
+// one frequency's radiation and diffraction solve (panelSolve's inputs);
+// false on a non-finite result
+struct Freq {
+  const Problem* pb;
+  const Rankine* rk;
+  const MatR *Nn, *Na;
+  const GreenTable* tab;
+  const std::vector<double>*omega, *heading;
+  HydroCoef* out;
+  bool outer;  // frequencies run in parallel: fill serially
+};
+
+bool solveOmega(const Freq& f, int w) {
+  const Problem& pb = *f.pb;
+  const Rankine& rk = *f.rk;
+  const MatR &Nn = *f.Nn, &Na = *f.Na;
+  const GreenTable* tab = f.tab;
+  const std::vector<double>& heading = *f.heading;
+  HydroCoef* out = f.out;
+  int n = pb.nb + pb.nl, nb = pb.nb, nh = (int)heading.size();
+  const double* ref = out->ref;
+  double rho = out->rho, grav = out->g;
+  double om = (*f.omega)[w], K = om * om / grav;
+  MatC WS, WD;
+  waveMatrices(pb, tab, K, !f.outer, &WS, &WD);
+  MatC M(n, n);
+  M.topRows(nb) = (rk.Dd + rk.Di).cast<cplx>() + WD;
+  // lid rows: no vertical velocity on the lid's interior side,
+  // dphi/dz(0-) = K phi + 4 pi sigma = 0 (the free-surface condition of G
+  // plus the jump of the doubled source sheet)
+  if (pb.nl)
+    M.bottomRows(pb.nl) =
+        K * ((rk.Sd.bottomRows(pb.nl) + rk.Si.bottomRows(pb.nl)).cast<cplx>() + WS.bottomRows(pb.nl));
+  for (int i = 0; i < nb; i++) M(i, i) -= 2 * kPi;
+  for (int i = nb; i < n; i++) M(i, i) += 4 * kPi;
+  // right-hand sides: 6 radiation modes (dphi/dn = n_j), nh diffraction
+  // problems (dphi_D/dn = -dphi_0/dn)
+  MatC rhs = MatC::Zero(n, 6 + nh);
+  rhs.block(0, 0, nb, 6) = Nn.cast<cplx>();
+  // incident potential per unit amplitude: phi0 = -i g/omega e^{Kz} e^{iK(x cos b + y sin b)}
+  MatC phi0(nb, nh);
+  for (int h = 0; h < nh; h++) {
+    double cb = std::cos(heading[h]), sb = std::sin(heading[h]);
+    for (int i = 0; i < nb; i++) {
+      const Panel& p = pb.pn[i];
+      double ph = K * ((p.c[0] - ref[0]) * cb + (p.c[1] - ref[1]) * sb);
+      cplx e = std::exp(K * p.c[2]) * cplx(std::cos(ph), std::sin(ph));
+      cplx f0 = cplx(0, -grav / om) * e;
+      phi0(i, h) = f0;
+      cplx dn = f0 * (cplx(0, K * cb) * p.n[0] + cplx(0, K * sb) * p.n[1] + K * p.n[2]);
+      rhs(i, 6 + h) = -dn;
+    }
+  }
+  MatC sig = M.partialPivLu().solve(rhs);
+  MatC S = (rk.Sd.topRows(nb) + rk.Si.topRows(nb)).cast<cplx>() + WS.topRows(nb);
+  MatC phi = S * sig;
+  // radiation force per unit velocity: -i omega rho int phi_j n_i dS
+  //   = i omega A_ij - B_ij
+  MatC P = Na.transpose().cast<cplx>() * phi;
+  for (int a = 0; a < 6; a++)
+    for (int b = 0; b < 6; b++) {
+      out->A[36 * w + 6 * a + b] = -rho * P(a, b).real();
+      out->B[36 * w + 6 * a + b] = -rho * om * P(a, b).imag();
+    }
+  // exciting force: -i omega rho int (phi0 + phiD) n dS
+  for (int h = 0; h < nh; h++)
+    for (int a = 0; a < 6; a++) {
+      cplx fk = 0, fd = 0;
+      for (int i = 0; i < nb; i++) {
+        fk += phi0(i, h) * Na(i, a);
+        fd += phi(i, 6 + h) * Na(i, a);
+      }
+      fk *= cplx(0, -om * rho);
+      fd *= cplx(0, -om * rho);
+      int o = (w * nh + h) * 6 + a;
+      out->FKre[o] = fk.real();
+      out->FKim[o] = fk.imag();
+      out->Xre[o] = (fk + fd).real();
+      out->Xim[o] = (fk + fd).imag();
+    }
+  return finiteAll(&out->A[36 * w], 36) && finiteAll(&out->B[36 * w], 36) &&
+         finiteAll(out->Xre.data() + 6 * w * nh, 6 * nh) &&  // data(): no headings is allowed
+         finiteAll(out->Xim.data() + 6 * w * nh, 6 * nh);
 }
 
 }  // namespace
@@ -403,75 +488,20 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
   out->Xim.assign(6 * nw * nh, 0);
   out->FKre.assign(6 * nw * nh, 0);
   out->FKim.assign(6 * nw * nh, 0);
-  MatC WS, WD;
   std::shared_ptr<const GreenTable> tab = waveTable(pb, omega.back() * omega.back() / grav);
-  for (int w = 0; w < nw; w++) {
-    double om = omega[w], K = om * om / grav;
-    waveMatrices(pb, tab.get(), K, &WS, &WD);
-    MatC M(n, n);
-    M.topRows(nb) = (rk.Dd + rk.Di).cast<cplx>() + WD;
-    // lid rows: no vertical velocity on the lid's interior side,
-    // dphi/dz(0-) = K phi + 4 pi sigma = 0 (the free-surface condition of G
-    // plus the jump of the doubled source sheet)
-    if (pb.nl)
-      M.bottomRows(pb.nl) =
-          K * ((rk.Sd.bottomRows(pb.nl) + rk.Si.bottomRows(pb.nl)).cast<cplx>() + WS.bottomRows(pb.nl));
-    for (int i = 0; i < nb; i++) M(i, i) -= 2 * kPi;
-    for (int i = nb; i < n; i++) M(i, i) += 4 * kPi;
-    // right-hand sides: 6 radiation modes (dphi/dn = n_j), nh diffraction
-    // problems (dphi_D/dn = -dphi_0/dn)
-    MatC rhs = MatC::Zero(n, 6 + nh);
-    rhs.block(0, 0, nb, 6) = Nn.cast<cplx>();
-    // incident potential per unit amplitude: phi0 = -i g/omega e^{Kz} e^{iK(x cos b + y sin b)}
-    MatC phi0(nb, nh);
-    for (int h = 0; h < nh; h++) {
-      double cb = std::cos(heading[h]), sb = std::sin(heading[h]);
-      for (int i = 0; i < nb; i++) {
-        const Panel& p = pb.pn[i];
-        double ph = K * ((p.c[0] - ref[0]) * cb + (p.c[1] - ref[1]) * sb);
-        cplx e = std::exp(K * p.c[2]) * cplx(std::cos(ph), std::sin(ph));
-        cplx f0 = cplx(0, -grav / om) * e;
-        phi0(i, h) = f0;
-        cplx dn = f0 * (cplx(0, K * cb) * p.n[0] + cplx(0, K * sb) * p.n[1] + K * p.n[2]);
-        rhs(i, 6 + h) = -dn;
-      }
-    }
-    MatC sig = M.partialPivLu().solve(rhs);
-    MatC S = (rk.Sd.topRows(nb) + rk.Si.topRows(nb)).cast<cplx>() + WS.topRows(nb);
-    MatC phi = S * sig;
-    // radiation force per unit velocity: -i omega rho int phi_j n_i dS
-    //   = i omega A_ij - B_ij
-    MatC P = Na.transpose().cast<cplx>() * phi;
-    for (int a = 0; a < 6; a++)
-      for (int b = 0; b < 6; b++) {
-        out->A[36 * w + 6 * a + b] = -rho * P(a, b).real();
-        out->B[36 * w + 6 * a + b] = -rho * om * P(a, b).imag();
-      }
-    // exciting force: -i omega rho int (phi0 + phiD) n dS
-    for (int h = 0; h < nh; h++)
-      for (int a = 0; a < 6; a++) {
-        cplx fk = 0, fd = 0;
-        for (int i = 0; i < nb; i++) {
-          fk += phi0(i, h) * Na(i, a);
-          fd += phi(i, 6 + h) * Na(i, a);
-        }
-        fk *= cplx(0, -om * rho);
-        fd *= cplx(0, -om * rho);
-        int o = (w * nh + h) * 6 + a;
-        out->FKre[o] = fk.real();
-        out->FKim[o] = fk.imag();
-        out->Xre[o] = (fk + fd).real();
-        out->Xim[o] = (fk + fd).imag();
-      }
-    if (!finiteAll(&out->A[36 * w], 36) || !finiteAll(&out->B[36 * w], 36) ||
-        !finiteAll(out->Xre.data() + 6 * w * nh, 6 * nh) ||
-        !finiteAll(out->Xim.data() + 6 * w * nh, 6 * nh)) {  // data(): no headings is allowed
+  // frequencies in parallel (each with a serial fill; one frequency: a
+  // parallel fill): every frequency is computed by the same operations in
+  // the same order whatever the thread, so results do not depend on it
+  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &omega, &heading, out, nw > 1};
+  std::vector<char> bad(nw, 0);
+  parallelRows(nw, [&](int w) { bad[w] = !solveOmega(fq, w); }, 2);
+  for (int w = 0; w < nw; w++)
+    if (bad[w]) {
       char b[200];
-      std::snprintf(b, sizeof b, "panel: non-finite coefficients at omega = %g rad/s", om);
+      std::snprintf(b, sizeof b, "panel: non-finite coefficients at omega = %g rad/s", omega[w]);
       *err = b;
       return false;
     }
-  }
   return true;
 }
 

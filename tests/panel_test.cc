@@ -305,6 +305,25 @@ TEST(Panel, TabulatedSolveMatchesDirect) {
   }
 }
 
+// frequencies are solved in parallel (one thread per frequency, serial
+// fill) and a single frequency with a parallel fill: each frequency's
+// coefficients must not depend on that, bit for bit
+TEST(Panel, FrequenciesIndependentOfThreads) {
+  const std::vector<double> kr = {0.3, 0.9, 1.7, 2.5};
+  HydroCoef all = solveHemisphere(6, 12, kr);
+  for (int w = 0; w < (int)kr.size(); w++) {
+    HydroCoef one = solveHemisphere(6, 12, {kr[w]});
+    for (int i = 0; i < 36; i++) {
+      EXPECT_EQ(one.A[i], all.A[36 * w + i]) << "kR " << kr[w] << " A " << i;
+      EXPECT_EQ(one.B[i], all.B[36 * w + i]) << "kR " << kr[w] << " B " << i;
+    }
+    for (int a = 0; a < 6; a++) {
+      EXPECT_EQ(one.Xre[a], all.Xre[6 * w + a]) << "kR " << kr[w];
+      EXPECT_EQ(one.Xim[a], all.Xim[6 * w + a]) << "kR " << kr[w];
+    }
+  }
+}
+
 // heave A33 and B33 within 3% of Hulme's Table 1 on a 12 x 24 mesh (288
 // panels), without and with the interior lid
 TEST(Panel, HemisphereHeaveCoarse) {
