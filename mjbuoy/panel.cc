@@ -5,6 +5,7 @@
 // irregular frequencies
 #include "panel.h"
 
+#include <atomic>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -277,13 +278,17 @@ void waveIntegral(const GreenTable* tab, const std::vector<QPoint>& q, double K,
   }
 }
 
-// frequency-dependent wave matrices WS (all rows) and WD (body rows)
-void waveMatrices(const Problem& pb, const GreenTable* tab, double K, bool par, MatC* WS, MatC* WD) {
-  int n = pb.nb + pb.nl, nb = pb.nb;
-  WS->resize(n, n);
-  WD->resize(nb, n);
-  parallelRows(n, [&](int i) {
+// frequency-dependent wave matrices on the rows listed (body rows first):
+// WS (all of them) and WD (the body rows)
+void waveMatrices(const Problem& pb, const std::vector<int>& rows, const GreenTable* tab, double K,
+                  bool par, MatC* WS, MatC* WD) {
+  int n = pb.nb + pb.nl, nb = pb.nb, nr = (int)rows.size(), nrb = 0;
+  for (int i : rows) nrb += i < nb;
+  WS->resize(nr, n);
+  WD->resize(nrb, n);
+  parallelRows(nr, [&](int r) {
     std::vector<QPoint> one(1);
+    int i = rows[r];
     const Panel& pi = pb.pn[i];
     bool grad = i < nb;
     for (int j = 0; j < n; j++) {
@@ -304,8 +309,8 @@ void waveMatrices(const Problem& pb, const GreenTable* tab, double K, bool par, 
       }
       cplx s, g[3];
       waveIntegral(tab, *q, K, pi.c, grad, &s, g);
-      (*WS)(i, j) = s;
-      if (grad) (*WD)(i, j) = g[0] * pi.n[0] + g[1] * pi.n[1] + g[2] * pi.n[2];
+      (*WS)(r, j) = s;
+      if (grad) (*WD)(r, j) = g[0] * pi.n[0] + g[1] * pi.n[1] + g[2] * pi.n[2];
     }
   }, par ? 64 : 1 << 30);
 }
@@ -327,6 +332,56 @@ bool finiteAll(const double* a, int n) {
   return true;
 }
 
+// mirror symmetry of the panels about a vertical plane x_axis = c: mir[j]
+// the image of panel j, rows the panels on the side x_axis > c (body
+// first); empty rows: none found
+struct Mirror {
+  std::vector<int> mir, rows;
+};
+
+std::atomic<bool> gSymmetry{true};
+
+// whether panels p and q are images of each other in x_axis = c (centroid
+// within tol, normal within 1e-6, area within 1e-6 relative)
+bool images(const Panel& p, const Panel& q, int axis, double c, double tol) {
+  for (int k = 0; k < 3; k++) {
+    double pc = k == axis ? 2 * c - p.c[k] : p.c[k], pn = k == axis ? -p.n[k] : p.n[k];
+    if (std::fabs(pc - q.c[k]) > tol || std::fabs(pn - q.n[k]) > 1e-6) return false;
+  }
+  return std::fabs(p.area - q.area) <= 1e-6 * p.area;
+}
+
+// symmetry about the plane x_axis = c through the body's area centroid,
+// within 1e-6 of the mesh size; a panel on the plane (its own image) or one
+// without an image: none
+bool findMirror(const Problem& pb, int axis, Mirror* m) {
+  int n = pb.nb + pb.nl;
+  double c = 0, area = 0, lo = 1e300, hi = -1e300;
+  for (int j = 0; j < pb.nb; j++) {
+    const Panel& p = pb.pn[j];
+    c += p.area * p.c[axis];
+    area += p.area;
+  }
+  c /= area;
+  for (const Panel& p : pb.pn)
+    for (int v = 0; v < p.nv; v++)
+      for (int k = 0; k < 3; k++) lo = std::fmin(lo, p.v[v][k]), hi = std::fmax(hi, p.v[v][k]);
+  double tol = 1e-6 * (hi - lo);
+  m->mir.assign(n, -1);
+  m->rows.clear();
+  for (int j = 0; j < n; j++) {
+    if (std::fabs(pb.pn[j].c[axis] - c) <= tol) return false;
+    if (m->mir[j] >= 0) continue;
+    int e = j < pb.nb ? pb.nb : n;  // body panels pair with body panels, lid with lid
+    for (int k = j + 1; k < e && m->mir[j] < 0; k++)
+      if (m->mir[k] < 0 && images(pb.pn[j], pb.pn[k], axis, c, tol)) m->mir[j] = k, m->mir[k] = j;
+    if (m->mir[j] < 0) return false;
+  }
+  for (int j = 0; j < n; j++)
+    if (pb.pn[j].c[axis] > c) m->rows.push_back(j);
+  return true;
+}
+
 // one frequency's radiation and diffraction solve (panelSolve's inputs);
 // false on a non-finite result
 struct Freq {
@@ -336,32 +391,58 @@ struct Freq {
   const GreenTable* tab;
   const std::vector<double>*omega, *heading;
   HydroCoef* out;
-  bool outer;  // frequencies run in parallel: fill serially
+  bool outer;        // frequencies run in parallel: fill serially
+  const Mirror* mr;  // rows: the half-size solve; else all rows
+  std::vector<int> rows;
 };
+
+// the source strengths of M sig = rhs on the full mesh from the half-size
+// symmetric and antisymmetric systems (docs/physics.md section 13): M holds
+// the rows of mr.rows only; M(m(i), m(j)) = M(i, j) by the symmetry
+MatC mirrorSolve(const Mirror& mr, const MatC& M, const MatC& rhs) {
+  int nr = (int)mr.rows.size(), nc = (int)rhs.cols();
+  MatC Mp(nr, nr), Mm(nr, nr), ev(nr, nc), od(nr, nc), sig(M.cols(), nc);
+  for (int c = 0; c < nr; c++) {
+    int j = mr.rows[c], k = mr.mir[j];
+    Mp.col(c) = M.col(j) + M.col(k);
+    Mm.col(c) = M.col(j) - M.col(k);
+    ev.row(c) = 0.5 * (rhs.row(j) + rhs.row(k));
+    od.row(c) = 0.5 * (rhs.row(j) - rhs.row(k));
+  }
+  MatC sp = Mp.partialPivLu().solve(ev), sm = Mm.partialPivLu().solve(od);
+  for (int c = 0; c < nr; c++) {
+    sig.row(mr.rows[c]) = sp.row(c) + sm.row(c);
+    sig.row(mr.mir[mr.rows[c]]) = sp.row(c) - sm.row(c);
+  }
+  return sig;
+}
 
 bool solveOmega(const Freq& f, int w) {
   const Problem& pb = *f.pb;
   const Rankine& rk = *f.rk;
   const MatR &Nn = *f.Nn, &Na = *f.Na;
-  const GreenTable* tab = f.tab;
   const std::vector<double>& heading = *f.heading;
+  const std::vector<int>& rows = f.rows;
   HydroCoef* out = f.out;
-  int n = pb.nb + pb.nl, nb = pb.nb, nh = (int)heading.size();
+  int n = pb.nb + pb.nl, nb = pb.nb, nh = (int)heading.size(), nr = (int)rows.size();
   const double* ref = out->ref;
   double rho = out->rho, grav = out->g;
   double om = (*f.omega)[w], K = om * om / grav;
   MatC WS, WD;
-  waveMatrices(pb, tab, K, !f.outer, &WS, &WD);
-  MatC M(n, n);
-  M.topRows(nb) = (rk.Dd + rk.Di).cast<cplx>() + WD;
-  // lid rows: no vertical velocity on the lid's interior side,
-  // dphi/dz(0-) = K phi + 4 pi sigma = 0 (the free-surface condition of G
-  // plus the jump of the doubled source sheet)
-  if (pb.nl)
-    M.bottomRows(pb.nl) =
-        K * ((rk.Sd.bottomRows(pb.nl) + rk.Si.bottomRows(pb.nl)).cast<cplx>() + WS.bottomRows(pb.nl));
-  for (int i = 0; i < nb; i++) M(i, i) -= 2 * kPi;
-  for (int i = nb; i < n; i++) M(i, i) += 4 * kPi;
+  waveMatrices(pb, rows, f.tab, K, !f.outer, &WS, &WD);
+  int nrb = (int)WD.rows();
+  MatC M(nr, n);
+  for (int r = 0; r < nr; r++) {
+    int i = rows[r];
+    // lid rows: no vertical velocity on the lid's interior side,
+    // dphi/dz(0-) = K phi + 4 pi sigma = 0 (the free-surface condition of
+    // G plus the jump of the doubled source sheet)
+    if (r < nrb)
+      M.row(r) = (rk.Dd.row(i) + rk.Di.row(i)).cast<cplx>() + WD.row(r);
+    else
+      M.row(r) = K * ((rk.Sd.row(i) + rk.Si.row(i)).cast<cplx>() + WS.row(r));
+    M(r, i) += i < nb ? -2 * kPi : 4 * kPi;
+  }
   // right-hand sides: 6 radiation modes (dphi/dn = n_j), nh diffraction
   // problems (dphi_D/dn = -dphi_0/dn)
   MatC rhs = MatC::Zero(n, 6 + nh);
@@ -380,9 +461,24 @@ bool solveOmega(const Freq& f, int w) {
       rhs(i, 6 + h) = -dn;
     }
   }
-  MatC sig = M.partialPivLu().solve(rhs);
-  MatC S = (rk.Sd.topRows(nb) + rk.Si.topRows(nb)).cast<cplx>() + WS.topRows(nb);
-  MatC phi = S * sig;
+  bool sym = nr < n;
+  MatC sig = sym ? mirrorSolve(*f.mr, M, rhs) : MatC(M.partialPivLu().solve(rhs));
+  MatC S(nrb, n);
+  for (int r = 0; r < nrb; r++)
+    S.row(r) = (rk.Sd.row(rows[r]) + rk.Si.row(rows[r])).cast<cplx>() + WS.row(r);
+  MatC phi(nb, 6 + nh);
+  if (!sym) {
+    phi = S * sig;
+  } else {
+    // phi(m(i)) = sum_j S(i, m(j)) sig(j) = (S sig(m(.)))(i)
+    MatC sigm(n, 6 + nh);
+    for (int j = 0; j < n; j++) sigm.row(j) = sig.row(f.mr->mir[j]);
+    MatC ps = S * sig, pm = S * sigm;
+    for (int r = 0; r < nrb; r++) {
+      phi.row(rows[r]) = ps.row(r);
+      phi.row(f.mr->mir[rows[r]]) = pm.row(r);
+    }
+  }
   // radiation force per unit velocity: -i omega rho int phi_j n_i dS
   //   = i omega A_ij - B_ij
   MatC P = Na.transpose().cast<cplx>() * phi;
@@ -413,6 +509,19 @@ bool solveOmega(const Freq& f, int w) {
 }
 
 }  // namespace
+
+void panelSymmetryUse(bool on) { gSymmetry = on; }
+
+int panelMirror(const PanelMesh& body, const PanelMesh& lid) {
+  Problem pb;
+  std::string err;
+  if (!buildPanels(body, false, &pb, &err)) return -1;
+  pb.nb = (int)pb.pn.size();
+  if (!pb.nb || !buildPanels(lid, true, &pb, &err)) return -1;
+  pb.nl = (int)pb.pn.size() - pb.nb;
+  Mirror mr;
+  return findMirror(pb, 1, &mr) ? 1 : findMirror(pb, 0, &mr) ? 0 : -1;
+}
 
 bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,
                 const std::vector<double>& heading, HydroCoef* out, std::string* err) {
@@ -492,7 +601,15 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
   // frequencies in parallel (each with a serial fill; one frequency: a
   // parallel fill): every frequency is computed by the same operations in
   // the same order whatever the thread, so results do not depend on it
-  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &omega, &heading, out, nw > 1};
+  // a mirror-symmetric mesh (about y = c, else x = c): half-size systems
+  Mirror mr;
+  bool sym = gSymmetry && (findMirror(pb, 1, &mr) || findMirror(pb, 0, &mr));
+  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &omega, &heading, out, nw > 1, &mr, {}};
+  if (sym) {
+    fq.rows = mr.rows;
+  } else {
+    for (int i = 0; i < n; i++) fq.rows.push_back(i);
+  }
   std::vector<char> bad(nw, 0);
   parallelRows(nw, [&](int w) { bad[w] = !solveOmega(fq, w); }, 2);
   for (int w = 0; w < nw; w++)

@@ -28,6 +28,15 @@ struct PanelMesh {
 bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,
                 const std::vector<double>& heading, HydroCoef* out, std::string* err);
 
+// a panel mesh mirror-symmetric about a vertical plane (within 1e-6 of its
+// size) is solved as two half-size systems; off (tests): always the full
+// system. Default on
+void panelSymmetryUse(bool on);
+
+// the mirror plane panelSolve uses: 1 (y = c), 0 (x = c) or -1 (none, or
+// invalid input)
+int panelMirror(const PanelMesh& body, const PanelMesh& lid);
+
 }  // namespace mjb
 
 #endif  // MJBUOY_PANEL_H_

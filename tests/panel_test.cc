@@ -324,6 +324,68 @@ TEST(Panel, FrequenciesIndependentOfThreads) {
   }
 }
 
+// mirror symmetry (docs/physics.md section 13): the half-size symmetric and
+// antisymmetric systems give the full solve's coefficients within 1e-8 of
+// the largest entry (they are the same linear system, block-diagonalised);
+// the hemisphere (symmetric about y = 0) and a hemisphere shifted and
+// stretched on one side of y (symmetric about x = 0.3 only: the second
+// plane and a plane off the origin). The sheared asymmetric hull of
+// AsymmetricHullSymmetricAndDissipative has no mirror: the same operations
+// as with symmetry off, bit for bit
+TEST(Panel, MirrorSymmetricSolveMatchesFull) {
+  auto solve = [](const PanelMesh& b, const PanelMesh& l, bool sym) {
+    HydroCoef h;
+    h.rho = kRho;
+    h.ref[0] = 0.1;
+    h.ref[2] = -0.2;
+    std::string err;
+    mjb::panelSymmetryUse(sym);
+    EXPECT_TRUE(mjb::panelSolve(b, l, {1.5, 3.0, 5.0}, {0.0, 0.7}, &h, &err)) << err;
+    mjb::panelSymmetryUse(true);
+    return h;
+  };
+  auto compare = [](const HydroCoef& s, const HydroCoef& f, double tol, const char* what) {
+    double big = 0, xb = 0;
+    for (size_t i = 0; i < f.A.size(); i++) big = std::fmax(big, std::fmax(std::fabs(f.A[i]), std::fabs(f.B[i])));
+    for (size_t i = 0; i < f.Xre.size(); i++) xb = std::fmax(xb, std::hypot(f.Xre[i], f.Xim[i]));
+    ASSERT_EQ(s.A.size(), f.A.size());
+    for (size_t i = 0; i < f.A.size(); i++) {
+      EXPECT_LE(std::fabs(s.A[i] - f.A[i]), tol * big) << what << " A " << i;
+      EXPECT_LE(std::fabs(s.B[i] - f.B[i]), tol * big) << what << " B " << i;
+    }
+    for (size_t i = 0; i < f.Xre.size(); i++) {
+      EXPECT_LE(std::fabs(s.Xre[i] - f.Xre[i]), tol * xb) << what << " Xre " << i;
+      EXPECT_LE(std::fabs(s.Xim[i] - f.Xim[i]), tol * xb) << what << " Xim " << i;
+    }
+  };
+  PanelMesh b, l;
+  mjb::hemisphereMesh(kR, 6, 12, &b, &l);
+  EXPECT_EQ(mjb::panelMirror(b, l), 1);
+  compare(solve(b, l, true), solve(b, l, false), 1e-8, "hemisphere");
+  auto stretch = [](PanelMesh* m) {
+    for (size_t i = 0; i < m->vert.size(); i += 3) {
+      m->vert[i] += 0.3;
+      if (m->vert[i + 1] > 0) m->vert[i + 1] *= 1.4;
+    }
+  };
+  stretch(&b);
+  stretch(&l);
+  EXPECT_EQ(mjb::panelMirror(b, l), 0);
+  compare(solve(b, l, true), solve(b, l, false), 1e-8, "stretched");
+  mjb::cylinderMesh(1, 0.8, 6, 3, 16, &b, &l);
+  auto warp = [](PanelMesh* m) {
+    for (size_t i = 0; i < m->vert.size(); i += 3) {
+      double x = m->vert[i], z = m->vert[i + 2];
+      m->vert[i] = 1.5 * x - 0.4 * z + 0.3;
+      m->vert[i + 1] += 0.2 * x * x;
+    }
+  };
+  warp(&b);
+  warp(&l);
+  EXPECT_EQ(mjb::panelMirror(b, l), -1);
+  compare(solve(b, l, true), solve(b, l, false), 0, "asymmetric");
+}
+
 // heave A33 and B33 within 3% of Hulme's Table 1 on a 12 x 24 mesh (288
 // panels), without and with the interior lid
 TEST(Panel, HemisphereHeaveCoarse) {
