@@ -431,18 +431,16 @@ bool solveOmega(const Freq& f, int w) {
   MatC WS, WD;
   waveMatrices(pb, rows, f.tab, K, !f.outer, &WS, &WD);
   int nrb = (int)WD.rows();
+  // lid rows: no vertical velocity on the lid's interior side,
+  // dphi/dz(0-) = K phi + 4 pi sigma = 0 (the free-surface condition of G
+  // plus the jump of the doubled source sheet)
+  std::vector<int> rb(rows.begin(), rows.begin() + nrb), rl(rows.begin() + nrb, rows.end());
   MatC M(nr, n);
-  for (int r = 0; r < nr; r++) {
-    int i = rows[r];
-    // lid rows: no vertical velocity on the lid's interior side,
-    // dphi/dz(0-) = K phi + 4 pi sigma = 0 (the free-surface condition of
-    // G plus the jump of the doubled source sheet)
-    if (r < nrb)
-      M.row(r) = (rk.Dd.row(i) + rk.Di.row(i)).cast<cplx>() + WD.row(r);
-    else
-      M.row(r) = K * ((rk.Sd.row(i) + rk.Si.row(i)).cast<cplx>() + WS.row(r));
-    M(r, i) += i < nb ? -2 * kPi : 4 * kPi;
-  }
+  M.topRows(nrb) = (rk.Dd(rb, Eigen::all) + rk.Di(rb, Eigen::all)).cast<cplx>() + WD;
+  if (nr > nrb)
+    M.bottomRows(nr - nrb) =
+        K * ((rk.Sd(rl, Eigen::all) + rk.Si(rl, Eigen::all)).cast<cplx>() + WS.bottomRows(nr - nrb));
+  for (int r = 0; r < nr; r++) M(r, rows[r]) += rows[r] < nb ? -2 * kPi : 4 * kPi;
   // right-hand sides: 6 radiation modes (dphi/dn = n_j), nh diffraction
   // problems (dphi_D/dn = -dphi_0/dn)
   MatC rhs = MatC::Zero(n, 6 + nh);
@@ -463,9 +461,7 @@ bool solveOmega(const Freq& f, int w) {
   }
   bool sym = nr < n;
   MatC sig = sym ? mirrorSolve(*f.mr, M, rhs) : MatC(M.partialPivLu().solve(rhs));
-  MatC S(nrb, n);
-  for (int r = 0; r < nrb; r++)
-    S.row(r) = (rk.Sd.row(rows[r]) + rk.Si.row(rows[r])).cast<cplx>() + WS.row(r);
+  MatC S = (rk.Sd(rb, Eigen::all) + rk.Si(rb, Eigen::all)).cast<cplx>() + WS.topRows(nrb);
   MatC phi(nb, 6 + nh);
   if (!sym) {
     phi = S * sig;
