@@ -5,6 +5,7 @@
 // irregular frequencies
 #include "panel.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <complex>
@@ -382,6 +383,38 @@ bool findMirror(const Problem& pb, int axis, Mirror* m) {
   return true;
 }
 
+// the symmetry group of the mesh: img[k][j] the image of panel j under
+// element k (k = 0 the identity; 1 or 3 mirrors, each its own inverse),
+// rows one panel of each orbit (body first)
+struct Group {
+  std::vector<std::vector<int>> img;
+  std::vector<int> rows;
+};
+
+// the mirrors found: about y = c and x = c, both (4 elements), one, or none
+Group symmetryGroup(const Problem& pb) {
+  Group g;
+  int n = pb.nb + pb.nl;
+  std::vector<int> id(n);
+  for (int j = 0; j < n; j++) id[j] = j;
+  g.img.push_back(id);
+  Mirror my, mx;
+  bool hy = findMirror(pb, 1, &my), hx = findMirror(pb, 0, &mx);
+  if (hy) g.img.push_back(my.mir);
+  if (hx) g.img.push_back(mx.mir);
+  if (hy && hx) {
+    std::vector<int> b(n);
+    for (int j = 0; j < n; j++) b[j] = mx.mir[my.mir[j]];
+    g.img.push_back(b);
+  }
+  for (int j = 0; j < n; j++) {
+    bool in = (!hy || std::count(my.rows.begin(), my.rows.end(), j)) &&
+              (!hx || std::count(mx.rows.begin(), mx.rows.end(), j));
+    if (in) g.rows.push_back(j);
+  }
+  return g;
+}
+
 // one frequency's radiation and diffraction solve (panelSolve's inputs);
 // false on a non-finite result
 struct Freq {
@@ -392,27 +425,32 @@ struct Freq {
   const std::vector<double>*omega, *heading;
   HydroCoef* out;
   bool outer;        // frequencies run in parallel: fill serially
-  const Mirror* mr;  // rows: the half-size solve; else all rows
+  const Group* gr;  // rows: the reduced solve; else all rows
   std::vector<int> rows;
 };
 
-// the source strengths of M sig = rhs on the full mesh from the half-size
-// symmetric and antisymmetric systems (docs/physics.md section 13): M holds
-// the rows of mr.rows only; M(m(i), m(j)) = M(i, j) by the symmetry
-MatC mirrorSolve(const Mirror& mr, const MatC& M, const MatC& rhs) {
-  int nr = (int)mr.rows.size(), nc = (int)rhs.cols();
-  MatC Mp(nr, nr), Mm(nr, nr), ev(nr, nc), od(nr, nc), sig(M.cols(), nc);
-  for (int c = 0; c < nr; c++) {
-    int j = mr.rows[c], k = mr.mir[j];
-    Mp.col(c) = M.col(j) + M.col(k);
-    Mm.col(c) = M.col(j) - M.col(k);
-    ev.row(c) = 0.5 * (rhs.row(j) + rhs.row(k));
-    od.row(c) = 0.5 * (rhs.row(j) - rhs.row(k));
-  }
-  MatC sp = Mp.partialPivLu().solve(ev), sm = Mm.partialPivLu().solve(od);
-  for (int c = 0; c < nr; c++) {
-    sig.row(mr.rows[c]) = sp.row(c) + sm.row(c);
-    sig.row(mr.mir[mr.rows[c]]) = sp.row(c) - sm.row(c);
+// the source strengths of M sig = rhs on the full mesh from the
+// symmetry-adapted systems, one per character chi of the group (Z2 or
+// Z2 x Z2; docs/physics.md section 13): M holds the rows gr.rows only;
+// M(g i, g j) = M(i, j) for every element g, so with sig(g j) =
+// sum_p chi_p(g) sig_p(j) and rhs_p(i) = (1/|G|) sum_g chi_p(g) rhs(g i),
+// M_p(i, j) = sum_g chi_p(g) M(i, g j) decouples them
+MatC groupSolve(const Group& gr, const MatC& M, const MatC& rhs) {
+  int nr = (int)gr.rows.size(), nc = (int)rhs.cols(), ng = (int)gr.img.size();
+  // chi_p(g): element k flips mirror bit b when bit b of k is set (k = 1:
+  // the first mirror, 2: the second, 3: both)
+  auto chi = [](int p, int k) { return __builtin_popcount(p & k) % 2 ? -1.0 : 1.0; };
+  MatC sig = MatC::Zero(M.cols(), nc);
+  for (int p = 0; p < ng; p++) {
+    MatC Mp = MatC::Zero(nr, nr), rp = MatC::Zero(nr, nc);
+    for (int c = 0; c < nr; c++)
+      for (int k = 0; k < ng; k++) {
+        Mp.col(c) += chi(p, k) * M.col(gr.img[k][gr.rows[c]]);
+        rp.row(c) += (chi(p, k) / ng) * rhs.row(gr.img[k][gr.rows[c]]);
+      }
+    MatC sp = Mp.partialPivLu().solve(rp);
+    for (int c = 0; c < nr; c++)
+      for (int k = 0; k < ng; k++) sig.row(gr.img[k][gr.rows[c]]) += chi(p, k) * sp.row(c);
   }
   return sig;
 }
@@ -460,19 +498,18 @@ bool solveOmega(const Freq& f, int w) {
     }
   }
   bool sym = nr < n;
-  MatC sig = sym ? mirrorSolve(*f.mr, M, rhs) : MatC(M.partialPivLu().solve(rhs));
+  MatC sig = sym ? groupSolve(*f.gr, M, rhs) : MatC(M.partialPivLu().solve(rhs));
   MatC S = (rk.Sd(rb, Eigen::all) + rk.Si(rb, Eigen::all)).cast<cplx>() + WS.topRows(nrb);
   MatC phi(nb, 6 + nh);
   if (!sym) {
     phi = S * sig;
   } else {
-    // phi(m(i)) = sum_j S(i, m(j)) sig(j) = (S sig(m(.)))(i)
-    MatC sigm(n, 6 + nh);
-    for (int j = 0; j < n; j++) sigm.row(j) = sig.row(f.mr->mir[j]);
-    MatC ps = S * sig, pm = S * sigm;
-    for (int r = 0; r < nrb; r++) {
-      phi.row(rows[r]) = ps.row(r);
-      phi.row(f.mr->mir[rows[r]]) = pm.row(r);
+    // phi(g i) = sum_j S(i, g j) sig(j) = (S sig(g .))(i), g its own inverse
+    MatC sg(n, 6 + nh);
+    for (const std::vector<int>& g : f.gr->img) {
+      for (int j = 0; j < n; j++) sg.row(j) = sig.row(g[j]);
+      MatC pg = S * sg;
+      for (int r = 0; r < nrb; r++) phi.row(g[rows[r]]) = pg.row(r);
     }
   }
   // radiation force per unit velocity: -i omega rho int phi_j n_i dS
@@ -508,15 +545,15 @@ bool solveOmega(const Freq& f, int w) {
 
 void panelSymmetryUse(bool on) { gSymmetry = on; }
 
-int panelMirror(const PanelMesh& body, const PanelMesh& lid) {
+int panelMirrors(const PanelMesh& body, const PanelMesh& lid) {
   Problem pb;
   std::string err;
-  if (!buildPanels(body, false, &pb, &err)) return -1;
+  if (!buildPanels(body, false, &pb, &err)) return 0;
   pb.nb = (int)pb.pn.size();
-  if (!pb.nb || !buildPanels(lid, true, &pb, &err)) return -1;
+  if (!pb.nb || !buildPanels(lid, true, &pb, &err)) return 0;
   pb.nl = (int)pb.pn.size() - pb.nb;
   Mirror mr;
-  return findMirror(pb, 1, &mr) ? 1 : findMirror(pb, 0, &mr) ? 0 : -1;
+  return (findMirror(pb, 1, &mr) ? 1 : 0) | (findMirror(pb, 0, &mr) ? 2 : 0);
 }
 
 bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,
@@ -597,12 +634,12 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
   // frequencies in parallel (each with a serial fill; one frequency: a
   // parallel fill): every frequency is computed by the same operations in
   // the same order whatever the thread, so results do not depend on it
-  // a mirror-symmetric mesh (about y = c, else x = c): half-size systems
-  Mirror mr;
-  bool sym = gSymmetry && (findMirror(pb, 1, &mr) || findMirror(pb, 0, &mr));
-  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &omega, &heading, out, nw > 1, &mr, {}};
+  // a mirror-symmetric mesh (about y = c, x = c or both): reduced systems
+  Group gr;
+  bool sym = gSymmetry && (gr = symmetryGroup(pb), gr.img.size() > 1);
+  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &omega, &heading, out, nw > 1, &gr, {}};
   if (sym) {
-    fq.rows = mr.rows;
+    fq.rows = gr.rows;
   } else {
     for (int i = 0; i < n; i++) fq.rows.push_back(i);
   }

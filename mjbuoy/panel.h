@@ -28,14 +28,14 @@ struct PanelMesh {
 bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,
                 const std::vector<double>& heading, HydroCoef* out, std::string* err);
 
-// a panel mesh mirror-symmetric about a vertical plane (within 1e-6 of its
-// size) is solved as two half-size systems; off (tests): always the full
-// system. Default on
+// a panel mesh mirror-symmetric about one vertical plane (within 1e-6 of
+// its size) is solved as two half-size systems, about two as four
+// quarter-size ones; off (tests): always the full system. Default on
 void panelSymmetryUse(bool on);
 
-// the mirror plane panelSolve uses: 1 (y = c), 0 (x = c) or -1 (none, or
-// invalid input)
-int panelMirror(const PanelMesh& body, const PanelMesh& lid);
+// the mirror planes panelSolve uses, through the body's wetted-area
+// centroid: 1 (y = c) | 2 (x = c); 0 none (or invalid input)
+int panelMirrors(const PanelMesh& body, const PanelMesh& lid);
 
 }  // namespace mjb
 

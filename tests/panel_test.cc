@@ -324,12 +324,12 @@ TEST(Panel, FrequenciesIndependentOfThreads) {
   }
 }
 
-// mirror symmetry (docs/physics.md section 13): the half-size symmetric and
-// antisymmetric systems give the full solve's coefficients within 1e-8 of
-// the largest entry (they are the same linear system, block-diagonalised);
-// the hemisphere (symmetric about y = 0) and a hemisphere shifted and
-// stretched on one side of y (symmetric about x = 0.3 only: the second
-// plane and a plane off the origin). The sheared asymmetric hull of
+// mirror symmetry (docs/physics.md section 13): the symmetry-adapted
+// reduced systems give the full solve's coefficients within 1e-8 of the
+// largest entry (they are the same linear system, block-diagonalised);
+// the hemisphere (symmetric about y = 0 and x = 0: four quarter systems)
+// and a hemisphere shifted and stretched on one side of y (symmetric about
+// x = 0.3 only: one plane, off the origin). The sheared asymmetric hull of
 // AsymmetricHullSymmetricAndDissipative has no mirror: the same operations
 // as with symmetry off, bit for bit
 TEST(Panel, MirrorSymmetricSolveMatchesFull) {
@@ -360,7 +360,7 @@ TEST(Panel, MirrorSymmetricSolveMatchesFull) {
   };
   PanelMesh b, l;
   mjb::hemisphereMesh(kR, 6, 12, &b, &l);
-  EXPECT_EQ(mjb::panelMirror(b, l), 1);
+  EXPECT_EQ(mjb::panelMirrors(b, l), 3);
   compare(solve(b, l, true), solve(b, l, false), 1e-8, "hemisphere");
   auto stretch = [](PanelMesh* m) {
     for (size_t i = 0; i < m->vert.size(); i += 3) {
@@ -370,7 +370,7 @@ TEST(Panel, MirrorSymmetricSolveMatchesFull) {
   };
   stretch(&b);
   stretch(&l);
-  EXPECT_EQ(mjb::panelMirror(b, l), 0);
+  EXPECT_EQ(mjb::panelMirrors(b, l), 2);
   compare(solve(b, l, true), solve(b, l, false), 1e-8, "stretched");
   mjb::cylinderMesh(1, 0.8, 6, 3, 16, &b, &l);
   auto warp = [](PanelMesh* m) {
@@ -382,7 +382,7 @@ TEST(Panel, MirrorSymmetricSolveMatchesFull) {
   };
   warp(&b);
   warp(&l);
-  EXPECT_EQ(mjb::panelMirror(b, l), -1);
+  EXPECT_EQ(mjb::panelMirrors(b, l), 0);
   compare(solve(b, l, true), solve(b, l, false), 0, "asymmetric");
 }
 
