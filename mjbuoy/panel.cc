@@ -333,34 +333,44 @@ bool finiteAll(const double* a, int n) {
   return true;
 }
 
-// mirror symmetry of the panels about a vertical plane x_axis = c: mir[j]
-// the image of panel j, rows the panels on the side x_axis > c (body
-// first); empty rows: none found
+// mirror symmetry of the panels about a vertical plane u . x = c (u a
+// horizontal unit vector): mir[j] the image of panel j, rows the panels on
+// the side u . x > c (body first)
 struct Mirror {
   std::vector<int> mir, rows;
 };
 
 std::atomic<bool> gSymmetry{true};
 
-// whether panels p and q are images of each other in x_axis = c (centroid
+// the image of point p in the plane u . x = c (u horizontal); d: 0 for a
+// point, 1 for a direction (no offset)
+void reflect(const double* p, const double* u, double c, double d, double* q) {
+  double t = 2 * (p[0] * u[0] + p[1] * u[1] - d * c);
+  q[0] = p[0] - t * u[0];
+  q[1] = p[1] - t * u[1];
+  q[2] = p[2];
+}
+
+// whether panels p and q are images of each other in u . x = c (centroid
 // within tol, normal within 1e-6, area within 1e-6 relative)
-bool images(const Panel& p, const Panel& q, int axis, double c, double tol) {
-  for (int k = 0; k < 3; k++) {
-    double pc = k == axis ? 2 * c - p.c[k] : p.c[k], pn = k == axis ? -p.n[k] : p.n[k];
-    if (std::fabs(pc - q.c[k]) > tol || std::fabs(pn - q.n[k]) > 1e-6) return false;
-  }
+bool images(const Panel& p, const Panel& q, const double* u, double c, double tol) {
+  double pc[3], pn[3];
+  reflect(p.c, u, c, 1, pc);
+  reflect(p.n, u, c, 0, pn);
+  for (int k = 0; k < 3; k++)
+    if (std::fabs(pc[k] - q.c[k]) > tol || std::fabs(pn[k] - q.n[k]) > 1e-6) return false;
   return std::fabs(p.area - q.area) <= 1e-6 * p.area;
 }
 
-// symmetry about the plane x_axis = c through the body's area centroid,
-// within 1e-6 of the mesh size; a panel on the plane (its own image) or one
-// without an image: none
-bool findMirror(const Problem& pb, int axis, Mirror* m) {
+// symmetry about the vertical plane of normal u through the body's
+// wetted-area centroid, within 1e-6 of the mesh size; a panel on the plane
+// (its own image) or one without an image: none
+bool findMirror(const Problem& pb, const double* u, Mirror* m) {
   int n = pb.nb + pb.nl;
   double c = 0, area = 0, lo = 1e300, hi = -1e300;
   for (int j = 0; j < pb.nb; j++) {
     const Panel& p = pb.pn[j];
-    c += p.area * p.c[axis];
+    c += p.area * (p.c[0] * u[0] + p.c[1] * u[1]);
     area += p.area;
   }
   c /= area;
@@ -371,47 +381,70 @@ bool findMirror(const Problem& pb, int axis, Mirror* m) {
   m->mir.assign(n, -1);
   m->rows.clear();
   for (int j = 0; j < n; j++) {
-    if (std::fabs(pb.pn[j].c[axis] - c) <= tol) return false;
+    double s = pb.pn[j].c[0] * u[0] + pb.pn[j].c[1] * u[1] - c;
+    if (std::fabs(s) <= tol) return false;
+    if (s > 0) m->rows.push_back(j);
     if (m->mir[j] >= 0) continue;
     int e = j < pb.nb ? pb.nb : n;  // body panels pair with body panels, lid with lid
     for (int k = j + 1; k < e && m->mir[j] < 0; k++)
-      if (m->mir[k] < 0 && images(pb.pn[j], pb.pn[k], axis, c, tol)) m->mir[j] = k, m->mir[k] = j;
+      if (m->mir[k] < 0 && images(pb.pn[j], pb.pn[k], u, c, tol)) m->mir[j] = k, m->mir[k] = j;
     if (m->mir[j] < 0) return false;
   }
-  for (int j = 0; j < n; j++)
-    if (pb.pn[j].c[axis] > c) m->rows.push_back(j);
   return true;
 }
 
 // the symmetry group of the mesh: img[k][j] the image of panel j under
 // element k (k = 0 the identity; 1 or 3 mirrors, each its own inverse),
-// rows one panel of each orbit (body first)
+// rows one panel of each orbit (body first); planes: bit 0 the first
+// mirror found, bit 1 the second
 struct Group {
   std::vector<std::vector<int>> img;
   std::vector<int> rows;
+  int planes = 0;
 };
 
-// the mirrors found: about y = c and x = c, both (4 elements), one, or none
+// mirrors about the planes of normal y and x, else about the principal
+// axes of the wetted surface's horizontal second moment (a hull yawed in
+// the model's initial pose): both (4 elements), one, or none
 Group symmetryGroup(const Problem& pb) {
   Group g;
   int n = pb.nb + pb.nl;
+  double cx = 0, cy = 0, a = 0, ixx = 0, iyy = 0, ixy = 0;
+  for (int j = 0; j < pb.nb; j++) {
+    const Panel& p = pb.pn[j];
+    cx += p.area * p.c[0], cy += p.area * p.c[1], a += p.area;
+  }
+  cx /= a, cy /= a;
+  for (int j = 0; j < pb.nb; j++) {
+    const Panel& p = pb.pn[j];
+    double x = p.c[0] - cx, y = p.c[1] - cy;
+    ixx += p.area * x * x, iyy += p.area * y * y, ixy += p.area * x * y;
+  }
+  double th = 0.5 * std::atan2(2 * ixy, ixx - iyy);
+  const double axes[2][2][2] = {{{0, 1}, {1, 0}},
+                                {{-std::sin(th), std::cos(th)}, {std::cos(th), std::sin(th)}}};
+  Mirror m1, m2;
+  bool h1 = false, h2 = false;
+  for (int t = 0; t < 2 && !h1 && !h2; t++) {
+    h1 = findMirror(pb, axes[t][0], &m1);
+    h2 = findMirror(pb, axes[t][1], &m2);
+  }
   std::vector<int> id(n);
   for (int j = 0; j < n; j++) id[j] = j;
   g.img.push_back(id);
-  Mirror my, mx;
-  bool hy = findMirror(pb, 1, &my), hx = findMirror(pb, 0, &mx);
-  if (hy) g.img.push_back(my.mir);
-  if (hx) g.img.push_back(mx.mir);
-  if (hy && hx) {
+  if (h1) g.img.push_back(m1.mir);
+  if (h2) g.img.push_back(m2.mir);
+  if (h1 && h2) {
     std::vector<int> b(n);
-    for (int j = 0; j < n; j++) b[j] = mx.mir[my.mir[j]];
+    for (int j = 0; j < n; j++) b[j] = m2.mir[m1.mir[j]];
     g.img.push_back(b);
   }
-  for (int j = 0; j < n; j++) {
-    bool in = (!hy || std::count(my.rows.begin(), my.rows.end(), j)) &&
-              (!hx || std::count(mx.rows.begin(), mx.rows.end(), j));
-    if (in) g.rows.push_back(j);
-  }
+  std::vector<char> in1(n, !h1), in2(n, !h2);
+  for (int j : m1.rows) in1[j] = h1;
+  for (int j : m2.rows) in2[j] = h2;
+  for (int j = 0; j < n; j++)
+    if (in1[j] && in2[j]) g.rows.push_back(j);
+  g.planes = (h1 ? 1 : 0) | (h2 ? 2 : 0);
   return g;
 }
 
@@ -552,8 +585,7 @@ int panelMirrors(const PanelMesh& body, const PanelMesh& lid) {
   pb.nb = (int)pb.pn.size();
   if (!pb.nb || !buildPanels(lid, true, &pb, &err)) return 0;
   pb.nl = (int)pb.pn.size() - pb.nb;
-  Mirror mr;
-  return (findMirror(pb, 1, &mr) ? 1 : 0) | (findMirror(pb, 0, &mr) ? 2 : 0);
+  return symmetryGroup(pb).planes;
 }
 
 bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,

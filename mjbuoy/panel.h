@@ -33,8 +33,10 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
 // quarter-size ones; off (tests): always the full system. Default on
 void panelSymmetryUse(bool on);
 
-// the mirror planes panelSolve uses, through the body's wetted-area
-// centroid: 1 (y = c) | 2 (x = c); 0 none (or invalid input)
+// the mirror planes panelSolve uses (vertical, through the body's
+// wetted-area centroid; normal y and x, or else the horizontal principal
+// axes of the wetted surface): 1 (the first) | 2 (the second); 0 none (or
+// invalid input)
 int panelMirrors(const PanelMesh& body, const PanelMesh& lid);
 
 }  // namespace mjb

@@ -328,8 +328,9 @@ TEST(Panel, FrequenciesIndependentOfThreads) {
 // reduced systems give the full solve's coefficients within 1e-8 of the
 // largest entry (they are the same linear system, block-diagonalised);
 // the hemisphere (symmetric about y = 0 and x = 0: four quarter systems)
-// and a hemisphere shifted and stretched on one side of y (symmetric about
-// x = 0.3 only: one plane, off the origin). The sheared asymmetric hull of
+// a hemisphere shifted and stretched on one side of y (symmetric about
+// x = 0.3 only: one plane, off the origin) and a stretched one yawed by
+// 20 degrees (planes along its principal axes). The sheared asymmetric hull of
 // AsymmetricHullSymmetricAndDissipative has no mirror: the same operations
 // as with symmetry off, bit for bit
 TEST(Panel, MirrorSymmetricSolveMatchesFull) {
@@ -372,6 +373,21 @@ TEST(Panel, MirrorSymmetricSolveMatchesFull) {
   stretch(&l);
   EXPECT_EQ(mjb::panelMirrors(b, l), 2);
   compare(solve(b, l, true), solve(b, l, false), 1e-8, "stretched");
+  // a hull yawed in the initial pose: the hemisphere stretched 1.5x along
+  // x and turned 20 degrees about z, mirrors about its principal axes
+  mjb::hemisphereMesh(kR, 6, 12, &b, &l);
+  auto yaw = [](PanelMesh* m) {
+    double c = std::cos(0.35), s = std::sin(0.35);
+    for (size_t i = 0; i < m->vert.size(); i += 3) {
+      double x = 1.5 * m->vert[i], y = m->vert[i + 1];
+      m->vert[i] = c * x - s * y + 0.2;
+      m->vert[i + 1] = s * x + c * y - 0.1;
+    }
+  };
+  yaw(&b);
+  yaw(&l);
+  EXPECT_EQ(mjb::panelMirrors(b, l), 3);
+  compare(solve(b, l, true), solve(b, l, false), 1e-8, "yawed");
   mjb::cylinderMesh(1, 0.8, 6, 3, 16, &b, &l);
   auto warp = [](PanelMesh* m) {
     for (size_t i = 0; i < m->vert.size(); i += 3) {
