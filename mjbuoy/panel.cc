@@ -675,12 +675,21 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
   } else {
     for (int i = 0; i < n; i++) fq.rows.push_back(i);
   }
+  // a failed allocation on a worker thread is reported, never an abort
   std::vector<char> bad(nw, 0);
-  parallelRows(nw, [&](int w) { bad[w] = !solveOmega(fq, w); }, 2);
+  parallelRows(nw, [&](int w) {
+    try {
+      bad[w] = !solveOmega(fq, w);
+    } catch (...) {
+      bad[w] = 2;
+    }
+  }, 2);
   for (int w = 0; w < nw; w++)
     if (bad[w]) {
-      char b[200];
-      std::snprintf(b, sizeof b, "panel: non-finite coefficients at omega = %g rad/s", omega[w]);
+      char b[240];
+      std::snprintf(b, sizeof b, bad[w] == 2 ? "panel: out of memory at omega = %g rad/s (%d unknowns); "
+                    "use fewer panels (mjbuoy.radiation.refine)" : "panel: non-finite coefficients at omega = %g rad/s",
+                    omega[w], n);
       *err = b;
       return false;
     }
