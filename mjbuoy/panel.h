@@ -28,6 +28,17 @@ struct PanelMesh {
 bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,
                 const std::vector<double>& heading, HydroCoef* out, std::string* err);
 
+// a panel mesh mirror-symmetric about one vertical plane (within 1e-6 of
+// its size) is solved as two half-size systems, about two as four
+// quarter-size ones; off (tests): always the full system. Default on
+void panelSymmetryUse(bool on);
+
+// the mirror planes panelSolve uses (vertical, through the body's
+// wetted-area centroid; normal y and x, or else the horizontal principal
+// axes of the wetted surface): 1 (the first) | 2 (the second); 0 none (or
+// invalid input)
+int panelMirrors(const PanelMesh& body, const PanelMesh& lid);
+
 }  // namespace mjb
 
 #endif  // MJBUOY_PANEL_H_

@@ -9,12 +9,14 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <random>
 #include <cstdio>
 #include <vector>
 
 #include <Eigen/Dense>
 
 #include "green.h"
+#include "greentab.h"
 #include "panel.h"
 #include "panelmesh.h"
 #include "rankine.h"
@@ -170,6 +172,55 @@ TEST(Panel, GreenWaveFarFieldAndSurfaceCondition) {
   }
 }
 
+// the tabulated wave part (greentab.h) against the direct evaluation it
+// interpolates (itself checked against quadrature above) at random points
+// over the whole tabulated range: near the origin (log-uniform rho), on the
+// grid, on the free surface Y = 0 and the axis X = 0; the bound is the one
+// quoted in docs/physics.md section 13 (4-point Lagrange interpolation)
+TEST(Panel, GreenTableMatchesDirect) {
+  auto t = mjb::greenTable(40, 16);
+  ASSERT_TRUE(t != nullptr);
+  ASSERT_GE(t->xmax, 40);
+  ASSERT_GE(t->ymax, 16);
+  std::mt19937 rng(16);
+  std::uniform_real_distribution<double> u(0, 1);
+  double worst[5] = {0, 0, 0, 0, 0};
+  for (int k = 0; k < 20000; k++) {
+    double X, Y;
+    int kind = k % 4;
+    if (kind == 0) {  // near the origin
+      double r = std::exp(std::log(1e-3) + u(rng) * std::log(3e3)), th = u(rng) * 0.5 * kPi;
+      X = r * std::cos(th), Y = r * std::sin(th);
+    } else if (kind == 1) {
+      X = u(rng) * t->xmax, Y = u(rng) * t->ymax;
+    } else if (kind == 2) {
+      X = u(rng) * t->xmax, Y = 0;
+    } else {
+      X = 0, Y = 1e-3 + u(rng) * t->ymax;
+    }
+    mjb::WaveF a = mjb::greenWaveTab(t.get(), X, Y), b = mjb::greenWave(X, Y);
+    double e[5] = {std::fabs(a.F - b.F) / (1 + std::fabs(b.F)),
+                   std::fabs(a.FX - b.FX) / (1 + std::fabs(b.FX)),
+                   std::fabs(a.FY - b.FY) / (1 + std::fabs(b.FY)), std::fabs(a.J0 - b.J0),
+                   std::fabs(a.J1 - b.J1)};
+    for (int i = 0; i < 5; i++) {
+      ASSERT_TRUE(std::isfinite(e[i])) << "X " << X << " Y " << Y;
+      if (e[i] > worst[i]) worst[i] = e[i];
+    }
+    EXPECT_LT(e[0], 1e-6) << "F at X " << X << " Y " << Y;
+    EXPECT_LT(e[1], 1e-6) << "FX at X " << X << " Y " << Y;
+    EXPECT_LT(e[2], 1e-6) << "FY at X " << X << " Y " << Y;
+    EXPECT_LT(e[3], 1e-6) << "J0 at X " << X;
+    EXPECT_LT(e[4], 1e-6) << "J1 at X " << X;
+  }
+  std::printf("table max error: F %.2g FX %.2g FY %.2g J0 %.2g J1 %.2g\n", worst[0], worst[1],
+              worst[2], worst[3], worst[4]);
+  // switched off: the direct evaluation itself
+  mjb::greenTableUse(false);
+  EXPECT_TRUE(mjb::greenTable(40, 16) == nullptr);
+  mjb::greenTableUse(true);
+}
+
 // the series / Hankel-expansion Bessel functions against libstdc++'s
 TEST(Panel, BesselMatchesStd) {
   for (double x = 0.001; x < 60; x *= 1.07) {
@@ -228,6 +279,129 @@ const HulmeRow& hulmeAt(const HulmeRow* t, int n, double kr) {
 }
 const int kNHeave = sizeof(kHulmeHeave) / sizeof(kHulmeHeave[0]);
 const int kNSurge = sizeof(kHulmeSurge) / sizeof(kHulmeSurge[0]);
+
+// the panel solve with the tabulated wave part against the same solve with
+// the direct evaluation (the reference): the coefficients move by the
+// interpolation error only (table bound 1e-6 relative, GreenTableMatchesDirect;
+// here within 1e-6 of the largest entry; measured 3e-9), with the lid and at kR up to 3
+TEST(Panel, TabulatedSolveMatchesDirect) {
+  const std::vector<double> kr = {0.4, 1.5, 3.0};
+  mjb::greenTableUse(false);
+  HydroCoef d = solveHemisphere(6, 12, kr);
+  mjb::greenTableUse(true);
+  HydroCoef t = solveHemisphere(6, 12, kr);
+  for (int w = 0; w < (int)kr.size(); w++) {
+    double big = 0;
+    for (int i = 0; i < 36; i++)
+      big = std::fmax(big, std::fmax(std::fabs(d.A[36 * w + i]), std::fabs(d.B[36 * w + i])));
+    for (int i = 0; i < 36; i++) {
+      EXPECT_NEAR(t.A[36 * w + i], d.A[36 * w + i], 1e-6 * big) << "kR " << kr[w] << " A " << i;
+      EXPECT_NEAR(t.B[36 * w + i], d.B[36 * w + i], 1e-6 * big) << "kR " << kr[w] << " B " << i;
+    }
+    for (int a = 0; a < 6; a++) {
+      double xb = std::hypot(d.Xre[6 * w + a], d.Xim[6 * w + a]) + 1e-9;
+      EXPECT_NEAR(t.Xre[6 * w + a], d.Xre[6 * w + a], 1e-6 * xb + 1e-9 * kM) << "kR " << kr[w];
+      EXPECT_NEAR(t.Xim[6 * w + a], d.Xim[6 * w + a], 1e-6 * xb + 1e-9 * kM) << "kR " << kr[w];
+    }
+  }
+}
+
+// frequencies are solved in parallel (one thread per frequency, serial
+// fill) and a single frequency with a parallel fill: each frequency's
+// coefficients must not depend on that, bit for bit
+TEST(Panel, FrequenciesIndependentOfThreads) {
+  const std::vector<double> kr = {0.3, 0.9, 1.7, 2.5};
+  HydroCoef all = solveHemisphere(6, 12, kr);
+  for (int w = 0; w < (int)kr.size(); w++) {
+    HydroCoef one = solveHemisphere(6, 12, {kr[w]});
+    for (int i = 0; i < 36; i++) {
+      EXPECT_EQ(one.A[i], all.A[36 * w + i]) << "kR " << kr[w] << " A " << i;
+      EXPECT_EQ(one.B[i], all.B[36 * w + i]) << "kR " << kr[w] << " B " << i;
+    }
+    for (int a = 0; a < 6; a++) {
+      EXPECT_EQ(one.Xre[a], all.Xre[6 * w + a]) << "kR " << kr[w];
+      EXPECT_EQ(one.Xim[a], all.Xim[6 * w + a]) << "kR " << kr[w];
+    }
+  }
+}
+
+// mirror symmetry (docs/physics.md section 13): the symmetry-adapted
+// reduced systems give the full solve's coefficients within 1e-8 of the
+// largest entry (they are the same linear system, block-diagonalised);
+// the hemisphere (symmetric about y = 0 and x = 0: four quarter systems)
+// a hemisphere shifted and stretched on one side of y (symmetric about
+// x = 0.3 only: one plane, off the origin) and a stretched one yawed by
+// 20 degrees (planes along its principal axes). The sheared asymmetric hull of
+// AsymmetricHullSymmetricAndDissipative has no mirror: the same operations
+// as with symmetry off, bit for bit
+TEST(Panel, MirrorSymmetricSolveMatchesFull) {
+  auto solve = [](const PanelMesh& b, const PanelMesh& l, bool sym) {
+    HydroCoef h;
+    h.rho = kRho;
+    h.ref[0] = 0.1;
+    h.ref[2] = -0.2;
+    std::string err;
+    mjb::panelSymmetryUse(sym);
+    EXPECT_TRUE(mjb::panelSolve(b, l, {1.5, 3.0, 5.0}, {0.0, 0.7}, &h, &err)) << err;
+    mjb::panelSymmetryUse(true);
+    return h;
+  };
+  auto compare = [](const HydroCoef& s, const HydroCoef& f, double tol, const char* what) {
+    double big = 0, xb = 0;
+    for (size_t i = 0; i < f.A.size(); i++) big = std::fmax(big, std::fmax(std::fabs(f.A[i]), std::fabs(f.B[i])));
+    for (size_t i = 0; i < f.Xre.size(); i++) xb = std::fmax(xb, std::hypot(f.Xre[i], f.Xim[i]));
+    ASSERT_EQ(s.A.size(), f.A.size());
+    for (size_t i = 0; i < f.A.size(); i++) {
+      EXPECT_LE(std::fabs(s.A[i] - f.A[i]), tol * big) << what << " A " << i;
+      EXPECT_LE(std::fabs(s.B[i] - f.B[i]), tol * big) << what << " B " << i;
+    }
+    for (size_t i = 0; i < f.Xre.size(); i++) {
+      EXPECT_LE(std::fabs(s.Xre[i] - f.Xre[i]), tol * xb) << what << " Xre " << i;
+      EXPECT_LE(std::fabs(s.Xim[i] - f.Xim[i]), tol * xb) << what << " Xim " << i;
+    }
+  };
+  PanelMesh b, l;
+  mjb::hemisphereMesh(kR, 6, 12, &b, &l);
+  EXPECT_EQ(mjb::panelMirrors(b, l), 3);
+  compare(solve(b, l, true), solve(b, l, false), 1e-8, "hemisphere");
+  auto stretch = [](PanelMesh* m) {
+    for (size_t i = 0; i < m->vert.size(); i += 3) {
+      m->vert[i] += 0.3;
+      if (m->vert[i + 1] > 0) m->vert[i + 1] *= 1.4;
+    }
+  };
+  stretch(&b);
+  stretch(&l);
+  EXPECT_EQ(mjb::panelMirrors(b, l), 2);
+  compare(solve(b, l, true), solve(b, l, false), 1e-8, "stretched");
+  // a hull yawed in the initial pose: the hemisphere stretched 1.5x along
+  // x and turned 20 degrees about z, mirrors about its principal axes
+  mjb::hemisphereMesh(kR, 6, 12, &b, &l);
+  auto yaw = [](PanelMesh* m) {
+    double c = std::cos(0.35), s = std::sin(0.35);
+    for (size_t i = 0; i < m->vert.size(); i += 3) {
+      double x = 1.5 * m->vert[i], y = m->vert[i + 1];
+      m->vert[i] = c * x - s * y + 0.2;
+      m->vert[i + 1] = s * x + c * y - 0.1;
+    }
+  };
+  yaw(&b);
+  yaw(&l);
+  EXPECT_EQ(mjb::panelMirrors(b, l), 3);
+  compare(solve(b, l, true), solve(b, l, false), 1e-8, "yawed");
+  mjb::cylinderMesh(1, 0.8, 6, 3, 16, &b, &l);
+  auto warp = [](PanelMesh* m) {
+    for (size_t i = 0; i < m->vert.size(); i += 3) {
+      double x = m->vert[i], z = m->vert[i + 2];
+      m->vert[i] = 1.5 * x - 0.4 * z + 0.3;
+      m->vert[i + 1] += 0.2 * x * x;
+    }
+  };
+  warp(&b);
+  warp(&l);
+  EXPECT_EQ(mjb::panelMirrors(b, l), 0);
+  compare(solve(b, l, true), solve(b, l, false), 0, "asymmetric");
+}
 
 // heave A33 and B33 within 3% of Hulme's Table 1 on a 12 x 24 mesh (288
 // panels), without and with the interior lid
