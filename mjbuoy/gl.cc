@@ -24,12 +24,14 @@ using namespace glsl;  // NOLINT: the shared layouts
 static const char* kStage[] = {"verts.comp", "tris.comp", "bodies.comp"};
 enum { kVerts, kTris, kBodies, kNStage };
 const int kMaxGroups = 65535;  // GL 4.3's minimum GL_MAX_COMPUTE_WORK_GROUP_COUNT
+const int kNTex = 7;           // buffer textures (units 0 .. kNTex - 1)
 
 struct GlBackend {
   GlContext ctx;
   GLuint prog[kNStage] = {0};
   GLuint buf[15] = {0};         // by binding point
-  GLuint tex[5] = {0};          // buffer textures of B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP (units 0..4)
+  GLuint tex[kNTex] = {0};      // buffer textures of B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP, B_WAVE,
+                                // B_PHASE (units 0..6)
   GlTimer timer;
   int tstage[kNStage] = {0};
   std::mutex mu;                // one context: one thread at a time
@@ -249,10 +251,11 @@ bool glMake(Buoy* b, std::string* err) {
     glFree(b);
     return false;
   }
-  const GLenum tfmt[5] = {GL_RGBA32F, GL_RG32F, GL_RGBA32I, GL_RGBA32F, GL_RGBA32F};
-  const int tbuf[5] = {B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP};
-  gl.GenTextures(5, g->tex);
-  for (int i = 0; i < 5; i++) {
+  const GLenum tfmt[kNTex] = {GL_RGBA32F, GL_RG32F,   GL_RGBA32I, GL_RGBA32F,
+                              GL_RGBA32F, GL_RGBA32F, GL_R32F};
+  const int tbuf[kNTex] = {B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP, B_WAVE, B_PHASE};
+  gl.GenTextures(kNTex, g->tex);
+  for (int i = 0; i < kNTex; i++) {
     gl.BindTexture(GL_TEXTURE_BUFFER, g->tex[i]);
     gl.TexBuffer(GL_TEXTURE_BUFFER, tfmt[i], g->buf[tbuf[i]]);
   }
@@ -262,6 +265,10 @@ bool glMake(Buoy* b, std::string* err) {
   gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tTri"), 2);
   gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "tVert"), 3);
   gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tExp"), 4);
+  for (int st : {kVerts, kTris}) {
+    gl.ProgramUniform1i(g->prog[st], loc(g, st, "tWave"), 5);
+    gl.ProgramUniform1i(g->prog[st], loc(g, st, "tPhase"), 6);
+  }
   gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "nvchunk"), g->nvchunk);
 
   // uniforms that never change
@@ -462,7 +469,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   const int groups[kNStage] = {std::min(g->nvchunk, kMaxGroups),
                                std::min(g->nchunk, kMaxGroups),
                                (g->nslot + g->blocal - 1) / g->blocal};
-  for (int i = 0; i < 5; i++) {
+  for (int i = 0; i < kNTex; i++) {
     gl.ActiveTexture(GL_TEXTURE0 + i);
     gl.BindTexture(GL_TEXTURE_BUFFER, g->tex[i]);
   }
@@ -484,7 +491,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   for (int i = 0; i < 15; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
   gl.BindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  for (int i = 4; i >= 0; i--) {
+  for (int i = kNTex - 1; i >= 0; i--) {
     gl.ActiveTexture(GL_TEXTURE0 + i);
     gl.BindTexture(GL_TEXTURE_BUFFER, 0);
   }

@@ -223,8 +223,8 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
     // none: llvmpipe runs both sides of a per-lane choice)
     int nv = nw == 2 ? 2 : 1;  // pieces
     for (int w = 0; w < nwave; w++) {
-      GWave wv = wave[w];  // once: llvmpipe may load an SSBO lane by lane
-      float ph = phase[b * nwave + w];
+      GWave wv = waveAt(w);
+      float ph = phaseAt(b, w);
       vec4 E0 = texelFetch(tExp, t.x * nwave + w), E1 = texelFetch(tExp, t.y * nwave + w);
       vec4 E2 = texelFetch(tExp, t.z * nwave + w);
       vec4 Ea = o0 ? E0 : o1 ? E1 : E2, Eb = o0 ? E1 : o1 ? E2 : E0, Ec = o0 ? E2 : o1 ? E0 : E1;

@@ -45,8 +45,8 @@ void main() {
       if (q.w <= 0.0) {
         float zs = seaStretch(r.z + o.w, eta);
         for (int w = 0; w < nwave; w++) {
-          GWave wv = wave[w];
-          float th = thetaAt(b, w, a, r.xy), k = wv.k;
+          GWave wv = waveAt(w);
+          float th = thetaAt(wv, phaseAt(b, w), a, r.xy), k = wv.k;
           vec2 cs = vec2(cos(th), sin(th));
           // e^(-k (zs + 2h)) = e^(-2kh) / e^(k zs), no second exp: e^(k zs) >=
           // e^(-k h) > e^-17 where e2kh > 0 (zs >= -h)
