@@ -36,6 +36,13 @@ struct GlBackend {
   int tstage[kNStage] = {0};
   std::mutex mu;                // one context: one thread at a time
   int nvert = 0, ntri = 0, nhull = 0, nslot = 0, nwave = 0, nchunk = 0, nvchunk = 0;
+  // the components in the buffers' order, wave number ascending (perm:
+  // buffer slot -> sea index), the first nfast fast (fastWave) at reach:
+  // a bound on every piece's node gap over k [m], raised when a step
+  // reports more (glWrench)
+  std::vector<int> perm;
+  double reach = 0;
+  int nfast = 0;
   int vlocal = BUOY_VERT_LOCAL, local = BUOY_LOCAL, per = BUOY_PER, blocal = BUOY_BODY_LOCAL;
   GLint uHasprev = -1, uFirst = -1, uSlamdt = -1;  // per-step uniforms, looked up once
   std::vector<GBody> body;      // per step, one per hull body (staging without persist)
@@ -81,20 +88,67 @@ static bool groupSizes(GlBackend* g, std::string* err) {
 // one wave component as the shaders read it; Airy components (kind 1) take
 // no part in the label search: steep 0; e^(-2 k h) for the finite-depth
 // profiles (0 deep, or where k h >= 17: shaders/waveint.glsl WI_KHMAX)
-static GWave gwave(const Wave& w, double depth) {
+static GWave gwave(const Wave& w, double depth, double reach) {
   double kh = w.k * depth;
   float e2 = depth > 0 && kh < 17 ? float(std::exp(-2 * kh)) : 0.0f;
-  return GWave{float(w.amp), float(w.k), float(w.omega), float(w.kind == 0 ? w.steep : 0),
-               float(w.dx), float(w.dy), float(w.kind), e2};
+  GWave o{float(w.amp), float(w.k), float(w.omega), float(w.kind == 0 ? w.steep : 0),
+          float(w.dx), float(w.dy), float(w.kind), e2, 0, 0, 0, 0};
+  // the series length of its piece integrals (shaders/waveint.glsl
+  // ddSeries): the fewest terms n >= 3 whose first left out, (n + 1) r^n /
+  // (n + 2)!, is below 2.5e-7 at the node gap r = k reach; the largest,
+  // 13, covers r = 2.17 (fast components have r <= WI_ROT = 2)
+  double r = w.k * reach, f = 24;  // f = (n + 2)!
+  int n = 3;
+  for (; n < 13; n++) {
+    f *= n + 2;
+    if (std::pow(2.5e-7 * f / (n + 1), 1.0 / n) >= r) break;
+  }
+  o.terms = float(n);
+  return o;
 }
 
-// the wave buffer's contents
-static void waveData(const Sea& sea, GWave* out) {
-  for (size_t i = 0; i < sea.waves.size(); i++) out[i] = gwave(sea.waves[i], sea.depth);
+// a component is fast (one series per piece, its turn along an edge by a
+// Taylor series: shaders/tris.comp) while k reach <= WI_ROT
+static bool fastWave(const Wave& w, double reach) { return w.k * reach <= 2.0; }
+
+// the longest edge of any hull [m] (body frame)
+static double longestEdge(const Buoy& b) {
+  double e2 = 0;
+  for (size_t t = 0; t + 2 < b.face.size(); t += 3) {
+    for (int j = 0; j < 3; j++) {
+      const double* p = &b.vert[3 * b.face[t + j]];
+      const double* q = &b.vert[3 * b.face[t + (j + 1) % 3]];
+      double d[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+      e2 = std::max(e2, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    }
+  }
+  return std::sqrt(e2);
 }
 
 // the uniforms that change with the sea
 static void seaUniforms(GlBackend* g, const Sea& sea);
+
+// the wave buffer from the sea at g->reach, sorted; nfast
+static void uploadWaves(GlBackend* g, const Sea& sea) {
+  const GladGLContext& gl = g->ctx.gl;
+  int* p = g->perm.data();
+  for (int i = 0; i < g->nwave; i++) p[i] = i;
+  std::sort(p, p + g->nwave, [&](int a, int c) {
+    return sea.waves[a].k < sea.waves[c].k || (sea.waves[a].k == sea.waves[c].k && a < c);
+  });
+  g->nfast = 0;
+  while (g->nfast < g->nwave && fastWave(sea.waves[p[g->nfast]], g->reach)) g->nfast++;
+  // uploaded in pieces from the stack: no allocation per step
+  GWave buf[64];
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_WAVE]);
+  for (int i0 = 0; i0 < g->nwave; i0 += 64) {
+    int n = std::min(64, g->nwave - i0);
+    for (int i = 0; i < n; i++) buf[i] = gwave(sea.waves[p[i0 + i]], sea.depth, g->reach);
+    gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, i0 * sizeof(GWave), n * sizeof(GWave), buf);
+  }
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "nfast"), g->nfast);
+}
 
 bool glMake(Buoy* b, std::string* err) {
   auto g = new GlBackend;
@@ -181,7 +235,8 @@ bool glMake(Buoy* b, std::string* err) {
   // room for b->wcap components, so mjb_setSea only rewrites (glSetSea)
   const int cap = std::max<int>(b->wcap, g->nwave);
   std::vector<GWave> wave(cap, GWave{});
-  waveData(sea, wave.data());
+  g->perm.assign(cap, 0);
+  g->reach = 1.25 * longestEdge(*b);  // a first guess; the steps raise it
   g->phase.assign(g->nslot * std::max(cap, 1), 0);
   g->out.assign(g->nslot * 40, 0);
   g->nchunk = chunk.size();
@@ -279,6 +334,7 @@ bool glMake(Buoy* b, std::string* err) {
   gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "nu"), float(sea.nu));
   gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "rho"), float(sea.rho));
   seaUniforms(g, sea);
+  uploadWaves(g, sea);
   g->uHasprev = loc(g, kTris, "hasprev");
   g->uFirst = loc(g, kTris, "first");
   g->uSlamdt = loc(g, kTris, "slamdt");
@@ -307,19 +363,11 @@ void glSetSea(Buoy* b) {
   if (!g) return;
   std::lock_guard<std::mutex> lk(g->mu);
   GlCurrent cur(&g->ctx);
-  const GladGLContext& gl = g->ctx.gl;
   const Sea& sea = b->cfg.sea;
   // within the capacity reserved in glMake (mjb_setSea checks): a rewrite,
   // no new GL object; uploaded in pieces from the stack
   g->nwave = sea.waves.size();
-  GWave buf[64];
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_WAVE]);
-  for (int i0 = 0; i0 < g->nwave; i0 += 64) {
-    int n = std::min(64, g->nwave - i0);
-    for (int i = 0; i < n; i++) buf[i] = gwave(sea.waves[i0 + i], sea.depth);
-    gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, i0 * sizeof(GWave), n * sizeof(GWave), buf);
-  }
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  uploadWaves(g, sea);
   seaUniforms(g, sea);
 }
 
@@ -419,7 +467,7 @@ static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     for (int j = 0; j < 3; j++) (&o.flow.x)[j] = float(sp > 1e-9 ? vr[j] / sp : R[3 * j]);
     o.flow.w = float(sp);
     for (int w = 0; w < g->nwave; w++) {
-      const Wave& wv = sea.waves[w];
+      const Wave& wv = sea.waves[g->perm[w]];
       double th = wv.k * (wv.dx * c[0] + wv.dy * c[1]) - wv.omega * d->time + wv.ph;
       g->phasep[i * g->nwave + w] = float(std::remainder(th, 2 * M_PI));
     }
@@ -473,22 +521,37 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     gl.ActiveTexture(GL_TEXTURE0 + i);
     gl.BindTexture(GL_TEXTURE_BUFFER, g->tex[i]);
   }
-  for (int st = 0; st < kNStage; st++) {
-    timerBegin(&g->timer, g->tstage[st]);
-    gl.UseProgram(g->prog[st]);
-    if (groups[st] > 0) gl.DispatchCompute(groups[st], 1, 1);
-    gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
-                     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    timerEnd(&g->timer, g->tstage[st]);
+  // twice where the step's pieces reached further than the series were
+  // sized for (tris.comp pieceRho, reported per body in out[40 i + 3]):
+  // the wave buffer is redone for the new reach, and the step repeated
+  for (int pass = 0; pass < 2; pass++) {
+    for (int st = 0; st < kNStage; st++) {
+      timerBegin(&g->timer, g->tstage[st]);
+      gl.UseProgram(g->prog[st]);
+      if (groups[st] > 0) gl.DispatchCompute(groups[st], 1, 1);
+      gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                       GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      timerEnd(&g->timer, g->tstage[st]);
+    }
+    gl.UseProgram(0);
+    // the readback copies: a persistent read mapping of a buffer the shaders
+    // wrote stays zero on Mesa 22.3 llvmpipe (checked), and 160 bytes a body
+    // cost nothing next to the dispatches
+    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_OUT]);
+    gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->out.size() * sizeof(float),
+                        g->out.data());
+    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    // (a non-finite reach: the heights were not finite, which the sums report)
+    double reach = 0;
+    for (int i = 0; i < g->nslot; i++) {
+      float r = g->out[40 * i + 3];
+      if (!s->bad[b->body[i]] && std::isfinite(r)) reach = std::max(reach, double(r));
+    }
+    if (reach <= g->reach || g->nwave == 0) break;
+    g->reach = 1.25 * reach;
+    uploadWaves(g, b->cfg.sea);
   }
-  gl.UseProgram(0);
-  // the readback copies: a persistent read mapping of a buffer the shaders
-  // wrote stays zero on Mesa 22.3 llvmpipe (checked), and 160 bytes a body
-  // cost nothing next to the dispatches
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_OUT]);
-  gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->out.size() * sizeof(float), g->out.data());
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   for (int i = 0; i < 15; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
   gl.BindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   for (int i = kNTex - 1; i >= 0; i--) {

@@ -5,12 +5,13 @@
 // B_WAVE and B_PHASE through buffer textures: llvmpipe gathers a texel in
 // straight SIMD code, but loads a storage buffer at a loop-varying index
 // lane by lane
-uniform samplerBuffer tWave;   // B_WAVE as RGBA32F, two texels per component
+uniform samplerBuffer tWave;   // B_WAVE as RGBA32F, three texels per component
 uniform samplerBuffer tPhase;  // B_PHASE as R32F
 
 GWave waveAt(int i) {
-  vec4 u = texelFetch(tWave, 2 * i), v = texelFetch(tWave, 2 * i + 1);
-  return GWave(u.x, u.y, u.z, u.w, v.x, v.y, v.z, v.w);
+  vec4 u = texelFetch(tWave, 3 * i), v = texelFetch(tWave, 3 * i + 1);
+  vec2 t = texelFetch(tWave, 3 * i + 2).xy;
+  return GWave(u.x, u.y, u.z, u.w, v.x, v.y, v.z, v.w, t.x, t.y, 0.0, 0.0);
 }
 
 uniform int nwave;

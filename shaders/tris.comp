@@ -35,6 +35,7 @@ uniform int hasprev;   // slamming history exists
 uniform int first;     // first call of this step: record the history
 uniform float slamdt;  // time since the previous step's first call [s]
 uniform int linear;    // linear wave pressure (mjbuoy/wavepress.cc), else Kerner's
+uniform int nfast;     // components integrated by one series per piece (gl.cc)
 
 // a NaN to add to a sum whose intermediate was not finite: the CPU side
 // reports a non-finite family (mjb_notices), never a silent zero
@@ -43,6 +44,7 @@ const float kNaN = uintBitsToFloat(0x7fc00000u);
 // per-invocation sums over its triangles (BUOY_NSUM vec4, see pipeline.h)
 vec3 pF, pT, vG, vEG, vCG, vECG, dF, dT, sF, sT;
 vec4 wt;
+float rhomax;  // the node gaps' reach over k (pieceRho) [m]
 
 // exact moments of pressure depth d over triangle q (fan piece of the wet polygon)
 void piece(vec3 q0, vec3 q1, vec3 q2, float d0, float d1, float d2, vec3 n, inout float area,
@@ -104,44 +106,58 @@ void pieceSpan(Piece P, GWave wv, out vec2 x, out vec2 y) {
   y = vec2(wv.k * (P.zs.z - P.zs.x), dot(kd, d.zw));
 }
 
-// adds component wv's integrals over part k of n^2 of piece P (triPart):
-// the dynamic pressure over rho g times 1 and r (dA, drA; with lin) and
-// the water velocity times area (vs); f0..f2: e^L at the polygon corners
-// c0..c2 of P (B_EXP layout)
-void wavePart(Piece P, GWave wv, vec4 f0, vec4 f1, vec4 f2, bool lin, int n, int k,
-              inout float dA, inout vec3 drA, inout vec3 vs) {
-  if (!(P.a2 > 0.0) || wv.k * P.zs.x < -40.0) return;  // e^(k zs) < 4e-18 on all of it
-  bool r0 = P.rot == 0, r1 = P.rot == 1;
-  vec4 E0 = r0 ? f0 : r1 ? f1 : f2;
+// adds component wv's integrals over piece P, whose corner 0 has e^L = E0
+// (B_EXP layout), nt series terms (GWave.terms: enough for the piece's
+// node gap, gl.cc): ps += (Re S, Re M1, Re M2) times amp / (1 +
+// e^(-2kh)), the dynamic pressure over rho g and its barycentric moments
+// (corner 0's is the first minus the others), vs += the water velocity
+// times area. split: the piece in n^2 parts (triPart, n per invocation),
+// for components whose node gap may exceed what one series covers
+void wavePiece(Piece P, GWave wv, vec4 E0, bool split, inout vec3 ps, inout vec3 vs) {
   vec2 x, y;
   pieceSpan(P, wv, x, y);
-  // e^(k zs) and, at finite depth, e^(-k (zs + 2h)) (real parts flip); a
-  // loop, not an if: llvmpipe runs an if's body for every lane, masked
+  int n = split ? triParts(x, y) : 1;
+  // e^(k zs) and, at finite depth, e^(-k (zs + 2h)) (real parts flip);
+  // loops test at their end: llvmpipe runs every if's body and, after a
+  // break at the top, a loop's body once more, each for all lanes, masked
   float e2 = wv.e2kh, sv = 0.0;
   vec2 S = vec2(0.0), M1 = S, M2 = S;
-  for (int f = 0; f < (e2 > 0.0 ? 2 : 1); f++) {
+  int f = 0;
+  do {
     float sg = f == 0 ? 1.0 : -1.0;
-    vec2 s = vec2(0.0);
-    triPart(vec2(sg * x.x, x.y), vec2(sg * y.x, y.y), f == 0 ? E0.xy : E0.zw, P.a2, n, k, s, M1,
-            M2);
+    vec2 xf = vec2(sg * x.x, x.y), yf = vec2(sg * y.x, y.y), e = f == 0 ? E0.xy : E0.zw;
+    vec2 s = vec2(0.0), m1 = s, m2 = s;
+    if (split) {
+      for (int k = 0; k < n * n; k++) triPart(xf, yf, e, 1.0, n, k, s, m1, m2);
+    } else {
+      vec2 s0, sa, sb;
+      ddSeries(xf, yf, int(wv.terms), s0, sa, sb);
+      // exp[0,x,y,y] = s0 - sa - sb (the three moments add up to S)
+      s = cmul(e, s0);
+      m1 = cmul(e, sb);
+      m2 = cmul(e, s0 - sa - sb);
+    }
     S += s;
+    M1 += m1;
+    M2 += m2;
     sv += sg * s.y;
-  }
-  float amp = wv.amp, cp = amp / (1.0 + e2), cv = amp * wv.omega / (1.0 - e2);
+  } while (++f < (e2 > 0.0 ? 2 : 1));
+  float amp = wv.amp * P.a2, cv = amp * wv.omega / (1.0 - e2);
   // velocity: horizontal (e+ + e-) cos, vertical (e+ - e-) sin, over 1 - e^(-2kh)
   vs += cv * vec3(S.x * vec2(wv.dx, wv.dy), sv);
-  if (!lin) return;
   // pressure: (e+ + e-) cos over 1 + e^(-2kh), its moments
-  dA += cp * S.x;
-  drA += cp * ((S.x - M1.x - M2.x) * P.q0 + M1.x * P.q1 + M2.x * P.q2);
+  ps += amp / (1.0 + e2) * vec3(S.x, M1.x, M2.x);
 }
 
-// e^L of component w at a cut point (on the surface: zs = 0) with Airy
-// position x, Gerstner label l
-vec4 cutExp(GWave wv, float ph, vec2 x, vec2 l) {
-  float th = ph + wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? x : l);
-  vec2 cs = vec2(cos(th), sin(th));
-  return vec4(cs, wv.e2kh * cs);
+// the largest node gap over k of piece P's integrals, for any component:
+// max over corner pairs of sqrt(dzs^2 + max(|dp|^2, |dl|^2)) [m]
+float pieceRho(Piece P) {
+  vec4 d = vec4(P.dp.zw - P.dp.xy, P.dl.zw - P.dl.xy);
+  vec3 dz = vec3(P.zs.y - P.zs.x, P.zs.z - P.zs.x, P.zs.z - P.zs.y);
+  vec3 h = vec3(max(dot(P.dp.xy, P.dp.xy), dot(P.dl.xy, P.dl.xy)),
+                max(dot(P.dp.zw, P.dp.zw), dot(P.dl.zw, P.dl.zw)), max(dot(d.xy, d.xy), dot(d.zw, d.zw)));
+  vec3 r2 = dz * dz + h;
+  return sqrt(max(r2.x, max(r2.y, r2.z)));
 }
 
 void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) {
@@ -218,34 +234,51 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
     float z2 = nw == 3 ? s2 : nw == 1 ? 0.0 : sc;
     Piece A1 = makePiece(c0, c1, c2, z0, z1, z2, n0, n1, n2, n);
     Piece A2 = makePiece(c0, c2, pca, z0, z2, 0.0, n0, n2, mca, n);
-    // each component's e^L at the corners: the three vertices' (read even
-    // where dry, then unused) and the two cut points' (computed even where
-    // none: llvmpipe runs both sides of a per-lane choice)
-    int nv = nw == 2 ? 2 : 1;  // pieces
-    for (int w = 0; w < nwave; w++) {
-      GWave wv = waveAt(w);
-      float ph = phaseAt(b, w);
-      vec4 E0 = texelFetch(tExp, t.x * nwave + w), E1 = texelFetch(tExp, t.y * nwave + w);
-      vec4 E2 = texelFetch(tExp, t.z * nwave + w);
-      vec4 Ea = o0 ? E0 : o1 ? E1 : E2, Eb = o0 ? E1 : o1 ? E2 : E0, Ec = o0 ? E2 : o1 ? E0 : E1;
-      vec4 Eab = cutExp(wv, ph, pab.xy, mab), Eca = cutExp(wv, ph, pca.xy, mca);
-      vec4 e0 = nw == 3 ? E0 : nw == 1 ? Ea : Eab, e1 = nw == 3 ? E1 : nw == 1 ? Eab : Eb;
-      vec4 e2 = nw == 3 ? E2 : nw == 1 ? Eca : Ec;
-      // the second piece of a quad in a loop (an if runs for every lane)
-      // the pieces' parts (triParts: one each, but for pieces wider than
-      // about a sixth of the wavelength) in one loop with one call
-      // (llvmpipe would run both sides of an if)
-      vec2 x1, y1, x2, y2;
-      pieceSpan(A1, wv, x1, y1);
-      pieceSpan(A2, wv, x2, y2);
-      int n1 = triParts(x1, y1), n2 = triParts(x2, y2);
-      int m1 = n1 * n1, np = m1 + (nv == 2 ? n2 * n2 : 0);
-      for (int it = 0; it < np; it++) {
-        bool p0 = it < m1;
-        wavePart(p0 ? A1 : A2, wv, e0, p0 ? e1 : e2, p0 ? e2 : Eca, lin, p0 ? n1 : n2,
-                 p0 ? it : it - m1, dA, drA, vs);
+    // corner 0 of the pieces (the highest; a quad's two share it): a
+    // vertex, or the cut point pab, whose e^L is that of its edge's dry
+    // end (zs = 0 at both; verts.comp stores every vertex) turned by the
+    // phase change along the edge (theta is linear in x, or in the label)
+    int ia = o0 ? t.x : o1 ? t.y : t.z, ib = o0 ? t.y : o1 ? t.z : t.x;
+    bool cut0 = nw == 2 || (nw == 1 && A1.rot == 1);
+    int iv = nw == 3 ? (A1.rot == 0 ? t.x : A1.rot == 1 ? t.y : t.z) : ia;
+    int i0 = cut0 && nw == 1 ? ib : iv;
+    vec2 dx0 = cut0 ? pab.xy - (nw == 1 ? bq.xy : a.xy) : vec2(0.0);
+    vec2 dm0 = cut0 ? mab - (nw == 1 ? mb : ma) : vec2(0.0);
+    int nv = nw == 2 ? 2 : 1;
+    // the node gaps' and the turns' reach over k, reported to gl.cc, which
+    // sizes the series (GWave.terms) and nfast to it and repeats the step
+    // where it fell short
+    rhomax = max(rhomax, max(max(pieceRho(A1), nv == 2 ? pieceRho(A2) : 0.0),
+                             sqrt(max(dot(dx0, dx0), dot(dm0, dm0)))));
+    // the pieces, a quad's second in a loop (llvmpipe runs an if's body for every lane)
+    int pc = 0;
+    do {
+      Piece P = pc == 0 ? A1 : A2;
+      vec3 ps = vec3(0.0);
+      // components [0, nfast) (k ascending): one series each, the turn
+      // by its Taylor series (k times the reach <= WI_ROT, gl.cc)
+      if (nfast > 0) {
+        int w = 0;
+        do {
+          GWave wv = waveAt(w);
+          vec4 E = texelFetch(tExp, i0 * nwave + w);
+          vec2 r = rotation(wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? dx0 : dm0));
+          wavePiece(P, wv, vec4(cmul(E.xy, r), cmul(E.zw, r)), false, ps, vs);
+        } while (++w < nfast);
       }
-    }
+      // the rest: split into parts, turned by cos and sin
+      for (int w = nfast; w < nwave; w++) {
+        GWave wv = waveAt(w);
+        vec4 E = texelFetch(tExp, i0 * nwave + w);
+        float ph = wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? dx0 : dm0);
+        vec2 r = vec2(cos(ph), sin(ph));
+        wavePiece(P, wv, vec4(cmul(E.xy, r), cmul(E.zw, r)), true, ps, vs);
+      }
+      if (lin) {
+        dA += ps.x;
+        drA += (ps.x - ps.y - ps.z) * P.q0 + ps.y * P.q1 + ps.z * P.q2;
+      }
+    } while (++pc < nv);
   }
 
   float e0 = dot(q0, dir), e1 = dot(q1, dir), e2 = dot(q2, dir);
@@ -318,11 +351,12 @@ void main() {
     float zc = body[b].orig.w;
     pF = pT = vG = vEG = vCG = vECG = dF = dT = sF = sT = vec3(0.0);
     wt = vec4(0.0, 1e30, -1e30, 0.0);
+    rhomax = 0.0;
     for (int j = l; j < ch.nt; j += BUOY_LOCAL) triangle(ch.t0 + j, b, hl, dir, vlin, vang, zc);
     // no shared memory and no barrier (llvmpipe runs barrier shaders as
     // coroutines): each invocation stores its sums, bodies.comp adds them
     int o = BUOY_NSUM * (BUOY_LOCAL * ci + l);
-    cpart[o] = vec4(pF, 0.0);
+    cpart[o] = vec4(pF, rhomax);
     cpart[o + 1] = vec4(pT, 0.0);
     cpart[o + 2] = vec4(vG, 0.0);
     cpart[o + 3] = vec4(vEG, 0.0);
