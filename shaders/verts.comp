@@ -44,15 +44,16 @@ void main() {
       // resolution, gl.cc gwave); at dry vertices too (zs = 0: e^(i theta),
       // from which tris.comp turns the cut points')
       float zs = seaStretch(r.z + o.w, eta);
-      for (int w = 0; w < nwave; w++) {
-        GWave wv = waveAt(w);
+      int w = 0;
+      if (nwave > 0) do {
+        GWave wv = seaWave(w);
         float th = thetaAt(wv, phaseAt(b, w), a, r.xy), k = wv.k;
         vec2 cs = vec2(cos(th), sin(th));
         // e^(-k (zs + 2h)) = e^(-2kh) / e^(k zs), no second exp: e^(k zs) >=
         // e^(-k h) > e^-17 where e2kh > 0 (zs >= -h)
         float ep = exp(k * zs), em = wv.e2kh > 0.0 ? wv.e2kh / ep : 0.0;
         imageStore(iExp, i * nwave + w, vec4(ep * cs, em * cs));
-      }
+      } while (++w < nwave);
     }
   }
 }
