@@ -23,12 +23,16 @@ using namespace glsl;  // NOLINT: the shared layouts
 
 static const char* kStage[] = {"verts.comp", "tris.comp", "bodies.comp"};
 enum { kVerts, kTris, kBodies, kNStage };
+// tris.comp with WI_SPLIT: for seas with components whose pieces need
+// splitting (nfast < nwave); llvmpipe runs every loop body at least once,
+// so tris.comp leaves that loop out
+const int kSplit = int(kNStage);
 const int kMaxGroups = 65535;  // GL 4.3's minimum GL_MAX_COMPUTE_WORK_GROUP_COUNT
 const int kNTex = 7;           // buffer textures (units 0 .. kNTex - 1)
 
 struct GlBackend {
   GlContext ctx;
-  GLuint prog[kNStage] = {0};
+  GLuint prog[kNStage + 1] = {0};  // by stage, then kSplit
   GLuint buf[15] = {0};         // by binding point
   GLuint tex[kNTex] = {0};      // buffer textures of B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP, B_WAVE,
                                 // B_PHASE (units 0..6)
@@ -44,7 +48,8 @@ struct GlBackend {
   double reach = 0;
   int nfast = 0;
   int vlocal = BUOY_VERT_LOCAL, local = BUOY_LOCAL, per = BUOY_PER, blocal = BUOY_BODY_LOCAL;
-  GLint uHasprev = -1, uFirst = -1, uSlamdt = -1;  // per-step uniforms, looked up once
+  GLint uHasprev[2] = {-1, -1}, uFirst[2] = {-1, -1}, uSlamdt[2] = {-1, -1};  // per-step uniforms of
+                                // tris.comp and kSplit, looked up once
   std::vector<GBody> body;      // per step, one per hull body (staging without persist)
   std::vector<float> phase;     // per step, nslot x nwave
   std::vector<float> out;       // readback, nslot x 10 x 4
@@ -57,6 +62,14 @@ struct GlBackend {
 
 static GLint loc(GlBackend* g, int st, const char* name) {
   return g->ctx.gl.GetUniformLocation(g->prog[st], name);
+}
+
+// the uniform called name of both triangle programs (kTris, kSplit)
+static void trisUniform(GlBackend* g, const char* name, int v) {
+  for (int st : {int(kTris), kSplit}) g->ctx.gl.ProgramUniform1i(g->prog[st], loc(g, st, name), v);
+}
+static void trisUniform(GlBackend* g, const char* name, float v) {
+  for (int st : {int(kTris), kSplit}) g->ctx.gl.ProgramUniform1f(g->prog[st], loc(g, st, name), v);
 }
 
 // buffer at binding point i with n bytes (data may be null)
@@ -147,7 +160,7 @@ static void uploadWaves(GlBackend* g, const Sea& sea) {
     gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, i0 * sizeof(GWave), n * sizeof(GWave), buf);
   }
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "nfast"), g->nfast);
+  trisUniform(g, "nfast", g->nfast);
 }
 
 bool glMake(Buoy* b, std::string* err) {
@@ -173,8 +186,9 @@ bool glMake(Buoy* b, std::string* err) {
                      "\n#define BUOY_LOCAL " + std::to_string(g->local) +
                      "\n#define BUOY_PER " + std::to_string(g->per) +
                      "\n#define BUOY_BODY_LOCAL " + std::to_string(g->blocal) + "\n";
-  for (int i = 0; i < kNStage; i++) {
-    g->prog[i] = glProgram(gl, kStage[i], err, defs);
+  for (int i = 0; i <= kNStage; i++) {
+    g->prog[i] = i < kNStage ? glProgram(gl, kStage[i], err, defs)
+                             : glProgram(gl, "tris.comp", err, defs + "#define WI_SPLIT 1\n");
     if (!g->prog[i]) {
       b->gl = g;
       glFree(b);
@@ -315,29 +329,31 @@ bool glMake(Buoy* b, std::string* err) {
     gl.TexBuffer(GL_TEXTURE_BUFFER, tfmt[i], g->buf[tbuf[i]]);
   }
   gl.BindTexture(GL_TEXTURE_BUFFER, 0);
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tVout"), 0);
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tLab"), 1);
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tTri"), 2);
+  trisUniform(g, "tVout", 0);
+  trisUniform(g, "tLab", 1);
+  trisUniform(g, "tTri", 2);
   gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "tVert"), 3);
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tExp"), 4);
-  for (int st : {kVerts, kTris}) {
+  trisUniform(g, "tExp", 4);
+  for (int st : {int(kVerts), int(kTris), kSplit}) {
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "tWave"), 5);
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "tPhase"), 6);
   }
   gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "nvchunk"), g->nvchunk);
 
   // uniforms that never change
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "nchunk"), g->nchunk);
-  gl.ProgramUniform1f(g->prog[kTris], loc(g, kTris, "rhog"), float(sea.rho * sea.g));
-  gl.ProgramUniform1f(g->prog[kTris], loc(g, kTris, "rho"), float(sea.rho));
+  trisUniform(g, "nchunk", g->nchunk);
+  trisUniform(g, "rhog", float(sea.rho * sea.g));
+  trisUniform(g, "rho", float(sea.rho));
   gl.ProgramUniform1i(g->prog[kBodies], loc(g, kBodies, "nslot"), g->nslot);
   gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "nu"), float(sea.nu));
   gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "rho"), float(sea.rho));
   seaUniforms(g, sea);
   uploadWaves(g, sea);
-  g->uHasprev = loc(g, kTris, "hasprev");
-  g->uFirst = loc(g, kTris, "first");
-  g->uSlamdt = loc(g, kTris, "slamdt");
+  for (int i = 0; i < 2; i++) {
+    g->uHasprev[i] = loc(g, i ? kSplit : kTris, "hasprev");
+    g->uFirst[i] = loc(g, i ? kSplit : kTris, "first");
+    g->uSlamdt[i] = loc(g, i ? kSplit : kTris, "slamdt");
+  }
   timerInit(&g->timer, &gl);
   for (int i = 0; i < kNStage; i++) g->tstage[i] = timerStage(&g->timer, kStage[i]);
   b->gl = g;
@@ -347,7 +363,7 @@ bool glMake(Buoy* b, std::string* err) {
 
 static void seaUniforms(GlBackend* g, const Sea& sea) {
   const GladGLContext& gl = g->ctx.gl;
-  for (int st : {kVerts, kTris}) {
+  for (int st : {int(kVerts), int(kTris), kSplit}) {
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "nwave"), g->nwave);
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "ngerst"), sea.ng);
     gl.ProgramUniform1f(g->prog[st], loc(g, st, "depth"), float(sea.depth));
@@ -355,7 +371,7 @@ static void seaUniforms(GlBackend* g, const Sea& sea) {
                         float(sea.current[1]));
   }
   // flat water needs no dynamic pressure, whatever the model
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "linear"), !sea.kerner && !sea.waves.empty());
+  trisUniform(g, "linear", int(!sea.kerner && !sea.waves.empty()));
 }
 
 void glSetSea(Buoy* b) {
@@ -508,9 +524,12 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   gl.BindImageTexture(0, g->tex[4], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
-  gl.ProgramUniform1i(g->prog[kTris], g->uHasprev, s->hasPrev);
-  gl.ProgramUniform1i(g->prog[kTris], g->uFirst, clock != kMidStep);
-  gl.ProgramUniform1f(g->prog[kTris], g->uSlamdt, float(s->hasPrev ? d->time - s->tprev : 0));
+  for (int i = 0; i < 2; i++) {
+    GLuint p = g->prog[i ? kSplit : kTris];
+    gl.ProgramUniform1i(p, g->uHasprev[i], s->hasPrev);
+    gl.ProgramUniform1i(p, g->uFirst[i], clock != kMidStep);
+    gl.ProgramUniform1f(p, g->uSlamdt[i], float(s->hasPrev ? d->time - s->tprev : 0));
+  }
 
   // per-item stages loop (grid-stride) past 65535 groups, GL's guaranteed
   // GL_MAX_COMPUTE_WORK_GROUP_COUNT: beyond it glDispatchCompute does nothing
@@ -527,7 +546,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   for (int pass = 0; pass < 2; pass++) {
     for (int st = 0; st < kNStage; st++) {
       timerBegin(&g->timer, g->tstage[st]);
-      gl.UseProgram(g->prog[st]);
+      gl.UseProgram(g->prog[st == kTris && g->nfast < g->nwave ? kSplit : st]);
       if (groups[st] > 0) gl.DispatchCompute(groups[st], 1, 1);
       gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                        GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -160,7 +160,28 @@ float pieceRho(Piece P) {
   return sqrt(max(r2.x, max(r2.y, r2.z)));
 }
 
-void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) {
+// a wet triangle between its cut (setup), its wave pieces (wave) and its
+// forces (finish)
+struct Tri {
+  int k;             // triangle
+  int nv;            // wave pieces (0: no waves; -1: nothing wet, all done)
+  int nw;            // wet vertices
+  int i0;            // the vertex whose e^L corner 0 takes, turned by dx0, dm0
+  vec3 n;            // unit normal
+  float tlen;        // twice the area of the whole triangle
+  vec3 q0, q1, q2;   // wet polygon (the fan's first piece), its fourth corner pca
+  vec3 pca;
+  float area, dA;    // wet area, pressure head times area (hydrostatic and wave)
+  vec3 drA, rA, vs;  // its moment, the area's, the water velocity times area
+  vec2 dx0, dm0;
+  Piece A1, A2;
+};
+
+// the cut of triangle k and its hydrostatic part
+Tri setup(int k, float zc) {
+  Tri T;
+  T.k = k;
+  T.nv = -1;
   ivec4 t = texelFetch(tTri, k);
   vec4 P0 = texelFetch(tVout, t.x), P1 = texelFetch(tVout, t.y), P2 = texelFetch(tVout, t.z);
   vec3 cr = cross(P1.xyz - P0.xyz, P2.xyz - P0.xyz);
@@ -169,7 +190,7 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
   bool dry = P0.w >= 0.0 && P1.w >= 0.0 && P2.w >= 0.0;
   if (tlen <= 0.0 || dry) {
     if (first != 0) scur[k] = vec4(0.0);
-    return;
+    return T;
   }
   vec3 n = cr / tlen;
   // Sutherland-Hodgman against h <= 0 without indexing arrays (which
@@ -208,14 +229,26 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
   if (!(area > 0.0)) {
     if (!(area <= 0.0)) pF += vec3(kNaN);  // NaN area: heights not finite
     if (first != 0) scur[k] = vec4(0.0);
-    return;
+    return T;
   }
+  T.nv = 0;
+  T.nw = nw;
+  T.n = n;
+  T.tlen = tlen;
+  T.q0 = q0;
+  T.q1 = q1;
+  T.q2 = q2;
+  T.pca = pca;
+  T.area = area;
+  T.dA = dA;
+  T.drA = drA;
+  T.rA = rA;
+  T.vs = vec3(0.0);
 
   // the waves over the wet polygon c0 c1 c2 (c3), fanned from c0: each
   // component's e^L at the corners (wet vertices: verts.comp; cut points
   // here), integrated exactly per piece (waveint.glsl); the water velocity
   // is its mean over the wet part (docs/physics.md)
-  vec3 vs = vec3(0.0);
   if (nwave > 0) {
     vec2 L0 = texelFetch(tLab, t.x).xy, L1 = texelFetch(tLab, t.y).xy, L2 = texelFetch(tLab, t.z).xy;
     // labels: at the cut points cut with the same fractions as the positions
@@ -245,15 +278,29 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
     vec2 dx0 = cut0 ? pab.xy - (nw == 1 ? bq.xy : a.xy) : vec2(0.0);
     vec2 dm0 = cut0 ? mab - (nw == 1 ? mb : ma) : vec2(0.0);
     int nv = nw == 2 ? 2 : 1;
+    T.nv = nv;
+    T.i0 = i0;
+    T.dx0 = dx0;
+    T.dm0 = dm0;
+    T.A1 = A1;
+    T.A2 = A2;
     // the node gaps' and the turns' reach over k, reported to gl.cc, which
     // sizes the series (GWave.terms) and nfast to it and repeats the step
     // where it fell short
     rhomax = max(rhomax, max(max(pieceRho(A1), nv == 2 ? pieceRho(A2) : 0.0),
                              sqrt(max(dot(dx0, dx0), dot(dm0, dm0)))));
-    // the pieces, a quad's second in a loop (llvmpipe runs an if's body for every lane)
-    int pc = 0;
-    do {
-      Piece P = pc == 0 ? A1 : A2;
+  }
+  return T;
+}
+
+// piece pc of T's wet polygon: every component's dynamic pressure and
+// water velocity
+void wave(inout Tri T, int pc) {
+      bool lin = linear != 0;
+      int i0 = T.i0;
+      vec2 dx0 = T.dx0, dm0 = T.dm0;
+      vec3 vs = T.vs;
+      Piece P = pc == 0 ? T.A1 : T.A2;
       vec3 ps = vec3(0.0);
       // components [0, nfast) (k ascending): one series each, the turn
       // by its Taylor series (k times the reach <= WI_ROT, gl.cc)
@@ -266,7 +313,9 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
           wavePiece(P, wv, vec4(cmul(E.xy, r), cmul(E.zw, r)), false, ps, vs);
         } while (++w < nfast);
       }
-      // the rest: split into parts, turned by cos and sin
+#ifdef WI_SPLIT
+      // the rest: split into parts, turned by cos and sin (a second
+      // program, gl.cc kSplit: this loop's body would run at least once)
       for (int w = nfast; w < nwave; w++) {
         GWave wv = waveAt(w);
         vec4 E = texelFetch(tExp, i0 * nwave + w);
@@ -274,13 +323,19 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
         vec2 r = vec2(cos(ph), sin(ph));
         wavePiece(P, wv, vec4(cmul(E.xy, r), cmul(E.zw, r)), true, ps, vs);
       }
+#endif
       if (lin) {
-        dA += ps.x;
-        drA += (ps.x - ps.y - ps.z) * P.q0 + ps.y * P.q1 + ps.z * P.q2;
+        T.dA += ps.x;
+        T.drA += (ps.x - ps.y - ps.z) * P.q0 + ps.y * P.q1 + ps.z * P.q2;
       }
-    } while (++pc < nv);
-  }
+      T.vs = vs;
+}
 
+// T's forces: pressure, viscous, drag, slamming
+void finish(Tri T, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang) {
+  int k = T.k, nw = T.nw;
+  vec3 q0 = T.q0, q1 = T.q1, q2 = T.q2, pca = T.pca, n = T.n, rA = T.rA, drA = T.drA, vs = T.vs;
+  float area = T.area, dA = T.dA, tlen = T.tlen;
   float e0 = dot(q0, dir), e1 = dot(q1, dir), e2 = dot(q2, dir);
   float e3 = nw == 2 ? dot(pca, dir) : e0;
   float A = area;
@@ -352,7 +407,31 @@ void main() {
     pF = pT = vG = vEG = vCG = vECG = dF = dT = sF = sT = vec3(0.0);
     wt = vec4(0.0, 1e30, -1e30, 0.0);
     rhomax = 0.0;
-    for (int j = l; j < ch.nt; j += BUOY_LOCAL) triangle(ch.t0 + j, b, hl, dir, vlin, vang, zc);
+    // each invocation's triangles j = l, l + BUOY_LOCAL, ..., as a stream
+    // of wet pieces, one per pass: an invocation moves on to its next wet
+    // triangle while others still work on a quad's second piece, and
+    // passes its dry ones at the cost of a cut (llvmpipe runs all lanes
+    // of a vector through each pass, so a pass per triangle would cost
+    // every vector its wettest lane's pieces)
+    int j = l, pc = 0;
+    bool live = false;
+    Tri T;
+    do {
+      while (!live && j < ch.nt) {
+        T = setup(ch.t0 + j, zc);
+        live = T.nv >= 0;
+        pc = 0;
+        if (!live) j += BUOY_LOCAL;
+      }
+      if (live) {
+        if (pc < T.nv) wave(T, pc);
+        if (++pc >= T.nv) {
+          finish(T, b, hl, dir, vlin, vang);
+          live = false;
+          j += BUOY_LOCAL;
+        }
+      }
+    } while (live || j < ch.nt);
     // no shared memory and no barrier (llvmpipe runs barrier shaders as
     // coroutines): each invocation stores its sums, bodies.comp adds them
     int o = BUOY_NSUM * (BUOY_LOCAL * ci + l);
