@@ -104,8 +104,8 @@ static bool groupSizes(GlBackend* g, std::string* err) {
 static GWave gwave(const Wave& w, double depth, double reach) {
   double kh = w.k * depth;
   float e2 = depth > 0 && kh < 17 ? float(std::exp(-2 * kh)) : 0.0f;
-  GWave o{float(w.amp), float(w.k), float(w.omega), float(w.kind == 0 ? w.steep : 0),
-          float(w.dx), float(w.dy), float(w.kind), e2, 0, 0, 0, 0};
+  GWave o{float(w.amp), float(w.k), float(w.omega), 0, float(w.dx), float(w.dy), float(w.kind), e2,
+          float(w.kind == 0 ? w.steep : 0), 0, 0, 0};
   // the series length of its piece integrals (shaders/waveint.glsl
   // ddSeries): the fewest terms n >= 3 whose first left out, (n + 1) r^n /
   // (n + 2)!, is below 2.5e-7 at the node gap r = k reach; the largest,

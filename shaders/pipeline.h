@@ -98,16 +98,16 @@ struct GBody {
   vec4 rig2;       // xz yz (xy), 0 0
 };
 
-struct GWave {
+struct GWave {     // read as three texels (sea.glsl waveAt), the last only by the label solve
   float amp;
   float k;
   float omega;
-  float steep;
+  float terms;     // series terms of a piece's integrals (waveint.glsl ddSeries, gl.cc gwave)
   float dx;
   float dy;
   float kind;      // 0 Gerstner, 1 Airy (whose steep is 0 here)
   float e2kh;      // e^(-2 k h) at finite depth h if k h < 17, else 0 (deep: 0)
-  float terms;     // series terms of a piece's integrals (waveint.glsl ddSeries, gl.cc gwave)
+  float steep;
   float pad0;
   float pad1;
   float pad2;

@@ -8,16 +8,13 @@
 uniform samplerBuffer tWave;   // B_WAVE as RGBA32F, three texels per component
 uniform samplerBuffer tPhase;  // B_PHASE as R32F
 
-// component i (seaWave: but its series length, a texel less to gather)
+// component i, but its steepness (0: only the label solve reads it, a
+// texel more to gather)
 GWave waveAt(int i) {
-  vec4 u = texelFetch(tWave, 3 * i), v = texelFetch(tWave, 3 * i + 1);
-  vec2 t = texelFetch(tWave, 3 * i + 2).xy;
-  return GWave(u.x, u.y, u.z, u.w, v.x, v.y, v.z, v.w, t.x, t.y, 0.0, 0.0);
-}
-GWave seaWave(int i) {
   vec4 u = texelFetch(tWave, 3 * i), v = texelFetch(tWave, 3 * i + 1);
   return GWave(u.x, u.y, u.z, u.w, v.x, v.y, v.z, v.w, 0.0, 0.0, 0.0, 0.0);
 }
+float waveSteep(int i) { return texelFetch(tWave, 3 * i + 2).x; }
 
 uniform int nwave;
 uniform int ngerst;      // Gerstner components among them (steep > 0 ones matter)
@@ -40,8 +37,8 @@ vec2 seaResidual(int b, vec2 x, vec2 a, out vec3 J) {
   vec2 f = a - x;
   J = vec3(1.0, 0.0, 1.0);
   for (int i = 0; i < nwave; i++) {
-    GWave w = seaWave(i);
-    float qa = w.steep * w.amp;
+    GWave w = waveAt(i);
+    float qa = waveSteep(i) * w.amp;
     if (qa == 0.0) continue;
     float th = theta(w, phaseAt(b, i), a), s = sin(th), c = cos(th), jc = qa * w.k * c;
     f -= qa * s * vec2(w.dx, w.dy);
@@ -92,7 +89,7 @@ float seaEta(int b, vec2 a, vec2 x) {
   // after a break at the top)
   int i = 0;
   if (nwave > 0) do {
-    GWave w = seaWave(i);
+    GWave w = waveAt(i);
     z += w.amp * cos(thetaAt(w, phaseAt(b, i), a, x));
   } while (++i < nwave);
   return z;

@@ -46,7 +46,7 @@ void main() {
       float zs = seaStretch(r.z + o.w, eta);
       int w = 0;
       if (nwave > 0) do {
-        GWave wv = seaWave(w);
+        GWave wv = waveAt(w);
         float th = thetaAt(wv, phaseAt(b, w), a, r.xy), k = wv.k;
         vec2 cs = vec2(cos(th), sin(th));
         // e^(-k (zs + 2h)) = e^(-2kh) / e^(k zs), no second exp: e^(k zs) >=
