@@ -209,7 +209,7 @@ Tri setup(int k, float zc) {
   vec3 q0, q1, q2;
   // depths: Kerner's below the surface, -h (0 on the cut); linear theory's
   // hydrostatic part below the still level, -(z + zc), plus the dynamic
-  // pressure (wavePart)
+  // pressure (wave)
   bool lin = linear != 0;
   float d0 = lin ? -(P0.z + zc) : -P0.w, d1 = lin ? -(P1.z + zc) : -P1.w;
   float d2 = lin ? -(P2.z + zc) : -P2.w, da = lin ? -(a.z + zc) : -a.w;
@@ -245,10 +245,10 @@ Tri setup(int k, float zc) {
   T.rA = rA;
   T.vs = vec3(0.0);
 
-  // the waves over the wet polygon c0 c1 c2 (c3), fanned from c0: each
-  // component's e^L at the corners (wet vertices: verts.comp; cut points
-  // here), integrated exactly per piece (waveint.glsl); the water velocity
-  // is its mean over the wet part (docs/physics.md)
+  // the waves over the wet polygon c0 c1 c2 (c3), fanned from c0: its
+  // pieces, each integrated exactly about its highest corner (wave,
+  // waveint.glsl); the water velocity is its mean over the wet part
+  // (docs/physics.md)
   if (nwave > 0) {
     vec2 L0 = texelFetch(tLab, t.x).xy, L1 = texelFetch(tLab, t.y).xy, L2 = texelFetch(tLab, t.z).xy;
     // labels: at the cut points cut with the same fractions as the positions
