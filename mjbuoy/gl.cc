@@ -23,19 +23,33 @@ using namespace glsl;  // NOLINT: the shared layouts
 
 static const char* kStage[] = {"verts.comp", "tris.comp", "bodies.comp"};
 enum { kVerts, kTris, kBodies, kNStage };
+// tris.comp with WI_SPLIT: for seas with components whose pieces need
+// splitting (nfast < nwave); llvmpipe runs every loop body at least once,
+// so tris.comp leaves that loop out
+const int kSplit = int(kNStage);
 const int kMaxGroups = 65535;  // GL 4.3's minimum GL_MAX_COMPUTE_WORK_GROUP_COUNT
+const int kNTex = 7;           // buffer textures (units 0 .. kNTex - 1)
 
 struct GlBackend {
   GlContext ctx;
-  GLuint prog[kNStage] = {0};
+  GLuint prog[kNStage + 1] = {0};  // by stage, then kSplit
   GLuint buf[15] = {0};         // by binding point
-  GLuint tex[5] = {0};          // buffer textures of B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP (units 0..4)
+  GLuint tex[kNTex] = {0};      // buffer textures of B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP, B_WAVE,
+                                // B_PHASE (units 0..6)
   GlTimer timer;
   int tstage[kNStage] = {0};
   std::mutex mu;                // one context: one thread at a time
   int nvert = 0, ntri = 0, nhull = 0, nslot = 0, nwave = 0, nchunk = 0, nvchunk = 0;
+  // the components in the buffers' order, wave number ascending (perm:
+  // buffer slot -> sea index), the first nfast fast (fastWave) at reach:
+  // a bound on every piece's node gap over k [m], raised when a step
+  // reports more (glWrench)
+  std::vector<int> perm;
+  double reach = 0;
+  int nfast = 0;
   int vlocal = BUOY_VERT_LOCAL, local = BUOY_LOCAL, per = BUOY_PER, blocal = BUOY_BODY_LOCAL;
-  GLint uHasprev = -1, uFirst = -1, uSlamdt = -1;  // per-step uniforms, looked up once
+  GLint uHasprev[2] = {-1, -1}, uFirst[2] = {-1, -1}, uSlamdt[2] = {-1, -1};  // per-step uniforms of
+                                // tris.comp and kSplit, looked up once
   std::vector<GBody> body;      // per step, one per hull body (staging without persist)
   std::vector<float> phase;     // per step, nslot x nwave
   std::vector<float> out;       // readback, nslot x 10 x 4
@@ -48,6 +62,14 @@ struct GlBackend {
 
 static GLint loc(GlBackend* g, int st, const char* name) {
   return g->ctx.gl.GetUniformLocation(g->prog[st], name);
+}
+
+// the uniform called name of both triangle programs (kTris, kSplit)
+static void trisUniform(GlBackend* g, const char* name, int v) {
+  for (int st : {int(kTris), kSplit}) g->ctx.gl.ProgramUniform1i(g->prog[st], loc(g, st, name), v);
+}
+static void trisUniform(GlBackend* g, const char* name, float v) {
+  for (int st : {int(kTris), kSplit}) g->ctx.gl.ProgramUniform1f(g->prog[st], loc(g, st, name), v);
 }
 
 // buffer at binding point i with n bytes (data may be null)
@@ -79,20 +101,67 @@ static bool groupSizes(GlBackend* g, std::string* err) {
 // one wave component as the shaders read it; Airy components (kind 1) take
 // no part in the label search: steep 0; e^(-2 k h) for the finite-depth
 // profiles (0 deep, or where k h >= 17: shaders/waveint.glsl WI_KHMAX)
-static GWave gwave(const Wave& w, double depth) {
+static GWave gwave(const Wave& w, double depth, double reach) {
   double kh = w.k * depth;
   float e2 = depth > 0 && kh < 17 ? float(std::exp(-2 * kh)) : 0.0f;
-  return GWave{float(w.amp), float(w.k), float(w.omega), float(w.kind == 0 ? w.steep : 0),
-               float(w.dx), float(w.dy), float(w.kind), e2};
+  GWave o{float(w.amp), float(w.k), float(w.omega), 0, float(w.dx), float(w.dy), float(w.kind), e2,
+          float(w.kind == 0 ? w.steep : 0), 0, 0, 0};
+  // the series length of its piece integrals (shaders/waveint.glsl
+  // ddSeries): the fewest terms n >= 3 whose first left out, (n + 1) r^n /
+  // (n + 2)!, is below 2.5e-7 at the node gap r = k reach; the largest,
+  // 13, covers r = 2.17 (fast components have r <= WI_ROT = 2)
+  double r = w.k * reach, f = 24;  // f = (n + 2)!
+  int n = 3;
+  for (; n < 13; n++) {
+    f *= n + 2;
+    if (std::pow(2.5e-7 * f / (n + 1), 1.0 / n) >= r) break;
+  }
+  o.terms = float(n);
+  return o;
 }
 
-// the wave buffer's contents
-static void waveData(const Sea& sea, GWave* out) {
-  for (size_t i = 0; i < sea.waves.size(); i++) out[i] = gwave(sea.waves[i], sea.depth);
+// a component is fast (one series per piece, its turn along an edge by a
+// Taylor series: shaders/tris.comp) while k reach <= WI_ROT
+static bool fastWave(const Wave& w, double reach) { return w.k * reach <= 2.0; }
+
+// the longest edge of any hull [m] (body frame)
+static double longestEdge(const Buoy& b) {
+  double e2 = 0;
+  for (size_t t = 0; t + 2 < b.face.size(); t += 3) {
+    for (int j = 0; j < 3; j++) {
+      const double* p = &b.vert[3 * b.face[t + j]];
+      const double* q = &b.vert[3 * b.face[t + (j + 1) % 3]];
+      double d[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+      e2 = std::max(e2, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    }
+  }
+  return std::sqrt(e2);
 }
 
 // the uniforms that change with the sea
 static void seaUniforms(GlBackend* g, const Sea& sea);
+
+// the wave buffer from the sea at g->reach, sorted; nfast
+static void uploadWaves(GlBackend* g, const Sea& sea) {
+  const GladGLContext& gl = g->ctx.gl;
+  int* p = g->perm.data();
+  for (int i = 0; i < g->nwave; i++) p[i] = i;
+  std::sort(p, p + g->nwave, [&](int a, int c) {
+    return sea.waves[a].k < sea.waves[c].k || (sea.waves[a].k == sea.waves[c].k && a < c);
+  });
+  g->nfast = 0;
+  while (g->nfast < g->nwave && fastWave(sea.waves[p[g->nfast]], g->reach)) g->nfast++;
+  // uploaded in pieces from the stack: no allocation per step
+  GWave buf[64];
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_WAVE]);
+  for (int i0 = 0; i0 < g->nwave; i0 += 64) {
+    int n = std::min(64, g->nwave - i0);
+    for (int i = 0; i < n; i++) buf[i] = gwave(sea.waves[p[i0 + i]], sea.depth, g->reach);
+    gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, i0 * sizeof(GWave), n * sizeof(GWave), buf);
+  }
+  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  trisUniform(g, "nfast", g->nfast);
+}
 
 bool glMake(Buoy* b, std::string* err) {
   auto g = new GlBackend;
@@ -117,8 +186,9 @@ bool glMake(Buoy* b, std::string* err) {
                      "\n#define BUOY_LOCAL " + std::to_string(g->local) +
                      "\n#define BUOY_PER " + std::to_string(g->per) +
                      "\n#define BUOY_BODY_LOCAL " + std::to_string(g->blocal) + "\n";
-  for (int i = 0; i < kNStage; i++) {
-    g->prog[i] = glProgram(gl, kStage[i], err, defs);
+  for (int i = 0; i <= kNStage; i++) {
+    g->prog[i] = i < kNStage ? glProgram(gl, kStage[i], err, defs)
+                             : glProgram(gl, "tris.comp", err, defs + "#define WI_SPLIT 1\n");
     if (!g->prog[i]) {
       b->gl = g;
       glFree(b);
@@ -179,7 +249,8 @@ bool glMake(Buoy* b, std::string* err) {
   // room for b->wcap components, so mjb_setSea only rewrites (glSetSea)
   const int cap = std::max<int>(b->wcap, g->nwave);
   std::vector<GWave> wave(cap, GWave{});
-  waveData(sea, wave.data());
+  g->perm.assign(cap, 0);
+  g->reach = 1.25 * longestEdge(*b);  // a first guess; the steps raise it
   g->phase.assign(g->nslot * std::max(cap, 1), 0);
   g->out.assign(g->nslot * 40, 0);
   g->nchunk = chunk.size();
@@ -249,32 +320,40 @@ bool glMake(Buoy* b, std::string* err) {
     glFree(b);
     return false;
   }
-  const GLenum tfmt[5] = {GL_RGBA32F, GL_RG32F, GL_RGBA32I, GL_RGBA32F, GL_RGBA32F};
-  const int tbuf[5] = {B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP};
-  gl.GenTextures(5, g->tex);
-  for (int i = 0; i < 5; i++) {
+  const GLenum tfmt[kNTex] = {GL_RGBA32F, GL_RG32F,   GL_RGBA32I, GL_RGBA32F,
+                              GL_RGBA32F, GL_RGBA32F, GL_R32F};
+  const int tbuf[kNTex] = {B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP, B_WAVE, B_PHASE};
+  gl.GenTextures(kNTex, g->tex);
+  for (int i = 0; i < kNTex; i++) {
     gl.BindTexture(GL_TEXTURE_BUFFER, g->tex[i]);
     gl.TexBuffer(GL_TEXTURE_BUFFER, tfmt[i], g->buf[tbuf[i]]);
   }
   gl.BindTexture(GL_TEXTURE_BUFFER, 0);
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tVout"), 0);
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tLab"), 1);
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tTri"), 2);
+  trisUniform(g, "tVout", 0);
+  trisUniform(g, "tLab", 1);
+  trisUniform(g, "tTri", 2);
   gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "tVert"), 3);
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "tExp"), 4);
+  trisUniform(g, "tExp", 4);
+  for (int st : {int(kVerts), int(kTris), kSplit}) {
+    gl.ProgramUniform1i(g->prog[st], loc(g, st, "tWave"), 5);
+    gl.ProgramUniform1i(g->prog[st], loc(g, st, "tPhase"), 6);
+  }
   gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "nvchunk"), g->nvchunk);
 
   // uniforms that never change
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "nchunk"), g->nchunk);
-  gl.ProgramUniform1f(g->prog[kTris], loc(g, kTris, "rhog"), float(sea.rho * sea.g));
-  gl.ProgramUniform1f(g->prog[kTris], loc(g, kTris, "rho"), float(sea.rho));
+  trisUniform(g, "nchunk", g->nchunk);
+  trisUniform(g, "rhog", float(sea.rho * sea.g));
+  trisUniform(g, "rho", float(sea.rho));
   gl.ProgramUniform1i(g->prog[kBodies], loc(g, kBodies, "nslot"), g->nslot);
   gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "nu"), float(sea.nu));
   gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "rho"), float(sea.rho));
   seaUniforms(g, sea);
-  g->uHasprev = loc(g, kTris, "hasprev");
-  g->uFirst = loc(g, kTris, "first");
-  g->uSlamdt = loc(g, kTris, "slamdt");
+  uploadWaves(g, sea);
+  for (int i = 0; i < 2; i++) {
+    g->uHasprev[i] = loc(g, i ? kSplit : kTris, "hasprev");
+    g->uFirst[i] = loc(g, i ? kSplit : kTris, "first");
+    g->uSlamdt[i] = loc(g, i ? kSplit : kTris, "slamdt");
+  }
   timerInit(&g->timer, &gl);
   for (int i = 0; i < kNStage; i++) g->tstage[i] = timerStage(&g->timer, kStage[i]);
   b->gl = g;
@@ -284,7 +363,7 @@ bool glMake(Buoy* b, std::string* err) {
 
 static void seaUniforms(GlBackend* g, const Sea& sea) {
   const GladGLContext& gl = g->ctx.gl;
-  for (int st : {kVerts, kTris}) {
+  for (int st : {int(kVerts), int(kTris), kSplit}) {
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "nwave"), g->nwave);
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "ngerst"), sea.ng);
     gl.ProgramUniform1f(g->prog[st], loc(g, st, "depth"), float(sea.depth));
@@ -292,7 +371,7 @@ static void seaUniforms(GlBackend* g, const Sea& sea) {
                         float(sea.current[1]));
   }
   // flat water needs no dynamic pressure, whatever the model
-  gl.ProgramUniform1i(g->prog[kTris], loc(g, kTris, "linear"), !sea.kerner && !sea.waves.empty());
+  trisUniform(g, "linear", int(!sea.kerner && !sea.waves.empty()));
 }
 
 void glSetSea(Buoy* b) {
@@ -300,19 +379,11 @@ void glSetSea(Buoy* b) {
   if (!g) return;
   std::lock_guard<std::mutex> lk(g->mu);
   GlCurrent cur(&g->ctx);
-  const GladGLContext& gl = g->ctx.gl;
   const Sea& sea = b->cfg.sea;
   // within the capacity reserved in glMake (mjb_setSea checks): a rewrite,
   // no new GL object; uploaded in pieces from the stack
   g->nwave = sea.waves.size();
-  GWave buf[64];
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_WAVE]);
-  for (int i0 = 0; i0 < g->nwave; i0 += 64) {
-    int n = std::min(64, g->nwave - i0);
-    for (int i = 0; i < n; i++) buf[i] = gwave(sea.waves[i0 + i], sea.depth);
-    gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, i0 * sizeof(GWave), n * sizeof(GWave), buf);
-  }
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  uploadWaves(g, sea);
   seaUniforms(g, sea);
 }
 
@@ -412,7 +483,7 @@ static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     for (int j = 0; j < 3; j++) (&o.flow.x)[j] = float(sp > 1e-9 ? vr[j] / sp : R[3 * j]);
     o.flow.w = float(sp);
     for (int w = 0; w < g->nwave; w++) {
-      const Wave& wv = sea.waves[w];
+      const Wave& wv = sea.waves[g->perm[w]];
       double th = wv.k * (wv.dx * c[0] + wv.dy * c[1]) - wv.omega * d->time + wv.ph;
       g->phasep[i * g->nwave + w] = float(std::remainder(th, 2 * M_PI));
     }
@@ -453,38 +524,56 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   gl.BindImageTexture(0, g->tex[4], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
-  gl.ProgramUniform1i(g->prog[kTris], g->uHasprev, s->hasPrev);
-  gl.ProgramUniform1i(g->prog[kTris], g->uFirst, clock != kMidStep);
-  gl.ProgramUniform1f(g->prog[kTris], g->uSlamdt, float(s->hasPrev ? d->time - s->tprev : 0));
+  for (int i = 0; i < 2; i++) {
+    GLuint p = g->prog[i ? kSplit : kTris];
+    gl.ProgramUniform1i(p, g->uHasprev[i], s->hasPrev);
+    gl.ProgramUniform1i(p, g->uFirst[i], clock != kMidStep);
+    gl.ProgramUniform1f(p, g->uSlamdt[i], float(s->hasPrev ? d->time - s->tprev : 0));
+  }
 
   // per-item stages loop (grid-stride) past 65535 groups, GL's guaranteed
   // GL_MAX_COMPUTE_WORK_GROUP_COUNT: beyond it glDispatchCompute does nothing
   const int groups[kNStage] = {std::min(g->nvchunk, kMaxGroups),
                                std::min(g->nchunk, kMaxGroups),
                                (g->nslot + g->blocal - 1) / g->blocal};
-  for (int i = 0; i < 5; i++) {
+  for (int i = 0; i < kNTex; i++) {
     gl.ActiveTexture(GL_TEXTURE0 + i);
     gl.BindTexture(GL_TEXTURE_BUFFER, g->tex[i]);
   }
-  for (int st = 0; st < kNStage; st++) {
-    timerBegin(&g->timer, g->tstage[st]);
-    gl.UseProgram(g->prog[st]);
-    if (groups[st] > 0) gl.DispatchCompute(groups[st], 1, 1);
-    gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
-                     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    timerEnd(&g->timer, g->tstage[st]);
+  // twice where the step's pieces reached further than the series were
+  // sized for (tris.comp pieceRho, reported per body in out[40 i + 3]):
+  // the wave buffer is redone for the new reach, and the step repeated
+  for (int pass = 0; pass < 2; pass++) {
+    for (int st = 0; st < kNStage; st++) {
+      timerBegin(&g->timer, g->tstage[st]);
+      gl.UseProgram(g->prog[st == kTris && g->nfast < g->nwave ? kSplit : st]);
+      if (groups[st] > 0) gl.DispatchCompute(groups[st], 1, 1);
+      gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                       GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      timerEnd(&g->timer, g->tstage[st]);
+    }
+    gl.UseProgram(0);
+    // the readback copies: a persistent read mapping of a buffer the shaders
+    // wrote stays zero on Mesa 22.3 llvmpipe (checked), and 160 bytes a body
+    // cost nothing next to the dispatches
+    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_OUT]);
+    gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->out.size() * sizeof(float),
+                        g->out.data());
+    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    // (a non-finite reach: the heights were not finite, which the sums report)
+    double reach = 0;
+    for (int i = 0; i < g->nslot; i++) {
+      float r = g->out[40 * i + 3];
+      if (!s->bad[b->body[i]] && std::isfinite(r)) reach = std::max(reach, double(r));
+    }
+    if (reach <= g->reach || g->nwave == 0) break;
+    g->reach = 1.25 * reach;
+    uploadWaves(g, b->cfg.sea);
   }
-  gl.UseProgram(0);
-  // the readback copies: a persistent read mapping of a buffer the shaders
-  // wrote stays zero on Mesa 22.3 llvmpipe (checked), and 160 bytes a body
-  // cost nothing next to the dispatches
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_OUT]);
-  gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->out.size() * sizeof(float), g->out.data());
-  gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   for (int i = 0; i < 15; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
   gl.BindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  for (int i = 4; i >= 0; i--) {
+  for (int i = kNTex - 1; i >= 0; i--) {
     gl.ActiveTexture(GL_TEXTURE0 + i);
     gl.BindTexture(GL_TEXTURE_BUFFER, 0);
   }

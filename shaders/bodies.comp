@@ -23,6 +23,7 @@ void main() {
   vec3 pF = vec3(0.0), pT = vec3(0.0), vF = vec3(0.0), vT = vec3(0.0);
   vec3 dF = vec3(0.0), dT = vec3(0.0), sF = vec3(0.0), sT = vec3(0.0);
   vec3 f = vec3(0.0), t = vec3(0.0);
+  float reach = 0.0;  // the largest piece reach over k (tris.comp pieceRho) [m]
   for (int h = bd.h0; h < bd.h0 + bd.nh; h++) {
     GHull hl = hull[h];
     vec3 G = vec3(0.0), EG = vec3(0.0), CG = vec3(0.0), ECG = vec3(0.0);
@@ -30,6 +31,7 @@ void main() {
     for (int c = BUOY_LOCAL * hl.c0; c < BUOY_LOCAL * (hl.c0 + hl.nc); c++) {
       int o = BUOY_NSUM * c;
       pF += cpart[o].xyz;
+      reach = max(reach, cpart[o].w);
       pT += cpart[o + 1].xyz;
       G += cpart[o + 2].xyz;
       EG += cpart[o + 3].xyz;
@@ -60,7 +62,7 @@ void main() {
     f -= hl.damp.x * rs * bd.vlin.xyz;
     t -= hl.damp.y * rs * bd.vang.xyz;
   }
-  outw[10 * b] = vec4(pF, 0.0);
+  outw[10 * b] = vec4(pF, reach);
   outw[10 * b + 1] = vec4(pT, 0.0);
   outw[10 * b + 2] = vec4(vF, 0.0);
   outw[10 * b + 3] = vec4(vT, 0.0);

@@ -41,7 +41,7 @@ namespace glsl {
 #define B_TRI 1      // GTri[]       static: triangles
 #define B_HULL 2     // GHull[]      static: per-hull constants
 #define B_BODY 3     // GBody[]      per step: body poses and velocities
-#define B_PHASE 4    // float[]      per step: phase of wave i at body b, b * nwave + i
+#define B_PHASE 4    // float[]      per step: phase of wave i at body b, b * nwave + i (texture)
 #define B_VOUT 5     // vec4[]       vertex: position rel. COM (xyz), height above water (w)
 #define B_LAB 6      // vec2[]       vertex: surface particle label rel. COM
 #define B_CHUNK 7    // GChunk[]     static: triangle chunks, one hull each
@@ -50,9 +50,9 @@ namespace glsl {
 #define B_OUT 10     // vec4[]       body: force, torque per family (2 x 5 each)
 #define B_SLAMPREV 11  // vec4[]     triangle: previous step's velocity (xyz), wet area (w)
 #define B_SLAMCUR 12   // vec4[]     triangle: this step's, written on its first call
-#define B_WAVE 13    // GWave[]      static: wave components
+#define B_WAVE 13    // GWave[]      static: wave components (read as a buffer texture)
 #define B_EXP 14     // vec4[]       (image unit 0, not an SSBO binding) vertex x component
-                     //              (v * nwave + i), wet vertices only:
+                     //              (v * nwave + i), every vertex (zs = 0 where dry):
                      //              e^(k zs + i theta) (xy), e^(-k (zs + 2 h) + i theta) (zw)
 
 struct GVert {
@@ -98,15 +98,19 @@ struct GBody {
   vec4 rig2;       // xz yz (xy), 0 0
 };
 
-struct GWave {
+struct GWave {     // read as three texels (sea.glsl waveAt), the last only by the label solve
   float amp;
   float k;
   float omega;
-  float steep;
+  float terms;     // series terms of a piece's integrals (waveint.glsl ddSeries, gl.cc gwave)
   float dx;
   float dy;
   float kind;      // 0 Gerstner, 1 Airy (whose steep is 0 here)
   float e2kh;      // e^(-2 k h) at finite depth h if k h < 17, else 0 (deep: 0)
+  float steep;
+  float pad0;
+  float pad1;
+  float pad2;
 };
 
 struct GChunk {
@@ -121,7 +125,7 @@ static_assert(sizeof(GVert) == 16, "std430 stride of GVert");
 static_assert(sizeof(GTri) == 16, "std430 stride of GTri");
 static_assert(sizeof(GHull) == 96, "std430 stride of GHull");
 static_assert(sizeof(GBody) == 176, "std430 stride of GBody");
-static_assert(sizeof(GWave) == 32, "std430 stride of GWave");
+static_assert(sizeof(GWave) == 48, "std430 stride of GWave");
 static_assert(sizeof(GChunk) == 16, "std430 stride of GChunk");
 }  // namespace glsl
 }  // namespace mjb

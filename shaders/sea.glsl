@@ -2,23 +2,33 @@
 // mjbuoy/sea.cc, in positions relative to the body's COM; the per-body
 // phases come from the CPU in double). Needs shared.h and buoy.h first.
 
-layout(std430, binding = B_PHASE) readonly buffer Phases { float phase[]; };
-layout(std430, binding = B_WAVE) readonly buffer Waves { GWave wave[]; };
+// B_WAVE and B_PHASE through buffer textures: llvmpipe gathers a texel in
+// straight SIMD code, but loads a storage buffer at a loop-varying index
+// lane by lane
+uniform samplerBuffer tWave;   // B_WAVE as RGBA32F, three texels per component
+uniform samplerBuffer tPhase;  // B_PHASE as R32F
+
+// component i, but its steepness (0: only the label solve reads it, a
+// texel more to gather)
+GWave waveAt(int i) {
+  vec4 u = texelFetch(tWave, 3 * i), v = texelFetch(tWave, 3 * i + 1);
+  return GWave(u.x, u.y, u.z, u.w, v.x, v.y, v.z, v.w, 0.0, 0.0, 0.0, 0.0);
+}
+float waveSteep(int i) { return texelFetch(tWave, 3 * i + 2).x; }
 
 uniform int nwave;
 uniform int ngerst;      // Gerstner components among them (steep > 0 ones matter)
 uniform float depth;     // water depth [m], 0 = deep
 uniform vec2 current;    // [m/s]
 
-float theta(int b, int i, vec2 a) {
-  return phase[b * nwave + i] + wave[i].k * (wave[i].dx * a.x + wave[i].dy * a.y);
-}
+float phaseAt(int b, int i) { return texelFetch(tPhase, b * nwave + i).x; }
 
-// the phase of component i at the point x whose Gerstner label is a:
-// Gerstner components at the label, Airy ones (kind 1) at x
-float thetaAt(int b, int i, vec2 a, vec2 x) {
-  return theta(b, i, wave[i].kind != 0.0 ? x : a);
-}
+float theta(GWave w, float ph, vec2 a) { return ph + w.k * (w.dx * a.x + w.dy * a.y); }
+
+// the phase of component w (phase ph at the COM) at the point x whose
+// Gerstner label is a: Gerstner components at the label, Airy ones (kind
+// 1) at x
+float thetaAt(GWave w, float ph, vec2 a, vec2 x) { return theta(w, ph, w.kind != 0.0 ? x : a); }
 
 // residual f = a - Q A D sin(theta(a)) - x and the upper triangle of its
 // Jacobian J = I - sum Q A k cos(theta) D D^T (j00, j01, j11); Airy
@@ -27,11 +37,12 @@ vec2 seaResidual(int b, vec2 x, vec2 a, out vec3 J) {
   vec2 f = a - x;
   J = vec3(1.0, 0.0, 1.0);
   for (int i = 0; i < nwave; i++) {
-    float qa = wave[i].steep * wave[i].amp;
+    GWave w = waveAt(i);
+    float qa = waveSteep(i) * w.amp;
     if (qa == 0.0) continue;
-    float th = theta(b, i, a), s = sin(th), c = cos(th), jc = qa * wave[i].k * c;
-    f -= qa * s * vec2(wave[i].dx, wave[i].dy);
-    J -= jc * vec3(wave[i].dx * wave[i].dx, wave[i].dx * wave[i].dy, wave[i].dy * wave[i].dy);
+    float th = theta(w, phaseAt(b, i), a), s = sin(th), c = cos(th), jc = qa * w.k * c;
+    f -= qa * s * vec2(w.dx, w.dy);
+    J -= jc * vec3(w.dx * w.dx, w.dx * w.dy, w.dy * w.dy);
   }
   return f;
 }
@@ -74,7 +85,13 @@ vec2 seaLabel(int b, vec2 x, vec2 a) {
 // surface height relative to the still level [m] above x, whose label is a
 float seaEta(int b, vec2 a, vec2 x) {
   float z = 0.0;
-  for (int i = 0; i < nwave; i++) z += wave[i].amp * cos(thetaAt(b, i, a, x));
+  // the test at the end (llvmpipe runs a loop's body once more, masked,
+  // after a break at the top)
+  int i = 0;
+  if (nwave > 0) do {
+    GWave w = waveAt(i);
+    z += w.amp * cos(thetaAt(w, phaseAt(b, i), a, x));
+  } while (++i < nwave);
   return z;
 }
 

@@ -35,6 +35,7 @@ uniform int hasprev;   // slamming history exists
 uniform int first;     // first call of this step: record the history
 uniform float slamdt;  // time since the previous step's first call [s]
 uniform int linear;    // linear wave pressure (mjbuoy/wavepress.cc), else Kerner's
+uniform int nfast;     // components integrated by one series per piece (gl.cc)
 
 // a NaN to add to a sum whose intermediate was not finite: the CPU side
 // reports a non-finite family (mjb_notices), never a silent zero
@@ -43,6 +44,7 @@ const float kNaN = uintBitsToFloat(0x7fc00000u);
 // per-invocation sums over its triangles (BUOY_NSUM vec4, see pipeline.h)
 vec3 pF, pT, vG, vEG, vCG, vECG, dF, dT, sF, sT;
 vec4 wt;
+float rhomax;  // the node gaps' reach over k (pieceRho) [m]
 
 // exact moments of pressure depth d over triangle q (fan piece of the wet polygon)
 void piece(vec3 q0, vec3 q1, vec3 q2, float d0, float d1, float d2, vec3 n, inout float area,
@@ -104,47 +106,82 @@ void pieceSpan(Piece P, GWave wv, out vec2 x, out vec2 y) {
   y = vec2(wv.k * (P.zs.z - P.zs.x), dot(kd, d.zw));
 }
 
-// adds component wv's integrals over part k of n^2 of piece P (triPart):
-// the dynamic pressure over rho g times 1 and r (dA, drA; with lin) and
-// the water velocity times area (vs); f0..f2: e^L at the polygon corners
-// c0..c2 of P (B_EXP layout)
-void wavePart(Piece P, GWave wv, vec4 f0, vec4 f1, vec4 f2, bool lin, int n, int k,
-              inout float dA, inout vec3 drA, inout vec3 vs) {
-  if (!(P.a2 > 0.0) || wv.k * P.zs.x < -40.0) return;  // e^(k zs) < 4e-18 on all of it
-  bool r0 = P.rot == 0, r1 = P.rot == 1;
-  vec4 E0 = r0 ? f0 : r1 ? f1 : f2;
+// adds component wv's integrals over piece P, whose corner 0 has e^L = E0
+// (B_EXP layout), nt series terms (GWave.terms: enough for the piece's
+// node gap, gl.cc): ps += (Re S, Re M1, Re M2) times amp / (1 +
+// e^(-2kh)), the dynamic pressure over rho g and its barycentric moments
+// (corner 0's is the first minus the others), vs += the water velocity
+// times area. split: the piece in n^2 parts (triPart, n per invocation),
+// for components whose node gap may exceed what one series covers
+void wavePiece(Piece P, GWave wv, vec4 E0, bool split, inout vec3 ps, inout vec3 vs) {
   vec2 x, y;
   pieceSpan(P, wv, x, y);
-  // e^(k zs) and, at finite depth, e^(-k (zs + 2h)) (real parts flip); a
-  // loop, not an if: llvmpipe runs an if's body for every lane, masked
+  int n = split ? triParts(x, y) : 1;
+  // e^(k zs) and, at finite depth, e^(-k (zs + 2h)) (real parts flip);
+  // loops test at their end: llvmpipe runs every if's body and, after a
+  // break at the top, a loop's body once more, each for all lanes, masked
   float e2 = wv.e2kh, sv = 0.0;
   vec2 S = vec2(0.0), M1 = S, M2 = S;
-  for (int f = 0; f < (e2 > 0.0 ? 2 : 1); f++) {
+  int f = 0;
+  do {
     float sg = f == 0 ? 1.0 : -1.0;
-    vec2 s = vec2(0.0);
-    triPart(vec2(sg * x.x, x.y), vec2(sg * y.x, y.y), f == 0 ? E0.xy : E0.zw, P.a2, n, k, s, M1,
-            M2);
+    vec2 xf = vec2(sg * x.x, x.y), yf = vec2(sg * y.x, y.y), e = f == 0 ? E0.xy : E0.zw;
+    vec2 s = vec2(0.0), m1 = s, m2 = s;
+    if (split) {
+      for (int k = 0; k < n * n; k++) triPart(xf, yf, e, 1.0, n, k, s, m1, m2);
+    } else {
+      vec2 s0, sa, sb;
+      ddSeries(xf, yf, int(wv.terms), s0, sa, sb);
+      // exp[0,x,y,y] = s0 - sa - sb (the three moments add up to S)
+      s = cmul(e, s0);
+      m1 = cmul(e, sb);
+      m2 = cmul(e, s0 - sa - sb);
+    }
     S += s;
+    M1 += m1;
+    M2 += m2;
     sv += sg * s.y;
-  }
-  float amp = wv.amp, cp = amp / (1.0 + e2), cv = amp * wv.omega / (1.0 - e2);
+  } while (++f < (e2 > 0.0 ? 2 : 1));
+  float amp = wv.amp * P.a2, cv = amp * wv.omega / (1.0 - e2);
   // velocity: horizontal (e+ + e-) cos, vertical (e+ - e-) sin, over 1 - e^(-2kh)
   vs += cv * vec3(S.x * vec2(wv.dx, wv.dy), sv);
-  if (!lin) return;
   // pressure: (e+ + e-) cos over 1 + e^(-2kh), its moments
-  dA += cp * S.x;
-  drA += cp * ((S.x - M1.x - M2.x) * P.q0 + M1.x * P.q1 + M2.x * P.q2);
+  ps += amp / (1.0 + e2) * vec3(S.x, M1.x, M2.x);
 }
 
-// e^L of component w at a cut point (on the surface: zs = 0) with Airy
-// position x, Gerstner label l
-vec4 cutExp(GWave wv, float ph, vec2 x, vec2 l) {
-  float th = ph + wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? x : l);
-  vec2 cs = vec2(cos(th), sin(th));
-  return vec4(cs, wv.e2kh * cs);
+// the largest node gap over k of piece P's integrals, for any component:
+// max over corner pairs of sqrt(dzs^2 + max(|dp|^2, |dl|^2)) [m]
+float pieceRho(Piece P) {
+  vec4 d = vec4(P.dp.zw - P.dp.xy, P.dl.zw - P.dl.xy);
+  vec3 dz = vec3(P.zs.y - P.zs.x, P.zs.z - P.zs.x, P.zs.z - P.zs.y);
+  vec3 h = vec3(max(dot(P.dp.xy, P.dp.xy), dot(P.dl.xy, P.dl.xy)),
+                max(dot(P.dp.zw, P.dp.zw), dot(P.dl.zw, P.dl.zw)), max(dot(d.xy, d.xy), dot(d.zw, d.zw)));
+  vec3 r2 = dz * dz + h;
+  return sqrt(max(r2.x, max(r2.y, r2.z)));
 }
 
-void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) {
+// a wet triangle between its cut (setup), its wave pieces (wave) and its
+// forces (finish)
+struct Tri {
+  int k;             // triangle
+  int nv;            // wave pieces (0: no waves; -1: nothing wet, all done)
+  int nw;            // wet vertices
+  int i0;            // the vertex whose e^L corner 0 takes, turned by dx0, dm0
+  vec3 n;            // unit normal
+  float tlen;        // twice the area of the whole triangle
+  vec3 q0, q1, q2;   // wet polygon (the fan's first piece), its fourth corner pca
+  vec3 pca;
+  float area, dA;    // wet area, pressure head times area (hydrostatic and wave)
+  vec3 drA, rA, vs;  // its moment, the area's, the water velocity times area
+  vec2 dx0, dm0;
+  Piece A1, A2;
+};
+
+// the cut of triangle k and its hydrostatic part
+Tri setup(int k, float zc) {
+  Tri T;
+  T.k = k;
+  T.nv = -1;
   ivec4 t = texelFetch(tTri, k);
   vec4 P0 = texelFetch(tVout, t.x), P1 = texelFetch(tVout, t.y), P2 = texelFetch(tVout, t.z);
   vec3 cr = cross(P1.xyz - P0.xyz, P2.xyz - P0.xyz);
@@ -153,7 +190,7 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
   bool dry = P0.w >= 0.0 && P1.w >= 0.0 && P2.w >= 0.0;
   if (tlen <= 0.0 || dry) {
     if (first != 0) scur[k] = vec4(0.0);
-    return;
+    return T;
   }
   vec3 n = cr / tlen;
   // Sutherland-Hodgman against h <= 0 without indexing arrays (which
@@ -172,7 +209,7 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
   vec3 q0, q1, q2;
   // depths: Kerner's below the surface, -h (0 on the cut); linear theory's
   // hydrostatic part below the still level, -(z + zc), plus the dynamic
-  // pressure (wavePart)
+  // pressure (wave)
   bool lin = linear != 0;
   float d0 = lin ? -(P0.z + zc) : -P0.w, d1 = lin ? -(P1.z + zc) : -P1.w;
   float d2 = lin ? -(P2.z + zc) : -P2.w, da = lin ? -(a.z + zc) : -a.w;
@@ -192,14 +229,26 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
   if (!(area > 0.0)) {
     if (!(area <= 0.0)) pF += vec3(kNaN);  // NaN area: heights not finite
     if (first != 0) scur[k] = vec4(0.0);
-    return;
+    return T;
   }
+  T.nv = 0;
+  T.nw = nw;
+  T.n = n;
+  T.tlen = tlen;
+  T.q0 = q0;
+  T.q1 = q1;
+  T.q2 = q2;
+  T.pca = pca;
+  T.area = area;
+  T.dA = dA;
+  T.drA = drA;
+  T.rA = rA;
+  T.vs = vec3(0.0);
 
-  // the waves over the wet polygon c0 c1 c2 (c3), fanned from c0: each
-  // component's e^L at the corners (wet vertices: verts.comp; cut points
-  // here), integrated exactly per piece (waveint.glsl); the water velocity
-  // is its mean over the wet part (docs/physics.md)
-  vec3 vs = vec3(0.0);
+  // the waves over the wet polygon c0 c1 c2 (c3), fanned from c0: its
+  // pieces, each integrated exactly about its highest corner (wave,
+  // waveint.glsl); the water velocity is its mean over the wet part
+  // (docs/physics.md)
   if (nwave > 0) {
     vec2 L0 = texelFetch(tLab, t.x).xy, L1 = texelFetch(tLab, t.y).xy, L2 = texelFetch(tLab, t.z).xy;
     // labels: at the cut points cut with the same fractions as the positions
@@ -218,36 +267,75 @@ void triangle(int k, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang, float zc) 
     float z2 = nw == 3 ? s2 : nw == 1 ? 0.0 : sc;
     Piece A1 = makePiece(c0, c1, c2, z0, z1, z2, n0, n1, n2, n);
     Piece A2 = makePiece(c0, c2, pca, z0, z2, 0.0, n0, n2, mca, n);
-    // each component's e^L at the corners: the three vertices' (read even
-    // where dry, then unused) and the two cut points' (computed even where
-    // none: llvmpipe runs both sides of a per-lane choice)
-    int nv = nw == 2 ? 2 : 1;  // pieces
-    for (int w = 0; w < nwave; w++) {
-      GWave wv = wave[w];  // once: llvmpipe may load an SSBO lane by lane
-      float ph = phase[b * nwave + w];
-      vec4 E0 = texelFetch(tExp, t.x * nwave + w), E1 = texelFetch(tExp, t.y * nwave + w);
-      vec4 E2 = texelFetch(tExp, t.z * nwave + w);
-      vec4 Ea = o0 ? E0 : o1 ? E1 : E2, Eb = o0 ? E1 : o1 ? E2 : E0, Ec = o0 ? E2 : o1 ? E0 : E1;
-      vec4 Eab = cutExp(wv, ph, pab.xy, mab), Eca = cutExp(wv, ph, pca.xy, mca);
-      vec4 e0 = nw == 3 ? E0 : nw == 1 ? Ea : Eab, e1 = nw == 3 ? E1 : nw == 1 ? Eab : Eb;
-      vec4 e2 = nw == 3 ? E2 : nw == 1 ? Eca : Ec;
-      // the second piece of a quad in a loop (an if runs for every lane)
-      // the pieces' parts (triParts: one each, but for pieces wider than
-      // about a sixth of the wavelength) in one loop with one call
-      // (llvmpipe would run both sides of an if)
-      vec2 x1, y1, x2, y2;
-      pieceSpan(A1, wv, x1, y1);
-      pieceSpan(A2, wv, x2, y2);
-      int n1 = triParts(x1, y1), n2 = triParts(x2, y2);
-      int m1 = n1 * n1, np = m1 + (nv == 2 ? n2 * n2 : 0);
-      for (int it = 0; it < np; it++) {
-        bool p0 = it < m1;
-        wavePart(p0 ? A1 : A2, wv, e0, p0 ? e1 : e2, p0 ? e2 : Eca, lin, p0 ? n1 : n2,
-                 p0 ? it : it - m1, dA, drA, vs);
-      }
-    }
+    // corner 0 of the pieces (the highest; a quad's two share it): a
+    // vertex, or the cut point pab, whose e^L is that of its edge's dry
+    // end (zs = 0 at both; verts.comp stores every vertex) turned by the
+    // phase change along the edge (theta is linear in x, or in the label)
+    int ia = o0 ? t.x : o1 ? t.y : t.z, ib = o0 ? t.y : o1 ? t.z : t.x;
+    bool cut0 = nw == 2 || (nw == 1 && A1.rot == 1);
+    int iv = nw == 3 ? (A1.rot == 0 ? t.x : A1.rot == 1 ? t.y : t.z) : ia;
+    int i0 = cut0 && nw == 1 ? ib : iv;
+    vec2 dx0 = cut0 ? pab.xy - (nw == 1 ? bq.xy : a.xy) : vec2(0.0);
+    vec2 dm0 = cut0 ? mab - (nw == 1 ? mb : ma) : vec2(0.0);
+    int nv = nw == 2 ? 2 : 1;
+    T.nv = nv;
+    T.i0 = i0;
+    T.dx0 = dx0;
+    T.dm0 = dm0;
+    T.A1 = A1;
+    T.A2 = A2;
+    // the node gaps' and the turns' reach over k, reported to gl.cc, which
+    // sizes the series (GWave.terms) and nfast to it and repeats the step
+    // where it fell short
+    rhomax = max(rhomax, max(max(pieceRho(A1), nv == 2 ? pieceRho(A2) : 0.0),
+                             sqrt(max(dot(dx0, dx0), dot(dm0, dm0)))));
   }
+  return T;
+}
 
+// piece pc of T's wet polygon: every component's dynamic pressure and
+// water velocity
+void wave(inout Tri T, int pc) {
+      bool lin = linear != 0;
+      int i0 = T.i0;
+      vec2 dx0 = T.dx0, dm0 = T.dm0;
+      vec3 vs = T.vs;
+      Piece P = pc == 0 ? T.A1 : T.A2;
+      vec3 ps = vec3(0.0);
+      // components [0, nfast) (k ascending): one series each, the turn
+      // by its Taylor series (k times the reach <= WI_ROT, gl.cc)
+      if (nfast > 0) {
+        int w = 0;
+        do {
+          GWave wv = waveAt(w);
+          vec4 E = texelFetch(tExp, i0 * nwave + w);
+          vec2 r = rotation(wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? dx0 : dm0));
+          wavePiece(P, wv, vec4(cmul(E.xy, r), cmul(E.zw, r)), false, ps, vs);
+        } while (++w < nfast);
+      }
+#ifdef WI_SPLIT
+      // the rest: split into parts, turned by cos and sin (a second
+      // program, gl.cc kSplit: this loop's body would run at least once)
+      for (int w = nfast; w < nwave; w++) {
+        GWave wv = waveAt(w);
+        vec4 E = texelFetch(tExp, i0 * nwave + w);
+        float ph = wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? dx0 : dm0);
+        vec2 r = vec2(cos(ph), sin(ph));
+        wavePiece(P, wv, vec4(cmul(E.xy, r), cmul(E.zw, r)), true, ps, vs);
+      }
+#endif
+      if (lin) {
+        T.dA += ps.x;
+        T.drA += (ps.x - ps.y - ps.z) * P.q0 + ps.y * P.q1 + ps.z * P.q2;
+      }
+      T.vs = vs;
+}
+
+// T's forces: pressure, viscous, drag, slamming
+void finish(Tri T, int b, GHull hl, vec3 dir, vec3 vlin, vec3 vang) {
+  int k = T.k, nw = T.nw;
+  vec3 q0 = T.q0, q1 = T.q1, q2 = T.q2, pca = T.pca, n = T.n, rA = T.rA, drA = T.drA, vs = T.vs;
+  float area = T.area, dA = T.dA, tlen = T.tlen;
   float e0 = dot(q0, dir), e1 = dot(q1, dir), e2 = dot(q2, dir);
   float e3 = nw == 2 ? dot(pca, dir) : e0;
   float A = area;
@@ -318,11 +406,36 @@ void main() {
     float zc = body[b].orig.w;
     pF = pT = vG = vEG = vCG = vECG = dF = dT = sF = sT = vec3(0.0);
     wt = vec4(0.0, 1e30, -1e30, 0.0);
-    for (int j = l; j < ch.nt; j += BUOY_LOCAL) triangle(ch.t0 + j, b, hl, dir, vlin, vang, zc);
+    rhomax = 0.0;
+    // each invocation's triangles j = l, l + BUOY_LOCAL, ..., as a stream
+    // of wet pieces, one per pass: an invocation moves on to its next wet
+    // triangle while others still work on a quad's second piece, and
+    // passes its dry ones at the cost of a cut (llvmpipe runs all lanes
+    // of a vector through each pass, so a pass per triangle would cost
+    // every vector its wettest lane's pieces)
+    int j = l, pc = 0;
+    bool live = false;
+    Tri T;
+    do {
+      while (!live && j < ch.nt) {
+        T = setup(ch.t0 + j, zc);
+        live = T.nv >= 0;
+        pc = 0;
+        if (!live) j += BUOY_LOCAL;
+      }
+      if (live) {
+        if (pc < T.nv) wave(T, pc);
+        if (++pc >= T.nv) {
+          finish(T, b, hl, dir, vlin, vang);
+          live = false;
+          j += BUOY_LOCAL;
+        }
+      }
+    } while (live || j < ch.nt);
     // no shared memory and no barrier (llvmpipe runs barrier shaders as
     // coroutines): each invocation stores its sums, bodies.comp adds them
     int o = BUOY_NSUM * (BUOY_LOCAL * ci + l);
-    cpart[o] = vec4(pF, 0.0);
+    cpart[o] = vec4(pF, rhomax);
     cpart[o + 1] = vec4(pT, 0.0);
     cpart[o + 2] = vec4(vG, 0.0);
     cpart[o + 3] = vec4(vEG, 0.0);

@@ -38,22 +38,22 @@ void main() {
       lab[i] = a;
       vout[i] = q;
       // each component's e^(k zs + i theta) and e^(-k (zs + 2 h) + i theta),
-      // zs the Wheeler height, at wet vertices: the two exponentials of
-      // the linear profiles cosh(k (zs + h)) / cosh(k h) and its kin
-      // (docs/physics.md), each bounded by 1 (the second 0 where e^(-k h)
-      // is below float's resolution, gl.cc gwave)
-      if (q.w <= 0.0) {
-        float zs = seaStretch(r.z + o.w, eta);
-        for (int w = 0; w < nwave; w++) {
-          GWave wv = wave[w];
-          float th = thetaAt(b, w, a, r.xy), k = wv.k;
-          vec2 cs = vec2(cos(th), sin(th));
-          // e^(-k (zs + 2h)) = e^(-2kh) / e^(k zs), no second exp: e^(k zs) >=
-          // e^(-k h) > e^-17 where e2kh > 0 (zs >= -h)
-          float ep = exp(k * zs), em = wv.e2kh > 0.0 ? wv.e2kh / ep : 0.0;
-          imageStore(iExp, i * nwave + w, vec4(ep * cs, em * cs));
-        }
-      }
+      // zs the Wheeler height: the two exponentials of the linear profiles
+      // cosh(k (zs + h)) / cosh(k h) and its kin (docs/physics.md), each
+      // bounded by 1 (the second 0 where e^(-k h) is below float's
+      // resolution, gl.cc gwave); at dry vertices too (zs = 0: e^(i theta),
+      // from which tris.comp turns the cut points')
+      float zs = seaStretch(r.z + o.w, eta);
+      int w = 0;
+      if (nwave > 0) do {
+        GWave wv = waveAt(w);
+        float th = thetaAt(wv, phaseAt(b, w), a, r.xy), k = wv.k;
+        vec2 cs = vec2(cos(th), sin(th));
+        // e^(-k (zs + 2h)) = e^(-2kh) / e^(k zs), no second exp: e^(k zs) >=
+        // e^(-k h) > e^-17 where e2kh > 0 (zs >= -h)
+        float ep = exp(k * zs), em = wv.e2kh > 0.0 ? wv.e2kh / ep : 0.0;
+        imageStore(iExp, i * nwave + w, vec4(ep * cs, em * cs));
+      } while (++w < nwave);
     }
   }
 }
