@@ -62,19 +62,11 @@ static const double kAsymWarn = 0.02;
 
 static const char* bodyName(const mjModel* m, int b) { return m->names + m->name_bodyadr[b]; }
 
-// whether the rigid group of root radiates: an override naming the root or
-// any of its hull bodies wins over mjbuoy.radiation (off over on)
+// whether the rigid group of root radiates (RadConfig::groupRadiates)
 static bool groupRadiates(const Buoy& B, int root) {
-  const RadConfig& r = B.cfg.rad;
-  bool on = r.on, off = false;
-  for (const Hull& h : B.hull) {
-    if (B.m->body_weldid[h.body] != root) continue;
-    for (int b : {h.body, root}) {
-      on = on || std::count(r.onBody.begin(), r.onBody.end(), b);
-      off = off || std::count(r.offBody.begin(), r.offBody.end(), b);
-    }
-  }
-  return on && !off;
+  std::vector<int> hb;
+  for (const Hull& h : B.hull) hb.push_back(h.body);
+  return B.cfg.rad.groupRadiates(B.m, hb, root);
 }
 
 // the group's hull vertices in root's frame (float, as hullPanels takes

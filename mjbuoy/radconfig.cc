@@ -15,6 +15,19 @@ bool RadConfig::radiates(int body) const {
   return on || std::count(onBody.begin(), onBody.end(), body);
 }
 
+bool RadConfig::groupRadiates(const mjModel* m, const std::vector<int>& hullBody,
+                              int root) const {
+  bool yes = on, no = false;
+  for (int hb : hullBody) {
+    if (m->body_weldid[hb] != root) continue;
+    for (int b : {hb, root}) {
+      yes = yes || std::count(onBody.begin(), onBody.end(), b);
+      no = no || std::count(offBody.begin(), offBody.end(), b);
+    }
+  }
+  return yes && !no;
+}
+
 bool isRadEntry(const char* key) {
   return !std::strcmp(key, "radiation") || !std::strncmp(key, "radiation.", 10);
 }

@@ -19,6 +19,10 @@ struct RadConfig {
   bool lid = true;              // interior lid against irregular frequencies
   double memory = 0;            // memory length [s]; 0: automatic
   bool radiates(int body) const;
+  // whether the rigid group of weld root `root` radiates: an override
+  // naming the root or any of its hull bodies (hullBody, one per hull)
+  // wins over `on` (off over on)
+  bool groupRadiates(const mjModel* m, const std::vector<int>& hullBody, int root) const;
 };
 
 // whether the key after "mjbuoy." is one of these entries
