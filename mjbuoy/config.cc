@@ -103,6 +103,26 @@ static const Field kAiry = {"airy", 4, 0, 0, false,
 // cpu backend threads: 0 picks them from the scene size and the cores
 static const Field kThreads = {"threads", 1, 0, 64, false, "threads, 0 = auto", "0"};
 
+// with radiation on for a hull's rigid group, the linear pressure and
+// suction drag terms default to 0: a normal pressure linear in the
+// velocity is the form of wave radiation damping, which the panel
+// solution now gives; the quadratic (separation) terms, skin friction and
+// slamming stay (docs/physics.md section 16). Values the user gave stay
+static void radiationDragDefaults(const mjModel* m, const std::vector<int>& gid,
+                                  const RadConfig& rad,
+                                  const std::vector<std::vector<char>>& set,
+                                  const std::vector<char>& defSet,
+                                  std::vector<HullParams>* par) {
+  const int kDrag = 2, kSuction = 3;  // kHullFields rows
+  std::vector<int> hb;
+  for (int g : gid) hb.push_back(m->geom_bodyid[g]);
+  for (size_t h = 0; h < gid.size(); h++) {
+    if (!rad.groupRadiates(m, hb, m->body_weldid[hb[h]])) continue;
+    if (!set[h][kDrag] && !defSet[kDrag]) (*par)[h].drag[0] = 0;
+    if (!set[h][kSuction] && !defSet[kSuction]) (*par)[h].suction[0] = 0;
+  }
+}
+
 std::string fmt(double v) {
   std::ostringstream s;
   s.precision(10);
@@ -303,6 +323,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
       sizeof(kHullFields) / sizeof(kHullFields[0]), 0));
   const int nhf = sizeof(kHullFields) / sizeof(kHullFields[0]);
   const int nsf = sizeof(kSeaFields) / sizeof(kSeaFields[0]);
+  std::vector<char> defSet(nhf, 0);  // mjbuoy.hull.<param> given
   bool any = anyHullList;
 
   // numeric entries
@@ -346,6 +367,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
       std::string e = checkNumeric(m, i, *f);
       if (!e.empty()) return e;
       for (int j = 0; j < f->n; j++) param(&def, *f)[j] = v[j];
+      defSet[f - kHullFields] = 1;
     } else if (!std::strncmp(key, "geom.", 5)) {
       // mjbuoy.geom.<geom>.<param>: geom names may hold dots, params do not
       const char* rest = key + 5;
@@ -413,6 +435,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
   if (!ex.empty()) return ex;
   ex = parseRadConfig(m, &c->rad);
   if (!ex.empty()) return ex;
+  radiationDragDefaults(m, gid, c->rad, set, defSet, &par);
   c->sea.derive();
   double q = c->sea.fold();
   if (!(q < 1)) {

@@ -64,15 +64,6 @@ static const double kAsymWarn = 0.02;
 
 static const char* bodyName(const mjModel* m, int b) { return m->names + m->name_bodyadr[b]; }
 
-// whether the rigid group of root can move: not welded to the world, not
-// mocap, some joint between it and the world (added mass needs a dof)
-static bool groupMoves(const mjModel* m, int root) {
-  if (root <= 0 || m->body_mocapid[root] >= 0) return false;
-  for (int b = root; b > 0; b = m->body_parentid[b])
-    if (m->body_dofnum[b]) return true;
-  return false;
-}
-
 // whether an entry names the group of root: mjbuoy.radiation.body.<b> on
 // for root or one of its hull bodies
 static bool namedOn(const Buoy& B, int root) {
@@ -85,21 +76,11 @@ static bool namedOn(const Buoy& B, int root) {
   return false;
 }
 
-// whether the rigid group of root radiates: an override naming the root or
-// any of its hull bodies wins over mjbuoy.radiation (off over on); a group
-// that cannot move (static, mocap) never radiates
+// whether the rigid group of root radiates (RadConfig::groupRadiates)
 static bool groupRadiates(const Buoy& B, int root) {
-  const RadConfig& r = B.cfg.rad;
-  if (!groupMoves(B.m, root)) return false;
-  bool on = r.on, off = false;
-  for (const Hull& h : B.hull) {
-    if (B.m->body_weldid[h.body] != root) continue;
-    for (int b : {h.body, root}) {
-      on = on || std::count(r.onBody.begin(), r.onBody.end(), b);
-      off = off || std::count(r.offBody.begin(), r.offBody.end(), b);
-    }
-  }
-  return on && !off;
+  std::vector<int> hb;
+  for (const Hull& h : B.hull) hb.push_back(h.body);
+  return B.cfg.rad.groupRadiates(B.m, hb, root);
 }
 
 // the group's hull vertices in root's frame (float, as hullPanels takes

@@ -15,6 +15,29 @@ bool RadConfig::radiates(int body) const {
   return on || std::count(onBody.begin(), onBody.end(), body);
 }
 
+// whether the rigid group of root can move: not welded to the world, not
+// mocap, some joint between it and the world (added mass needs a dof)
+bool groupMoves(const mjModel* m, int root) {
+  if (root <= 0 || m->body_mocapid[root] >= 0) return false;
+  for (int b = root; b > 0; b = m->body_parentid[b])
+    if (m->body_dofnum[b]) return true;
+  return false;
+}
+
+bool RadConfig::groupRadiates(const mjModel* m, const std::vector<int>& hullBody,
+                              int root) const {
+  if (!groupMoves(m, root)) return false;
+  bool yes = on, no = false;
+  for (int hb : hullBody) {
+    if (m->body_weldid[hb] != root) continue;
+    for (int b : {hb, root}) {
+      yes = yes || std::count(onBody.begin(), onBody.end(), b);
+      no = no || std::count(offBody.begin(), offBody.end(), b);
+    }
+  }
+  return yes && !no;
+}
+
 bool isRadEntry(const char* key) {
   return !std::strcmp(key, "radiation") || !std::strncmp(key, "radiation.", 10);
 }

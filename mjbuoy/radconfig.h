@@ -22,7 +22,16 @@ struct RadConfig {
   double memory = 0;            // memory length [s]; 0: automatic
   std::string cache;            // mjbuoy.radiation.cache: directory or "off"; "": default
   bool radiates(int body) const;
+  // whether the rigid group of weld root `root` radiates: an override
+  // naming the root or any of its hull bodies (hullBody, one per hull)
+  // wins over `on` (off over on); a group that cannot move (groupMoves)
+  // never radiates
+  bool groupRadiates(const mjModel* m, const std::vector<int>& hullBody, int root) const;
 };
+
+// whether the rigid group of weld root `root` can move (a joint between it
+// and the world, not mocap): static and mocap hulls never radiate
+bool groupMoves(const mjModel* m, int root);
 
 // whether the key after "mjbuoy." is one of these entries
 bool isRadEntry(const char* key);

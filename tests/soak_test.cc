@@ -479,19 +479,40 @@ std::vector<Case> matrix() {
 INSTANTIATE_TEST_SUITE_P(Wigley, Soak, ::testing::ValuesIn(matrix()),
                          [](const ::testing::TestParamInfo<Case>& i) { return caseName(i.param); });
 
-// the demo scene for the soak duration: every free body stays finite and
-// rides the waves: |mean over the run of (z_com - eta at the body)| below
-// its hull's depth (Wigley boats 0.4 m = draft 0.25 + freeboard 0.15,
-// buoys 1.0 m = diameter, barge 0.5 m = height)
+// the demo scene (models/fleet.xml: radiation on but for the barge) for the
+// soak duration:
+// every free body stays finite and rides the waves: |mean over the run of
+// (z_com - eta at the body)| below its hull's depth (Wigley boats 0.4 m =
+// draft 0.25 + freeboard 0.15, buoys 1.0 m = diameter, barge 0.5 m =
+// height); and the fleet's mechanical energy (its kinetic part includes
+// the water's, 1/2 qdot^T A_inf qdot: A_inf is in MuJoCo's qM, docs/
+// physics.md section 14) meets the energy criterion above (mass: the whole
+// fleet, amplitude: the sum of the wave amplitudes)
 TEST(SoakFleet, BodiesRideTheSurface) {
   double T = soakSeconds();
   ASSERT_GT(T, 0);
   char e[1024] = "";
   mjModel* m = mj_loadXML(MJB_MODELS "/fleet.xml", nullptr, e, sizeof(e));
   ASSERT_TRUE(m) << e;
+  auto a0 = std::chrono::steady_clock::now();
+  std::clock_t ac0 = std::clock();
   mjbBuoy* bu = mjb_attach(m, nullptr, e, sizeof(e));
   ASSERT_TRUE(bu) << e;
+  std::printf("[soak] fleet attach wall %.1f s cpu %.1f s\n",
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - a0).count(),
+              double(std::clock() - ac0) / CLOCKS_PER_SEC);
+  m->opt.enableflags |= mjENBL_ENERGY;
   mjData* d = mj_makeData(m);
+  double mass = 0, amp = 0;
+  for (int b = 1; b < m->nbody; b++) mass += m->body_mass[b];
+  for (int i = 0; i < m->nnumeric; i++) {
+    if (!std::strncmp(m->names + m->name_numericadr[i], "mjbuoy.wave.", 12)) {
+      amp += m->numeric_data[m->numeric_adr[i]];
+    }
+  }
+  std::vector<double> energy;
+  energy.reserve(stepsFor(m, T) + 1);
+  bool diverged = false;
   std::vector<int> bodies;
   for (int j = 0; j < m->njnt; j++) {
     if (m->jnt_type[j] == mjJNT_FREE) bodies.push_back(m->jnt_bodyid[j]);
@@ -507,8 +528,10 @@ TEST(SoakFleet, BodiesRideTheSurface) {
     std::string why = badStep(m, d, t);
     if (!why.empty()) {
       ADD_FAILURE() << why << " in the step from t " << t;
+      diverged = true;
       break;
     }
+    energy.push_back(d->energy[0] + d->energy[1]);
     for (size_t i = 0; i < bodies.size(); i++) {
       const mjtNum* x = d->xipos + 3 * bodies[i];
       sum[i] += x[2] - mjb_seaHeight(bu, x[0], x[1], t);
@@ -530,6 +553,16 @@ TEST(SoakFleet, BodiesRideTheSurface) {
     RecordProperty(nm + "_mean_dz_m", std::to_string(mean));
     RecordProperty(nm + "_max_tilt_deg", std::to_string(tilt[i]));
     EXPECT_LT(std::fabs(mean), depth) << name;
+  }
+  EnergyStats st = energyStats(energy, mass, amp);
+  std::printf("[soak] fleet E_mid %.1f J E_last %.1f J sd_mid %.1f J E_max %.1f J limit %.1f J\n",
+              st.meanMid, st.meanLast, st.sdMid, st.maxE, st.limit);
+  RecordProperty("energy_mean_last_J", std::to_string(st.meanLast));
+  RecordProperty("energy_limit_J", std::to_string(st.limit));
+  if (!diverged) {
+    EXPECT_LE(st.meanLast, st.limit)
+        << "mechanical energy grows: mean over the last third " << st.meanLast
+        << " J, middle third " << st.meanMid << " J, allowed up to " << st.limit << " J";
   }
   std::fflush(stdout);
   mj_deleteData(d);
