@@ -543,3 +543,42 @@ TEST(Radiation, SteadyVelocityLeavesNoMemoryForce) {
 
 }  // namespace
 }  // namespace mjbt
+
+namespace mjbt {
+namespace {
+
+TEST(Radiation, BodyDriftingWithTheCurrentFeelsNoRadiation) {
+  // radiation acts on the velocity relative to a uniform current (potential
+  // flow in the frame moving with the water, Galilean; docs/physics.md
+  // section 14): a free body drifting obliquely at the current's velocity
+  // feels neither memory nor Munk moment. Over the ground it would feel
+  // M_z = -(A22 - A11) u v = -5.4 N m (Newman 1977, sec. 4.13) and the
+  // sway memory -int_0^t K v
+  Scene s("<mujoco><option timestep=\"0.002\"><flag gravity=\"disable\"/></option><custom>"
+          "<numeric name=\"mjbuoy.sea.current\" data=\"0.3 0.4\"/></custom><worldbody>"
+          "<body name=\"b\"><freejoint/><geom type=\"box\" size=\"1 0.2 0.2\" mass=\"10\" "
+          "contype=\"0\" conaffinity=\"0\"/></body></worldbody></mujoco>");
+  ASSERT_TRUE(s.ok()) << s.err;
+  Pair P;
+  mjb::HydroCoef c = P.coef();
+  for (size_t f = 0; f < c.omega.size(); f++) std::swap(c.B[36 * f + 7], c.B[36 * f + 14]);
+  const double a[6] = {5, 50, 5, 1, 1, 1};
+  for (int i = 0; i < 6; i++) c.Ainf[7 * i] = a[i];
+  ASSERT_EQ(mjb::setHydroCoef(s.b, 1, c, 0.5), "");
+  s.d->qvel[0] = 0.3;
+  s.d->qvel[1] = 0.4;
+  double fmax = 0;
+  for (int k = 0; k < 500; k++) {
+    mj_step(s.m, s.d);
+    for (int i = 0; i < 6; i++) fmax = std::max(fmax, std::fabs(s.d->qfrc_passive[i]));
+  }
+  std::printf("[radiation] drifting with the current: largest radiation force %.3g, yaw rate %.3g\n",
+              fmax, s.d->qvel[5]);
+  EXPECT_LT(fmax, 1e-9);
+  EXPECT_NEAR(s.d->qvel[0], 0.3, 1e-9);
+  EXPECT_NEAR(s.d->qvel[1], 0.4, 1e-9);
+  EXPECT_LT(std::fabs(s.d->qvel[5]), 1e-9);
+}
+
+}  // namespace
+}  // namespace mjbt
