@@ -8,9 +8,11 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
 #include <gtest/gtest.h>
 
 #include "buoy.h"
+#include "coefpsd.h"
 #include "coefxform.h"
 #include "hemisphere.h"
 #include "hull.h"
@@ -465,3 +467,45 @@ TEST(RadAttach, OnlyBodiesThatCanMoveRadiate) {
 }
 
 }  // namespace
+
+namespace mjbt {
+namespace {
+
+TEST(RadAttach, NegativeDampingIsProjectedOutWithAWarning) {
+  // the radiated power nu^T B nu is >= 0 (Newman 1977, sec. 6.13); the
+  // nearest positive semi-definite matrix in the Frobenius norm keeps the
+  // eigenvectors and sets negative eigenvalues to 0 (Higham 1988, "Computing
+  // a nearest symmetric positive semidefinite matrix", Linear Algebra Appl.
+  // 103:103-118). B = Q diag(lam) Q^T with one negative eigenvalue
+  typedef Eigen::Matrix<double, 6, 6, Eigen::RowMajor> Mat6;
+  Mat6 X;
+  for (int i = 0; i < 36; i++) X(i / 6, i % 6) = std::sin(1.0 + 7.3 * i);
+  Mat6 Q = Eigen::HouseholderQR<Mat6>(X).householderQ();
+  Eigen::Matrix<double, 6, 1> lam, pos;
+  lam << 5e6, 3e6, 2e6, 1e6, 5e5, -4e6;
+  pos = lam.cwiseMax(0.0);
+  Mat6 B = Q * lam.asDiagonal() * Q.transpose(), P = Q * pos.asDiagonal() * Q.transpose();
+  mjb::HydroCoef c;
+  c.omega = {0.5, 1.0};
+  c.B.assign(72, 0);
+  Mat6 B0 = 0.5 * P;  // positive semi-definite: left as it is
+  std::copy(B0.data(), B0.data() + 36, c.B.begin());
+  std::copy(B.data(), B.data() + 36, c.B.begin() + 36);
+  std::vector<std::string> warn;
+  double r = mjb::projectDamping(&c, "radiation of body \"barge\"", &warn);
+  Mat6 out = Eigen::Map<Mat6>(&c.B[36]), out0 = Eigen::Map<Mat6>(&c.B[0]);
+  EXPECT_LT((out - P).cwiseAbs().maxCoeff(), 1e-9 * 5e6);
+  EXPECT_LT((out0 - B0).cwiseAbs().maxCoeff(), 1e-9 * 5e6);
+  EXPECT_GE(Eigen::SelfAdjointEigenSolver<Mat6>(out).eigenvalues().minCoeff(), -1e-9 * 5e6);
+  const double expect = (B - P).cwiseAbs().maxCoeff() / B.cwiseAbs().maxCoeff();
+  EXPECT_NEAR(r, expect, 1e-9);
+  ASSERT_EQ(warn.size(), 1u);
+  EXPECT_NE(warn[0].find("barge"), std::string::npos) << warn[0];
+  EXPECT_NE(warn[0].find("omega 1 rad/s"), std::string::npos) << warn[0];
+  EXPECT_EQ(warn[0].find("mjbuoy.radiation.refine") != std::string::npos, r > mjb::kPsdCoarse)
+      << warn[0];
+  std::printf("[radattach] removed part %.3g of the largest |B|: %s\n", r, warn[0].c_str());
+}
+
+}  // namespace
+}  // namespace mjbt
