@@ -131,6 +131,22 @@ TEST(Hydro, DriftsWithTheCurrentOnlyThroughDrag) {
   EXPECT_LT(std::hypot(off.d->qvel[0], off.d->qvel[1]), 1e-6);
 }
 
+TEST(Hydro, DriftsWithTheCurrentWithRadiationOn) {
+  // radiation acts on the velocity relative to the water and its memory has
+  // no steady gain (B(0) = 0; docs/physics.md section 14): with it on the
+  // box still drifts at the current's velocity
+  Scene s(box("<numeric name=\"mjbuoy.sea.current\" data=\"0.3 0.4\"/>"
+              "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+              "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 6\"/>", "<freejoint/>"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  mj_forward(s.m, s.d);
+  ASSERT_GT(s.d->qM[s.m->dof_Madr[2]], 1.2 * 500);  // radiation is on: heave added mass
+  s.settle(90, 1, [] { return 0; });
+  EXPECT_NEAR(s.d->qvel[0], 0.3, 0.01 * 0.5);
+  EXPECT_NEAR(s.d->qvel[1], 0.4, 0.01 * 0.5);
+  EXPECT_STREQ(mjb_notices(s.b, s.d), "");
+}
+
 }  // namespace
 }  // namespace mjbt
 
