@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include "buoy.h"
 #include "hydrocoef.h"
 #include "radiation.h"
 #include "testutil.h"
@@ -578,6 +579,50 @@ TEST(Radiation, BodyDriftingWithTheCurrentFeelsNoRadiation) {
   EXPECT_NEAR(s.d->qvel[0], 0.3, 1e-9);
   EXPECT_NEAR(s.d->qvel[1], 0.4, 1e-9);
   EXPECT_LT(std::fabs(s.d->qvel[5]), 1e-9);
+}
+
+}  // namespace
+}  // namespace mjbt
+
+namespace mjbt {
+namespace {
+
+TEST(Radiation, SteadyGainCorrectionKeepsAddedMassAndDamping) {
+  // the memory's K after the taper and the steady-gain correction
+  // (docs/physics.md section 14) still stands for Pair's A(w) and B(w)
+  // (closed forms above) away from w -> 0: Kramers-Kronig
+  // A = A_inf - (1/w) int K sin(w t) and B = int K cos(w t) (Ogilvie 1964)
+  Pair P;
+  Scene s(slide("Euler", 0.001));
+  ASSERT_TRUE(s.ok()) << s.err;
+  // 0.8 s: about the automatic memory (K below 1% of its peak after a t = 6.6)
+  ASSERT_EQ(mjb::setHydroCoef(s.b, 1, P.coef(), 0.8), "");
+  const mjb::RadBody& rb = mjb::buoyOf(s.b)->rad.rb[0];
+  const int n = rb.nk;
+  const double dt = 0.001, Tm = (n - 1) * dt;
+  std::vector<double> K0(n);  // uncorrected, for the printout
+  mjb::retardation(P.coef(), 2, 2, dt, n, K0.data());
+  auto kk = [&](const double* K, double w, double* A, double* B) {
+    double sa = 0, sb = 0;
+    for (int k = 0; k < n; k++) {
+      const double wt = (k == 0 || k == n - 1 ? 0.5 : 1) * K[k] * dt;
+      sa += wt * std::sin(w * k * dt);
+      sb += wt * std::cos(w * k * dt);
+    }
+    *A = P.Ainf - sa / w;
+    *B = sb;
+  };
+  for (double w : {4.0, 8.0, 16.0, 32.0}) {
+    double A, B, A0, B0;
+    kk(rb.K.data(), w, &A, &B);
+    kk(K0.data(), w, &A0, &B0);
+    std::printf("[radiation] T_m %.3f s, w %g: A %.4f (uncorrected %.4f, exact %.4f), "
+                "B %.4f (uncorrected %.4f, exact %.4f)\n", Tm, w, A, A0, P.A(w), B, B0, P.B(w));
+    // the correction's window lies below 4 pi / T_m = 16 rad/s here
+    if (w < 4 * M_PI / Tm) continue;
+    EXPECT_NEAR(A, P.A(w), 0.02 * P.A(w)) << w;
+    EXPECT_NEAR(B, P.B(w), 0.02 * P.k0 / P.a) << w;
+  }
 }
 
 }  // namespace
