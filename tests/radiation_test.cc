@@ -579,6 +579,17 @@ TEST(Radiation, BodyDriftingWithTheCurrentFeelsNoRadiation) {
   EXPECT_NEAR(s.d->qvel[0], 0.3, 1e-9);
   EXPECT_NEAR(s.d->qvel[1], 0.4, 1e-9);
   EXPECT_LT(std::fabs(s.d->qvel[5]), 1e-9);
+  // spinning about its vertical axis as it drifts: in the water's frame a
+  // pure yaw, which with p = 0 and h || w feels no Kirchhoff force
+  mj_resetData(s.m, s.d);
+  s.d->qvel[0] = 0.3;
+  s.d->qvel[1] = 0.4;
+  s.d->qvel[5] = 1;
+  mj_forward(s.m, s.d);
+  double big = 0;
+  for (int i = 0; i < 6; i++) big = std::max(big, std::fabs(s.d->qfrc_passive[i]));
+  std::printf("[radiation] spinning and drifting: largest radiation force %.3g\n", big);
+  EXPECT_LT(big, 1e-9);
 }
 
 }  // namespace
