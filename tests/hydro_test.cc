@@ -44,6 +44,25 @@ TEST(Hydro, TowResistanceFollowsITTC57) {
   }
 }
 
+TEST(Hydro, TowResistanceWithRadiationOnIsStillITTC57) {
+  // the test above with radiation on (panel solver): once the memory has
+  // passed, a steady tow feels no radiation (B(0) = 0; docs/physics.md
+  // section 14, "Steady gain"), so the resistance is ITTC 1957's again
+  Scene s(box(std::string(kViscousOnly) + "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+              "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 6\"/>",
+              "<joint name=\"x\" type=\"slide\" axis=\"1 0 0\"/>",
+              "<actuator><velocity joint=\"x\" kv=\"1e5\"/></actuator>"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  mj_forward(s.m, s.d);
+  ASSERT_GT(s.d->qM[s.m->dof_Madr[0]], 1.05 * 500);  // surge added mass: radiation is on
+  s.d->ctrl[0] = 0.5;
+  double R = s.settle(30, 1, [&] { return s.d->actuator_force[0]; });
+  double v = s.d->qvel[0];
+  double rn = v * 2 / 1e-6, cf = 0.075 / std::pow(std::log10(rn) - 2, 2);
+  double hand = 0.5 * kRho * cf * 1.3 * 3 * v * v;
+  EXPECT_NEAR(R, hand, 0.02 * hand);
+}
+
 TEST(Hydro, ViscousForceOpposesMotionAtAnyHeading) {
   // a free box moving horizontally in calm water at rest: viscous force is
   // opposite the velocity component along the hull and never drives it
