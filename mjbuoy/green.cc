@@ -50,6 +50,18 @@ void surfaceIntegrals(double X, double Y, double* I, double* J) {
   *J = sj / X;
 }
 
+// I and J for Y > kDeep by parts from the upper end, int_0^Y e^(s-Y) f ds
+// = f(Y) - f'(Y) + f''(Y) - f'''(Y) + O(4! / rho^5) (terms of e^-Y
+// dropped): a body kDeep / K below the surface (docs/physics.md section 14,
+// "Deep bodies"), where the quadrature would need Y / 3 pieces
+const double kDeep = 100;
+void deepIntegrals(double X, double Y, double* I, double* J) {
+  const double r2 = X * X + Y * Y, r = std::sqrt(r2), r3 = r2 * r, r5 = r3 * r2, r7 = r5 * r2;
+  const double X2 = X * X, Y2 = Y * Y;
+  *I = 1 / r + Y / r3 + (2 * Y2 - X2) / r5 + 3 * Y * (2 * Y2 - 3 * X2) / r7;
+  *J = X / r3 + 3 * X * Y / r5 - 3 * X * (X2 - 4 * Y2) / r7;
+}
+
 }  // namespace
 
 void bessel01(double x, double* j0, double* j1, double* y0, double* y1) {
@@ -153,13 +165,24 @@ WaveF greenWave(double X, double Y) {
   double rho = std::sqrt(X * X + Y * Y);
   if (X < 1e-9 * (1 + Y)) {
     // on the axis: PV int e^{-uY}/(u-1) du = -e^{-Y} Ei(Y); dF/dX = 0
-    r.F = -ey * std::expint(Y);
+    if (Y > kDeep) {
+      // e^-Y Ei(Y) = sum k! / Y^(k+1) asymptotically (A&S 5.1.51); Ei overflows
+      double t = 1 / Y, sum = 0;
+      for (int k = 0; k < 12; k++) sum += t, t *= (k + 1) / Y;
+      r.F = -sum;
+    } else {
+      r.F = -ey * std::expint(Y);
+    }
     r.FX = 0;
     r.J0 = 1;
     r.J1 = 0;
   } else {
     double I = 0, J = 0;
-    if (Y > 0) surfaceIntegrals(X, Y, &I, &J);
+    if (Y > kDeep) {
+      deepIntegrals(X, Y, &I, &J);
+    } else if (Y > 0) {
+      surfaceIntegrals(X, Y, &I, &J);
+    }
     double y0, y1;
     bessel01(X, &r.J0, &r.J1, &y0, &y1);
     r.F = -0.5 * kPi * ey * (struveH0(X) + y0) - I;

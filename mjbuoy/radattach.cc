@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "buoy.h"
+#include "coefpsd.h"
 #include "coefxform.h"
 #include "diffract.h"
 #include "panelmesh.h"
@@ -132,6 +133,8 @@ static void checkCoef(Buoy* B, const std::string& who, HydroCoef* cp) {
                           fmt(100 * asym) + "% asymmetric (made symmetric); refine its panels "
                           "(mjbuoy.radiation.refine)");
   }
+  // damping that would feed energy: projected out, with a warning
+  projectDamping(cp, who.substr(8), &B->cfg.warn);
 }
 
 // panelSolve through the cache (radcache.h): a file whose key matches is

@@ -101,6 +101,23 @@ std::string checkCoef(const HydroCoef& c) {
   return "";
 }
 
+// K over n samples tapered to zero over its last quarter, then
+// less c sin^2(pi t / T_m) with c such that its trapezoid sum, the
+// memory's gain for a steady velocity, is B(0) = 0 (docs/physics.md
+// section 14, "Steady gain")
+void steadyZero(double* K, int n) {
+  if (n < 3) return;
+  const int n0 = (3 * (n - 1)) / 4;
+  for (int k = n0 + 1; k < n; k++) K[k] *= 0.5 * (1 + std::cos(M_PI * (k - n0) / (n - 1 - n0)));
+  double sk = 0, sg = 0;
+  for (int k = 0; k < n; k++) {
+    const double w = k == 0 || k == n - 1 ? 0.5 : 1, g = std::pow(std::sin(M_PI * k / (n - 1)), 2);
+    sk += w * K[k];
+    sg += w * g;
+  }
+  for (int k = 0; k < n; k++) K[k] -= sk / sg * std::pow(std::sin(M_PI * k / (n - 1)), 2);
+}
+
 // rb's retardation functions over tmem seconds at step dt: one per pair
 // (i, j) whose B_ij is not zero
 void kernels(const HydroCoef& c, double tmem, double dt, RadBody* rb) {
@@ -123,6 +140,7 @@ void kernels(const HydroCoef& c, double tmem, double dt, RadBody* rb) {
                   rb->K.begin() + p * rb->nk);
     } else {
       retardation(c, i, j, dt, rb->nk, rb->K.data() + p * rb->nk);
+      steadyZero(rb->K.data() + p * rb->nk, rb->nk);
     }
   }
 }

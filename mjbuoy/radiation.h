@@ -74,9 +74,10 @@ void radMakeState(const Radiation& r, RadState* s);
 void radRestart(RadState* s);
 
 // in mjcb_passive: add each body's A_inf to d->qM (refactored) and its
-// Kirchhoff and memory forces to d->qfrc_passive
+// Kirchhoff and memory forces to d->qfrc_passive; both act on the velocity
+// relative to the uniform current [m/s] (world x, y) of this step
 void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
-                   std::string* notices);
+                   const double current[2], std::string* notices);
 
 // give body (a MuJoCo body id) of an attached model radiation from c, with
 // a memory of tmem seconds (0: automatic, memoryLength; < 0: none). Call

@@ -133,10 +133,22 @@ void kirchhoff(const double A[36], const double nu[6], const double bias[6], dou
   mju_subFrom3(W + 3, t);
 }
 
+// nu and its rate relative to the water moving at the uniform current U
+// (world, horizontal): v - R^T U, and since d(R^T U)/dt = -w x R^T U the
+// rate gains w x R^T U (docs/physics.md section 14, "Current")
+void relative(const mjtNum* R, const double current[2], double nu[6], double bias[6]) {
+  const double U[3] = {current[0], current[1], 0};
+  double u[3], t[3];
+  mju_rotVecMatT(u, U, R);
+  mju_subFrom3(nu, u);
+  cross(nu + 3, u, t);
+  mju_addTo3(bias, t);
+}
+
 }  // namespace
 
 void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
-                   std::string* notices) {
+                   const double current[2], std::string* notices) {
   if (r.rb.empty()) return;
   const int tick = clock(m, d, s);
   if (tick == kRestart) {
@@ -155,6 +167,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
     double* J = s->jac.data();
     double nu[6], bias[6];
     kinematics(rb, m, d, J, nu, bias);
+    relative(d->xmat + 9 * rb.body, current, nu, bias);
     if (!std::isfinite(dot6(nu, nu)) || !std::isfinite(dot6(bias, bias))) continue;
 
     if (addM) {

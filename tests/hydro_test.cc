@@ -44,6 +44,25 @@ TEST(Hydro, TowResistanceFollowsITTC57) {
   }
 }
 
+TEST(Hydro, TowResistanceWithRadiationOnIsStillITTC57) {
+  // the test above with radiation on (panel solver): once the memory has
+  // passed, a steady tow feels no radiation (B(0) = 0; docs/physics.md
+  // section 14, "Steady gain"), so the resistance is ITTC 1957's again
+  Scene s(box(std::string(kViscousOnly) + "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+              "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 6\"/>",
+              "<joint name=\"x\" type=\"slide\" axis=\"1 0 0\"/>",
+              "<actuator><velocity joint=\"x\" kv=\"1e5\"/></actuator>"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  mj_forward(s.m, s.d);
+  ASSERT_GT(s.d->qM[s.m->dof_Madr[0]], 1.05 * 500);  // surge added mass: radiation is on
+  s.d->ctrl[0] = 0.5;
+  double R = s.settle(30, 1, [&] { return s.d->actuator_force[0]; });
+  double v = s.d->qvel[0];
+  double rn = v * 2 / 1e-6, cf = 0.075 / std::pow(std::log10(rn) - 2, 2);
+  double hand = 0.5 * kRho * cf * 1.3 * 3 * v * v;
+  EXPECT_NEAR(R, hand, 0.02 * hand);
+}
+
 TEST(Hydro, ViscousForceOpposesMotionAtAnyHeading) {
   // a free box moving horizontally in calm water at rest: viscous force is
   // opposite the velocity component along the hull and never drives it
@@ -129,6 +148,22 @@ TEST(Hydro, DriftsWithTheCurrentOnlyThroughDrag) {
   ASSERT_TRUE(off.ok()) << off.err;
   off.settle(90, 1, [] { return 0; });
   EXPECT_LT(std::hypot(off.d->qvel[0], off.d->qvel[1]), 1e-6);
+}
+
+TEST(Hydro, DriftsWithTheCurrentWithRadiationOn) {
+  // radiation acts on the velocity relative to the water and its memory has
+  // no steady gain (B(0) = 0; docs/physics.md section 14): with it on the
+  // box still drifts at the current's velocity
+  Scene s(box("<numeric name=\"mjbuoy.sea.current\" data=\"0.3 0.4\"/>"
+              "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+              "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 6\"/>", "<freejoint/>"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  mj_forward(s.m, s.d);
+  ASSERT_GT(s.d->qM[s.m->dof_Madr[2]], 1.2 * 500);  // radiation is on: heave added mass
+  s.settle(90, 1, [] { return 0; });
+  EXPECT_NEAR(s.d->qvel[0], 0.3, 0.01 * 0.5);
+  EXPECT_NEAR(s.d->qvel[1], 0.4, 0.01 * 0.5);
+  EXPECT_STREQ(mjb_notices(s.b, s.d), "");
 }
 
 }  // namespace

@@ -8,10 +8,13 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
 #include <gtest/gtest.h>
 
 #include "buoy.h"
+#include "coefpsd.h"
 #include "coefxform.h"
+#include "green.h"
 #include "hemisphere.h"
 #include "config.h"
 #include "hull.h"
@@ -564,3 +567,144 @@ TEST(RadAttach, OnlyBodiesThatCanMoveRadiate) {
 }
 
 }  // namespace
+
+namespace mjbt {
+namespace {
+
+TEST(RadAttach, NegativeDampingIsProjectedOutWithAWarning) {
+  // the radiated power nu^T B nu is >= 0 (Newman 1977, sec. 6.13); the
+  // nearest positive semi-definite matrix in the Frobenius norm keeps the
+  // eigenvectors and sets negative eigenvalues to 0 (Higham 1988, "Computing
+  // a nearest symmetric positive semidefinite matrix", Linear Algebra Appl.
+  // 103:103-118). B = Q diag(lam) Q^T with one negative eigenvalue
+  typedef Eigen::Matrix<double, 6, 6, Eigen::RowMajor> Mat6;
+  Mat6 X;
+  for (int i = 0; i < 36; i++) X(i / 6, i % 6) = std::sin(1.0 + 7.3 * i);
+  Mat6 Q = Eigen::HouseholderQR<Mat6>(X).householderQ();
+  Eigen::Matrix<double, 6, 1> lam, pos;
+  lam << 5e6, 3e6, 2e6, 1e6, 5e5, -4e6;
+  pos = lam.cwiseMax(0.0);
+  Mat6 B = Q * lam.asDiagonal() * Q.transpose(), P = Q * pos.asDiagonal() * Q.transpose();
+  mjb::HydroCoef c;
+  c.omega = {0.5, 1.0};
+  c.B.assign(72, 0);
+  Mat6 B0 = 0.5 * P;  // positive semi-definite: left as it is
+  std::copy(B0.data(), B0.data() + 36, c.B.begin());
+  std::copy(B.data(), B.data() + 36, c.B.begin() + 36);
+  std::vector<std::string> warn;
+  double r = mjb::projectDamping(&c, "radiation of body \"barge\"", &warn);
+  Mat6 out = Eigen::Map<Mat6>(&c.B[36]), out0 = Eigen::Map<Mat6>(&c.B[0]);
+  EXPECT_LT((out - P).cwiseAbs().maxCoeff(), 1e-9 * 5e6);
+  EXPECT_LT((out0 - B0).cwiseAbs().maxCoeff(), 1e-9 * 5e6);
+  EXPECT_GE(Eigen::SelfAdjointEigenSolver<Mat6>(out).eigenvalues().minCoeff(), -1e-9 * 5e6);
+  const double expect = (B - P).cwiseAbs().maxCoeff() / B.cwiseAbs().maxCoeff();
+  EXPECT_NEAR(r, expect, 1e-9);
+  ASSERT_EQ(warn.size(), 1u);
+  EXPECT_NE(warn[0].find("barge"), std::string::npos) << warn[0];
+  EXPECT_NE(warn[0].find("omega 1 rad/s"), std::string::npos) << warn[0];
+  EXPECT_EQ(warn[0].find("mjbuoy.radiation.refine") != std::string::npos, r > mjb::kPsdCoarse)
+      << warn[0];
+  std::printf("[radattach] removed part %.3g of the largest |B|: %s\n", r, warn[0].c_str());
+}
+
+}  // namespace
+}  // namespace mjbt
+
+namespace mjbt {
+namespace {
+
+TEST(RadAttach, SeaTenKilometresUpGivesTheSameCoefficients) {
+  // the panel problem moves with the sea and the body: a box floating at
+  // sea level 1e4 m (and -1e4 m) must get the coefficients it gets at 0
+  // (translation invariance of the linear boundary-value problem)
+  auto run = [](double lev, double z, std::vector<double>* out, std::string* notes) {
+    char x[1024];
+    std::snprintf(x, sizeof(x),
+                  "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"h\"/>"
+                  "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+                  "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 4\"/>"
+                  "<numeric name=\"mjbuoy.sea.level\" data=\"%g\"/></custom><worldbody>"
+                  "<body name=\"box\" pos=\"0 0 %g\"><freejoint/><geom name=\"h\" type=\"box\" "
+                  "size=\"0.5 0.5 0.5\" mass=\"500\" contype=\"0\" conaffinity=\"0\"/></body>"
+                  "</worldbody></mujoco>", lev, z);
+    Scene s(x);
+    ASSERT_TRUE(s.ok()) << s.err;
+    const mjb::Buoy* B = mjb::buoyOf(s.b);
+    ASSERT_EQ(B->coef.size(), 1u);
+    const mjb::HydroCoef& c = B->coef[0].second;
+    out->assign(c.Ainf, c.Ainf + 36);
+    out->insert(out->end(), c.B.begin(), c.B.end());
+    for (int k = 0; k < 20; k++) mj_step(s.m, s.d);
+    *notes = mjb_notices(s.b, s.d);
+  };
+  std::vector<double> c0, c1, c2;
+  std::string n0, n1, n2;
+  run(0, 0, &c0, &n0);
+  run(1e4, 1e4, &c1, &n1);
+  run(-1e4, -1e4, &c2, &n2);
+  ASSERT_EQ(c0.size(), c1.size());
+  ASSERT_EQ(c0.size(), c2.size());
+  double big = 0;
+  for (double v : c0) big = std::max(big, std::fabs(v));
+  for (size_t i = 0; i < c0.size(); i++) {
+    ASSERT_TRUE(std::isfinite(c1[i]) && std::isfinite(c2[i])) << i;
+    EXPECT_NEAR(c1[i], c0[i], 1e-6 * big) << i;
+    EXPECT_NEAR(c2[i], c0[i], 1e-6 * big) << i;
+  }
+  EXPECT_EQ(n1, "");
+  EXPECT_EQ(n2, "");
+}
+
+}  // namespace
+}  // namespace mjbt
+
+namespace mjbt {
+namespace {
+
+TEST(RadAttach, BodyTenKilometresDownGetsFiniteCoefficients) {
+  // the box of the test above at z = 0 under a sea 1e4 m up: the wave Green
+  // function's e^-Y Ei(Y) overflowed (Y = K 2e4 m) and the attach failed
+  // with non-finite coefficients. So deep, the free surface is 4e4 box
+  // sizes away: no radiation damping (it falls as e^{-2 K d}; Newman 1977,
+  // sec. 6.16) and the added mass of the cube in unbounded fluid, the same
+  // in every direction by the cube's symmetry
+  Scene s("<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"h\"/>"
+          "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+          "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 4\"/>"
+          "<numeric name=\"mjbuoy.sea.level\" data=\"10000\"/></custom><worldbody>"
+          "<body name=\"box\"><freejoint/><geom name=\"h\" type=\"box\" size=\"0.5 0.5 0.5\" "
+          "mass=\"500\" contype=\"0\" conaffinity=\"0\"/></body></worldbody></mujoco>");
+  ASSERT_TRUE(s.ok()) << s.err;
+  const mjb::Buoy* B = mjb::buoyOf(s.b);
+  ASSERT_EQ(B->coef.size(), 1u);
+  const mjb::HydroCoef& c = B->coef[0].second;
+  const double a = c.Ainf[14];
+  std::printf("[radattach] cube 10 km down: A11 %.6g A22 %.6g A33 %.6g kg, max |B| %.3g\n",
+              c.Ainf[0], c.Ainf[7], a, *std::max_element(c.B.begin(), c.B.end()));
+  EXPECT_GT(a, 0.1 * 1025);
+  EXPECT_NEAR(c.Ainf[0], a, 0.01 * a);
+  EXPECT_NEAR(c.Ainf[7], a, 0.01 * a);
+  for (int f = 0; f < c.nw(); f++) {
+    for (int i = 0; i < 36; i++) {
+      ASSERT_TRUE(std::isfinite(c.B[36 * f + i]) && std::isfinite(c.A[36 * f + i]));
+      EXPECT_LT(std::fabs(c.B[36 * f + i]), 1e-6 * a * c.omega[f]) << f << " " << i;
+      EXPECT_NEAR(c.A[36 * f + i], c.Ainf[i], 1e-3 * a) << f << " " << i;
+    }
+  }
+}
+
+TEST(RadAttach, DeepGreenFunctionJoinsTheQuadrature) {
+  // at Y = 100 the wave Green function changes from quadrature (and Ei) to
+  // its asymptotic series: both sides agree (two independent methods; the
+  // series' truncation 4!/rho^5 is 2.5e-7 of F, and mpmath's quadrature of
+  // I(0.5, 100) = 0.010101933622 puts the 8-point pieces' error near 2e-6)
+  for (double X : {0.0, 0.5, 30.0, 300.0}) {
+    mjb::WaveF lo = mjb::greenWave(X, 100 - 1e-9), hi = mjb::greenWave(X, 100 + 1e-9);
+    EXPECT_NEAR(hi.F, lo.F, 1e-5 * std::fabs(lo.F)) << X;
+    EXPECT_NEAR(hi.FX, lo.FX, 1e-5 * std::fabs(lo.F)) << X;
+    EXPECT_NEAR(hi.FY, lo.FY, 1e-5 * std::fabs(lo.F)) << X;
+  }
+}
+
+}  // namespace
+}  // namespace mjbt

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include "buoy.h"
 #include "hydrocoef.h"
 #include "radiation.h"
 #include "testutil.h"
@@ -506,6 +507,133 @@ TEST(Radiation, Step1Step2LoopMatchesStep) {
   EXPECT_EQ(std::memcmp(s.d->qvel, e->qvel, sizeof(double)), 0);
   mjb_unbindData(s.b, e);
   mj_deleteData(e);
+}
+
+}  // namespace
+}  // namespace mjbt
+
+namespace mjbt {
+namespace {
+
+TEST(Radiation, SteadyVelocityLeavesNoMemoryForce) {
+  // held at constant heave velocity v the memory force is -v int_0^t K,
+  // and int_0^inf K = B(0) = 0 (K is B's cosine transform: Cummins 1962).
+  // For Pair's K, int_0^t K = k0 t e^{-a t} (d/dt of t e^{-at}): cut at
+  // T_m = 0.5 s (a T_m = 4) without correction it would leave
+  // -v k0 T_m e^{-4} = -3.66 N for ever; docs/physics.md section 14
+  Pair P;
+  std::string x = slide("Euler", 0.001);
+  x.replace(x.find("stiffness=\"1000\""), 16, "stiffness=\"0\"");
+  Scene s(x);
+  ASSERT_TRUE(s.ok()) << s.err;
+  const double v = 1, Tm = 0.5, scale = P.k0 * v / P.a;  // peak of v k0 t e^{-at}: scale / e
+  ASSERT_EQ(mjb::setHydroCoef(s.b, 1, P.coef(), Tm), "");
+  double f01 = 0;
+  for (int k = 0; k < 800; k++) {
+    s.d->qvel[0] = v;
+    mj_step(s.m, s.d);
+    if (k == 100) f01 = s.d->qfrc_passive[0];
+  }
+  // t = 0.1 s, before the taper: -v k0 t e^{-at} less the correction's
+  // share (at most 2% of the scale here)
+  EXPECT_NEAR(f01, -v * P.k0 * 0.1 * std::exp(-P.a * 0.1), 0.03 * scale);
+  std::printf("[radiation] steady heave: memory force %.3g N after %.1f s (scale %g N)\n",
+              s.d->qfrc_passive[0], s.d->time, scale);
+  EXPECT_LT(std::fabs(s.d->qfrc_passive[0]), 1e-9 * scale);
+}
+
+}  // namespace
+}  // namespace mjbt
+
+namespace mjbt {
+namespace {
+
+TEST(Radiation, BodyDriftingWithTheCurrentFeelsNoRadiation) {
+  // radiation acts on the velocity relative to a uniform current (potential
+  // flow in the frame moving with the water, Galilean; docs/physics.md
+  // section 14): a free body drifting obliquely at the current's velocity
+  // feels neither memory nor Munk moment. Over the ground it would feel
+  // M_z = -(A22 - A11) u v = -5.4 N m (Newman 1977, sec. 4.13) and the
+  // sway memory -int_0^t K v
+  Scene s("<mujoco><option timestep=\"0.002\"><flag gravity=\"disable\"/></option><custom>"
+          "<numeric name=\"mjbuoy.sea.current\" data=\"0.3 0.4\"/></custom><worldbody>"
+          "<body name=\"b\"><freejoint/><geom type=\"box\" size=\"1 0.2 0.2\" mass=\"10\" "
+          "contype=\"0\" conaffinity=\"0\"/></body></worldbody></mujoco>");
+  ASSERT_TRUE(s.ok()) << s.err;
+  Pair P;
+  mjb::HydroCoef c = P.coef();
+  for (size_t f = 0; f < c.omega.size(); f++) std::swap(c.B[36 * f + 7], c.B[36 * f + 14]);
+  const double a[6] = {5, 50, 5, 1, 1, 1};
+  for (int i = 0; i < 6; i++) c.Ainf[7 * i] = a[i];
+  ASSERT_EQ(mjb::setHydroCoef(s.b, 1, c, 0.5), "");
+  s.d->qvel[0] = 0.3;
+  s.d->qvel[1] = 0.4;
+  double fmax = 0;
+  for (int k = 0; k < 500; k++) {
+    mj_step(s.m, s.d);
+    for (int i = 0; i < 6; i++) fmax = std::max(fmax, std::fabs(s.d->qfrc_passive[i]));
+  }
+  std::printf("[radiation] drifting with the current: largest radiation force %.3g, yaw rate %.3g\n",
+              fmax, s.d->qvel[5]);
+  EXPECT_LT(fmax, 1e-9);
+  EXPECT_NEAR(s.d->qvel[0], 0.3, 1e-9);
+  EXPECT_NEAR(s.d->qvel[1], 0.4, 1e-9);
+  EXPECT_LT(std::fabs(s.d->qvel[5]), 1e-9);
+  // spinning about its vertical axis as it drifts: in the water's frame a
+  // pure yaw, which with p = 0 and h || w feels no Kirchhoff force
+  mj_resetData(s.m, s.d);
+  s.d->qvel[0] = 0.3;
+  s.d->qvel[1] = 0.4;
+  s.d->qvel[5] = 1;
+  mj_forward(s.m, s.d);
+  double big = 0;
+  for (int i = 0; i < 6; i++) big = std::max(big, std::fabs(s.d->qfrc_passive[i]));
+  std::printf("[radiation] spinning and drifting: largest radiation force %.3g\n", big);
+  EXPECT_LT(big, 1e-9);
+}
+
+}  // namespace
+}  // namespace mjbt
+
+namespace mjbt {
+namespace {
+
+TEST(Radiation, SteadyGainCorrectionKeepsAddedMassAndDamping) {
+  // the memory's K after the taper and the steady-gain correction
+  // (docs/physics.md section 14) still stands for Pair's A(w) and B(w)
+  // (closed forms above) away from w -> 0: Kramers-Kronig
+  // A = A_inf - (1/w) int K sin(w t) and B = int K cos(w t) (Ogilvie 1964)
+  Pair P;
+  Scene s(slide("Euler", 0.001));
+  ASSERT_TRUE(s.ok()) << s.err;
+  // 0.8 s: about the automatic memory (K below 1% of its peak after a t = 6.6)
+  ASSERT_EQ(mjb::setHydroCoef(s.b, 1, P.coef(), 0.8), "");
+  const mjb::RadBody& rb = mjb::buoyOf(s.b)->rad.rb[0];
+  const int n = rb.nk;
+  const double dt = 0.001, Tm = (n - 1) * dt;
+  std::vector<double> K0(n);  // uncorrected, for the printout
+  mjb::retardation(P.coef(), 2, 2, dt, n, K0.data());
+  auto kk = [&](const double* K, double w, double* A, double* B) {
+    double sa = 0, sb = 0;
+    for (int k = 0; k < n; k++) {
+      const double wt = (k == 0 || k == n - 1 ? 0.5 : 1) * K[k] * dt;
+      sa += wt * std::sin(w * k * dt);
+      sb += wt * std::cos(w * k * dt);
+    }
+    *A = P.Ainf - sa / w;
+    *B = sb;
+  };
+  for (double w : {4.0, 8.0, 16.0, 32.0}) {
+    double A, B, A0, B0;
+    kk(rb.K.data(), w, &A, &B);
+    kk(K0.data(), w, &A0, &B0);
+    std::printf("[radiation] T_m %.3f s, w %g: A %.4f (uncorrected %.4f, exact %.4f), "
+                "B %.4f (uncorrected %.4f, exact %.4f)\n", Tm, w, A, A0, P.A(w), B, B0, P.B(w));
+    // the correction's window lies below 4 pi / T_m = 16 rad/s here
+    if (w < 4 * M_PI / Tm) continue;
+    EXPECT_NEAR(A, P.A(w), 0.02 * P.A(w)) << w;
+    EXPECT_NEAR(B, P.B(w), 0.02 * P.k0 / P.a) << w;
+  }
 }
 
 }  // namespace

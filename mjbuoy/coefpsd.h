@@ -1,0 +1,26 @@
+// coefpsd: radiation damping projected onto the positive semi-definite
+// cone at attach (docs/physics.md section 14, "Damping that feeds energy")
+#ifndef MJBUOY_COEFPSD_H_
+#define MJBUOY_COEFPSD_H_
+
+#include <string>
+#include <vector>
+
+#include "hydrocoef.h"
+
+namespace mjb {
+
+// a larger removed part (relative to the largest |B|) means the panel mesh
+// is too coarse
+const double kPsdCoarse = 0.1;
+
+// replace each frequency's B by the nearest (Frobenius) positive
+// semi-definite matrix: symmetric part, negative eigenvalues set to 0.
+// Returns the largest removed part (max |entry|) over the largest |B|;
+// when it exceeds 1e-6, appends a warning naming who (the body), the
+// frequency and that size to warn
+double projectDamping(HydroCoef* c, const std::string& who, std::vector<std::string>* warn);
+
+}  // namespace mjb
+
+#endif  // MJBUOY_COEFPSD_H_
