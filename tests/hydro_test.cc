@@ -153,8 +153,13 @@ TEST(Hydro, DriftsWithTheCurrentOnlyThroughDrag) {
 TEST(Hydro, DriftsWithTheCurrentWithRadiationOn) {
   // radiation acts on the velocity relative to the water and its memory has
   // no steady gain (B(0) = 0; docs/physics.md section 14): with it on the
-  // box still drifts at the current's velocity
+  // box still drifts at the current's velocity. The linear drag terms are
+  // given (Kerner's 100 N/m^2 at 1 m/s, the default without radiation):
+  // with radiation on they default to 0 (docs/physics.md section 16) and
+  // the quadratic terms alone close the gap to the current only as 1/t
   Scene s(box("<numeric name=\"mjbuoy.sea.current\" data=\"0.3 0.4\"/>"
+              "<numeric name=\"mjbuoy.hull.drag\" data=\"100 400 0.5\"/>"
+              "<numeric name=\"mjbuoy.hull.suction\" data=\"100 200 0.5\"/>"
               "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
               "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 6\"/>", "<freejoint/>"));
   ASSERT_TRUE(s.ok()) << s.err;
