@@ -70,6 +70,7 @@ bool equilibriumHeave(const Buoy& B, const mjData* d, int root, double* dz, std:
   double tol = 1e-12 * std::max(zhi - zlo, 1e-6);
   for (int it = 0; it < 200 && b - a > tol; it++) {
     double c = 0.5 * (a + b);
+    if (c <= a || c >= b) break;  // far from 0 (a sea level of 1e4 m) doubles run out first
     if (displacedVolume(B, d, root, c) > want) {
       a = c;
     } else {
