@@ -743,8 +743,11 @@ std::string eqBoxModel(double z, double mass) {
 
 // A_inf and B of the box started at z (the attach's coefficients) and its
 // attach warnings
-void eqBoxCoef(double z, double mass, std::vector<double>* out, std::string* warn) {
-  Scene s(eqBoxModel(z, mass));
+void eqBoxCoef(double z, double mass, std::vector<double>* out, std::string* warn,
+               const char* joint = nullptr) {
+  std::string xml = eqBoxModel(z, mass);
+  if (joint) xml.replace(xml.find("<freejoint/>"), 12, joint);
+  Scene s(xml);
   ASSERT_TRUE(s.ok()) << s.err;
   const mjb::Buoy* B = mjb::buoyOf(s.b);
   ASSERT_EQ(B->coef.size(), 1u);
@@ -811,6 +814,24 @@ TEST(RadAttach, BodyTooHeavyToFloatKeepsItsInitialPose) {
   expectSameCoef(c0, c, "heavy");
   EXPECT_NE(w.find("radiation of body \"box\": no floating equilibrium"), std::string::npos) << w;
   EXPECT_NE(w.find("it sinks"), std::string::npos) << w;
+}
+
+TEST(RadAttach, BodyOnASlideJointKeepsItsInitialPose) {
+  // a body on a joint other than free floats where its joints hold it,
+  // which attach does not solve: the floating box on a vertical slide
+  // started 0.2 m high keeps the wet surface of qpos0 (draft 0.1 m), as
+  // the free box too heavy to float does there, and not that of its draft
+  // T (A33_inf grows with the draft: more than 1% apart)
+  const double z = 0.4 - kBoxT + 0.2, mass = kRho * 2 * 1 * kBoxT;
+  std::vector<double> slide, heavy, atT;
+  std::string w;
+  eqBoxCoef(z, mass, &slide, &w, "<joint type=\"slide\" axis=\"0 0 1\"/>");
+  EXPECT_EQ(w.find("equilibrium"), std::string::npos) << w;
+  eqBoxCoef(z, 2.5 * kRho * 2 * 1 * 0.8, &heavy, &w);
+  expectSameCoef(heavy, slide, "slide");
+  eqBoxCoef(0.4 - kBoxT, mass, &atT, &w);
+  ASSERT_EQ(atT.size(), slide.size());
+  EXPECT_GT(std::fabs(atT[14] - slide[14]), 0.01 * atT[14]);
 }
 
 }  // namespace
