@@ -149,7 +149,10 @@ const char* kNoDrag =
 std::string hemisphereModel(bool radiation, const char* drag = kNoDrag) {
   const double R = 1, m = kRho * 2.0 / 3.0 * M_PI * R * R * R;
   std::ostringstream s;
-  s << "<mujoco><option timestep=\"0.005\"/><asset>" << hemisphereMeshXML(R, 8, 24, 0.3)
+  // vertices scaled so the mesh's waterplane is pi R^2 and it floats within
+  // millimetres of its rim, Hulme's geometry (hemisphere.h)
+  s << "<mujoco><option timestep=\"0.005\"/><asset>"
+    << hemisphereMeshXML(R * mjbt::hemisphereAreaScale(24), 8, 24, 0.3)
     << "</asset><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
     << "<numeric name=\"mjbuoy.sea.density\" data=\"" << kRho << "\"/>" << drag
     << "<text name=\"mjbuoy.radiation\" data=\"" << (radiation ? "on" : "off") << "\"/>"
