@@ -10,6 +10,7 @@
 #include "coefpsd.h"
 #include "coefxform.h"
 #include "diffract.h"
+#include "eqdraft.h"
 #include "panelmesh.h"
 #include "radcache.h"
 
@@ -160,6 +161,28 @@ static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
   return true;
 }
 
+// heave offset [m] of the panel pose from qpos0: the flat-water
+// equilibrium of a free body's subtree (eqdraft.h), else 0 (a body on a
+// joint other than free floats where its joints hold it); at: the pose's
+// name for messages. A free body without equilibrium is warned about
+static double poseHeave(Buoy* B, const mjData* d, int root, const std::string& who,
+                        std::string* at) {
+  const mjModel* m = B->m;
+  *at = "the model's initial pose (qpos0; not a free body)";
+  if (!m->body_jntnum[root] || m->jnt_type[m->body_jntadr[root]] != mjJNT_FREE) return 0;
+  double dz = 0;
+  std::string why;
+  if (equilibriumHeave(*B, d, root, &dz, &why)) {
+    *at = "its floating equilibrium (qpos0 moved " + fmt(dz) + " m in z)";
+    return dz;
+  }
+  *at = "the model's initial pose (qpos0; no floating equilibrium)";
+  B->cfg.warn.push_back(who.substr(8) + ": no floating equilibrium on flat water (" + why +
+                        "); its added mass and damping are for its wetted surface at the "
+                        "model's initial pose (qpos0)");
+  return 0;
+}
+
 // coefficients of one group; "" or the error
 static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   const mjModel* m = B->m;
@@ -168,23 +191,27 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   std::vector<float> v;
   std::vector<int> f;
   groupMesh(*B, d, root, &v, &f);
+  // the pose: qpos0 lifted or lowered to its flat-water equilibrium
+  // (docs/physics.md section 14, "Equilibrium draft"); at names it
+  std::string at;
+  double dz = poseHeave(B, d, root, who, &at);
   double pos[3] = {d->xpos[3 * root], d->xpos[3 * root + 1],
-                   d->xpos[3 * root + 2] - B->cfg.sea.level};
+                   d->xpos[3 * root + 2] + dz - B->cfg.sea.level};
   PanelMesh body, lid;
   std::string note;
   if (!hullPanels(v.data(), v.size() / 3, f.data(), f.size() / 3, pos, d->xquat + 4 * root,
                   rc.refine, &body, &lid, &note)) {
     if (!(rc.given && rc.on) && !namedOn(*B, root)) {
       // on by default only: the body keeps running without radiation
-      B->cfg.warn.push_back(who.substr(8) + " is off: " + note + " at the model's initial pose "
-                            "(qpos0, mean sea level " + fmt(B->cfg.sea.level) + " m); place "
-                            "the body at its floating position in the model for added mass "
-                            "and radiation damping, or set <text name=\"mjbuoy.radiation.body." +
+      B->cfg.warn.push_back(who.substr(8) + " is off: " + note + " at " + at + " (mean sea "
+                            "level " + fmt(B->cfg.sea.level) + " m); place the body at its "
+                            "floating position in the model for added mass and radiation "
+                            "damping, or set <text name=\"mjbuoy.radiation.body." +
                             bodyName(m, root) + "\" data=\"off\"/>");
       return "";
     }
-    return who + ": " + note + " at the model's initial pose (qpos0, mean sea level " +
-           fmt(B->cfg.sea.level) + " m); place the body at its floating position in the model, "
+    return who + ": " + note + " at " + at + " (mean sea level " + fmt(B->cfg.sea.level) +
+           " m); place the body at its floating position in the model, "
            "or turn radiation off for it with <text name=\"mjbuoy.radiation.body." +
            bodyName(m, root) + "\" data=\"off\"/>";
   }
@@ -227,7 +254,8 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
     return who + ": panel solver: " + err;
   }
   // panel frame: world axes, origin (x_root, y_root, sea level); the root's
-  // COM there is R ipos + (0, 0, pos z); body axes: R's columns
+  // COM there is R ipos + (0, 0, pos z) (pos z at the panel pose, with dz);
+  // body axes: R's columns
   const mjtNum* R = d->xmat + 9 * root;
   const mjtNum* ip = m->body_ipos + 3 * root;
   double p[3], Rd[9], pn[3] = {ip[0], ip[1], ip[2]};

@@ -32,7 +32,8 @@ double waterplaneRadius(const PanelMesh& p);
 const int kDefaultPanels = 400;
 
 // for each rigid group of hull bodies with radiation on (all its hulls'
-// panels together, at the model's qpos0, clipped at the mean sea level):
+// panels together, at the flat-water equilibrium of a free body, else at
+// the model's qpos0 (radattach.cc, poseHeave), clipped at the mean sea level):
 // panelSolve, coefficients moved to the root body's COM in its axes,
 // setRadiation. Warnings go to B->cfg.warn. "" or the error, naming the body
 std::string attachRadiation(Buoy* B);

@@ -55,11 +55,10 @@ std::string raoModel(double k0, bool diffraction) {
   const double m = kM;
   std::ostringstream s;
   s.precision(17);
-  // vertices on a sphere of radius R f, f^2 = (2 pi / 24) / sin(2 pi / 24):
-  // the 24-gon waterline then encloses pi R^2, the hemisphere's, so C is
-  // rho g pi R^2 (the inscribed 24-gon's 1.1% less area moves the RAO by
-  // 4% at kR = 1.4, where it falls steeply past the resonance)
-  const double f = std::sqrt((2 * M_PI / 24) / std::sin(2 * M_PI / 24));
+  // vertices on a sphere of radius R f (hemisphereAreaScale): C is rho g pi
+  // R^2 (the inscribed 24-gon's 1.1% less area moves the RAO by 4% at kR =
+  // 1.4, where it falls steeply past the resonance)
+  const double f = mjbt::hemisphereAreaScale(24);
   s << "<mujoco><option timestep=\"0.005\"/><asset>" << mjbt::hemisphereMeshXML(kR * f, 8, 24, 0.3)
     << "</asset><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
     << "<numeric name=\"mjbuoy.sea.density\" data=\"" << kRho << "\"/>"

@@ -17,6 +17,7 @@
 #include "green.h"
 #include "hemisphere.h"
 #include "config.h"
+#include "eqdraft.h"
 #include "hull.h"
 #include "panelmesh.h"
 #include "radattach.h"
@@ -121,14 +122,18 @@ TEST(RadAttach, BadEntriesAreRefusedByName) {
   }
 }
 
-// a box that does not reach the water at qpos0: the error names the body
+// a box too heavy to float (600 kg > its 500 kg full displacement at the
+// default rho 1000) that does not reach the water at qpos0: no equilibrium to
+// move it to, so the error names the body
 TEST(RadAttach, DryBodyIsNamed) {
   std::string xml = boxModel("<text name=\"mjbuoy.radiation\" data=\"on\"/>");
   xml.replace(xml.find("name=\"boat\""), 11, "name=\"boat\" pos=\"0 0 2\"");
+  xml.replace(xml.find("mass=\"256.25\""), 13, "mass=\"600\"");
   Scene s(xml);
   EXPECT_FALSE(s.ok());
   EXPECT_NE(s.err.find("radiation of body \"boat\""), std::string::npos) << s.err;
   EXPECT_NE(s.err.find("mjbuoy.radiation.body.boat"), std::string::npos) << s.err;
+  EXPECT_NE(s.err.find("no floating equilibrium"), std::string::npos) << s.err;
 }
 
 // ---- heave free decay of a floating hemisphere (issue 16) ----
@@ -144,7 +149,10 @@ const char* kNoDrag =
 std::string hemisphereModel(bool radiation, const char* drag = kNoDrag) {
   const double R = 1, m = kRho * 2.0 / 3.0 * M_PI * R * R * R;
   std::ostringstream s;
-  s << "<mujoco><option timestep=\"0.005\"/><asset>" << hemisphereMeshXML(R, 8, 24, 0.3)
+  // vertices scaled so the mesh's waterplane is pi R^2 and it floats within
+  // millimetres of its rim, Hulme's geometry (hemisphere.h)
+  s << "<mujoco><option timestep=\"0.005\"/><asset>"
+    << hemisphereMeshXML(R * mjbt::hemisphereAreaScale(24), 8, 24, 0.3)
     << "</asset><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
     << "<numeric name=\"mjbuoy.sea.density\" data=\"" << kRho << "\"/>" << drag
     << "<text name=\"mjbuoy.radiation\" data=\"" << (radiation ? "on" : "off") << "\"/>"
@@ -471,7 +479,8 @@ TEST(RadAttach, PerBodySwitchesAndWeldedHulls) {
       "<text name=\"mjbuoy.radiation.body.c\" data=\"on\"/>"
       "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 6\"/>"
       "</custom><worldbody>"
-      "<body name=\"a\"><freejoint/><geom name=\"ha\" " + box + "/></body>"
+      "<body name=\"a\"><freejoint/><geom name=\"ha\" " + box + "/>"
+      "<geom type=\"sphere\" size=\"0.1\" pos=\"0 0 1\" mass=\"1\"/></body>"
       "<body name=\"b\" pos=\"5 0 0\"><freejoint/><geom name=\"hb\" " + box + "/></body>"
       "<body name=\"d\" pos=\"10 0 0\"><freejoint/><geom type=\"sphere\" size=\"0.1\" pos=\"0 0 1\" mass=\"1\"/>"
       "<body name=\"c\"><geom name=\"hc\" " + box + "/></body></body>"
@@ -483,11 +492,12 @@ TEST(RadAttach, PerBodySwitchesAndWeldedHulls) {
     int j = s.m->body_jntadr[s.body(b)];
     return s.d->qM[s.m->dof_Madr[s.m->jnt_dofadr[j] + 2]];
   };
-  EXPECT_GT(heave("a"), 1.2 * 500);
+  EXPECT_GT(heave("a"), 1.2 * 501);
   EXPECT_NEAR(heave("b"), 500, 1e-9);
   EXPECT_GT(heave("d"), 1.2 * 501);
   // A33_inf of the same wet surface on "a" and on the welded group "d"
-  EXPECT_NEAR(heave("a") - 500, heave("d") - 501, 1e-6 * heave("a"));
+  // (both 501 kg: the same equilibrium draft)
+  EXPECT_NEAR(heave("a") - 501, heave("d") - 501, 1e-6 * heave("a"));
 }
 
 }  // namespace
@@ -667,13 +677,14 @@ TEST(RadAttach, BodyTenKilometresDownGetsFiniteCoefficients) {
   // with non-finite coefficients. So deep, the free surface is 4e4 box
   // sizes away: no radiation damping (it falls as e^{-2 K d}; Newman 1977,
   // sec. 6.16) and the added mass of the cube in unbounded fluid, the same
-  // in every direction by the cube's symmetry
+  // in every direction by the cube's symmetry. 2000 kg: twice its
+  // displacement, it has no floating equilibrium and stays where it is
   Scene s("<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"h\"/>"
           "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
           "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 4\"/>"
           "<numeric name=\"mjbuoy.sea.level\" data=\"10000\"/></custom><worldbody>"
           "<body name=\"box\"><freejoint/><geom name=\"h\" type=\"box\" size=\"0.5 0.5 0.5\" "
-          "mass=\"500\" contype=\"0\" conaffinity=\"0\"/></body></worldbody></mujoco>");
+          "mass=\"2000\" contype=\"0\" conaffinity=\"0\"/></body></worldbody></mujoco>");
   ASSERT_TRUE(s.ok()) << s.err;
   const mjb::Buoy* B = mjb::buoyOf(s.b);
   ASSERT_EQ(B->coef.size(), 1u);
@@ -704,6 +715,126 @@ TEST(RadAttach, DeepGreenFunctionJoinsTheQuadrature) {
     EXPECT_NEAR(hi.FX, lo.FX, 1e-5 * std::fabs(lo.F)) << X;
     EXPECT_NEAR(hi.FY, lo.FY, 1e-5 * std::fabs(lo.F)) << X;
   }
+}
+
+}  // namespace
+}  // namespace mjbt
+
+namespace mjbt {
+namespace {
+
+// ---- the panel pose: flat-water equilibrium, not qpos0 (issue 16) ----
+
+// a 2 x 1 x 0.8 m box of mass rho L B T, T = 0.3 m, on a free joint with
+// its centre at z [m] (sea level 0): Archimedes puts it at the analytic
+// draft T, centre z = 0.4 - T = 0.1 m, the waterline between the
+// tessellation's side rows (0.2 m apart) so the wet panels do not depend
+// on the last digits of the draft
+const double kBoxT = 0.3;
+std::string eqBoxModel(double z, double mass) {
+  char x[1024];
+  std::snprintf(x, sizeof(x),
+                "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"h\"/>"
+                "<numeric name=\"mjbuoy.sea.density\" data=\"%.17g\"/>"
+                "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+                "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 6 3\"/></custom><worldbody>"
+                "<body name=\"box\" pos=\"0 0 %.17g\"><freejoint/><geom name=\"h\" type=\"box\" "
+                "size=\"1 0.5 0.4\" mass=\"%.17g\" contype=\"0\" conaffinity=\"0\"/></body>"
+                "</worldbody></mujoco>", kRho, z, mass);
+  return x;
+}
+
+// A_inf and B of the box started at z (the attach's coefficients) and its
+// attach warnings
+void eqBoxCoef(double z, double mass, std::vector<double>* out, std::string* warn,
+               const char* joint = nullptr) {
+  std::string xml = eqBoxModel(z, mass);
+  if (joint) xml.replace(xml.find("<freejoint/>"), 12, joint);
+  Scene s(xml);
+  ASSERT_TRUE(s.ok()) << s.err;
+  const mjb::Buoy* B = mjb::buoyOf(s.b);
+  ASSERT_EQ(B->coef.size(), 1u);
+  const mjb::HydroCoef& c = B->coef[0].second;
+  out->assign(c.Ainf, c.Ainf + 36);
+  out->insert(out->end(), c.B.begin(), c.B.end());
+  *warn = mjb_warnings(s.b);
+}
+
+void expectSameCoef(const std::vector<double>& a, const std::vector<double>& b,
+                    const char* what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  double big = 0;
+  for (double v : a) big = std::max(big, std::fabs(v));
+  ASSERT_GT(big, 0) << what;
+  for (size_t i = 0; i < a.size(); i++) EXPECT_NEAR(b[i], a[i], 1e-6 * big) << what << " " << i;
+}
+
+TEST(RadAttach, EquilibriumHeaveIsTheAnalyticDraft) {
+  // Archimedes: the box of mass rho L B T floats at draft T; started 0.2 m
+  // high, 0.1 m low and 0.5 m above the water, the heave offset brings its
+  // centre to 0.4 - T
+  const double mass = kRho * 2 * 1 * kBoxT;
+  for (double z0 : {0.1 + 0.2, 0.1 - 0.1, 1.0}) {
+    Scene s(eqBoxModel(z0, mass));
+    ASSERT_TRUE(s.ok()) << s.err;
+    mj_kinematics(s.m, s.d);
+    double dz = 0;
+    std::string why;
+    ASSERT_TRUE(mjb::equilibriumHeave(*mjb::buoyOf(s.b), s.d, 1, &dz, &why)) << why;
+    EXPECT_NEAR(z0 + dz, 0.4 - kBoxT, 1e-9) << z0;
+    EXPECT_NEAR(mjb::displacedVolume(*mjb::buoyOf(s.b), s.d, 1, dz), 2 * 1 * kBoxT, 1e-9);
+  }
+}
+
+TEST(RadAttach, CoefficientsAreAtTheEquilibriumDraft) {
+  // the wet surface, and so A_inf and B(w), of a box floating at rest does
+  // not depend on where the model starts it: 0.2 m high, 0.1 m low, or dry
+  // (which failed the attach with "dry" when the panels were cut at qpos0)
+  const double mass = kRho * 2 * 1 * kBoxT;
+  std::vector<double> c0, c;
+  std::string w;
+  eqBoxCoef(0.4 - kBoxT, mass, &c0, &w);
+  eqBoxCoef(0.4 - kBoxT + 0.2, mass, &c, &w);
+  expectSameCoef(c0, c, "0.2 m high");
+  eqBoxCoef(0.4 - kBoxT - 0.1, mass, &c, &w);
+  expectSameCoef(c0, c, "0.1 m low");
+  eqBoxCoef(1.0, mass, &c, &w);
+  expectSameCoef(c0, c, "dry");
+  EXPECT_EQ(w.find("equilibrium"), std::string::npos) << w;
+  std::printf("[radattach] box at its draft %.2f m: A33_inf %.6g kg, B33(%.3g rad/s) %.6g kg/s\n",
+              kBoxT, c0[14], 1.0, c0[36 + 14]);
+}
+
+TEST(RadAttach, BodyTooHeavyToFloatKeepsItsInitialPose) {
+  // 2.5 times its full displacement (rho 2 x 1 x 0.8 m^3): no equilibrium;
+  // the panels stay at qpos0 with a warning naming the body. Started at
+  // the draft T, its wet surface is the floating box's, so its
+  // coefficients are too (the mass does not enter the panel problem)
+  std::vector<double> c0, c;
+  std::string w;
+  eqBoxCoef(0.4 - kBoxT, kRho * 2 * 1 * kBoxT, &c0, &w);
+  eqBoxCoef(0.4 - kBoxT, 2.5 * kRho * 2 * 1 * 0.8, &c, &w);
+  expectSameCoef(c0, c, "heavy");
+  EXPECT_NE(w.find("radiation of body \"box\": no floating equilibrium"), std::string::npos) << w;
+  EXPECT_NE(w.find("it sinks"), std::string::npos) << w;
+}
+
+TEST(RadAttach, BodyOnASlideJointKeepsItsInitialPose) {
+  // a body on a joint other than free floats where its joints hold it,
+  // which attach does not solve: the floating box on a vertical slide
+  // started 0.2 m high keeps the wet surface of qpos0 (draft 0.1 m), as
+  // the free box too heavy to float does there, and not that of its draft
+  // T (A33_inf grows with the draft: more than 1% apart)
+  const double z = 0.4 - kBoxT + 0.2, mass = kRho * 2 * 1 * kBoxT;
+  std::vector<double> slide, heavy, atT;
+  std::string w;
+  eqBoxCoef(z, mass, &slide, &w, "<joint type=\"slide\" axis=\"0 0 1\"/>");
+  EXPECT_EQ(w.find("equilibrium"), std::string::npos) << w;
+  eqBoxCoef(z, 2.5 * kRho * 2 * 1 * 0.8, &heavy, &w);
+  expectSameCoef(heavy, slide, "slide");
+  eqBoxCoef(0.4 - kBoxT, mass, &atT, &w);
+  ASSERT_EQ(atT.size(), slide.size());
+  EXPECT_GT(std::fabs(atT[14] - slide[14]), 0.01 * atT[14]);
 }
 
 }  // namespace
