@@ -11,6 +11,7 @@
 
 #include <tinyxml2.h>
 
+#include "pathcheck.h"
 #include "scenario.h"
 #include "scenario_xml.h"
 
@@ -409,12 +410,12 @@ static Scenario parseDoc(const tinyxml2::XMLDocument& doc, tinyxml2::XMLError er
   fs::path dir = fs::path(file).parent_path();
   s.model_attr = r.str("model");
   fs::path mp = dir / s.model_attr;
-  if (!fs::is_regular_file(mp)) {
-    r.fail("model \"" + s.model_attr + "\" not found (looked for " + mp.string() +
+  if (std::string why = pathcheck::whyNotAFile(mp); !why.empty()) {
+    r.fail("model \"" + s.model_attr + "\" " + why + " (looked for " + mp.string() +
                "; the path is relative to the scenario file)",
            "model");
   }
-  s.model = fs::absolute(mp).lexically_normal().string();
+  s.model = pathcheck::absolutePath(mp);
   s.duration = r.number("duration");
   if (s.duration <= 0) r.fail("duration = " + num(s.duration) + " must be > 0 [s]", "duration");
   s.timestep = r.number("timestep", 0);
@@ -457,12 +458,12 @@ static Scenario parseDoc(const tinyxml2::XMLDocument& doc, tinyxml2::XMLError er
       mf.line = e.line();
       mf.name = e.str("name");
       fs::path p = dir / e.str("file");
-      if (!fs::is_regular_file(p)) {
-        e.fail("mesh file \"" + e.str("file") + "\" not found (looked for " + p.string() +
+      if (std::string why = pathcheck::whyNotAFile(p); !why.empty()) {
+        e.fail("mesh file \"" + e.str("file") + "\" " + why + " (looked for " + p.string() +
                    "; the path is relative to the scenario file)",
                "file");
       }
-      mf.file = fs::absolute(p).lexically_normal().string();
+      mf.file = pathcheck::absolutePath(p);
       s.meshes.push_back(mf);
     } else if (tag == "init") {
       parseInit(El(x, file, {"body", "joint", "pos", "rpy", "vel", "angvel", "qpos", "qvel"}), s);

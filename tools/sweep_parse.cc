@@ -11,6 +11,7 @@
 
 #include <tinyxml2.h>
 
+#include "pathcheck.h"
 #include "scenario_xml.h"
 #include "sweep.h"
 
@@ -273,7 +274,7 @@ static std::string slurp(const std::string& path) {
 
 Sweep parseSweep(const std::string& path) {
   Sweep s;
-  s.file = fs::absolute(path).lexically_normal().string();
+  s.file = pathcheck::absolutePath(path);
   s.given = path;
   const std::string& file = path;
   tinyxml2::XMLDocument doc;
@@ -293,11 +294,11 @@ Sweep parseSweep(const std::string& path) {
   s.name = r.str("name", fs::path(path).stem().string());
   fs::path bp = fs::path(path).parent_path() / r.str("scenario");
   s.base_line = r.line("scenario");
-  if (!fs::is_regular_file(bp)) {
-    r.fail("scenario \"" + r.str("scenario") + "\" not found (looked for " + bp.string() +
+  if (std::string why = pathcheck::whyNotAFile(bp); !why.empty()) {
+    r.fail("scenario \"" + r.str("scenario") + "\" " + why + " (looked for " + bp.string() +
            "; the path is relative to the sweep file)", "scenario");
   }
-  s.base = fs::absolute(bp).lexically_normal().string();
+  s.base = pathcheck::absolutePath(bp);
   s.base_text = slurp(s.base);
   scn::parseScenario(s.base);  // the base itself must be valid
 
