@@ -52,30 +52,12 @@ double expectedRAO(int r) {
 // drag, viscous and slamming terms off, radiation 0.7 to 7 rad/s with the
 // lid) in one Airy component of steepness kKA and wave number k0 along +x
 std::string raoModel(double k0, bool diffraction) {
-  const double m = kM;
-  std::ostringstream s;
-  s.precision(17);
-  // vertices on a sphere of radius R f (hemisphereAreaScale): C is rho g pi
-  // R^2 (the inscribed 24-gon's 1.1% less area moves the RAO by 4% at kR =
-  // 1.4, where it falls steeply past the resonance)
-  const double f = mjbt::hemisphereAreaScale(24);
-  s << "<mujoco><option timestep=\"0.005\"/><asset>" << mjbt::hemisphereMeshXML(kR * f, 8, 24, 0.3)
-    << "</asset><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
-    << "<numeric name=\"mjbuoy.sea.density\" data=\"" << kRho << "\"/>"
-    << "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
-    << "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0.5\"/>"
-    << "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0.5\"/>"
-    << "<numeric name=\"mjbuoy.hull.slamming\" data=\"0 100 2\"/>"
-    << "<numeric name=\"mjbuoy.airy.w\" data=\"" << kKA / k0 << " " << 2 * M_PI / k0 << " 0 0\"/>"
+  std::ostringstream c;
+  c.precision(17);
+  c << mjbt::kNoDragEntries << "<numeric name=\"mjbuoy.airy.w\" data=\"" << kKA / k0 << " " << 2 * M_PI / k0 << " 0 0\"/>"
     << "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
-    << "<text name=\"mjbuoy.radiation.diffraction\" data=\"" << (diffraction ? "on" : "off") << "\"/>"
-    << "<numeric name=\"mjbuoy.radiation.omega\" data=\"0.7 7 12\"/>"
-    << "</custom><worldbody><body name=\"hemi\"><freejoint/>"
-    << "<inertial pos=\"0 0 -0.3\" mass=\"" << m << "\" diaginertia=\"" << 0.4 * m << " "
-    << 0.4 * m << " " << 0.4 * m << "\"/>"
-    << "<geom name=\"hull\" type=\"mesh\" mesh=\"hemi\" contype=\"0\" conaffinity=\"0\"/>"
-    << "</body></worldbody></mujoco>";
-  return s.str();
+    << "<text name=\"mjbuoy.radiation.diffraction\" data=\"" << (diffraction ? "on" : "off") << "\"/>";
+  return mjbt::floatingHemisphereXML(kR, kRho, c.str());
 }
 
 // measured heave RAO at wave number k: from rest at equilibrium, the wave

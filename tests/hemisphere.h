@@ -55,6 +55,36 @@ inline double hemisphereAreaScale(int na) {
   return std::sqrt((2 * M_PI / na) / std::sin(2 * M_PI / na));
 }
 
+// mjbuoy's drag, viscous and slamming terms off, so that only hydrostatics
+// (and radiation, where on) act on the floating hemisphere below
+inline const char* kNoDragEntries =
+    "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
+    "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0.5\"/>"
+    "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0.5\"/>"
+    "<numeric name=\"mjbuoy.hull.slamming\" data=\"0 100 2\"/>";
+
+// a freely floating hemisphere of radius R [m] in water of density rho
+// [kg/m^3]: the mesh above with vertices at R f (hemisphereAreaScale), an
+// 8 x 24 mesh with a 0.3 m collar, mass rho 2/3 pi R^3 (it floats at its
+// rim), COM 0.3 m down; `custom` holds the test's own <custom> entries
+// (drag terms, sea, radiation switches); radiation 0.7 to 7 rad/s
+inline std::string floatingHemisphereXML(double R, double rho, const std::string& custom) {
+  const double m = rho * 2.0 / 3.0 * M_PI * R * R * R;
+  std::ostringstream s;
+  s.precision(17);
+  s << "<mujoco><option timestep=\"0.005\"/><asset>"
+    << hemisphereMeshXML(R * hemisphereAreaScale(24), 8, 24, 0.3)
+    << "</asset><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
+    << "<numeric name=\"mjbuoy.sea.density\" data=\"" << rho << "\"/>" << custom
+    << "<numeric name=\"mjbuoy.radiation.omega\" data=\"0.7 7 12\"/>"
+    << "</custom><worldbody><body name=\"hemi\"><freejoint/>"
+    << "<inertial pos=\"0 0 -0.3\" mass=\"" << m << "\" diaginertia=\"" << 0.4 * m << " "
+    << 0.4 * m << " " << 0.4 * m << "\"/>"
+    << "<geom name=\"hull\" type=\"mesh\" mesh=\"hemi\" contype=\"0\" conaffinity=\"0\"/>"
+    << "</body></worldbody></mujoco>";
+  return s.str();
+}
+
 }  // namespace mjbt
 
 #endif  // MJBUOY_TESTS_HEMISPHERE_H_

@@ -141,28 +141,10 @@ TEST(RadAttach, DryBodyIsNamed) {
 // floating hemisphere of radius 1 m, mass rho 2/3 pi R^3; by default
 // (kNoDrag) mjbuoy's drag, viscous and slamming terms off so that only
 // hydrostatics (and radiation) act
-const char* kNoDrag =
-    "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
-    "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0.5\"/>"
-    "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0.5\"/>"
-    "<numeric name=\"mjbuoy.hull.slamming\" data=\"0 100 2\"/>";
+const char* kNoDrag = mjbt::kNoDragEntries;
 std::string hemisphereModel(bool radiation, const char* drag = kNoDrag) {
-  const double R = 1, m = kRho * 2.0 / 3.0 * M_PI * R * R * R;
-  std::ostringstream s;
-  // vertices scaled so the mesh's waterplane is pi R^2 and it floats within
-  // millimetres of its rim, Hulme's geometry (hemisphere.h)
-  s << "<mujoco><option timestep=\"0.005\"/><asset>"
-    << hemisphereMeshXML(R * mjbt::hemisphereAreaScale(24), 8, 24, 0.3)
-    << "</asset><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
-    << "<numeric name=\"mjbuoy.sea.density\" data=\"" << kRho << "\"/>" << drag
-    << "<text name=\"mjbuoy.radiation\" data=\"" << (radiation ? "on" : "off") << "\"/>"
-    << "<numeric name=\"mjbuoy.radiation.omega\" data=\"0.7 7 12\"/>"
-    << "</custom><worldbody><body name=\"hemi\"><freejoint/>"
-    << "<inertial pos=\"0 0 -0.3\" mass=\"" << m << "\" diaginertia=\"" << 0.4 * m << " "
-    << 0.4 * m << " " << 0.4 * m << "\"/>"
-    << "<geom name=\"hull\" type=\"mesh\" mesh=\"hemi\" contype=\"0\" conaffinity=\"0\"/>"
-    << "</body></worldbody></mujoco>";
-  return s.str();
+  return mjbt::floatingHemisphereXML(1, kRho, std::string(drag) +
+      "<text name=\"mjbuoy.radiation\" data=\"" + (radiation ? "on" : "off") + "\"/>");
 }
 
 // heave maxima and minima (times [s], values [m]) of T seconds of mj_step
