@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <ctime>
@@ -366,33 +367,44 @@ static int compareGrid(const std::string& base, const std::string& meshes,
   return rc;
 }
 
+// a JSON array of n rows to `json`, atomically (replaced only when complete):
+// row(f, i) prints row i's object; 0, or 1 after printing why not
+static int writeJsonArray(const std::string& json, size_t n,
+                          const std::function<void(FILE*, size_t)>& row) {
+  mjbtool::OutFile of;
+  std::string e;
+  if (!of.open(json, "--json", &e)) {
+    std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
+    return 1;
+  }
+  FILE* f = of.file();
+  std::fprintf(f, "[\n");
+  for (size_t i = 0; i < n; i++) {
+    std::fprintf(f, "  ");
+    row(f, i);
+    std::fprintf(f, "%s\n", i + 1 < n ? "," : "");
+  }
+  std::fprintf(f, "]\n");
+  if (!of.commit(&e)) {
+    std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
+    return 1;
+  }
+  return 0;
+}
+
 // --baseline's --json (if given), then stdout's state: the exit status
 static int writeCompare(const std::string& json, const std::vector<CmpCell>& cc) {
-  if (!json.empty()) {
-    mjbtool::OutFile of;
-    std::string e;
-    if (!of.open(json, "--json", &e)) {
-      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
-      return 1;
-    }
-    FILE* f = of.file();
-    std::fprintf(f, "[\n");
-    for (size_t i = 0; i < cc.size(); i++) {
-      const CmpCell& c = cc[i];
-      std::fprintf(f, "  {\"backend\": \"%s\", \"sea\": \"%s\", \"pressure\": \"%s\", "
-                   "\"boats\": %d, \"tris\": %d, \"hydro_ms\": %.6f, \"baseline_hydro_ms\": "
-                   "%.6f, \"hydro_ratio\": %.6f, \"step_ms\": %.6f, \"baseline_step_ms\": %.6f, "
-                   "\"step_ratio\": %.6f, \"hydro_cpu_ms\": %.6f, \"baseline_hydro_cpu_ms\": "
-                   "%.6f, \"cpu_ratio\": %.6f}%s\n", c.backend.c_str(), c.sea.c_str(),
-                   c.pressure.c_str(), c.boats, c.tris, c.hydro, c.bhydro, c.ratio, c.step,
-                   c.bstep, c.sratio, c.cpu, c.bcpu, c.cratio, i + 1 < cc.size() ? "," : "");
-    }
-    std::fprintf(f, "]\n");
-    if (!of.commit(&e)) {
-      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
-      return 1;
-    }
-  }
+  auto row = [&](FILE* f, size_t i) {
+    const CmpCell& c = cc[i];
+    std::fprintf(f, "{\"backend\": \"%s\", \"sea\": \"%s\", \"pressure\": \"%s\", "
+                 "\"boats\": %d, \"tris\": %d, \"hydro_ms\": %.6f, \"baseline_hydro_ms\": "
+                 "%.6f, \"hydro_ratio\": %.6f, \"step_ms\": %.6f, \"baseline_step_ms\": %.6f, "
+                 "\"step_ratio\": %.6f, \"hydro_cpu_ms\": %.6f, \"baseline_hydro_cpu_ms\": "
+                 "%.6f, \"cpu_ratio\": %.6f}", c.backend.c_str(), c.sea.c_str(),
+                 c.pressure.c_str(), c.boats, c.tris, c.hydro, c.bhydro, c.ratio, c.step,
+                 c.bstep, c.sratio, c.cpu, c.bcpu, c.cratio);
+  };
+  if (!json.empty() && writeJsonArray(json, cc.size(), row) != 0) return 1;
   if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
     std::fprintf(stderr, "mjbuoy-bench: cannot write the table to stdout\n");
     return 1;
@@ -521,38 +533,24 @@ int main(int argc, char** argv) {
     }
   }
   std::fprintf(stderr, "\n");
-  if (!json.empty()) {
-    mjbtool::OutFile of;
-    std::string e;
-    if (!of.open(json, "--json", &e)) {
-      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
-      return 1;
+  auto row = [&](FILE* f, size_t i) {
+    const Cell& c = cells[i];
+    std::fprintf(f, "{\"backend\": \"%s\", \"sea\": \"%s\", \"pressure\": \"%s\", "
+                 "\"boats\": %d, \"tris\": %d, \"triangles\": %d, "
+                 "\"hydro_ms\": %.6f, \"hydro_cpu_ms\": %.6f, \"step_ms\": %.6f, \"bare_ms\": %.6f, ",
+                 c.backend.c_str(), c.sea.c_str(), c.pressure.c_str(), c.boats, c.tris, c.ntri,
+                 c.hydro, c.cpu, c.step, c.bare);
+    if (std::isfinite(c.newton)) std::fprintf(f, "\"newton_per_solve\": %.6f, ", c.newton);
+    std::fprintf(f, "\"roofline_ns\": %.6f, \"roofline_fraction\": %.6f, ", roofline(c.sea),
+                 fraction(c.sea, c.ntri, c.cpu));
+    std::fprintf(f, "\"stages\": {");
+    for (size_t j = 0; j < c.stages.size(); j++) {
+      std::fprintf(f, "%s\"%s\": %.6f", j ? ", " : "", c.stages[j].first.c_str(),
+                   c.stages[j].second);
     }
-    FILE* f = of.file();
-    std::fprintf(f, "[\n");
-    for (size_t i = 0; i < cells.size(); i++) {
-      const Cell& c = cells[i];
-      std::fprintf(f, "  {\"backend\": \"%s\", \"sea\": \"%s\", \"pressure\": \"%s\", "
-                   "\"boats\": %d, \"tris\": %d, \"triangles\": %d, "
-                   "\"hydro_ms\": %.6f, \"hydro_cpu_ms\": %.6f, \"step_ms\": %.6f, \"bare_ms\": %.6f, ",
-                   c.backend.c_str(), c.sea.c_str(), c.pressure.c_str(), c.boats, c.tris, c.ntri,
-                   c.hydro, c.cpu, c.step, c.bare);
-      if (std::isfinite(c.newton)) std::fprintf(f, "\"newton_per_solve\": %.6f, ", c.newton);
-      std::fprintf(f, "\"roofline_ns\": %.6f, \"roofline_fraction\": %.6f, ", roofline(c.sea),
-                   fraction(c.sea, c.ntri, c.cpu));
-      std::fprintf(f, "\"stages\": {");
-      for (size_t j = 0; j < c.stages.size(); j++) {
-        std::fprintf(f, "%s\"%s\": %.6f", j ? ", " : "", c.stages[j].first.c_str(),
-                     c.stages[j].second);
-      }
-      std::fprintf(f, "}}%s\n", i + 1 < cells.size() ? "," : "");
-    }
-    std::fprintf(f, "]\n");
-    if (!of.commit(&e)) {
-      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
-      return 1;
-    }
-  }
+    std::fprintf(f, "}}");
+  };
+  if (!json.empty() && writeJsonArray(json, cells.size(), row) != 0) return 1;
   if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
     std::fprintf(stderr, "mjbuoy-bench: cannot write the table to stdout\n");
     return 1;
