@@ -41,21 +41,91 @@ std::string where(const std::string& file, long line) {
   return "mjbuoy: mesh file " + file + " line " + std::to_string(line) + ": ";
 }
 
-// a vertex index of an OBJ face corner ("7", "7/1", "7//2", "-1/2/3")
-std::string checkCorner(const std::string& tok, long nv, long nseen, const std::string& file,
-                        long line) {
-  char* end;
-  long i = std::strtol(tok.c_str(), &end, 10);
-  if (end == tok.c_str()) {
-    return where(file, line) + "face corner \"" + tok + "\" has no vertex index; fix the face";
+// counts of an OBJ file's v, vt and vn lines: in the whole file, and seen
+// so far (negative indices count back from the face)
+struct ObjCounts {
+  long total[3] = {0, 0, 0};
+  long seen[3] = {0, 0, 0};
+};
+
+const char* kObjKey[3] = {"v", "vt", "vn"};
+const char* kObjWhat[3] = {"vertex", "texture coordinate", "normal"};
+
+// the index of kind j ("v", "vt", "vn") in one slot of a face corner; ""
+// or the error. MuJoCo 2.2 (user_mesh.cc LoadOBJ) reads a corner's vt and
+// vn entries whenever the file has any vt or vn lines, also for a corner
+// without that index (then at -1): outside its arrays
+std::string checkSlot(const std::string& tok, const std::string& part, int j,
+                      const ObjCounts& n, const std::string& file, long line) {
+  long nt = n.total[j], ns = n.seen[j];
+  std::string what = kObjWhat[j];
+  if (part.empty()) {
+    return where(file, line) + "face corner \"" + tok + "\" has no " + what +
+           " index, but the file has " + std::to_string(nt) + " \"" + kObjKey[j] +
+           "\" lines (MuJoCo 2.2 then reads outside its " + what +
+           " array); give every corner one or remove the \"" + kObjKey[j] + "\" lines";
   }
-  std::string range = " (the file has " + std::to_string(nv) +
-                      " vertices: OBJ indices run from 1 to " + std::to_string(nv) +
-                      ", or -1 back to -" + std::to_string(nseen) + " from the face)";
-  if (i == 0) return where(file, line) + "face index 0 is invalid" + range + "; fix the face";
-  if (i > nv || -i > nseen) {
-    return where(file, line) + "face index " + std::to_string(i) + " is out of range" + range +
+  char* end;
+  long i = std::strtol(part.c_str(), &end, 10);
+  if (end == part.c_str() || *end) {
+    return where(file, line) + "face corner \"" + tok + "\" has no " + what +
+           " index; fix the face";
+  }
+  std::string plural = j ? std::string(" \"") + kObjKey[j] + "\" lines" : " vertices";
+  std::string range = " (the file has " + std::to_string(nt) + plural +
+                      ": OBJ indices run from 1 to " + std::to_string(nt) + ", or -1 back to -" +
+                      std::to_string(ns) + " from the face)";
+  std::string face = j ? "face " + what + " index " : "face index ";
+  if (i == 0) return where(file, line) + face + "0 is invalid" + range + "; fix the face";
+  if (i > nt || -i > ns) {
+    return where(file, line) + face + std::to_string(i) + " is out of range" + range +
            "; fix the face";
+  }
+  return "";
+}
+
+// an OBJ face corner ("7", "7/1", "7//2", "-1/2/3"): its vertex index, and
+// its vt and vn indices where the file has vt or vn lines
+std::string checkCorner(const std::string& tok, const ObjCounts& n, const std::string& file,
+                        long line) {
+  std::string part[3];
+  size_t a = tok.find('/'), b = a == std::string::npos ? a : tok.find('/', a + 1);
+  part[0] = tok.substr(0, a);
+  if (a != std::string::npos) part[1] = tok.substr(a + 1, b == std::string::npos ? b : b - a - 1);
+  if (b != std::string::npos) part[2] = tok.substr(b + 1);
+  for (int j = 0; j < 3; j++) {
+    if (j > 0 && n.total[j] == 0) continue;  // MuJoCo ignores the slot then
+    std::string e = checkSlot(tok, part[j], j, n, file, line);
+    if (!e.empty()) return e;
+  }
+  return "";
+}
+
+// the kind of an OBJ line: 0 v, 1 vt, 2 vn, -1 other
+int objKind(const std::string& key) {
+  for (int j = 0; j < 3; j++) {
+    if (key == kObjKey[j]) return j;
+  }
+  return -1;
+}
+
+// a "v" line's three coordinates
+std::string checkVertex(std::istringstream& s, const std::string& file, long line) {
+  std::string tok;
+  for (int j = 0; j < 3; j++) {
+    if (!(s >> tok)) {
+      return where(file, line) + "vertex has " + std::to_string(j) +
+             " coordinates, expected 3 (x y z); fix the vertex";
+    }
+    char* end;
+    double x = std::strtod(tok.c_str(), &end);
+    if (end == tok.c_str() || *end) {
+      return where(file, line) + "vertex coordinate \"" + tok + "\" is not a number; fix the vertex";
+    }
+    if (!std::isfinite(x)) {
+      return where(file, line) + "vertex coordinate \"" + tok +
+             "\" is not a finite number (MuJoCo would load a different mesh); fix the vertex";
+    }
   }
   return "";
 }
@@ -64,39 +134,26 @@ std::string checkObj(const std::string& file) {
   std::ifstream in(file);
   if (!in) return "";  // MuJoCo reports a missing file itself
   std::vector<std::string> lines;
-  long nv = 0;
+  ObjCounts n;
   for (std::string l; std::getline(in, l);) {
     lines.push_back(l);
-    if (l.size() > 1 && l[0] == 'v' && std::isspace(static_cast<unsigned char>(l[1]))) nv++;
+    std::istringstream s(l);
+    std::string key;
+    s >> key;
+    if (int j = objKind(key); j >= 0) n.total[j]++;
   }
-  long seen = 0;
   for (size_t k = 0; k < lines.size(); k++) {
     std::istringstream s(lines[k]);
     std::string key, tok;
     s >> key;
     long line = long(k) + 1;
-    if (key == "v") {
-      seen++;
-      for (int j = 0; j < 3; j++) {
-        if (!(s >> tok)) {
-          return where(file, line) + "vertex has " + std::to_string(j) +
-                 " coordinates, expected 3 (x y z); fix the vertex";
-        }
-        char* end;
-        double x = std::strtod(tok.c_str(), &end);
-        if (end == tok.c_str() || *end) {
-          return where(file, line) + "vertex coordinate \"" + tok +
-                 "\" is not a number; fix the vertex";
-        }
-        if (!std::isfinite(x)) {
-          return where(file, line) + "vertex coordinate \"" + tok +
-                 "\" is not a finite number (MuJoCo would load a different mesh); fix the "
-                 "vertex";
-        }
-      }
+    if (int j = objKind(key); j >= 0) {
+      n.seen[j]++;
+      std::string e = j == 0 ? checkVertex(s, file, line) : "";
+      if (!e.empty()) return e;
     } else if (key == "f") {
       while (s >> tok) {
-        std::string e = checkCorner(tok, nv, seen, file, line);
+        std::string e = checkCorner(tok, n, file, line);
         if (!e.empty()) return e;
       }
     }

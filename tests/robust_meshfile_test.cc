@@ -1,6 +1,7 @@
 // mesh files MuJoCo 2.2 would load broken (issue 11 item 17): a face index
 // out of range (MuJoCo reads past its vertex array) or 0, a non-finite
-// vertex (a silently different mesh), a truncated STL. mjb_checkModelFile
+// vertex (a silently different mesh), a truncated STL, a face corner
+// without the normal or texture index the file's vn or vt lines call for. mjb_checkModelFile
 // refuses them with the file and line before mj_loadXML sees them.
 #include <sys/stat.h>
 #include <unistd.h>
@@ -65,13 +66,25 @@ std::string check(const std::string& xmlpath, int* ok) {
 
 TEST(RobustMeshFile, ValidObjPassesAndLoads) {
   TmpDir t;
-  // normals and texture coordinates pass the check (it reads only v and f
-  // lines); the file MuJoCo loads below has none: libmujoco 2.2.2 reads past
-  // a one-normal array when faces do not index it (AddressSanitizer)
-  t.write("cube_vn.obj", std::string(kCubeV) + "vn 0 0 1\nvt 0 0\n" + kCubeF);
+  // normals and texture coordinates indexed by every face corner pass and
+  // load (under AddressSanitizer this also checks libmujoco reads them in
+  // bounds): the cube's 6 face normals and 4 corner texture coordinates
+  std::string vtn = "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                    "vn 0 0 -1\nvn 0 0 1\nvn 0 -1 0\nvn 1 0 0\nvn 0 1 0\nvn -1 0 0\n"
+                    "f 1/1/1 3/3/1 2/2/1\nf 1/1/1 4/4/1 3/3/1\nf 5/1/2 6/2/2 7/3/2\n"
+                    "f 5/1/2 7/3/2 8/4/2\nf 1/1/3 2/2/3 6/3/3\nf 1/1/3 6/3/3 5/4/3\n"
+                    "f 2/1/4 3/2/4 7/3/4\nf 2/1/4 7/3/4 6/4/4\nf 3/1/5 4/2/5 8/3/5\n"
+                    "f 3/1/5 8/3/5 7/4/5\nf -5/1/-1 -8/2/-1 -4/3/-1\nf -5/1/-1 -4/3/-1 -1/4/-1\n";
+  t.write("cube_vn.obj", std::string(kCubeV) + vtn);
   int ok;
-  EXPECT_EQ(check(t.write("model_vn.xml", model("cube_vn.obj")), &ok), "");
+  std::string xvn = t.write("model_vn.xml", model("cube_vn.obj"));
+  EXPECT_EQ(check(xvn, &ok), "");
   EXPECT_EQ(ok, 1);
+  char evn[1000];
+  mjModel* mvn = mj_loadXML(xvn.c_str(), nullptr, evn, sizeof(evn));
+  ASSERT_TRUE(mvn) << evn;
+  EXPECT_NEAR(mvn->body_mass[1], 500, 1e-9);
+  mj_deleteModel(mvn);
   t.write("cube.obj", std::string(kCubeV) + kCubeF);
   std::string x = t.write("model.xml", model("cube.obj"));
   EXPECT_EQ(check(x, &ok), "");
@@ -102,6 +115,15 @@ TEST(RobustMeshFile, BrokenObjIsRefusedWithFileAndLine) {
       {std::string(kCubeV) + "v 1 inf 0\n" + kCubeF, 9,
        {"vertex coordinate \"inf\" is not a finite number"}},
       {std::string(kCubeV) + "v 1 2\n" + kCubeF, 9, {"vertex has 2 coordinates, expected 3"}},
+      // one normal and faces that do not index it: libmujoco 2.2.2 reads
+      // its normal array at index -1 (an AddressSanitizer report in
+      // mj_loadXML before this check)
+      {std::string(kCubeV) + "vn 0 0 1\n" + kCubeF, 10,
+       {"face corner \"1\" has no normal index", "the file has 1 \"vn\" lines"}},
+      {std::string(kCubeV) + "vt 0 0\nf 1/1 2/2 3/1\n" + kCubeF, 10,
+       {"face texture coordinate index 2 is out of range", "from 1 to 1"}},
+      {std::string(kCubeV) + "vn 0 0 1\nf 1//1 2//1 3/1\n", 10,
+       {"face corner \"3/1\" has no normal index"}},
   };
   for (const Case& c : cases) {
     TmpDir t;
