@@ -1,14 +1,16 @@
-// the panel solver against published coefficients of a second body (issue
-// 16, docs/physics.md section 13, "Second body: WAMIT's test cylinder"): the
-// floating truncated vertical cylinder R = 1, T = 0.5 of WAMIT's standard
-// test runs TEST01 and TEST11, deep water, against the output WAMIT Inc.
-// distributes with the program. PanelWamit.* runs under label panel (opt-in).
+// the panel solver against published coefficients of further bodies (issue
+// 16, docs/physics.md section 13, "Second body: WAMIT's published test
+// runs"): the floating truncated vertical cylinder R = 1, T = 0.5 of WAMIT's
+// standard test runs TEST01 and TEST11 and the rectangular barge of TEST16,
+// deep water, against the output WAMIT Inc. distributes with the program.
+// PanelWamit.* runs under label panel (opt-in; ctest -R panel.wamit).
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "panel.h"
@@ -106,6 +108,20 @@ void expectRow(const HydroCoef& h, int w, const WamitRow& r, double tol) {
       << "T " << r.T << " A15 " << coefA(h, w, 0, 4);
 }
 
+// every entry expectRow checks is closer to the row on the fine mesh than
+// on the coarse one
+void expectConverging(const HydroCoef& coarse, const HydroCoef& fine, int w, const WamitRow& r) {
+  const int ij[6][2] = {{0, 0}, {0, 0}, {2, 2}, {2, 2}, {4, 4}, {0, 4}};
+  const double ref[6] = {r.A11, r.B11, r.A33, r.B33, r.A55, r.A15};
+  for (int c = 0; c < 6; c++) {
+    if (c == 1 && r.B11 <= 0.05 * r.A11) continue;
+    auto get = [&](const HydroCoef& h) {
+      return c == 1 || c == 3 ? coefB(h, w, ij[c][0], ij[c][1]) : coefA(h, w, ij[c][0], ij[c][1]);
+    };
+    EXPECT_LT(std::fabs(get(fine) - ref[c]), std::fabs(get(coarse) - ref[c])) << "T " << r.T << " entry " << c;
+  }
+}
+
 void printRow(const char* name, const HydroCoef* h, int w, const WamitRow* r) {
   double v[6];
   if (h) {
@@ -116,7 +132,7 @@ void printRow(const char* name, const HydroCoef* h, int w, const WamitRow* r) {
     const double c[6] = {r->A11, r->B11, r->A33, r->B33, r->A55, r->A15};
     for (int k = 0; k < 6; k++) v[k] = c[k];
   }
-  std::printf("[panel]   %-14s A11 %.4f B11 %.3e A33 %.4f B33 %.4e A55 %.4f A15 %.4f\n", name, v[0], v[1], v[2],
+  std::printf("[panel]   %-14s A11 %.5g B11 %.5g A33 %.5g B33 %.5g A55 %.5g A15 %.5g\n", name, v[0], v[1], v[2],
               v[3], v[4], v[5]);
 }
 
@@ -152,19 +168,97 @@ TEST(PanelWamit, CylinderTest01) {
   for (int w = 0; w < 2; w++) {
     expectRow(hs[1], w, kTest11b[w], 0.03);
     expectRow(hs[2], w, kTest11b[w], 0.03);
-    const WamitRow& r = kTest11b[w];
-    const int ij[6][2] = {{0, 0}, {0, 0}, {2, 2}, {2, 2}, {4, 4}, {0, 4}};
-    const double ref[6] = {r.A11, r.B11, r.A33, r.B33, r.A55, r.A15};
-    for (int c = 0; c < 6; c++) {
-      if (c == 1 && r.B11 < 0.05 * r.A11) continue;
-      auto get = [&](const HydroCoef& h) {
-        return c == 1 || c == 3 ? coefB(h, w, ij[c][0], ij[c][1]) : coefA(h, w, ij[c][0], ij[c][1]);
-      };
-      EXPECT_LT(std::fabs(get(hs[2]) - ref[c]), std::fabs(get(hs[0]) - ref[c])) << "T " << r.T << " entry " << c;
-    }
+    expectConverging(hs[0], hs[2], w, kTest11b[w]);
   }
   EXPECT_LT(relErr(coefA(hs[2], 2, 2, 2), kA33at4), 0.03) << coefA(hs[2], 2, 2, 2);
   EXPECT_LT(relErr(coefB(hs[2], 2, 2, 2), kB33at4), 0.14) << coefB(hs[2], 2, 2, 2);
+}
+
+}  // namespace
+
+namespace {
+
+// ---- a box: WAMIT's TEST16 barge ----
+// WAMIT User Manual v7.0, Appendix A.16 (TEST16, TEST16a), test16.out and
+// test16a.out of the same distribution and copy as above: a rectangular
+// barge of length 80, beam 10 and draft 5 (half-length 40, half-beam 5),
+// infinite depth, g = 9.80665, rho = 1000, reference point at the centre of
+// the waterplane, higher-order method on three patches (TEST16: the exact
+// geometry of WAMIT's BARGE subroutine; TEST16a: flat patches; 116 unknowns,
+// the two agree to 2e-5), IRR = 0, periods 7 and 8 s (K x 40 = 3.29 and
+// 2.52). The barge's first irregular frequency, K = k coth(k T) with
+// k^2 = (pi/80)^2 + (pi/10)^2, is 0.344 /m, far above K = 0.082 and 0.063.
+// Non-dimensional as WAMIT prints them (L = 1 m): A / (rho L^k),
+// B / (rho omega L^k). TEST16 also has 8 beam modes, whose coupling does not
+// enter the rigid-body coefficients (each radiation problem is solved alone).
+const WamitRow kTest16[] = {
+    {8.0, 3.791854e+02, 1.156354e+02, 3.470387e+03, 2.582374e+03, 2.187064e+06, 2.071857e+03},
+    {7.0, 3.949287e+02, 1.177771e+02, 3.197451e+03, 1.882760e+03, 1.830896e+06, -1.314530e+03}};
+const double kBa = 40, kBb = 5, kBt = 5;  // half-length, half-beam, draft [m]
+
+// adds the grid of nu x nv panels spanning o + s u + t v (s, t in [0, 1]),
+// each reversed when its normal points against out (normals out of the body)
+void addGrid(PanelMesh* m, const double o[3], const double u[3], const double v[3], int nu, int nv,
+             const double out[3]) {
+  int base = (int)m->vert.size() / 3;
+  for (int j = 0; j <= nv; j++)
+    for (int i = 0; i <= nu; i++)
+      for (int k = 0; k < 3; k++) m->vert.push_back(o[k] + u[k] * i / nu + v[k] * j / nv);
+  double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  bool flip = n[0] * out[0] + n[1] * out[1] + n[2] * out[2] < 0;
+  for (int j = 0; j < nv; j++)
+    for (int i = 0; i < nu; i++) {
+      int a = base + j * (nu + 1) + i, b = a + 1, c = b + nu + 1, d = a + nu + 1;
+      if (flip) std::swap(b, d);
+      for (int q : {a, b, c, d}) m->face.push_back(q);
+    }
+}
+
+// the wetted box: nx panels along the length, ny across, nz down
+PanelMesh boxMesh(int nx, int ny, int nz) {
+  PanelMesh m;
+  const double a = kBa, b = kBb, t = kBt;
+  for (int s : {-1, 1}) {
+    const double o1[3] = {-a, s * b, -t}, u1[3] = {2 * a, 0, 0}, v1[3] = {0, 0, t}, n1[3] = {0, (double)s, 0};
+    addGrid(&m, o1, u1, v1, nx, nz, n1);  // sides
+    const double o2[3] = {s * a, -b, -t}, u2[3] = {0, 2 * b, 0}, v2[3] = {0, 0, t}, n2[3] = {(double)s, 0, 0};
+    addGrid(&m, o2, u2, v2, ny, nz, n2);  // ends
+  }
+  const double o3[3] = {-a, -b, -t}, u3[3] = {2 * a, 0, 0}, v3[3] = {0, 2 * b, 0}, n3[3] = {0, 0, -1};
+  addGrid(&m, o3, u3, v3, nx, ny, n3);  // bottom
+  return m;
+}
+
+// meshes 40 x 5 x 3 (470 panels of 2 m x 2 m x 1.67 m) and 80 x 10 x 6
+// (1880), uniform, no lid, at TEST16's two periods (about 11 s in Release).
+// On 1880 panels surge, heave, pitch and the coupling within 3% of TEST16,
+// and each closer to it than on 470 panels
+TEST(PanelWamit, BargeTest16) {
+  const int res[2][3] = {{40, 5, 3}, {80, 10, 6}};
+  std::vector<HydroCoef> hs;
+  for (auto& m : res) {
+    HydroCoef h;
+    h.rho = kRho;
+    h.g = kG;
+    std::vector<double> om = {2 * kPi / kTest16[0].T, 2 * kPi / kTest16[1].T};
+    std::string err;
+    PanelMesh body = boxMesh(m[0], m[1], m[2]);
+    auto t0 = std::chrono::steady_clock::now();
+    EXPECT_TRUE(mjb::panelSolve(body, PanelMesh(), om, {0.0}, &h, &err)) << err;
+    double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("[panel] barge %d x %d x %d: %d panels, %.1f s for 2 periods\n", m[0], m[1], m[2], body.nface(), sec);
+    hs.push_back(h);
+  }
+  for (int w = 0; w < 2; w++) {
+    std::printf("[panel] barge T %.1f s (WAMIT units)\n", kTest16[w].T);
+    printRow("ours 470", &hs[0], w, nullptr);
+    printRow("ours 1880", &hs[1], w, nullptr);
+    printRow("WAMIT TEST16", nullptr, 0, &kTest16[w]);
+  }
+  for (int w = 0; w < 2; w++) {
+    expectRow(hs[1], w, kTest16[w], 0.03);
+    expectConverging(hs[0], hs[1], w, kTest16[w]);
+  }
 }
 
 }  // namespace
