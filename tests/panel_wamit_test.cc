@@ -138,18 +138,18 @@ void printRow(const char* name, const HydroCoef* h, int w, const WamitRow* r) {
 
 // ---- the test (label panel) ----
 
-// meshes 3 x 5 x 32, 6 x 10 x 64 and 9 x 15 x 96 (256, 1024 = WAMIT
-// TEST01's count, 2304 panels), no lid, at WAMIT's three periods (about 20 s
-// in Release). At K R = 0.05 and 1, on 1024 and 2304 panels: surge, heave,
-// pitch and the coupling within 3% of TEST11b, and every one of these entries
-// closer to it on 2304 panels than on 256 (convergence toward the published
-// value). At K R = 4 (2304 panels): A33 within 3% of TEST11, B33 within 14%
-// (the 11% spread of the published runs themselves, above, plus 3%); surge
-// and pitch, spoiled here in ours too (no lid), are printed only.
+// meshes 3 x 5 x 32 and 6 x 10 x 64 (256 and 1024 panels, TEST01's count),
+// no lid, at WAMIT's three periods (about 4 s in Release). At K R = 0.05 and
+// 1 on 1024 panels: surge, heave, pitch and the coupling within 3% of
+// TEST11b, and every one of these entries closer to it than on 256 panels
+// (convergence toward the published value). At K R = 4 (1024 panels): A33
+// within 3% of TEST11, B33 within 14% (the 11% spread of the published runs
+// themselves, above, plus 3%); surge and pitch, spoiled here in ours too (no
+// lid), are printed only.
 TEST(PanelWamit, CylinderTest01) {
   const std::vector<double> per = {kTest11b[0].T, kTest11b[1].T, kT4};
-  const int res[3][3] = {{3, 5, 32}, {6, 10, 64}, {9, 15, 96}};
-  const char* name[3] = {"ours 256", "ours 1024", "ours 2304"};
+  const int res[2][3] = {{3, 5, 32}, {6, 10, 64}};
+  const char* name[2] = {"ours 256", "ours 1024"};
   std::vector<HydroCoef> hs;
   for (auto& m : res) {
     double sec;
@@ -160,18 +160,17 @@ TEST(PanelWamit, CylinderTest01) {
   for (int w = 0; w < 3; w++) {
     std::printf("[panel] T %.6f s, K R %.4f (WAMIT units: A / (rho L^k), B / (rho omega L^k))\n", per[w],
                 hs[0].omega[w] * hs[0].omega[w] / kG * kR);
-    for (int m = 0; m < 3; m++) printRow(name[m], &hs[m], w, nullptr);
+    for (int m = 0; m < 2; m++) printRow(name[m], &hs[m], w, nullptr);
     if (w < 2) printRow("WAMIT TEST11b", nullptr, 0, &kTest11b[w]);
     printRow("WAMIT TEST01", nullptr, 0, &kTest01[w]);
   }
   std::printf("[panel] K R 4: WAMIT TEST11 A33 %.4f B33 %.4e (TEST01 B33 %.4e)\n", kA33at4, kB33at4, kB33at4lo);
   for (int w = 0; w < 2; w++) {
     expectRow(hs[1], w, kTest11b[w], 0.03);
-    expectRow(hs[2], w, kTest11b[w], 0.03);
-    expectConverging(hs[0], hs[2], w, kTest11b[w]);
+    expectConverging(hs[0], hs[1], w, kTest11b[w]);
   }
-  EXPECT_LT(relErr(coefA(hs[2], 2, 2, 2), kA33at4), 0.03) << coefA(hs[2], 2, 2, 2);
-  EXPECT_LT(relErr(coefB(hs[2], 2, 2, 2), kB33at4), 0.14) << coefB(hs[2], 2, 2, 2);
+  EXPECT_LT(relErr(coefA(hs[1], 2, 2, 2), kA33at4), 0.03) << coefA(hs[1], 2, 2, 2);
+  EXPECT_LT(relErr(coefB(hs[1], 2, 2, 2), kB33at4), 0.14) << coefB(hs[1], 2, 2, 2);
 }
 
 }  // namespace
@@ -230,7 +229,7 @@ PanelMesh boxMesh(int nx, int ny, int nz) {
 }
 
 // meshes 40 x 5 x 3 (470 panels of 2 m x 2 m x 1.67 m) and 80 x 10 x 6
-// (1880), uniform, no lid, at TEST16's two periods (about 11 s in Release).
+// (1880), uniform, no lid, at TEST16's two periods (about 8 s in Release).
 // On 1880 panels surge, heave, pitch and the coupling within 3% of TEST16,
 // and each closer to it than on 470 panels
 TEST(PanelWamit, BargeTest16) {
