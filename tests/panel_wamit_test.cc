@@ -1,5 +1,5 @@
 // the panel solver against published coefficients of further bodies (issue
-// 16, docs/physics.md section 13, "Second body: WAMIT's published test
+// 16, docs/physics.md section 13, "Second body, published: WAMIT's test
 // runs"): the floating truncated vertical cylinder R = 1, T = 0.5 of WAMIT's
 // standard test runs TEST01 and TEST11 and the rectangular barge of TEST16,
 // deep water, against the output WAMIT Inc. distributes with the program.
@@ -41,10 +41,10 @@ const double kR = 1, kT = 0.5;           // radius, draft [m]; length scale L = 
 // The reference is TEST11b: WAMIT's higher-order method (B-spline
 // potential, exact analytic geometry) with the nonuniform mapping that
 // concentrates the panels at the bottom edge, where the flow is singular.
-// WAMIT's own coarser runs of the same body approach it monotonically in
-// every entry (low-order TEST01 on 1024 flat panels, then higher-order with
-// uniform mapping TEST11a), and their distance from it is the published
-// data's own discretization spread (printed by the test; docs/physics.md):
+// WAMIT's other runs of the same body (low-order TEST01 on 1024 flat panels;
+// higher-order with uniform mapping TEST11a) lie on the same side of it in
+// every entry, TEST01 farther, and their distance from it is the published
+// data's own discretization spread (TEST01 printed by the test):
 // at K R = 1 TEST01 is +1.1% (A11), +1.5% (B11), +1.7% (A33), -2.2% (B33),
 // +5.6% (A55) off TEST11b, TEST11a +0.5%, +0.6%, +0.7%, -0.8%, +2.9%.
 struct WamitRow {
@@ -146,7 +146,7 @@ void printRow(const char* name, const HydroCoef* h, int w, const WamitRow* r) {
 // within 3% of TEST11, B33 within 14% (the 11% spread of the published runs
 // themselves, above, plus 3%); surge and pitch, spoiled here in ours too (no
 // lid), are printed only.
-TEST(PanelWamit, CylinderTest01) {
+TEST(PanelWamit, Cylinder) {
   const std::vector<double> per = {kTest11b[0].T, kTest11b[1].T, kT4};
   const int res[2][3] = {{3, 5, 32}, {6, 10, 64}};
   const char* name[2] = {"ours 256", "ours 1024"};
@@ -172,10 +172,6 @@ TEST(PanelWamit, CylinderTest01) {
   EXPECT_LT(relErr(coefA(hs[1], 2, 2, 2), kA33at4), 0.03) << coefA(hs[1], 2, 2, 2);
   EXPECT_LT(relErr(coefB(hs[1], 2, 2, 2), kB33at4), 0.14) << coefB(hs[1], 2, 2, 2);
 }
-
-}  // namespace
-
-namespace {
 
 // ---- a box: WAMIT's TEST16 barge ----
 // WAMIT User Manual v7.0, Appendix A.16 (TEST16, TEST16a), test16.out and
@@ -232,7 +228,7 @@ PanelMesh boxMesh(int nx, int ny, int nz) {
 // (1880), uniform, no lid, at TEST16's two periods (about 8 s in Release).
 // On 1880 panels surge, heave, pitch and the coupling within 3% of TEST16,
 // and each closer to it than on 470 panels
-TEST(PanelWamit, BargeTest16) {
+TEST(PanelWamit, Barge) {
   const int res[2][3] = {{40, 5, 3}, {80, 10, 6}};
   std::vector<HydroCoef> hs;
   for (auto& m : res) {
