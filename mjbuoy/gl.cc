@@ -377,6 +377,12 @@ static void seaUniforms(GlBackend* g, const Sea& sea) {
   }
   // flat water needs no dynamic pressure, whatever the model
   trisUniform(g, "linear", int(!sea.kerner && !sea.waves.empty()));
+  // every e^(-2kh) 0 (gwave): B_EXP holds two components' e^(k zs + i
+  // theta) a texel, half the stores (llvmpipe stores lane by lane)
+  bool deep = true;
+  for (const Wave& w : sea.waves) deep = deep && !(sea.depth > 0 && w.k * sea.depth < 17);
+  for (int st : {int(kVerts), int(kTris), kSplit})
+    gl.ProgramUniform1i(g->prog[st], loc(g, st, "paired"), int(deep));
 }
 
 void glSetSea(Buoy* b) {
