@@ -98,11 +98,6 @@ static bool groupSizes(GlBackend* g, std::string* err) {
   return true;
 }
 
-// a piece's series truncation relative to its integrals' scale: some 30
-// float roundings, 50 times below the parity tolerance (1e-4), and one
-// term fewer than 2.5e-7 for most components (docs/physics.md section 11)
-const double kSeriesTol = 2e-6;
-
 // one wave component as the shaders read it; Airy components (kind 1) take
 // no part in the label search: steep 0; e^(-2 k h) for the finite-depth
 // profiles (0 deep, or where k h >= 17: shaders/waveint.glsl WI_KHMAX)
@@ -113,13 +108,13 @@ static GWave gwave(const Wave& w, double depth, double reach) {
           float(w.kind == 0 ? w.steep : 0), 0, 0, 0};
   // the series length of its piece integrals (shaders/waveint.glsl
   // ddSeries): the fewest terms n >= 3 whose first left out, (n + 1) r^n /
-  // (n + 2)!, is below kSeriesTol at the node gap r = k reach; the largest,
-  // 13, covers r = 2.54 (fast components have r <= WI_ROT = 2)
+  // (n + 2)!, is below 2.5e-7 at the node gap r = k reach; the largest,
+  // 13, covers r = 2.17 (fast components have r <= WI_ROT = 2)
   double r = w.k * reach, f = 24;  // f = (n + 2)!
   int n = 3;
   for (; n < 13; n++) {
     f *= n + 2;
-    if (std::pow(kSeriesTol * f / (n + 1), 1.0 / n) >= r) break;
+    if (std::pow(2.5e-7 * f / (n + 1), 1.0 / n) >= r) break;
   }
   o.terms = float(n);
   return o;

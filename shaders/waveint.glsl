@@ -43,7 +43,7 @@ void ddTaylor(vec2 x, vec2 y, out vec2 s0, out vec2 sa, out vec2 sb) {
 }
 
 // the same sums to nt >= 2 terms, nt the same for every invocation (a
-// component's count, gl.cc gwave: the first term left out is below 2e-6
+// component's count, gl.cc gwave: the first term left out is below 2.5e-7
 // of 1 at the largest node gap of the step); one part, about the piece's
 // own corner 0
 void ddSeries(vec2 x, vec2 y, int nt, out vec2 s0, out vec2 sa, out vec2 sb) {
