@@ -107,11 +107,11 @@ static GWave gwave(const Wave& w, double depth, double reach) {
   GWave o{float(w.amp), float(w.k), float(w.omega), 0, float(w.dx), float(w.dy), float(w.kind), e2,
           float(w.kind == 0 ? w.steep : 0), 0, 0, 0};
   // the series length of its piece integrals (shaders/waveint.glsl
-  // ddSeries): the fewest terms n >= 3 whose first left out, (n + 1) r^n /
+  // ddSeries): the fewest terms n >= 4 whose first left out, (n + 1) r^n /
   // (n + 2)!, is below 2.5e-7 at the node gap r = k reach; the largest,
   // 13, covers r = 2.17 (fast components have r <= WI_ROT = 2)
-  double r = w.k * reach, f = 24;  // f = (n + 2)!
-  int n = 3;
+  double r = w.k * reach, f = 120;  // f = (n + 2)!
+  int n = 4;
   for (; n < 13; n++) {
     f *= n + 2;
     if (std::pow(2.5e-7 * f / (n + 1), 1.0 / n) >= r) break;

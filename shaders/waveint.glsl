@@ -17,7 +17,7 @@ vec2 cexp(vec2 z) { return exp(z.x) * vec2(cos(z.y), sin(z.y)); }
 // exp[0,x,y], sa = exp[0,0,x,y], sb = exp[0,x,x,y], as the Taylor series
 // exp[z_1..z_n] = sum_{m>=n-1} h_{m-n+1}(z) / m! (h: complete homogeneous
 // symmetric polynomials; h_n(x,y) = x h_{n-1}(x,y) + y^n, h_n(x,x,y) =
-// x h_{n-1}(x,x,y) + h_n(x,y)) to nt >= 3 terms, nt the same for every
+// x h_{n-1}(x,x,y) + h_n(x,y)) to nt >= 4 terms, nt the same for every
 // invocation (llvmpipe runs a loop with per-lane exits, or a nested loop,
 // in the hot path several times slower than the terms it would save).
 // Counts: a fast component's (gl.cc gwave: the first term left out,
@@ -28,15 +28,24 @@ vec2 cexp(vec2 z) { return exp(z.x) * vec2(cos(z.y), sin(z.y)); }
 const float WI_TAYLOR = 1.0;
 const int WI_TERMS = 9;
 void ddSeries(vec2 x, vec2 y, int nt, out vec2 s0, out vec2 sa, out vec2 sb) {
-  // term n = 1 written out: h_1(x,y) = x + y, h_1(x,x,y) = 2x + y (no
+  // terms n = 1, 2 written out (h_1(x,y) = x + y, h_1(x,x,y) = 2x + y: no
   // complex products)
   vec2 yn = y, g = x + y, u = x + g;
   float f2 = 1.0 / 6.0, f3 = 1.0 / 24.0;  // 1/(n+2)!, 1/(n+3)!
   s0 = vec2(0.5, 0.0) + f2 * g;
   sa = vec2(f2, 0.0) + f3 * g;
   sb = vec2(f2, 0.0) + f3 * u;
-  int n = 2;
-  do {  // nt >= 3; the test at the end: llvmpipe runs a loop's body once more, masked, after a break at the top
+  // term n = 2, always summed (nt >= 4)
+  yn = cmul(y, y);
+  g = cmul(x, g) + yn;
+  u = cmul(x, u) + g;
+  f2 = f3;
+  f3 = 1.0 / 120.0;
+  s0 += f2 * g;
+  sa += f3 * g;
+  sb += f3 * u;
+  int n = 3;
+  do {  // nt >= 4; the test at the end: llvmpipe runs a loop's body once more, masked, after a break at the top
     f2 = f3;
     f3 /= float(n + 3);
     yn = cmul(yn, y);
