@@ -107,11 +107,11 @@ static GWave gwave(const Wave& w, double depth, double reach) {
   GWave o{float(w.amp), float(w.k), float(w.omega), 0, float(w.dx), float(w.dy), float(w.kind), e2,
           float(w.kind == 0 ? w.steep : 0), 0, 0, 0};
   // the series length of its piece integrals (shaders/waveint.glsl
-  // ddSeries): the fewest terms n >= 3 whose first left out, (n + 1) r^n /
+  // ddSeries): the fewest terms n >= 4 whose first left out, (n + 1) r^n /
   // (n + 2)!, is below 2.5e-7 at the node gap r = k reach; the largest,
   // 13, covers r = 2.17 (fast components have r <= WI_ROT = 2)
-  double r = w.k * reach, f = 24;  // f = (n + 2)!
-  int n = 3;
+  double r = w.k * reach, f = 120;  // f = (n + 2)!
+  int n = 4;
   for (; n < 13; n++) {
     f *= n + 2;
     if (std::pow(2.5e-7 * f / (n + 1), 1.0 / n) >= r) break;
@@ -372,6 +372,12 @@ static void seaUniforms(GlBackend* g, const Sea& sea) {
   }
   // flat water needs no dynamic pressure, whatever the model
   trisUniform(g, "linear", int(!sea.kerner && !sea.waves.empty()));
+  // every e^(-2kh) 0 (gwave): B_EXP holds two components' e^(k zs + i
+  // theta) a texel, half the stores (llvmpipe stores lane by lane)
+  bool deep = true;
+  for (const Wave& w : sea.waves) deep = deep && !(sea.depth > 0 && w.k * sea.depth < 17);
+  for (int st : {int(kVerts), int(kTris), kSplit})
+    gl.ProgramUniform1i(g->prog[st], loc(g, st, "paired"), int(deep));
 }
 
 void glSetSea(Buoy* b) {

@@ -28,6 +28,13 @@ uniform samplerBuffer tLab;
 uniform isamplerBuffer tTri;
 uniform samplerBuffer tExp;    // B_EXP
 
+// vertex v's e^L of component w (sea.glsl expTexel): e^(k zs + i theta),
+// e^(-k (zs + 2 h) + i theta)
+vec4 expAt(int v, int w) {
+  vec4 t = texelFetch(tExp, expTexel(v, w));
+  return paired != 0 ? vec4((w & 1) == 0 ? t.xy : t.zw, 0.0, 0.0) : t;
+}
+
 uniform int nchunk;
 uniform float rhog;    // rho g [N/m^3]
 uniform float rho;     // [kg/m^3]
@@ -308,7 +315,7 @@ void wave(inout Tri T, int pc) {
         int w = 0;
         do {
           GWave wv = waveAt(w);
-          vec4 E = texelFetch(tExp, i0 * nwave + w);
+          vec4 E = expAt(i0, w);
           vec2 r = rotation(wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? dx0 : dm0));
           wavePiece(P, wv, vec4(cmul(E.xy, r), cmul(E.zw, r)), false, ps, vs);
         } while (++w < nfast);
@@ -318,7 +325,7 @@ void wave(inout Tri T, int pc) {
       // program, gl.cc kSplit: this loop's body would run at least once)
       for (int w = nfast; w < nwave; w++) {
         GWave wv = waveAt(w);
-        vec4 E = texelFetch(tExp, i0 * nwave + w);
+        vec4 E = expAt(i0, w);
         float ph = wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? dx0 : dm0);
         vec2 r = vec2(cos(ph), sin(ph));
         wavePiece(P, wv, vec4(cmul(E.xy, r), cmul(E.zw, r)), true, ps, vs);

@@ -20,6 +20,14 @@ layout(binding = 0, rgba32f) uniform writeonly imageBuffer iExp;
 
 uniform int nvchunk;
 
+// e^(k zs + i theta) of component w at body b's point x of label a, Wheeler
+// height zs
+vec2 expDeep(int b, int w, vec2 a, vec2 x, float zs) {
+  GWave wv = waveAt(w);
+  float th = thetaAt(wv, phaseAt(b, w), a, x);
+  return exp(wv.k * zs) * vec2(cos(th), sin(th));
+}
+
 void main() {
   int l = int(gl_LocalInvocationID.x);
   // loops past 65535 chunks, GL's guaranteed workgroup count (uniform per group)
@@ -45,14 +53,21 @@ void main() {
       // from which tris.comp turns the cut points')
       float zs = seaStretch(r.z + o.w, eta);
       int w = 0;
-      if (nwave > 0) do {
+      if (paired != 0) {
+        // two components a texel (sea.glsl expTexel), 0 past the last
+        if (nwave > 0) do {
+          vec2 e0 = expDeep(b, w, a, r.xy, zs);
+          vec2 e1 = w + 1 < nwave ? expDeep(b, w + 1, a, r.xy, zs) : vec2(0.0);
+          imageStore(iExp, expTexel(i, w), vec4(e0, e1));
+        } while ((w += 2) < nwave);
+      } else if (nwave > 0) do {
         GWave wv = waveAt(w);
         float th = thetaAt(wv, phaseAt(b, w), a, r.xy), k = wv.k;
         vec2 cs = vec2(cos(th), sin(th));
         // e^(-k (zs + 2h)) = e^(-2kh) / e^(k zs), no second exp: e^(k zs) >=
         // e^(-k h) > e^-17 where e2kh > 0 (zs >= -h)
         float ep = exp(k * zs), em = wv.e2kh > 0.0 ? wv.e2kh / ep : 0.0;
-        imageStore(iExp, i * nwave + w, vec4(ep * cs, em * cs));
+        imageStore(iExp, expTexel(i, w), vec4(ep * cs, em * cs));
       } while (++w < nwave);
     }
   }

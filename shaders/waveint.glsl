@@ -13,47 +13,39 @@ const float WI_KHMAX = 17.0;
 vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
 vec2 cexp(vec2 z) { return exp(z.x) * vec2(cos(z.y), sin(z.y)); }
 
-// nodes 0, x, y within WI_TAYLOR of each other (|x|, |y| <= WI_TAYLOR):
-// s0 = exp[0,x,y], sa = exp[0,0,x,y], sb = exp[0,x,x,y], as the Taylor
-// series exp[z_1..z_n] = sum_{m>=n-1} h_{m-n+1}(z) / m! (h: complete
-// homogeneous symmetric polynomials; h_n(x,y) = x h_{n-1}(x,y) + y^n,
-// h_n(x,x,y) = x h_{n-1}(x,x,y) + h_n(x,y)), WI_TERMS terms: the first left
-// out is below (WI_TERMS + 1) / (WI_TERMS + 2)! = 2.5e-7 of 1 at r = 1,
-// 2e-6 of the sums (1/2, 1/6), far below the parity tolerance (1e-4). A
-// fixed count: llvmpipe runs a loop with per-lane exits (or a nested loop)
-// in the hot path several times slower than the terms it would save
+// nodes 0, x, y within r of each other (|x|, |y|, |y - x| <= r): s0 =
+// exp[0,x,y], sa = exp[0,0,x,y], sb = exp[0,x,x,y], as the Taylor series
+// exp[z_1..z_n] = sum_{m>=n-1} h_{m-n+1}(z) / m! (h: complete homogeneous
+// symmetric polynomials; h_n(x,y) = x h_{n-1}(x,y) + y^n, h_n(x,x,y) =
+// x h_{n-1}(x,x,y) + h_n(x,y)) to nt >= 4 terms, nt the same for every
+// invocation (llvmpipe runs a loop with per-lane exits, or a nested loop,
+// in the hot path several times slower than the terms it would save).
+// Counts: a fast component's (gl.cc gwave: the first term left out,
+// (nt + 1) r^nt / (nt + 2)!, below 2.5e-7 at the step's largest node gap
+// r), or WI_TERMS for a split part (triPart) with r <= WI_TAYLOR: (WI_TERMS
+// + 1) / (WI_TERMS + 2)! = 2.5e-7 of 1 at r = 1, 2e-6 of the sums (1/2,
+// 1/6), far below the parity tolerance (1e-4)
 const float WI_TAYLOR = 1.0;
 const int WI_TERMS = 9;
-void ddTaylor(vec2 x, vec2 y, out vec2 s0, out vec2 sa, out vec2 sb) {
-  vec2 g = vec2(1.0, 0.0), u = g, yn = g;
-  float f2 = 0.5, f3 = 1.0 / 6.0;  // 1/(n+2)!, 1/(n+3)!
-  s0 = f2 * g;
-  sa = f3 * g;
-  sb = f3 * u;
-  for (int n = 1; n < WI_TERMS; n++) {
-    f2 = f3;
-    f3 /= float(n + 3);
-    yn = cmul(yn, y);
-    g = cmul(x, g) + yn;
-    u = cmul(x, u) + g;
-    s0 += f2 * g;
-    sa += f3 * g;
-    sb += f3 * u;
-  }
-}
-
-// the same sums to nt >= 2 terms, nt the same for every invocation (a
-// component's count, gl.cc gwave: the first term left out is below 2.5e-7
-// of 1 at the largest node gap of the step); one part, about the piece's
-// own corner 0
 void ddSeries(vec2 x, vec2 y, int nt, out vec2 s0, out vec2 sa, out vec2 sb) {
-  vec2 g = vec2(1.0, 0.0), u = g, yn = g;
-  float f2 = 0.5, f3 = 1.0 / 6.0;
-  s0 = f2 * g;
-  sa = f3 * g;
-  sb = f3 * u;
-  int n = 1;
-  do {  // nt >= 2; the test at the end: llvmpipe runs a loop's body once more, masked, after a break at the top
+  // terms n = 1, 2 written out (h_1(x,y) = x + y, h_1(x,x,y) = 2x + y: no
+  // complex products)
+  vec2 yn = y, g = x + y, u = x + g;
+  float f2 = 1.0 / 6.0, f3 = 1.0 / 24.0;  // 1/(n+2)!, 1/(n+3)!
+  s0 = vec2(0.5, 0.0) + f2 * g;
+  sa = vec2(f2, 0.0) + f3 * g;
+  sb = vec2(f2, 0.0) + f3 * u;
+  // term n = 2, always summed (nt >= 4)
+  yn = cmul(y, y);
+  g = cmul(x, g) + yn;
+  u = cmul(x, u) + g;
+  f2 = f3;
+  f3 = 1.0 / 120.0;
+  s0 += f2 * g;
+  sa += f3 * g;
+  sb += f3 * u;
+  int n = 3;
+  do {  // nt >= 4; the test at the end: llvmpipe runs a loop's body once more, masked, after a break at the top
     f2 = f3;
     f3 /= float(n + 3);
     yn = cmul(yn, y);
@@ -104,7 +96,7 @@ void triPart(vec2 x, vec2 y, vec2 e0, float a2, int n, int k, inout vec2 S, inou
   vec2 c = up ? vec2(i, j) : vec2(n - i, n - j);   // corner 0 in units 1/n
   float sg = up ? 1.0 : -1.0, fn = float(n);        // corners 1, 2 at c + sg (1,0), (0,1)
   vec2 xs = x / fn, ys = y / fn, s0, sa, sb;
-  ddTaylor(sg * xs, sg * ys, s0, sa, sb);
+  ddSeries(sg * xs, sg * ys, WI_TERMS, s0, sa, sb);
   vec2 e = cmul(e0, cexp(c.x * xs + c.y * ys));
   vec2 m0 = cmul(e, sa), m1 = cmul(e, sb), m2 = cmul(e, s0 - sa - sb);
   float w = a2 / (fn * fn);

@@ -206,6 +206,48 @@ TEST(GlParity, PiecesBeyondTheFirstSeriesBoundRepeatTheStep) {
   }
 }
 
+TEST(GlParity, SpectralSeaDeepAndFiniteDepth) {
+  // a 63-component JONSWAP sea (odd: the deep table's last texel holds one
+  // component, sea.glsl expTexel) in deep water, where the gl table pairs
+  // two components a texel, and at 8 m depth, where it does not; the cpu
+  // backend's direct sum is the reference, to the random scenes' tolerance
+  for (const char* depth : {"", "<numeric name=\"mjbuoy.sea.depth\" data=\"8\"/>"}) {
+    std::string xml =
+        std::string("<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" MJB_MODELS
+                    "/meshes/wigley_576.obj\"/></asset><custom><text name=\"mjbuoy.hulls\" "
+                    "data=\"h*\"/><text name=\"mjbuoy.spectrum.sea.type\" data=\"jonswap\"/>"
+                    "<numeric name=\"mjbuoy.spectrum.sea.hs\" data=\"0.6\"/>"
+                    "<numeric name=\"mjbuoy.spectrum.sea.tp\" data=\"5\"/>"
+                    "<numeric name=\"mjbuoy.spectrum.sea.components\" data=\"63\"/>"
+                    "<numeric name=\"mjbuoy.spectrum.sea.spreading\" data=\"10\"/>") +
+        depth +
+        "</custom><worldbody><body name=\"w\" pos=\"0 0 0.03\"><freejoint/>"
+        "<inertial pos=\"0 0 -0.08\" mass=\"176\" diaginertia=\"6 237 238\"/>"
+        "<geom name=\"hw\" type=\"mesh\" mesh=\"w\"/></body></worldbody></mujoco>";
+    Pair p(xml);
+    ASSERT_TRUE(p.bc && p.bg);
+    double weight = p.mc->body_mass[1] * kG;
+    for (int st = 0; st < 4; st++) {
+      mj_resetData(p.mc, p.dc);
+      mj_resetData(p.mg, p.dg);
+      p.dc->time = p.dg->time = 1.7 * st;
+      mj_step(p.mc, p.dc);
+      mj_step(p.mg, p.dg);
+      const mjtNum* wc = mjb_wrench(p.bc, p.dc);
+      const mjtNum* wg = mjb_wrench(p.bg, p.dg);
+      double fn = 0, tn = 0;
+      for (int j = 0; j < 3; j++) {
+        fn += wc[6 + j] * wc[6 + j];
+        tn += wc[9 + j] * wc[9 + j];
+      }
+      for (int j = 0; j < 3; j++) {
+        EXPECT_NEAR(wg[6 + j], wc[6 + j], std::max(1e-4 * std::sqrt(fn), 1e-4 * weight)) << depth << st;
+        EXPECT_NEAR(wg[9 + j], wc[9 + j], std::max(1e-4 * std::sqrt(tn), 1e-4 * weight)) << depth << st;
+      }
+    }
+  }
+}
+
 TEST(GlParity, WholeRunsAgree) {
   // 10 s: positions within 1 mm, orientation within 0.1 deg
   for (const char* f : {"barge.xml", "wigley.xml"}) {
