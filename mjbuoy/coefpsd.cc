@@ -37,7 +37,7 @@ double projectDamping(HydroCoef* c, const std::string& who, std::vector<std::str
     if (r > 1e-6) nneg++;
     if (r > worst) worst = r, wworst = c->omega[f];
   }
-  if (worst > 1e-6 && warn) {
+  if (worst > kPsdWarn && warn) {
     char pct[32];
     std::snprintf(pct, sizeof(pct), "%.3g", 100 * worst);
     std::string w = who + ": the panel solver's damping B is not positive semi-definite at " +

@@ -599,6 +599,33 @@ TEST(RadAttach, NegativeDampingIsProjectedOutWithAWarning) {
   std::printf("[radattach] removed part %.3g of the largest |B|: %s\n", r, warn[0].c_str());
 }
 
+TEST(RadAttach, SmallNegativeDampingIsProjectedWithoutAWarning) {
+  // a negative eigenvalue of 0.2% of the largest: removed all the same
+  // (Higham 1988, as above), but the removed part (at most 1e4 per entry;
+  // the largest diagonal of B is at least trace / 6 = 1.9e6) is below
+  // kPsdWarn = 1% of the largest |B|, the discretisation error the B_ii
+  // check also tolerates: no warning
+  typedef Eigen::Matrix<double, 6, 6, Eigen::RowMajor> Mat6;
+  Mat6 X;
+  for (int i = 0; i < 36; i++) X(i / 6, i % 6) = std::cos(0.3 + 5.1 * i);
+  Mat6 Q = Eigen::HouseholderQR<Mat6>(X).householderQ();
+  Eigen::Matrix<double, 6, 1> lam, pos;
+  lam << 5e6, 3e6, 2e6, 1e6, 5e5, -1e4;
+  pos = lam.cwiseMax(0.0);
+  Mat6 B = Q * lam.asDiagonal() * Q.transpose(), P = Q * pos.asDiagonal() * Q.transpose();
+  mjb::HydroCoef c;
+  c.omega = {1.0};
+  c.B.assign(B.data(), B.data() + 36);
+  std::vector<std::string> warn;
+  double r = mjb::projectDamping(&c, "radiation of body \"barge\"", &warn);
+  Mat6 out = Eigen::Map<Mat6>(&c.B[0]);
+  EXPECT_LT((out - P).cwiseAbs().maxCoeff(), 1e-9 * 5e6);
+  EXPECT_NEAR(r, (B - P).cwiseAbs().maxCoeff() / B.cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_GT(r, 1e-6);
+  EXPECT_LT(r, mjb::kPsdWarn);
+  EXPECT_TRUE(warn.empty()) << warn[0];
+}
+
 }  // namespace
 }  // namespace mjbt
 
