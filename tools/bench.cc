@@ -61,6 +61,8 @@ static bool addRadiation(mjbBuoy* b, const mjModel* m) {
       return false;
     }
   }
+  // a memory fit that fell back to the convolution says so here
+  std::fputs(mjb_warnings(b), stderr);
   return true;
 }
 static std::string gpress = "linear";  // mjbuoy.sea.pressure: linear or kerner
