@@ -169,7 +169,8 @@ void fitMemory(const HydroCoef& c, double dt, const std::vector<RadBody>& done, 
       if (std::equal(rb->K.begin() + q * nk, rb->K.begin() + (q + 1) * nk, rb->K.begin() + p * nk))
         fit[p] = fit[q], found = true;
     for (const RadBody& o : done) {
-      if (found || o.ss.size() == 0) break;
+      if (found) break;
+      if (o.ss.size() == 0) continue;
       const int q = same(o, p);
       if (q < 0) continue;
       // o's modes of pair q, in o.ss order
