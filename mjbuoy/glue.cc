@@ -527,7 +527,10 @@ std::string mjb::setHydroCoef(mjbBuoy* b, int body, const HydroCoef& c, double t
   if (!b) return "mjbuoy: setHydroCoef was given a NULL model";
   // no callback of this model may run meanwhile: its data lock, exclusive
   std::unique_lock<std::shared_mutex> lk(b->mu);
+  b->b.rad.conv = b->b.cfg.rad.conv;
   std::string e = setRadiation(b->b.m, body, c, tmem, &b->b.rad);
+  for (std::string& n : b->b.rad.note) b->b.warnings += "mjbuoy: warning: " + n + "\n";
+  b->b.rad.note.clear();
   if (!e.empty()) return e;
   // every mjData's history restarts with room for the new memory
   for (auto& kv : b->data) radMakeState(b->b.rad, &kv.second->rad);

@@ -277,8 +277,11 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   err = coefTransform(&c, p, Rd, pn);
   if (!err.empty()) return who + ": " + err;
   checkCoef(B, who, &c);
+  B->rad.conv = rc.conv;
   err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
   if (!err.empty()) return err;
+  for (std::string& n : B->rad.note) B->cfg.warn.push_back(n);
+  B->rad.note.clear();
   if (rc.diffraction) err = setDiffraction(root, Rd, cx, B->wcap, &B->diff);
   if (!err.empty()) return err + " (body \"" + bodyName(m, root) + "\")";
   B->coef.emplace_back(root, std::move(c));

@@ -1,4 +1,4 @@
-// radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, diffraction, cache,
+// radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, diffraction, cache, memorymodel,
 // omega, refine, memory} and mjbuoy.radiation.body.<body> (schema: docs/mjcf.md)
 #include "radconfig.h"
 
@@ -65,6 +65,14 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
     r->cache = text;
     return "";
   }
+  if (!std::strcmp(key, "radiation.memorymodel")) {
+    if (std::strcmp(text, "statespace") && std::strcmp(text, "convolution")) {
+      return "mjbuoy: " + tag("text", name) + " data = \"" + text + "\" is not a memory model; "
+             "give \"statespace\" or \"convolution\", e.g. data=\"convolution\"";
+    }
+    r->conv = !std::strcmp(text, "convolution");
+    return "";
+  }
   bool v = false;
   std::string e = onOff(name, text, &v);
   if (!e.empty()) return e;
@@ -85,7 +93,7 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
   } else {
     return "mjbuoy: unknown entry " + tag("text", name) +
            "; radiation text entries are mjbuoy.radiation, mjbuoy.radiation.lid, "
-           "mjbuoy.radiation.diffraction, mjbuoy.radiation.cache and mjbuoy.radiation.body.<body> (see docs/mjcf.md)";
+           "mjbuoy.radiation.diffraction, mjbuoy.radiation.cache, mjbuoy.radiation.memorymodel and mjbuoy.radiation.body.<body> (see docs/mjcf.md)";
   }
   return "";
 }

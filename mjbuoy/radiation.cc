@@ -145,6 +145,79 @@ void kernels(const HydroCoef& c, double tmem, double dt, RadBody* rb) {
   }
 }
 
+// rb's memory as a state-space model (docs/physics.md section 14,
+// "State-space memory"): each pair's K fitted, or copied from an identical
+// K fitted before (the transposed pair, another body with the same
+// coefficients). Any pair that misses the tolerance leaves rb on the
+// convolution, with a note naming the body and the error
+void fitMemory(const HydroCoef& c, double dt, const std::vector<RadBody>& done, const char* name,
+               RadBody* rb, std::vector<std::string>* note) {
+  rb->ss = SsModes();
+  const int nk = rb->nk;
+  auto same = [&](const RadBody& o, int p) {
+    for (size_t q = 0; q < o.pair.size(); q++)
+      if (o.nk == nk && std::equal(o.K.begin() + q * nk, o.K.begin() + (q + 1) * nk,
+                                   rb->K.begin() + p * nk))
+        return int(q);
+    return -1;
+  };
+  std::vector<KFit> fit(rb->pair.size());
+  for (size_t p = 0; p < rb->pair.size(); p++) {
+    const int i = rb->pair[p] / 6, j = rb->pair[p] % 6;
+    bool found = false;
+    for (size_t q = 0; q < p && !found; q++)
+      if (std::equal(rb->K.begin() + q * nk, rb->K.begin() + (q + 1) * nk, rb->K.begin() + p * nk))
+        fit[p] = fit[q], found = true;
+    for (const RadBody& o : done) {
+      if (found) break;
+      if (o.ss.size() == 0) continue;
+      const int q = same(o, p);
+      if (q < 0) continue;
+      // o's modes of pair q, in o.ss order
+      const int oi = o.pair[q] / 6, oj = o.pair[q] % 6;
+      for (int r = 0; r < o.ss.size(); r++) {
+        if (o.ss.i[r] != oi || o.ss.j[r] != oj) continue;
+        fit[p].p.push_back(std::log(o.ss.lam[r]) / dt);
+        fit[p].c.push_back(o.ss.c[r]);
+      }
+      found = true;
+    }
+    // the pair's scale: sqrt(S_i S_j), S_d the largest diagonal K (L2) or
+    // B (peak) of d's kind (translation or rotation, the same units), so
+    // that a pair that is noise (yaw of a body of revolution) is not held
+    // to its own size
+    double sT = 0, sB = 0;
+    {
+      double S[2][2] = {{0, 0}, {0, 0}};  // [kind of i, j][L2 of K, peak B]
+      for (size_t q = 0; q < rb->pair.size(); q++) {
+        const int d = rb->pair[q] / 6;
+        if (rb->pair[q] != 7 * d) continue;
+        double n2 = 0;
+        for (int k = 0; k < nk; k++) n2 += rb->K[q * nk + k] * rb->K[q * nk + k];
+        for (int e = 0; e < 2; e++) {
+          if (d / 3 != (e ? j : i) / 3) continue;
+          S[e][0] = std::max(S[e][0], std::sqrt(n2));
+          S[e][1] = std::max(S[e][1], maxAbs(c.B, d, d));
+        }
+      }
+      sT = std::sqrt(S[0][0] * S[1][0]);
+      sB = std::sqrt(S[0][1] * S[1][1]);
+    }
+    if (!found && !fitKernel(rb->K.data() + p * nk, nk, dt, c.omega, sT, sB, &fit[p])) {
+      char e[512];
+      std::snprintf(e, sizeof(e), "radiation: body \"%s\": no fit of K_%d%d(t) by up to %d damped "
+                    "exponentials within %g%% (L2 in time) and %g%% (B, A at the table's "
+                    "frequencies); best %.3g%%, %.3g%%; its memory is the convolution (docs/physics.md "
+                    "section 14)", name, i + 1, j + 1, kFitMaxOrder, 100 * kFitTolT, 100 * kFitTolF,
+                    100 * fit[p].errT, 100 * fit[p].errF);
+      note->push_back(e);
+      return;
+    }
+  }
+  for (size_t p = 0; p < rb->pair.size(); p++)
+    rb->ss.add(rb->pair[p] / 6, rb->pair[p] % 6, fit[p], dt);
+}
+
 // MuJoCo factors the dofs of a "simple" body as diagonal: J^T A J is not.
 // Clear their flag and recount the runs of simple dofs (docs/physics.md
 // section 14); the first call keeps the model's flags for restoreModel
@@ -243,6 +316,7 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
   }
   if (tmem == 0) tmem = memoryLength(c);
   kernels(c, tmem, dt, &rb);
+  if (rb.nk && !r->conv) fitMemory(c, dt, r->rb, name, &rb, &r->note);
   clearSimple(m, rb.dof, r);
 
   auto it = std::find_if(r->rb.begin(), r->rb.end(), [&](const RadBody& x) { return x.body == body; });
@@ -253,7 +327,10 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
   }
   r->maxdof = 0;
   r->nh = 1;
-  for (const RadBody& x : r->rb) {
+  r->nmode = 0;
+  for (RadBody& x : r->rb) {
+    x.soff = r->nmode;
+    r->nmode += x.ss.size();
     r->maxdof = std::max(r->maxdof, int(x.dof.size()));
     r->nh = std::max(r->nh, x.nk);
   }
@@ -271,6 +348,9 @@ void radMakeState(const Radiation& r, RadState* s) {
   s->jac.assign(6 * r.maxdof, 0);
   s->ajac.assign(6 * r.maxdof, 0);
   s->told.assign(r.rb.size(), 0);
+  s->ssX.assign(r.nmode, 0);
+  s->ssPw.assign(r.nmode, 0);
+  s->ssNu.assign(12 * r.rb.size(), 0);
   radRestart(s);
 }
 

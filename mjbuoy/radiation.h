@@ -12,6 +12,7 @@
 
 #include "hydrocoef.h"
 #include "mjbuoy.h"
+#include "radfit.h"
 
 namespace mjb {
 
@@ -26,6 +27,8 @@ struct RadBody {
   std::vector<int> pair;     // (i, j) = 6 i + j with a retardation function
   std::vector<double> K;     // K_pair(k dt), pair-major, nk each [N/m, ...]
   int nk = 0;                // memory samples (0: no memory)
+  SsModes ss;                // state-space memory (radfit.h); empty: the convolution
+  int soff = 0;              // its first mode in RadState's ssX, ssPw
 };
 
 // all bodies of one attached model
@@ -35,6 +38,9 @@ struct Radiation {
   int maxdof = 0;            // longest dof chain
   int nh = 1;                // history ring length: the longest memory, >= 1
   std::vector<int> simple0;  // m->dof_simplenum before the first body was set
+  bool conv = false;         // mjbuoy.radiation.memorymodel = convolution: no fit
+  int nmode = 0;             // state-space modes of all bodies
+  std::vector<std::string> note;  // fits that fell back to the convolution
 };
 
 // per mjData: velocity history and the memory force of the current step
@@ -44,6 +50,8 @@ struct RadState {
   std::vector<double> jac;   // scratch: 6 x maxdof body-frame Jacobian columns
   std::vector<double> ajac;  // scratch: A_inf times each column
   std::vector<char> told;    // per body: a non-finite force was named
+  std::vector<cplx> ssX, ssPw;  // per mode: state-space sums (SsState)
+  std::vector<double> ssNu;  // per body 12: first and newest velocity samples
   int head = 0, count = 0;   // newest sample, samples held
   long key = -1;             // mjTIMER_STEP count at the last call (-1: none)
   double tcur = 0;           // time of the current step [s]

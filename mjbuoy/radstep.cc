@@ -186,7 +186,19 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
     // memory: the step's first call records nu and evaluates the convolution
     double* fm = s->fmem.data() + 6 * ib;
     double* hist = s->hist.data() + 6 * r.nh * ib;
-    if (rb.nk && tick != kMid) {
+    if (rb.ss.size() && tick != kMid) {
+      // state-space memory (radss.cc), on the same clock as the history
+      SsState st{s->ssX.data() + rb.soff, s->ssPw.data() + rb.soff, s->ssNu.data() + 12 * ib,
+                 s->ssNu.data() + 12 * ib + 6};
+      if (tick == kRestart) {
+        ssRestart(rb.ss, st, nu);
+      } else if (tick == kNew) {
+        ssNew(rb.ss, st, nu);
+      } else {
+        ssSame(st, nu, s->count == 1);
+      }
+      ssForce(rb.ss, st, r.dt, fm);
+    } else if (rb.nk && tick != kMid) {
       for (int j = 0; j < 6; j++) hist[r.nh * j + s->head] = nu[j];
       memory(rb, hist, r.nh, s->head, s->count, r.dt, fm);
     }

@@ -377,11 +377,22 @@ TEST(Radiation, ForwardFromTheVelocityStageAddsNoSecondAddedMass) {
 }
 
 // the slide body with the memory of Pair, started 1 cm out
+// model: mjbuoy.radiation.memorymodel (docs/physics.md section 14), "" the default
+std::string withModel(std::string x, const char* model) {
+  if (*model)
+    x.replace(x.find("<worldbody>"), 11, std::string("<custom><text name=\"mjbuoy.radiation."
+              "memorymodel\" data=\"") + model + "\"/></custom><worldbody>");
+  return x;
+}
+
 struct Decay {
   Scene s;
-  explicit Decay(const char* integ) : s(slide(integ, 0.001)) {
+  explicit Decay(const char* integ, const char* model = "")
+      : s(withModel(slide(integ, 0.001), model)) {
     if (!s.ok() || mjb::setHydroCoef(s.b, 1, Pair().coef(), 1.0) != "") s.err += " setup";
   }
+  // the memory is the fitted state-space model (radfit.h), not the convolution
+  bool ss() const { return mjb::buoyOf(s.b)->rad.rb[0].ss.size() > 0; }
 };
 
 void run(const mjModel* m, mjData* d, int n) {
@@ -390,10 +401,14 @@ void run(const mjModel* m, mjData* d, int n) {
 
 TEST(Radiation, ResetEmptiesTheMemory) {
   // a rerun after mj_resetData repeats the first run bit for bit: with a
-  // remembered history the memory force would differ
-  Decay D("RK4");
+  // remembered history the memory force would differ; for both memory
+  // models (the state-space states empty as the history does)
+  for (const char* model : {"convolution", "statespace"}) {
+  SCOPED_TRACE(model);
+  Decay D("RK4", model);
   Scene& s = D.s;
   ASSERT_TRUE(s.ok()) << s.err;
+  EXPECT_EQ(D.ss(), model[0] == 's');
   s.d->qpos[0] = 0.01;
   run(s.m, s.d, 400);
   double x1 = s.d->qpos[0], v1 = s.d->qvel[0];
@@ -408,16 +423,20 @@ TEST(Radiation, ResetEmptiesTheMemory) {
   t.d->qpos[0] = 0.01;
   run(t.m, t.d, 400);
   EXPECT_GT(std::fabs(t.d->qpos[0] - x1), 1e-4);
+  }
 }
 
 TEST(Radiation, CopiedStateContinuesIdentically) {
   // mj_copyData + mjb_copyData halfway: the copy's second half is the
   // original's bit for bit (history included), under RK4 and Euler, and with
   // an extra mj_forward between steps (a viewer's) changing nothing
+  for (const char* model : {"convolution", "statespace"})
   for (const char* integ : {"RK4", "Euler"}) {
-    Decay D(integ);
+    SCOPED_TRACE(model);
+    Decay D(integ, model);
     Scene& s = D.s;
     ASSERT_TRUE(s.ok()) << s.err;
+    EXPECT_EQ(D.ss(), model[0] == 's');
     s.d->qpos[0] = 0.01;
     run(s.m, s.d, 300);
     mjData* c = mj_makeData(s.m);

@@ -34,6 +34,7 @@ using Clock = std::chrono::steady_clock;
 static int gthreads = -1;  // mjbuoy.threads, -1: leave it out (auto)
 static std::string gsea = "swell";  // flat, swell (one Gerstner wave) or jonswap
 static double gradiation = -1;  // --radiation: memory length [s]; < 0: off
+static std::string gradmem;     // --radiation-memory: mjbuoy.radiation.memorymodel, "": default
 
 // --radiation: every boat gets synthetic coefficients of the Wigley's
 // size (docs/physics.md section 14): A_inf on the diagonal, and B of each
@@ -60,6 +61,8 @@ static bool addRadiation(mjbBuoy* b, const mjModel* m) {
       return false;
     }
   }
+  // a memory fit that fell back to the convolution says so here
+  std::fputs(mjb_warnings(b), stderr);
   return true;
 }
 static std::string gpress = "linear";  // mjbuoy.sea.pressure: linear or kerner
@@ -84,6 +87,7 @@ static std::string scene(const std::string& meshes, int boats, int tris) {
     << "<text name=\"mjbuoy.hulls\" data=\"h*\"/>"
     << seaEntries() << "<text name=\"mjbuoy.sea.pressure\" data=\"" << gpress << "\"/>";
   if (gthreads >= 0) s << "<numeric name=\"mjbuoy.threads\" data=\"" << gthreads << "\"/>";
+  if (!gradmem.empty()) s << "<text name=\"mjbuoy.radiation.memorymodel\" data=\"" << gradmem << "\"/>";
   s << "</custom><worldbody>";
   int side = std::ceil(std::sqrt(boats));
   for (int i = 0; i < boats; i++) {
@@ -341,6 +345,10 @@ static int compareGrid(const std::string& base, const std::string& meshes,
             common.push_back("--radiation");
             common.push_back(num(gradiation, "%.17g"));
           }
+          if (!gradmem.empty()) {
+            common.push_back("--radiation-memory");
+            common.push_back(gradmem);
+          }
           CmpCell c{be, kind.first, kind.second, nb, t};
           if (!compareCell(exe, base, common, dir, reps, &c)) {
             rc = 1;
@@ -458,6 +466,10 @@ int main(int argc, char** argv) {
   app.add_option("--radiation", gradiation, "give every boat synthetic radiation coefficients "
                  "with this memory length [s] (0: added mass and its Kirchhoff terms only)")
       ->check(Finite(0, 60));
+  app.add_option("--radiation-memory", gradmem, "with --radiation: the memory model "
+                 "(mjbuoy.radiation.memorymodel): statespace (the default, a fitted "
+                 "state-space model) or convolution")
+      ->check(CLI::IsMember({"statespace", "convolution"}));
   std::string baseline;
   app.add_option("--baseline", baseline, "another build's mjbuoy-bench binary: run every cell "
                  "with both, one repetition each in turn (A/B/A/B as child processes), and "

@@ -1,0 +1,162 @@
+// the radiation memory as a state-space model (docs/physics.md section 14,
+// "State-space memory"): the fit of K(t) by damped exponentials and the
+// per-step states against the convolution
+#include <cmath>
+#include <complex>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "buoy.h"
+#include "hemisphere.h"
+#include "radfit.h"
+#include "radiation.h"
+#include "testutil.h"
+
+namespace mjbt {
+namespace {
+
+using mjb::cplx;
+
+// trapezoid convolution of K (samples at h, the first nu at index 0, the
+// body at rest before it) with nu up to index n: -h sum_k w_k K_k nu_{n-k},
+// w = 1/2 at both ends (the convolution of radstep.cc, memory())
+double convolve(const std::vector<double>& K, const std::vector<double>& nu, int n, double h) {
+  const int N = std::min<int>(n + 1, K.size());
+  if (N < 2) return 0;
+  double s = 0;
+  for (int k = 0; k < N; k++) s += (k == 0 || k == N - 1 ? 0.5 : 1) * K[k] * nu[n - k];
+  return -h * s;
+}
+
+// a smooth random velocity: white noise through two first-order lags of
+// time constant tau [s], scaled to unit RMS
+std::vector<double> randomVelocity(int n, double h, double tau, unsigned seed) {
+  std::mt19937 g(seed);
+  std::normal_distribution<double> N(0, 1);
+  std::vector<double> v(n);
+  double a = 0, b = 0, s2 = 0, q = h / tau;
+  for (int k = 0; k < n; k++) {
+    a += q * (N(g) - a);
+    b += q * (a - b);
+    v[k] = b;
+    s2 += b * b;
+  }
+  for (double& x : v) x /= std::sqrt(s2 / n);
+  return v;
+}
+
+// (a) K(t) = Re(c1 e^{p1 t}) + c2 e^{p2 t}, an oscillating and a plain
+// damped mode: the fit finds both poles (the exponentials are the exact
+// answer, so any error is the method's), and the state-space force is the
+// trapezoid convolution of K with a random velocity to round-off (the
+// discretisation of section 14 is exact for sampled K)
+TEST(RadFit, TwoDampedModesAreRecoveredAndConvolvedExactly) {
+  const cplx p1(-0.8, 4.0), c1(10, -3), p2(-3.0), c2(-4.0);
+  const double h = 0.01;
+  const int n = 4001;  // 40 s: e^{-0.8 * 40} = 1e-14, the memory is complete
+  std::vector<double> K(n);
+  for (int k = 0; k < n; k++)
+    K[k] = (c1 * std::exp(p1 * (k * h))).real() + (c2 * std::exp(p2 * (k * h))).real();
+  std::vector<double> w;
+  for (double x = 0.5; x <= 12; x += 0.5) w.push_back(x);
+  mjb::KFit f;
+  ASSERT_TRUE(mjb::fitKernel(K.data(), n, h, w, 0, 0, &f));
+  ASSERT_EQ(f.p.size(), 2u);
+  for (cplx p : {p1, p2}) {
+    double best = INFINITY;
+    for (cplx q : f.p) best = std::min(best, std::abs(q - p) / std::abs(p));
+    EXPECT_LT(best, 1e-3) << p;
+  }
+  EXPECT_LT(f.errT, 1e-6);
+  std::printf("[radfit] poles %g%+gi, %g%+gi; errT %.2e errF %.2e\n", f.p[0].real(),
+              f.p[0].imag(), f.p[1].real(), f.p[1].imag(), f.errT, f.errF);
+
+  mjb::SsModes sm;
+  sm.add(2, 2, f, h);
+  std::vector<cplx> X(sm.size()), pw(sm.size());
+  double nu6[6] = {0}, first[6], last[6], F[6];
+  mjb::SsState st{X.data(), pw.data(), first, last};
+  const int ns = 3000;
+  std::vector<double> v = randomVelocity(ns, h, 0.2, 7);
+  v[0] = 0.7;  // the first sample's half weight matters too
+  double e2 = 0, f2 = 0;
+  for (int k = 0; k < ns; k++) {
+    nu6[2] = v[k];
+    if (k == 0) mjb::ssRestart(sm, st, nu6);
+    else mjb::ssNew(sm, st, nu6);
+    mjb::ssForce(sm, st, h, F);
+    const double Fc = convolve(K, v, k, h);
+    e2 += (F[2] - Fc) * (F[2] - Fc);
+    f2 += Fc * Fc;
+  }
+  std::printf("[radfit] state-space vs convolution: rms difference %.2e of rms force %.3g\n",
+              std::sqrt(e2 / f2), std::sqrt(f2 / ns));
+  EXPECT_LT(std::sqrt(e2 / f2), 1e-6);
+}
+
+// (b) the panel solver's coefficients of the R = 1 m hemisphere (as in
+// RadAttach.HemisphereHeaveDecayMatchesHulme): its memory force from the
+// fitted state-space model and from the sampled K (the convolution, the
+// reference) over 20 s of a random velocity in all six dofs, within 3% of
+// the convolution's RMS force (the largest of the dof's kind)
+TEST(RadFit, HemisphereStateSpaceMatchesTheConvolution) {
+  Scene s(floatingHemisphereXML(1, kRho, std::string(kNoDragEntries) +
+                                "<text name=\"mjbuoy.radiation\" data=\"on\"/>"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  const mjb::Radiation& R = mjb::buoyOf(s.b)->rad;
+  ASSERT_EQ(R.rb.size(), 1u);
+  const mjb::RadBody& rb = R.rb[0];
+  ASSERT_GT(rb.nk, 1);
+  ASSERT_GT(rb.ss.size(), 0) << mjb_warnings(s.b);
+  const double h = R.dt;
+  std::printf("[radfit] hemisphere: %zu pairs, %d samples, %d modes\n", rb.pair.size(), rb.nk,
+              rb.ss.size());
+  const int ns = int(20 / h);
+  std::vector<std::vector<double>> v(6);
+  for (int j = 0; j < 6; j++) v[j] = randomVelocity(ns, h, 0.3, 11 + j);
+  std::vector<cplx> X(rb.ss.size()), pw(rb.ss.size());
+  double first[6], last[6], nu6[6], F[6];
+  mjb::SsState st{X.data(), pw.data(), first, last};
+  double e2[6] = {0}, f2[6] = {0};
+  for (int k = 0; k < ns; k++) {
+    for (int j = 0; j < 6; j++) nu6[j] = v[j][k];
+    if (k == 0) mjb::ssRestart(rb.ss, st, nu6);
+    else mjb::ssNew(rb.ss, st, nu6);
+    mjb::ssForce(rb.ss, st, h, F);
+    double Fc[6] = {0};
+    for (size_t p = 0; p < rb.pair.size(); p++) {
+      std::vector<double> K(rb.K.begin() + p * rb.nk, rb.K.begin() + (p + 1) * rb.nk);
+      Fc[rb.pair[p] / 6] += convolve(K, v[rb.pair[p] % 6], k, h);
+    }
+    for (int i = 0; i < 6; i++) {
+      e2[i] += (F[i] - Fc[i]) * (F[i] - Fc[i]);
+      f2[i] += Fc[i] * Fc[i];
+    }
+  }
+  // the scale of dof i: the largest RMS force of its kind (translation or
+  // rotation), so that yaw, nothing but panel noise on a body of
+  // revolution, is held to the roll and pitch moments' size
+  for (int i = 0; i < 6; i++) {
+    double sc = 0;
+    for (int k = 3 * (i / 3); k < 3 * (i / 3) + 3; k++) sc = std::max(sc, f2[k]);
+    std::printf("[radfit] dof %d: rms difference %.4f of rms force %.4g (scale %.4g)\n", i,
+                std::sqrt(e2[i] / f2[i]), std::sqrt(f2[i] / ns), std::sqrt(sc / ns));
+    EXPECT_LT(std::sqrt(e2[i] / sc), 0.03) << "dof " << i;
+  }
+}
+
+// the switch: a value other than statespace or convolution is refused,
+// naming the entry, the value and the accepted values
+TEST(RadFit, MemoryModelEntryIsValidated) {
+  Scene s("<mujoco><custom><text name=\"mjbuoy.radiation.memorymodel\" data=\"prony\"/>"
+          "</custom><worldbody/></mujoco>");
+  EXPECT_FALSE(s.ok());
+  for (const char* w : {"mjbuoy.radiation.memorymodel", "prony", "statespace", "convolution"})
+    EXPECT_NE(s.err.find(w), std::string::npos) << s.err;
+}
+
+}  // namespace
+}  // namespace mjbt
