@@ -258,7 +258,9 @@ TEST(RadAttach, HemisphereHeaveDecayMatchesHulme) {
     std::printf("heave inertia / m = %.4f\n", qm / m);
     // the memory is the fitted state-space model (the default; docs/physics.md
     // section 14), which this decay then checks against Hulme
-    if (rad) EXPECT_GT(mjb::buoyOf(s.b)->rad.rb.at(0).ss.size(), 0) << mjb_warnings(s.b);
+    if (rad) {
+      EXPECT_GT(mjb::buoyOf(s.b)->rad.rb.at(0).ss.size(), 0) << mjb_warnings(s.b);
+    }
     std::vector<double> t, x;
     decay(s, 12, &t, &x);
     ASSERT_GE(t.size(), 8u);
