@@ -9,6 +9,7 @@
 #include "pool.h"
 #include "pressure.h"
 #include "rigid.h"
+#include "seavec.h"
 #include "vmath.h"
 #include "waveint.h"
 #include "wavepress.h"
@@ -33,13 +34,13 @@ static size_t maxVerts(const Buoy& b) {
 // exponent, two at finite depth (waveint.h; depth does not change after attach)
 static size_t eStride(const Sea& sea) { return sea.depth > 0 ? 4 : 2; }
 
-// per thread: 4 per wave for solve(), then x, y, a0, a1, z, stretched
+// per thread: 4 + kLaneTmp per wave for solve() and solveMany(), then x, y, a0, a1, z, stretched
 // height z' and 2 per wave (phases) for every point of a hull, e^L
 // (eStride per wave) for every vertex of a hull, and 2 per wave of exp
 // arguments
 static size_t scratchSize(const Buoy& b) {
   size_t nw = std::max(b.wcap, b.cfg.sea.waves.size());
-  return 6 * nw + (6 + 2 * nw) * maxItems(b) + eStride(b.cfg.sea) * nw * maxVerts(b);
+  return (6 + kLaneTmp) * nw + (6 + 2 * nw) * maxItems(b) + eStride(b.cfg.sea) * nw * maxVerts(b);
 }
 
 void makeState(const Buoy& b, State* s) {
@@ -282,7 +283,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   // all vertices at once (structure of arrays)
   const size_t nw = sea.waves.size(), mi = s->mi;
   HullScr hs;
-  hs.X = sc + 4 * nw;
+  hs.X = sc + (4 + kLaneTmp) * nw;
   hs.Y = hs.X + mi;
   hs.A0 = hs.Y + mi;
   hs.A1 = hs.A0 + mi;
