@@ -1,5 +1,6 @@
 // cpu backend: the reference implementation every other backend must match
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -86,6 +87,7 @@ void makeState(const Buoy& b, State* s) {
   s->scr.assign(s->per * std::max(1, b.nthreads), 0);
   s->nsolve.assign(std::max(1, b.nthreads), 0);
   s->niter.assign(std::max(1, b.nthreads), 0);
+  s->vsec.assign(std::max(1, b.nthreads), 0);
   s->key = -1;
   s->hasPrev = false;
 }
@@ -281,6 +283,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   // the label search starts from the vertex's label offset of the last
   // step (zero after a restart), which moves by mm per step, and runs for
   // all vertices at once (structure of arrays)
+  const auto tv0 = std::chrono::steady_clock::now();
   const size_t nw = sea.waves.size(), mi = s->mi;
   HullScr hs;
   hs.X = sc + (4 + kLaneTmp) * nw;
@@ -324,6 +327,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
                   hs.arg);
     }
   }
+  s->vsec[slot] += std::chrono::duration<double>(std::chrono::steady_clock::now() - tv0).count();
 
   // the hull's flow: its COM velocity relative to the water there; the
   // wetted length L is the wet extent along it (body x when at rest)
