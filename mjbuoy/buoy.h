@@ -102,6 +102,9 @@ struct State {
   // per thread: surface solves done and Newton steps they took (cpu
   // backend; mjbuoy-bench reports steps per solve)
   std::vector<long> nsolve, niter;
+  // per thread: wall seconds in the vertex stage (cpu backend: transform,
+  // surface search, e^L at wet vertices; mjbuoy-bench reports it)
+  std::vector<double> vsec;
   double crest = 0;            // highest possible surface height [m]
   std::vector<char> bad;       // per body: state not finite in the last call
   std::vector<char> told;      // per body: already named in notices
@@ -146,6 +149,9 @@ void makeState(const Buoy& b, State* s);
 // the cpu backend's surface solves for d so far and the Newton steps they
 // took (glue.cc; tools only): false if d has no state
 bool newtonStats(const mjbBuoy* b, const mjData* d, long* solves, long* steps);
+// the cpu backend's seconds in the vertex stage for d so far, all threads
+// (glue.cc; tools only): false if d has no state
+bool vertexSeconds(const mjbBuoy* b, const mjData* d, double* sec);
 
 // cpu backend: fill s->wrench and s->part from d's current state
 void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s);

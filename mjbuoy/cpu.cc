@@ -1,5 +1,6 @@
 // cpu backend: the reference implementation every other backend must match
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -9,6 +10,7 @@
 #include "pool.h"
 #include "pressure.h"
 #include "rigid.h"
+#include "seavec.h"
 #include "vmath.h"
 #include "waveint.h"
 #include "wavepress.h"
@@ -33,13 +35,18 @@ static size_t maxVerts(const Buoy& b) {
 // exponent, two at finite depth (waveint.h; depth does not change after attach)
 static size_t eStride(const Sea& sea) { return sea.depth > 0 ? 4 : 2; }
 
-// per thread: 4 per wave for solve(), then x, y, a0, a1, z, stretched
-// height z' and 2 per wave (phases) for every point of a hull, e^L
-// (eStride per wave) for every vertex of a hull, and 2 per wave of exp
-// arguments
+// wet vertices whose e^L one vExp call computes (vertexWaves): a call per
+// vertex cost more than the exp itself on a one-component sea
+enum { kExpChunk = 32 };
+
+// per thread: 4 + kLaneTmp per wave for solve() and solveMany() (seavec.h),
+// then x, y, a0, a1, z, stretched height z' and 2 per wave (phases) for
+// every point of a hull, e^L (eStride per wave) for every vertex of a
+// hull, and 2 per wave per vertex of a chunk of exp arguments
 static size_t scratchSize(const Buoy& b) {
   size_t nw = std::max(b.wcap, b.cfg.sea.waves.size());
-  return 6 * nw + (6 + 2 * nw) * maxItems(b) + eStride(b.cfg.sea) * nw * maxVerts(b);
+  return (4 + kLaneTmp + 2 * kExpChunk) * nw + (6 + 2 * nw) * maxItems(b) +
+         eStride(b.cfg.sea) * nw * maxVerts(b);
 }
 
 void makeState(const Buoy& b, State* s) {
@@ -85,6 +92,7 @@ void makeState(const Buoy& b, State* s) {
   s->scr.assign(s->per * std::max(1, b.nthreads), 0);
   s->nsolve.assign(std::max(1, b.nthreads), 0);
   s->niter.assign(std::max(1, b.nthreads), 0);
+  s->vsec.assign(std::max(1, b.nthreads), 0);
   s->key = -1;
   s->hasPrev = false;
 }
@@ -146,24 +154,33 @@ struct HullScr {
   double *X, *Y, *A0, *A1, *Z, *ZS, *SC, *E, *arg;
 };
 
-// e^L of every component at a wet vertex (waveint.h): L = k z' + i theta,
-// and at finite depth also -k (z' + 2 h) + i theta; one exp per component
-// and exponent (vectorised), the phases' sin and cos from the label search
-static void vertexWaves(const WaveTab& t, size_t nw, double zs,
-                        const double* sc, double* E, double* arg) {
-  const int n = t.n;
-  for (int j = 0; j < n; j++) arg[j] = t.k[j] * zs;
-  if (t.finite) {
-    for (int j = 0; j < n; j++) arg[n + j] = -t.k[j] * (zs + 2 * t.depth);
+// e^L of every component at the wet vertices wq[0, nq) of a hull (waveint.h):
+// L = k z' + i theta, and at finite depth also -k (z' + 2 h) + i theta; one
+// exp per component and exponent (vectorised, all the chunk's at once), the
+// phases' sin and cos from the label search; arg: 2 n kExpChunk scratch
+static void vertexWaves(const WaveTab& t, size_t nw, size_t stride, const HullScr& hs,
+                        const int* wq, int nq, double* arg) {
+  const int n = t.n, nf = t.finite ? 2 : 1;
+  for (int c = 0; c < nq; c++) {
+    const double zs = hs.ZS[wq[c]];
+    double* a = arg + nf * n * c;
+    for (int j = 0; j < n; j++) a[j] = t.k[j] * zs;
+    if (t.finite) {
+      for (int j = 0; j < n; j++) a[n + j] = -t.k[j] * (zs + 2 * t.depth);
+    }
   }
-  vExp(t.finite ? 2 * n : n, arg, arg);
-  for (int f = 0; f < (t.finite ? 2 : 1); f++) {
-    double* er = E + 2 * f * nw;
-    double* ei = er + nw;
-    for (int j = 0; j < n; j++) {
-      const int i = t.perm[j];
-      er[j] = arg[f * n + j] * sc[2 * i + 1];
-      ei[j] = arg[f * n + j] * sc[2 * i];
+  vExp(nf * n * nq, arg, arg);
+  for (int c = 0; c < nq; c++) {
+    const double* sc = hs.SC + 2 * nw * wq[c];
+    const double* a = arg + nf * n * c;
+    for (int f = 0; f < nf; f++) {
+      double* er = hs.E + stride * nw * wq[c] + 2 * f * nw;
+      double* ei = er + nw;
+      for (int j = 0; j < n; j++) {
+        const int i = t.perm[j];
+        er[j] = a[f * n + j] * sc[2 * i + 1];
+        ei[j] = a[f * n + j] * sc[2 * i];
+      }
     }
   }
 }
@@ -280,9 +297,10 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   // the label search starts from the vertex's label offset of the last
   // step (zero after a restart), which moves by mm per step, and runs for
   // all vertices at once (structure of arrays)
+  const auto tv0 = std::chrono::steady_clock::now();
   const size_t nw = sea.waves.size(), mi = s->mi;
   HullScr hs;
-  hs.X = sc + 4 * nw;
+  hs.X = sc + (4 + kLaneTmp) * nw;
   hs.Y = hs.X + mi;
   hs.A0 = hs.Y + mi;
   hs.A1 = hs.A0 + mi;
@@ -307,6 +325,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   }
   s->niter[slot] += sea.solveMany(wn, hl.nv, X, Y, A0, A1, Z, hs.SC, tmp);
   s->nsolve[slot] += hl.nv + 1;  // and the COM's below
+  int wq[kExpChunk], nq = 0;
   for (int q = 0; q < hl.nv; q++) {
     const int i = hl.v0 + q;
     s->lab[2 * i] = A0[q];
@@ -319,10 +338,15 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     // wet vertices (h <= 0) can be a wet piece's corner 0: e^L there
     if (nw > 0 && s->h[i] <= 0) {
       hs.ZS[q] = stretch(sea.depth, s->rel[3 * i + 2] + com[2] - sea.level, Z[q] - sea.level);
-      vertexWaves(s->tab, nw, hs.ZS[q], hs.SC + 2 * nw * q, hs.E + eStride(sea) * nw * q,
-                  hs.arg);
+      wq[nq++] = q;
+      if (nq == kExpChunk) {
+        vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg);
+        nq = 0;
+      }
     }
   }
+  if (nq > 0) vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg);
+  s->vsec[slot] += std::chrono::duration<double>(std::chrono::steady_clock::now() - tv0).count();
 
   // the hull's flow: its COM velocity relative to the water there; the
   // wetted length L is the wet extent along it (body x when at rest)

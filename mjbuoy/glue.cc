@@ -539,6 +539,14 @@ std::string mjb::setHydroCoef(mjbBuoy* b, int body, const HydroCoef& c, double t
 
 const mjb::Buoy* mjb::buoyOf(const mjbBuoy* b) { return b ? &b->b : nullptr; }
 
+bool mjb::vertexSeconds(const mjbBuoy* b, const mjData* d, double* sec) {
+  State* s = b ? state(const_cast<mjbBuoy*>(b), d, false) : nullptr;
+  if (!s) return false;
+  *sec = 0;
+  for (double v : s->vsec) *sec += v;
+  return true;
+}
+
 bool mjb::newtonStats(const mjbBuoy* b, const mjData* d, long* solves, long* steps) {
   State* s = b ? state(const_cast<mjbBuoy*>(b), d, false) : nullptr;
   if (!s) return false;

@@ -4,6 +4,8 @@
 
 #include <vector>
 
+#include "wavenow.h"
+
 namespace mjb {
 
 // one wave component, as given in MJCF plus derived constants: Gerstner
@@ -22,19 +24,6 @@ struct Wave {
   double dx, dy;   // unit direction
   double ph;       // phase [rad]
   int kind = 0;      // 0 Gerstner (trochoidal), 1 Airy (linear)
-};
-
-// per-call constants of one component at a fixed time t (Sea::now), so the
-// hot loops do no per-wave setup; products keep label()'s association so a
-// cold solve gives the same bits as label() + heightOf()
-struct WaveNow {
-  double k, dx, dy;  // wave number [rad/m], unit direction
-  double wt, ph;     // omega t, phase [rad]
-  double qx, qy;     // Q A dx, Q A dy [m]
-  double qk;         // Q A k [1]
-  double amp;        // A [m]
-  double qao, ao;    // Q A omega, A omega [m/s]
-  double aoo;        // A omega^2 [m/s^2]
 };
 
 // Wheeler (1970) stretching: the height z' in [-h, 0] at which the linear
@@ -100,7 +89,9 @@ struct Sea {
   // solve() for m points, same bits: positions x, y; guesses in a0, a1
   // become labels; z gets heights and sc 2 per wave per point (point-major,
   // as solve's sc); tmp is scratch of 2 per wave. Returns the Newton steps
-  // taken in all
+  // taken in all. tmp: 2 + kLaneTmp (seavec.h) per wave, the vector path
+  // (vmath.h's level: AVX2 or AVX-512) runs the same steps per point in
+  // lanes and rounds differently (libmvec's sin and cos, FMA)
   long solveMany(const WaveNow* w, int m, const double* x, const double* y, double* a0,
                  double* a1, double* z, double* sc, double* tmp) const;
   // velocity() and acceleration (acc may be null) from the phases solve()

@@ -233,7 +233,7 @@ def options(tools, models, tmp):
     check(p.returncode == 0 and len(rows) == 1, "mjbuoy-bench --baseline: exit 0, one row")
     if rows:
         c = [x.strip() for x in rows[0].strip().strip("|").split("|")]
-        check(len(c) == 17 and all(float(x) > 0 for x in c[5:14] + c[16:]),
+        check(len(c) == 20 and all(float(x) > 0 for x in c[5:14] + c[16:]),
               "mjbuoy-bench --baseline: times and ratios positive (%s)" % c)
         check(c[14] != "" and c[14] == c[15], "the same build's Newton steps per solve on both sides")
     no_temps(tmp, "mjbuoy-bench --baseline")

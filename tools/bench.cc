@@ -136,6 +136,7 @@ struct Cell {
   double hydro, step, bare;  // ms per step (median of repetitions)
   double cpu;                // CPU ms (all threads) in mjbuoy per step (median)
   double newton;             // cpu backend: Newton steps per surface solve (NaN: none)
+  double vertex;             // cpu backend: ms per step in the vertex stage, all threads
   std::vector<std::pair<std::string, double>> stages;
 };
 
@@ -197,6 +198,8 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
   for (int i = 0; i < warm; i++) mj_step(m, d);
   long ns0 = 0, ni0 = 0, ns1 = 0, ni1 = 0;
   mjb::newtonStats(b, d, &ns0, &ni0);
+  double vs0 = 0, vs1 = 0;
+  mjb::vertexSeconds(b, d, &vs0);
   for (int r = 0; r < reps; r++) {
     ghydro = gcpu = 0;
     auto t0 = Clock::now();
@@ -209,6 +212,7 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
   }
   mjcb_passive = ginner;
   mjb::newtonStats(b, d, &ns1, &ni1);
+  mjb::vertexSeconds(b, d, &vs1);
   if (!why.empty()) {
     std::fprintf(stderr, "mjbuoy-bench: %d boats x %d triangles on %s diverged: %s\n", boats,
                  tris, be.c_str(), why.c_str());
@@ -223,7 +227,8 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
   int ns = mjb_stageTimes(b, sn, ms, 8);
   *c = Cell{boats, tris, mjb_info(b).ntri, mjb_info(b).backend, gsea, gpress, median(hydro),
             median(full), median(bare), median(cpu),
-            ns1 > ns0 ? double(ni1 - ni0) / (ns1 - ns0) : NAN, {}};
+            ns1 > ns0 ? double(ni1 - ni0) / (ns1 - ns0) : NAN,
+            vs1 > vs0 ? (vs1 - vs0) * 1e3 / (double(steps) * reps) : NAN, {}};
   for (int i = 0; i < ns; i++) c->stages.emplace_back(sn[i], ms[i]);
   mjb_unbindData(b, d);
   mj_deleteData(d);
@@ -255,12 +260,13 @@ struct CmpCell {
   double cpu = 0, bcpu = 0, cratio = 0;  // CPU time of all threads in mjbuoy
   int ntri = 0;
   double newton = NAN, bnewton = NAN;
+  double vertex = NAN, bvertex = NAN, vratio = NAN;  // vertex stage ms (cpu backend)
 };
 
 static bool compareCell(const std::string& self, const std::string& base,
                         const std::vector<std::string>& common, const std::string& dir,
                         int reps, CmpCell* c) {
-  std::vector<double> ha, hb, sa, sb, rh, rs, ca, cb, rc;
+  std::vector<double> ha, hb, sa, sb, rh, rs, ca, cb, rc, va, vb, rv;
   mjbtool::CmpRun a, b;
   for (int r = 0; r < reps; r++) {
     std::string e;
@@ -278,7 +284,13 @@ static bool compareCell(const std::string& self, const std::string& base,
     ca.push_back(a.cpu);
     cb.push_back(b.cpu);
     rc.push_back(b.cpu / a.cpu);
+    va.push_back(a.vertex);
+    vb.push_back(b.vertex);
+    rv.push_back(b.vertex / a.vertex);
   }
+  c->vertex = median(va);
+  c->bvertex = median(vb);
+  c->vratio = median(rv);
   c->cpu = median(ca);
   c->bcpu = median(cb);
   c->cratio = median(rc);
@@ -326,8 +338,9 @@ static int compareGrid(const std::string& base, const std::string& meshes,
   std::printf("| backend | sea | pressure | boats | tris/boat | hydro ms | baseline hydro ms | "
               "baseline/this hydro | hydro CPU ms | baseline hydro CPU ms | baseline/this CPU | "
               "step ms | baseline step ms | baseline/this step | newton/solve | "
-              "baseline newton/solve | roofline |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "baseline newton/solve | roofline | vertex ms | baseline vertex ms | "
+              "baseline/this vertex |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int rc = 0;
   for (int t : tris) {
     for (int nb : boats) {
@@ -356,11 +369,12 @@ static int compareGrid(const std::string& base, const std::string& meshes,
           }
           out->push_back(c);
           std::printf("| %s | %s | %s | %d | %d | %.3f | %.3f | %.2f | %.3f | %.3f | %.2f | "
-                      "%.3f | %.3f | %.2f | %s | %s | %.3f |\n", be.c_str(), c.sea.c_str(),
+                      "%.3f | %.3f | %.2f | %s | %s | %.3f | %s | %s | %s |\n", be.c_str(), c.sea.c_str(),
                       c.pressure.c_str(), nb, t, c.hydro, c.bhydro, c.ratio, c.cpu, c.bcpu,
                       c.cratio, c.step, c.bstep, c.sratio,
                       num(c.newton, "%.3f").c_str(), num(c.bnewton, "%.3f").c_str(),
-                      fraction(c.sea, c.ntri, c.cpu));
+                      fraction(c.sea, c.ntri, c.cpu), num(c.vertex, "%.3f").c_str(),
+                      num(c.bvertex, "%.3f").c_str(), num(c.vratio, "%.2f").c_str());
           std::fflush(stdout);
         }
         if (rc) break;
@@ -553,6 +567,7 @@ int main(int argc, char** argv) {
                  c.backend.c_str(), c.sea.c_str(), c.pressure.c_str(), c.boats, c.tris, c.ntri,
                  c.hydro, c.cpu, c.step, c.bare);
     if (std::isfinite(c.newton)) std::fprintf(f, "\"newton_per_solve\": %.6f, ", c.newton);
+    if (std::isfinite(c.vertex)) std::fprintf(f, "\"vertex_ms\": %.6f, ", c.vertex);
     std::fprintf(f, "\"roofline_ns\": %.6f, \"roofline_fraction\": %.6f, ", roofline(c.sea),
                  fraction(c.sea, c.ntri, c.cpu));
     std::fprintf(f, "\"stages\": {");

@@ -67,6 +67,7 @@ bool benchChild(const std::string& exe, const std::vector<std::string>& args,
   r->cpu = field(out, "hydro_cpu_ms");
   r->ntri = int(field(out, "triangles"));
   r->newton = field(out, "newton_per_solve");
+  r->vertex = field(out, "vertex_ms");
   if (!WIFEXITED(st) || WEXITSTATUS(st) != 0 || !std::isfinite(r->hydro)) {
     std::string cmd;
     for (const std::string& a : all) cmd += (cmd.empty() ? "" : " ") + a;

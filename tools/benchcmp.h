@@ -15,6 +15,7 @@ namespace mjbtool {
 // surface solve (cpu backend), NaN when the build does not report them
 struct CmpRun {
   double hydro = 0, cpu = 0, step = 0, newton = 0;
+  double vertex = 0;  // cpu backend's vertex stage ms (NaN when not reported)
   int ntri = 0;  // triangles in the scene
 };
 

@@ -1,0 +1,36 @@
+// seavec: the vertex stage's surface search (Sea::solveMany) over lanes of
+// 4 (AVX2 + FMA) or 8 (AVX-512F) points in lockstep, with libmvec's sin and
+// cos; chosen at run time by vmath.h's level, Sea::solveMany's scalar loop
+// stays the reference (tests/seavec_test.cc). Includes no inline code.
+#ifndef MJBUOY_SEAVEC_H_
+#define MJBUOY_SEAVEC_H_
+
+#include "wavenow.h"
+
+namespace mjb {
+
+// doubles of scratch per wave component the lane kernels need: phases at
+// the lanes' labels and at the trial labels, sin and cos, 8 lanes
+enum { kLaneTmp = 4 * 8 };
+
+// one call of Sea::solveMany: n components (the first ng Gerstner), m
+// points x, y; guesses a0, a1 become labels, z heights [m] and sc 2 per
+// wave per point (point-major: sin, cos of each phase); tmp holds kLaneTmp
+// per Gerstner component
+struct LaneIn {
+  const WaveNow* w;
+  int n, ng, m;
+  double level;
+  const double *x, *y;
+  double *a0, *a1, *z, *sc, *tmp;
+};
+
+// the Newton steps taken in all, as Sea::solveMany (seavec_avx2.cc,
+// seavec_avx512.cc: compiled for those instruction sets, called only when
+// the cpu has them)
+long solveLanesAvx2(const LaneIn& in);
+long solveLanesAvx512(const LaneIn& in);
+
+}  // namespace mjb
+
+#endif  // MJBUOY_SEAVEC_H_

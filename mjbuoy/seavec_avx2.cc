@@ -1,0 +1,21 @@
+// the surface search over 4 points at once, AVX2 + FMA (compiled with
+// -mavx2 -mfma; called only when the cpu has them, vmath.cc)
+#include <immintrin.h>
+
+#include "seavec_kern.h"
+
+// glibc libmvec, 4 doubles per call (x86_64 vector ABI, ISA "d" = AVX2)
+extern "C" __m256d _ZGVdN4v_sin(__m256d);
+extern "C" __m256d _ZGVdN4v_cos(__m256d);
+
+namespace mjb {
+namespace {
+struct Mvec4 {
+  typedef Lanes<4>::V V;
+  static V sin(V x) { return (V)_ZGVdN4v_sin((__m256d)x); }
+  static V cos(V x) { return (V)_ZGVdN4v_cos((__m256d)x); }
+};
+}  // namespace
+
+long solveLanesAvx2(const LaneIn& in) { return solveLanes<4, Mvec4>(in); }
+}  // namespace mjb

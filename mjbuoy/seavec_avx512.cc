@@ -1,0 +1,21 @@
+// the surface search over 8 points at once, AVX-512F (compiled with
+// -mavx512f -mfma; called only when the cpu has them, vmath.cc)
+#include <immintrin.h>
+
+#include "seavec_kern.h"
+
+// glibc libmvec, 8 doubles per call (x86_64 vector ABI, ISA "e" = AVX-512)
+extern "C" __m512d _ZGVeN8v_sin(__m512d);
+extern "C" __m512d _ZGVeN8v_cos(__m512d);
+
+namespace mjb {
+namespace {
+struct Mvec8 {
+  typedef Lanes<8>::V V;
+  static V sin(V x) { return (V)_ZGVeN8v_sin((__m512d)x); }
+  static V cos(V x) { return (V)_ZGVeN8v_cos((__m512d)x); }
+};
+}  // namespace
+
+long solveLanesAvx512(const LaneIn& in) { return solveLanes<8, Mvec8>(in); }
+}  // namespace mjb

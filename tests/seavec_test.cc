@@ -1,0 +1,273 @@
+// the vertex stage's surface search in lanes (AVX2, AVX-512; seavec.h)
+// against the scalar reference (Sea::solveMany's loop) and against the
+// Gerstner map itself, on every instruction set this cpu has; the whole
+// cpu backend on each of them repeats its bits across runs and threads
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <sstream>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "buoy.h"
+#include "sea.h"
+#include "seavec.h"
+#include "testutil.h"
+#include "vmath.h"
+
+namespace mjbt {
+namespace {
+
+const double kEps = DBL_EPSILON;
+
+// a sea of ng Gerstner and na Airy components, steepness scaled so that
+// sum Q k A (the fold measure, Sea::fold) is fold
+mjb::Sea makeSea(int ng, int na, double fold) {
+  mjb::Sea s;
+  for (int i = 0; i < ng + na; i++) {
+    mjb::Wave w{};
+    w.amp = 0.4 / (1 + i);
+    w.len = 14.0 / (1 + 0.6 * i);
+    w.dir = -70 + 37 * i;
+    w.phase = 23 * i;
+    w.steep = 1;
+    w.kind = i < ng ? 0 : 1;
+    s.waves.push_back(w);
+  }
+  s.level = 0.3;
+  s.derive();
+  const double f = s.fold();
+  for (mjb::Wave& w : s.waves) w.steep = f > 0 ? w.steep * fold / f : 0;
+  s.derive();
+  return s;
+}
+
+// the points of a box hull's vertex grid (4 m x 1 m x 0.5 m, 9 x 5 x 3)
+// under n random poses within 60 m of the origin: world x, y
+void hullPoints(int n, unsigned seed, std::vector<double>* x, std::vector<double>* y) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int p = 0; p < n; p++) {
+    double q[4] = {u(rng), u(rng), u(rng), u(rng)}, R[9];
+    mju_normalize4(q);
+    mju_quat2Mat(R, q);
+    const double t[2] = {60 * u(rng), 60 * u(rng)};
+    for (int i = 0; i < 9; i++) {
+      for (int j = 0; j < 5; j++) {
+        for (int k = 0; k < 3; k++) {
+          const double v[3] = {-2 + 0.5 * i, -0.5 + 0.25 * j, -0.25 + 0.25 * k};
+          x->push_back(R[0] * v[0] + R[1] * v[1] + R[2] * v[2] + t[0]);
+          y->push_back(R[3] * v[0] + R[4] * v[1] + R[5] * v[2] + t[1]);
+        }
+      }
+    }
+  }
+}
+
+// one solveMany at the current simd level: labels, heights, phases, steps
+struct Out {
+  std::vector<double> a0, a1, z, sc;
+  long nit = 0;
+};
+Out solveAll(const mjb::Sea& sea, double t, const std::vector<double>& x,
+             const std::vector<double>& y, double guess) {
+  const int n = sea.waves.size(), m = x.size();
+  std::vector<mjb::WaveNow> w(n);
+  sea.now(t, w.data());
+  Out o;
+  o.a0 = x;
+  o.a1 = y;
+  // guesses at the position moved by guess [m] (the label is up to
+  // sum Q A from the position)
+  for (int i = 0; i < m; i++) {
+    o.a0[i] += guess * std::cos(0.7 * i);
+    o.a1[i] += guess * std::sin(1.3 * i);
+  }
+  o.z.resize(m);
+  o.sc.resize(2 * n * m);
+  std::vector<double> tmp((2 + mjb::kLaneTmp) * n);
+  o.nit = sea.solveMany(w.data(), m, x.data(), y.data(), o.a0.data(), o.a1.data(), o.z.data(),
+                        o.sc.data(), tmp.data());
+  return o;
+}
+
+// the levels to check besides scalar: those this cpu has, the others
+// reported as skipped with the reason
+std::vector<int> vectorLevels() {
+  const int prev = mjb::simdLevel(), best = mjb::simdSet(mjb::kSimdAvx512);
+  mjb::simdSet(prev);
+  std::vector<int> l;
+  for (int level = mjb::kSimdAvx2; level <= mjb::kSimdAvx512; level++) {
+    if (level <= best) {
+      l.push_back(level);
+    } else {
+      std::printf("[seavec] %s path not checked: this cpu lacks %s\n", mjb::simdName(level),
+                  level == mjb::kSimdAvx2 ? "AVX2 with FMA" : "AVX-512F");
+    }
+  }
+  return l;
+}
+
+// Both paths run Newton to |F| <= 1e-12 m on F(a) = a - sum Q A D
+// sin(theta(a)) - x (sea.cc), whose Jacobian J = I - sum Q k A cos D D^T has
+// |J^-1| <= 1 / (1 - sum Q k A): each label is within 1e-12 / (1 - fold) of
+// the root, so the two within tolA = 2e-12 / (1 - fold), plus the round-off
+// of a label itself where a search stops for lack of progress (16 ulp of
+// |a|). A height z = level + sum A cos(theta) moves by sum A k tolA with
+// the labels; each cosine is within 4 ulp (libmvec, glibc manual "Errors in
+// Math Functions") plus 1 ulp for glibc's scalar one, of a phase rounded
+// to about 4 ulp of |theta|: A (5 eps + 4 eps |theta|) per component
+void checkSea(const mjb::Sea& sea, double guess, const char* what) {
+  const double t = 3.7;
+  std::vector<double> x, y;
+  hullPoints(7, 11, &x, &y);  // 945 points: lanes of 4 and 8 with a tail
+  const int n = sea.waves.size(), m = x.size();
+  std::vector<mjb::WaveNow> w(n);
+  sea.now(t, w.data());
+  const int prev = mjb::simdLevel();
+  mjb::simdSet(mjb::kSimdScalar);
+  const Out ref = solveAll(sea, t, x, y, guess);
+  const double fold = sea.fold();
+  double sumAk = 0;
+  for (const mjb::Wave& wv : sea.waves) sumAk += std::fabs(wv.amp) * wv.k;
+  const double tolA = 2e-12 / (1 - fold);
+  for (int level : vectorLevels()) {
+    mjb::simdSet(level);
+    const Out o = solveAll(sea, t, x, y, guess);
+    double worstA = 0, worstZ = 0, worstF = 0;
+    for (int i = 0; i < m; i++) {
+      const double ta = tolA + 16 * kEps * (std::fabs(x[i]) + std::fabs(y[i]) + 1);
+      EXPECT_NEAR(o.a0[i], ref.a0[i], ta) << what << " " << mjb::simdName(level) << " " << i;
+      EXPECT_NEAR(o.a1[i], ref.a1[i], ta) << what << " " << mjb::simdName(level) << " " << i;
+      // the Gerstner map in long double at the lanes' label: x within the
+      // solver's tolerance, and the height its sum, as sea.h defines it
+      // (phases after Newton steps come from the guess's by angle
+      // addition: each step adds a few ulp, k2 per unit k after up to 8)
+      const double k2 = 32 * kEps * (std::fabs(o.a0[i]) + std::fabs(o.a1[i]) + 1);
+      long double f0 = o.a0[i] - (long double)x[i], f1 = o.a1[i] - (long double)y[i];
+      long double zr = sea.level, tz = 0;
+      for (int j = 0; j < n; j++) {
+        const bool ger = j < sea.ng;
+        const long double px = ger ? o.a0[i] : x[i], py = ger ? o.a1[i] : y[i];
+        const long double th = w[j].k * (w[j].dx * px + w[j].dy * py) - w[j].wt + w[j].ph;
+        if (ger) {
+          f0 -= (long double)w[j].qx * sinl(th);
+          f1 -= (long double)w[j].qy * sinl(th);
+        }
+        // the phase's terms' size: each of its 5 roundings within half an
+        // ulp of it, so theta within 4 eps M
+        const double M = w[j].k * (std::fabs(w[j].dx * (double)px) + std::fabs(w[j].dy * (double)py)) +
+                         std::fabs(w[j].wt) + std::fabs(w[j].ph);
+        const double ts = (5 + 4 * M) * kEps;
+        zr += w[j].amp * cosl(th);
+        tz += std::fabs(w[j].amp) * ts;
+        // the phases handed on (velocity, pressure) are those of the label
+        EXPECT_NEAR(o.sc[2 * n * i + 2 * j], (double)sinl(th), ts + k2 * std::fabs(w[j].k));
+        EXPECT_NEAR(o.sc[2 * n * i + 2 * j + 1], (double)cosl(th), ts + k2 * std::fabs(w[j].k));
+      }
+      const double F = std::sqrt((double)(f0 * f0 + f1 * f1));
+      EXPECT_LE(F, 1e-12 + 16 * kEps * (std::fabs(x[i]) + std::fabs(y[i]) + 1)) << what << " " << i;
+      EXPECT_NEAR(o.z[i], (double)zr, tz) << what << " " << mjb::simdName(level) << " " << i;
+      EXPECT_NEAR(o.z[i], ref.z[i], sumAk * tolA + 2 * tz) << what << " " << i;
+      worstA = std::fmax(worstA, std::fmax(std::fabs(o.a0[i] - ref.a0[i]),
+                                           std::fabs(o.a1[i] - ref.a1[i])));
+      worstZ = std::fmax(worstZ, std::fabs(o.z[i] - ref.z[i]));
+      worstF = std::fmax(worstF, F);
+    }
+    // the same steps: counts differ only where a residual lands within
+    // round-off of the stopping test
+    EXPECT_NEAR(o.nit, ref.nit, 0.01 * ref.nit + 1) << what << " " << mjb::simdName(level);
+    // repeated: the same bits
+    const Out again = solveAll(sea, t, x, y, guess);
+    EXPECT_TRUE(again.a0 == o.a0 && again.a1 == o.a1 && again.z == o.z && again.sc == o.sc)
+        << what << " " << mjb::simdName(level);
+    std::printf("[seavec] %s %s: labels within %.2g m of scalar (bound %.2g), heights %.2g m, "
+                "|F| <= %.2g m; Newton steps %ld (scalar %ld) for %d points\n",
+                what, mjb::simdName(level), worstA, tolA, worstZ, worstF, o.nit, ref.nit, m);
+  }
+  mjb::simdSet(prev);
+}
+
+TEST(SeaVec, LanesMatchTheScalarSearch) {
+  // two Gerstner and two Airy components, fold 0.35, guesses at the
+  // position moved by 3 mm; five Gerstner (the scalar path's general loop)
+  // and one Airy, fold 0.9, guesses moved by 0.4 m: large first steps
+  // (phases moved directly, not by angle addition); one Gerstner (the
+  // scalar path's unrolled loop); Airy alone (no search)
+  checkSea(makeSea(2, 2, 0.35), 3e-3, "warm");
+  checkSea(makeSea(5, 1, 0.9), 0.4, "steep");
+  checkSea(makeSea(1, 0, 0.5), 0.05, "one");
+  checkSea(makeSea(0, 3, 0.0), 0.0, "airy");
+}
+
+// a Wigley hull and a box on a sea of three Gerstner and one Airy
+// component (fold 0.27)
+std::string scene(int threads) {
+  std::ostringstream s;
+  s << "<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" MJB_MODELS
+    << "/meshes/wigley_576.obj\"/></asset><custom><text name=\"mjbuoy.hulls\" data=\"h*\"/>"
+    << "<numeric name=\"mjbuoy.wave.a\" data=\"0.4 10 20 0 0.6\"/>"
+    << "<numeric name=\"mjbuoy.wave.b\" data=\"0.15 6 -50 40 0.5\"/>"
+    << "<numeric name=\"mjbuoy.wave.c\" data=\"0.05 3 100 70 0.4\"/>"
+    << "<numeric name=\"mjbuoy.airy.d\" data=\"0.1 8 -120 10\"/>"
+    << "<numeric name=\"mjbuoy.threads\" data=\"" << threads << "\"/></custom><worldbody>"
+    << "<body pos=\"0 0 0.03\" euler=\"3 -2 30\"><freejoint/><inertial pos=\"0 0 -0.08\" "
+    << "mass=\"176.2\" diaginertia=\"6.02 237.28 238.6\"/><geom name=\"h0\" type=\"mesh\" "
+    << "mesh=\"w\" contype=\"0\" conaffinity=\"0\"/></body>"
+    << "<body pos=\"-6 2 0\"><freejoint/><geom name=\"h1\" type=\"box\" size=\"1.5 0.6 0.3\" "
+    << "mass=\"600\"/></body></worldbody></mujoco>";
+  return s.str();
+}
+
+std::vector<double> run(const Scene& s, int steps) {
+  mj_resetData(s.m, s.d);
+  std::vector<double> out;
+  for (int i = 0; i < steps; i++) {
+    mj_step(s.m, s.d);
+    out.insert(out.end(), s.d->qpos, s.d->qpos + s.m->nq);
+    const mjtNum* w = mjb_wrench(s.b, s.d);
+    out.insert(out.end(), w, w + 6 * s.m->nbody);
+  }
+  return out;
+}
+
+TEST(SeaVec, CpuBackendRepeatsItsBitsOnEachPath) {
+  Scene one(scene(1)), two(scene(2));
+  ASSERT_TRUE(one.ok() && two.ok()) << one.err << two.err;
+  const int prev = mjb::simdLevel();
+  std::vector<int> levels = vectorLevels();
+  levels.insert(levels.begin(), mjb::kSimdScalar);
+  std::vector<double> w0;
+  for (int level : levels) {
+    mjb::simdSet(level);
+    const std::vector<double> ref = run(one, 60);
+    EXPECT_EQ(run(one, 60), ref) << mjb::simdName(level);
+    EXPECT_EQ(run(two, 60), ref) << mjb::simdName(level);
+    // the wrench at the first state: labels within 1.4e-12 m (fold 0.27) of
+    // the scalar path's move the hydrostatic force by rho g S_wet 1e-12 N
+    // against 1e3 N (tests/guess_test.cc's argument): 1e-9 of its size
+    mj_resetData(one.m, one.d);
+    mj_forward(one.m, one.d);
+    const mjtNum* w = mjb_wrench(one.b, one.d);
+    std::vector<double> wv(w, w + 6 * one.m->nbody);
+    if (level == mjb::kSimdScalar) {
+      w0 = wv;
+    } else {
+      double big = 0, diff = 0;
+      for (size_t i = 0; i < wv.size(); i++) {
+        big = std::fmax(big, std::fabs(w0[i]));
+        diff = std::fmax(diff, std::fabs(wv[i] - w0[i]));
+      }
+      EXPECT_GT(big, 100);
+      EXPECT_LE(diff, 1e-9 * big) << mjb::simdName(level);
+      std::printf("[seavec] %s: wrench within %.3g of scalar (relative)\n", mjb::simdName(level),
+                  diff / big);
+    }
+  }
+  mjb::simdSet(prev);
+}
+
+}  // namespace
+}  // namespace mjbt
