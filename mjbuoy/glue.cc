@@ -163,7 +163,7 @@ void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
     applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
   }
   // added mass into qM, Kirchhoff and memory forces (radstep.cc)
-  mjb::radiationStep(b->b.rad, m, d, &s->rad, b->b.cfg.sea.current, &s->notices);
+  mjb::radiationStep(b->b.rad, m, d, &s->rad, b->b.cfg.sea, &s->notices);
   // diffraction excitation of the same bodies, per wave component (diffract.cc)
   const mjb::Diffraction& df = b->b.diff;
   if (!df.db.empty()) {

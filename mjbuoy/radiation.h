@@ -81,11 +81,15 @@ void restoreModel(const mjModel* m, const Radiation& r);
 void radMakeState(const Radiation& r, RadState* s);
 void radRestart(RadState* s);
 
+struct Sea;
+
 // in mjcb_passive: add each body's A_inf to d->qM (refactored) and its
-// Kirchhoff and memory forces to d->qfrc_passive; both act on the velocity
-// relative to the uniform current [m/s] (world x, y) of this step
-void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
-                   const double current[2], std::string* notices);
+// Kirchhoff and memory forces to d->qfrc_passive. The memory acts on the
+// velocity relative to the sea's uniform current, the Kirchhoff terms on
+// the velocity relative to the water at the body's COM (current and wave
+// orbital velocity; docs/physics.md section 14, "Kirchhoff terms in waves")
+void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s, const Sea& sea,
+                   std::string* notices);
 
 // give body (a MuJoCo body id) of an attached model radiation from c, with
 // a memory of tmem seconds (0: automatic, memoryLength; < 0: none). Call

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "radiation.h"
+#include "sea.h"
 
 namespace mjb {
 
@@ -133,11 +134,12 @@ void kirchhoff(const double A[36], const double nu[6], const double bias[6], dou
   mju_subFrom3(W + 3, t);
 }
 
-// nu and its rate relative to the water moving at the uniform current U
-// (world, horizontal): v - R^T U, and since d(R^T U)/dt = -w x R^T U the
-// rate gains w x R^T U (docs/physics.md section 14, "Current")
-void relative(const mjtNum* R, const double current[2], double nu[6], double bias[6]) {
-  const double U[3] = {current[0], current[1], 0};
+// nu and its rate relative to the water moving at U (world): v - R^T U,
+// and since d(R^T U)/dt = -w x R^T U for a steady U the rate gains
+// w x R^T U (docs/physics.md section 14, "Current"); the rate of a wave's
+// U is the incident flow's acceleration, whose force is the excitation's
+// (Froude-Krylov and diffraction, section 15), not added here
+void relative(const mjtNum* R, const double U[3], double nu[6], double bias[6]) {
   double u[3], t[3];
   mju_rotVecMatT(u, U, R);
   mju_subFrom3(nu, u);
@@ -147,8 +149,9 @@ void relative(const mjtNum* R, const double current[2], double nu[6], double bia
 
 }  // namespace
 
-void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
-                   const double current[2], std::string* notices) {
+void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s, const Sea& sea,
+                   std::string* notices) {
+  const double cur[3] = {sea.current[0], sea.current[1], 0};
   if (r.rb.empty()) return;
   const int tick = clock(m, d, s);
   if (tick == kRestart) {
@@ -167,8 +170,21 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
     double* J = s->jac.data();
     double nu[6], bias[6];
     kinematics(rb, m, d, J, nu, bias);
-    relative(d->xmat + 9 * rb.body, current, nu, bias);
-    if (!std::isfinite(dot6(nu, nu)) || !std::isfinite(dot6(bias, bias))) continue;
+    // the Kirchhoff terms see the water at the COM (current and waves), the
+    // memory only the current (docs/physics.md section 14, "Kirchhoff terms
+    // in waves")
+    double nw[6], bw[6], uw[3];
+    sea.velocity(d->xipos + 3 * rb.body, d->time, uw);
+    for (int j = 0; j < 6; j++) {
+      nw[j] = nu[j];
+      bw[j] = bias[j];
+    }
+    relative(d->xmat + 9 * rb.body, uw, nw, bw);
+    relative(d->xmat + 9 * rb.body, cur, nu, bias);
+    if (!std::isfinite(dot6(nu, nu)) || !std::isfinite(dot6(bias, bias)) ||
+        !std::isfinite(dot6(nw, nw)) || !std::isfinite(dot6(bw, bw))) {
+      continue;
+    }
 
     if (addM) {
       // M(dof[a], dof[b]) += J_a^T A J_b, b an ancestor (later in the chain)
@@ -181,7 +197,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
     }
 
     double W[6];
-    kirchhoff(rb.A, nu, bias, W);
+    kirchhoff(rb.A, nw, bw, W);
 
     // memory: the step's first call records nu and evaluates the convolution
     double* fm = s->fmem.data() + 6 * ib;

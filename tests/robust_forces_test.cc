@@ -6,6 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include "buoy.h"
+#include "hydrocoef.h"
+#include "radiation.h"
+#include "sea.h"
 #include "testutil.h"
 
 namespace mjbt {
@@ -327,6 +331,55 @@ TEST(RobustForces, OverlappingClosedPiecesOfOneMeshWarn) {
   a.d->qpos[2] = -5;
   mj_forward(a.m, a.d);
   EXPECT_NEAR(mjb_wrenchPart(a.b, a.d, mjbPART_PRESSURE)[6 + 2], kRho * kG * 1.36, 1e-6 * kRho * kG);
+}
+
+TEST(RobustForces, RadiationKirchhoffTermsSeeTheWaveOrbitalVelocity) {
+  // Kirchhoff's velocity terms of the added mass, M = -w x h - v x p with
+  // p = A v (Newman 1977, Marine Hydrodynamics, sec. 4.13), hold for the
+  // velocity relative to the water: a body carried by a wave's orbital
+  // flow has no Munk moment from it, and a body at rest in that flow has
+  // the Munk moment of the flow past it (docs/physics.md section 14,
+  // "Kirchhoff terms in waves"). Applied to the velocity over the ground,
+  // a boat surging with steep waves got a spurious moment that turned it
+  // broadside and capsized it (the Wigley scenarios with radiation on).
+  // No hulls (no pressure), no gravity, no memory: qfrc_passive is the
+  // Kirchhoff wrench alone. Body axes = world axes, centre 0.5 m down in
+  // an Airy wave (steepness 0) of 0.5 m on 10 m at phase 45 deg, so
+  // surge u and heave w of the water are both about 0.7 A omega e^{kz}
+  const char* xml =
+      "<mujoco><option timestep=\"0.002\"><flag gravity=\"disable\"/></option><custom>"
+      "<numeric name=\"mjbuoy.wave.sea\" data=\"0.5 10 0 45 0\"/></custom><worldbody>"
+      "<body name=\"b\" pos=\"0 0 -0.5\"><freejoint/><geom type=\"box\" size=\"1 0.2 0.2\" "
+      "mass=\"10\" contype=\"0\" conaffinity=\"0\"/></body></worldbody></mujoco>";
+  Scene s(xml);
+  ASSERT_TRUE(s.ok()) << s.err;
+  mjb::HydroCoef c;
+  c.omega = {1, 2};
+  c.A.assign(72, 0.0);
+  c.B.assign(72, 0.0);
+  const double a[6] = {5, 50, 40, 1, 1, 1};  // A11 != A33: a Munk moment in pitch
+  for (int i = 0; i < 6; i++) c.Ainf[7 * i] = a[i];
+  ASSERT_EQ(mjb::setHydroCoef(s.b, 1, c, -1), "");
+  const double p[3] = {0, 0, -0.5};
+  double uw[3];
+  mjb::buoyOf(s.b)->cfg.sea.velocity(p, 0, uw);
+  ASSERT_GT(std::fabs(uw[0]), 0.3);
+  ASSERT_GT(std::fabs(uw[2]), 0.3);
+  // carried by the water: relative velocity 0, no force
+  for (int i = 0; i < 3; i++) s.d->qvel[i] = uw[i];
+  mj_forward(s.m, s.d);
+  double carried = 0;
+  for (int i = 0; i < 6; i++) carried = std::max(carried, std::fabs(s.d->qfrc_passive[i]));
+  // at rest: v = -uw, (v x A v)_y = (A11 - A33) v_x v_z, so M_y = (A33 - A11) u w
+  mj_resetData(s.m, s.d);
+  mj_forward(s.m, s.d);
+  const double munk = (a[2] - a[0]) * uw[0] * uw[2];
+  std::printf("[robust] Kirchhoff in waves: water (%.4f, %.4f) m/s; carried: largest force %.3g; "
+              "at rest: M_y %.6g N m (expected %.6g)\n",
+              uw[0], uw[2], carried, s.d->qfrc_passive[4], munk);
+  EXPECT_LT(carried, 1e-9);
+  EXPECT_NEAR(s.d->qfrc_passive[4], munk, 1e-9 * std::fabs(munk));
+  for (int i : {0, 1, 2, 3, 5}) EXPECT_LT(std::fabs(s.d->qfrc_passive[i]), 1e-9) << "dof " << i;
 }
 
 }  // namespace
