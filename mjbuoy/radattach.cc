@@ -278,6 +278,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   if (!err.empty()) return who + ": " + err;
   checkCoef(B, who, &c);
   B->rad.conv = rc.conv;
+  B->rad.ssAsked = rc.ssAsked;
   err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
   if (!err.empty()) return err;
   for (std::string& n : B->rad.note) B->cfg.warn.push_back(n);

@@ -71,6 +71,7 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
              "give \"statespace\" or \"convolution\", e.g. data=\"convolution\"";
     }
     r->conv = !std::strcmp(text, "convolution");
+    r->ssAsked = !r->conv;
     return "";
   }
   bool v = false;

@@ -21,6 +21,7 @@ struct RadConfig {
   bool diffraction = true;      // diffraction excitation (docs/physics.md section 15)
   double memory = 0;            // memory length [s]; 0: automatic
   bool conv = false;            // mjbuoy.radiation.memorymodel: statespace (default) or convolution
+  bool ssAsked = false;         // memorymodel = statespace given explicitly: warn on a fallback
   std::string cache;            // mjbuoy.radiation.cache: directory or "off"; "": default
   bool radiates(int body) const;
   // whether the rigid group of weld root `root` radiates: an override

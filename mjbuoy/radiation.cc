@@ -316,7 +316,10 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
   }
   if (tmem == 0) tmem = memoryLength(c);
   kernels(c, tmem, dt, &rb);
-  if (rb.nk && !r->conv) fitMemory(c, dt, r->rb, name, &rb, &r->note);
+  // a fallback to the exact convolution costs time, not accuracy: it is
+  // noted (a warning) only when the state-space model was asked for
+  std::vector<std::string> quiet;
+  if (rb.nk && !r->conv) fitMemory(c, dt, r->rb, name, &rb, r->ssAsked ? &r->note : &quiet);
   clearSimple(m, rb.dof, r);
 
   auto it = std::find_if(r->rb.begin(), r->rb.end(), [&](const RadBody& x) { return x.body == body; });

@@ -39,8 +39,9 @@ struct Radiation {
   int nh = 1;                // history ring length: the longest memory, >= 1
   std::vector<int> simple0;  // m->dof_simplenum before the first body was set
   bool conv = false;         // mjbuoy.radiation.memorymodel = convolution: no fit
+  bool ssAsked = false;      // statespace given explicitly: a fallback is noted
   int nmode = 0;             // state-space modes of all bodies
-  std::vector<std::string> note;  // fits that fell back to the convolution
+  std::vector<std::string> note;  // fits that fell back to the convolution (when ssAsked)
 };
 
 // per mjData: velocity history and the memory force of the current step
