@@ -256,16 +256,16 @@ bool glMake(Buoy* b, std::string* err) {
   g->nchunk = chunk.size();
   g->nvchunk = vchunk.size();
 
-  // each wet vertex's e^L per component (shaders/waveint.glsl), room for
-  // the capacity so mjb_setSea creates nothing; within the driver's limits
-  // (checked before anything is allocated)
-  const size_t nexp = size_t(g->nvert) * cap;
+  // each vertex's e^(i theta) per component, two a texel (shaders/sea.glsl
+  // expTexel), room for the capacity so mjb_setSea creates nothing; within
+  // the driver's limits (checked before anything is allocated)
+  const size_t nexp = size_t(g->nvert) * ((cap + 1) / 2);
   GLint tmax = 0;  // texels; GL guarantees only 65536, llvmpipe has 2^27
   gl.GetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &tmax);
   if (nexp > size_t(tmax)) {
     *err = "gl backend: " + std::to_string(g->nvert) + " vertices x " + std::to_string(cap) +
            " wave components (mjbuoy.sea.capacity, else the sea's count) = " +
-           std::to_string(nexp) + " values exceed the driver's buffer texture size (" +
+           std::to_string(nexp) + " texels (two components each) exceed the driver's buffer texture size (" +
            std::to_string(tmax) + " texels); use fewer components or boats, or backend cpu";
     b->gl = g;
     glFree(b);
@@ -372,12 +372,6 @@ static void seaUniforms(GlBackend* g, const Sea& sea) {
   }
   // flat water needs no dynamic pressure, whatever the model
   trisUniform(g, "linear", int(!sea.kerner && !sea.waves.empty()));
-  // every e^(-2kh) 0 (gwave): B_EXP holds two components' e^(k zs + i
-  // theta) a texel, half the stores (llvmpipe stores lane by lane)
-  bool deep = true;
-  for (const Wave& w : sea.waves) deep = deep && !(sea.depth > 0 && w.k * sea.depth < 17);
-  for (int st : {int(kVerts), int(kTris), kSplit})
-    gl.ProgramUniform1i(g->prog[st], loc(g, st, "paired"), int(deep));
 }
 
 void glSetSea(Buoy* b) {

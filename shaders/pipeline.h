@@ -52,9 +52,7 @@ namespace glsl {
 #define B_SLAMCUR 12   // vec4[]     triangle: this step's, written on its first call
 #define B_WAVE 13    // GWave[]      static: wave components (read as a buffer texture)
 #define B_EXP 14     // vec4[]       (image unit 0, not an SSBO binding) vertex x component
-                     //              (v * nwave + i), every vertex (zs = 0 where dry):
-                     //              e^(k zs + i theta) (xy), e^(-k (zs + 2 h) + i theta) (zw);
-                     //              in deep water two components' e^(k zs + i theta) a
+                     //              pair: every vertex's e^(i theta) of two components a
                      //              texel (sea.glsl expTexel)
 
 struct GVert {

@@ -23,12 +23,10 @@ uniform vec2 current;    // [m/s]
 
 float phaseAt(int b, int i) { return texelFetch(tPhase, b * nwave + i).x; }
 
-// B_EXP (pipeline.h): vertex v's texel holding component w, at finite depth
-// e^(k zs + i theta) (xy) and e^(-k (zs + 2 h) + i theta) (zw); in deep
-// water (paired, gl.cc seaUniforms: every e^(-2kh) is 0) two components'
-// e^(k zs + i theta) a texel, w even in xy, odd in zw
-uniform int paired;
-int expTexel(int v, int w) { return paired != 0 ? v * ((nwave + 1) >> 1) + (w >> 1) : v * nwave + w; }
+// B_EXP (pipeline.h): vertex v's texel holding component w's e^(i theta),
+// two components a texel, w even in xy, odd in zw (half the stores:
+// llvmpipe stores lane by lane)
+int expTexel(int v, int w) { return v * ((nwave + 1) >> 1) + (w >> 1); }
 
 float theta(GWave w, float ph, vec2 a) { return ph + w.k * (w.dx * a.x + w.dy * a.y); }
 

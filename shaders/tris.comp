@@ -28,11 +28,16 @@ uniform samplerBuffer tLab;
 uniform isamplerBuffer tTri;
 uniform samplerBuffer tExp;    // B_EXP
 
-// vertex v's e^L of component w (sea.glsl expTexel): e^(k zs + i theta),
-// e^(-k (zs + 2 h) + i theta)
-vec4 expAt(int v, int w) {
+// e^L of component wv at a piece's corner 0 of Wheeler height zs [m]:
+// e^(k zs + i theta), e^(-k (zs + 2 h) + i theta), from vertex v's e^(i
+// theta) (verts.comp, sea.glsl expTexel) turned by r = e^(i dtheta) to the
+// corner (1 at a vertex)
+vec4 expAt(int v, int w, GWave wv, float zs, vec2 r) {
   vec4 t = texelFetch(tExp, expTexel(v, w));
-  return paired != 0 ? vec4((w & 1) == 0 ? t.xy : t.zw, 0.0, 0.0) : t;
+  vec2 e = cmul((w & 1) == 0 ? t.xy : t.zw, r);
+  // e^(k zs) >= e^(-k h) > e^-17 where e2kh > 0 (zs >= -h): no overflow
+  float ep = exp(wv.k * zs), em = wv.e2kh > 0.0 ? wv.e2kh / ep : 0.0;
+  return vec4(ep * e, em * e);
 }
 
 uniform int nchunk;
@@ -315,9 +320,8 @@ void wave(inout Tri T, int pc) {
         int w = 0;
         do {
           GWave wv = waveAt(w);
-          vec4 E = expAt(i0, w);
           vec2 r = rotation(wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? dx0 : dm0));
-          wavePiece(P, wv, vec4(cmul(E.xy, r), cmul(E.zw, r)), false, ps, vs);
+          wavePiece(P, wv, expAt(i0, w, wv, P.zs.x, r), false, ps, vs);
         } while (++w < nfast);
       }
 #ifdef WI_SPLIT
@@ -325,10 +329,8 @@ void wave(inout Tri T, int pc) {
       // program, gl.cc kSplit: this loop's body would run at least once)
       for (int w = nfast; w < nwave; w++) {
         GWave wv = waveAt(w);
-        vec4 E = expAt(i0, w);
         float ph = wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? dx0 : dm0);
-        vec2 r = vec2(cos(ph), sin(ph));
-        wavePiece(P, wv, vec4(cmul(E.xy, r), cmul(E.zw, r)), true, ps, vs);
+        wavePiece(P, wv, expAt(i0, w, wv, P.zs.x, vec2(cos(ph), sin(ph))), true, ps, vs);
       }
 #endif
       if (lin) {

@@ -20,12 +20,12 @@ layout(binding = 0, rgba32f) uniform writeonly imageBuffer iExp;
 
 uniform int nvchunk;
 
-// e^(k zs + i theta) of component w at body b's point x of label a, Wheeler
-// height zs
-vec2 expDeep(int b, int w, vec2 a, vec2 x, float zs) {
+// e^(i theta) of component w at body b's point x of label a (xy), and its
+// height amp cos(theta) (z)
+vec3 turnAt(int b, int w, vec2 a, vec2 x) {
   GWave wv = waveAt(w);
-  float th = thetaAt(wv, phaseAt(b, w), a, x);
-  return exp(wv.k * zs) * vec2(cos(th), sin(th));
+  float th = thetaAt(wv, phaseAt(b, w), a, x), c = cos(th);
+  return vec3(c, sin(th), wv.amp * c);
 }
 
 void main() {
@@ -41,34 +41,23 @@ void main() {
       vec3 p = texelFetch(tVert, i).xyz;
       vec3 r = vec3(dot(r0, p), dot(r1, p), dot(r2, p)) + o.xyz;
       vec2 a = seaLabel(b, r.xy, r.xy);
-      float eta = seaEta(b, a, r.xy);
-      vec4 q = vec4(r, r.z + o.w - eta);
-      lab[i] = a;
-      vout[i] = q;
-      // each component's e^(k zs + i theta) and e^(-k (zs + 2 h) + i theta),
-      // zs the Wheeler height: the two exponentials of the linear profiles
-      // cosh(k (zs + h)) / cosh(k h) and its kin (docs/physics.md), each
-      // bounded by 1 (the second 0 where e^(-k h) is below float's
-      // resolution, gl.cc gwave); at dry vertices too (zs = 0: e^(i theta),
-      // from which tris.comp turns the cut points')
-      float zs = seaStretch(r.z + o.w, eta);
+      // the surface height (sea.glsl seaEta, same order) and each
+      // component's e^(i theta), at dry vertices too (tris.comp turns the
+      // cut points' from them, and scales by the profiles' e^(k zs) at
+      // each piece's corner 0), in one pass: one cos and sin per vertex
+      // and component; two components a texel (sea.glsl expTexel), 0 past
+      // the last
+      float eta = 0.0;
       int w = 0;
-      if (paired != 0) {
-        // two components a texel (sea.glsl expTexel), 0 past the last
-        if (nwave > 0) do {
-          vec2 e0 = expDeep(b, w, a, r.xy, zs);
-          vec2 e1 = w + 1 < nwave ? expDeep(b, w + 1, a, r.xy, zs) : vec2(0.0);
-          imageStore(iExp, expTexel(i, w), vec4(e0, e1));
-        } while ((w += 2) < nwave);
-      } else if (nwave > 0) do {
-        GWave wv = waveAt(w);
-        float th = thetaAt(wv, phaseAt(b, w), a, r.xy), k = wv.k;
-        vec2 cs = vec2(cos(th), sin(th));
-        // e^(-k (zs + 2h)) = e^(-2kh) / e^(k zs), no second exp: e^(k zs) >=
-        // e^(-k h) > e^-17 where e2kh > 0 (zs >= -h)
-        float ep = exp(k * zs), em = wv.e2kh > 0.0 ? wv.e2kh / ep : 0.0;
-        imageStore(iExp, expTexel(i, w), vec4(ep * cs, em * cs));
-      } while (++w < nwave);
+      if (nwave > 0) do {
+        bool two = w + 1 < nwave;
+        vec3 e0 = turnAt(b, w, a, r.xy), e1 = turnAt(b, two ? w + 1 : w, a, r.xy);
+        eta += e0.z;
+        eta += two ? e1.z : 0.0;
+        imageStore(iExp, expTexel(i, w), vec4(e0.xy, two ? e1.xy : vec2(0.0)));
+      } while ((w += 2) < nwave);
+      lab[i] = a;
+      vout[i] = vec4(r, r.z + o.w - eta);
     }
   }
 }

@@ -308,9 +308,10 @@ TEST(GlBackend, BadWorkgroupSizesAreNamed) {
   mj_deleteModel(m);
 }
 
-// the per-vertex e^L table (vertices x reserved components) must fit a
-// buffer texture: 3872 vertices x 65536 components = 2.5e8 texels is past
-// llvmpipe's 2^27 (and GL's guaranteed 65536); attach fails naming the field
+// the per-vertex e^(i theta) table (vertices x reserved components, two a
+// texel) must fit a buffer texture: two hulls of 3872 vertices x 65536
+// components = 2.5e8 texels is past llvmpipe's 2^27 (and GL's guaranteed
+// 65536); attach fails naming the field
 TEST(GlBackend, TooManyReservedComponentsAreNamed) {
   std::string xml = "<mujoco><asset><mesh name=\"w\" file=\"" MJB_MODELS
                     "/meshes/wigley_7744.obj\"/></asset><custom>"
@@ -319,6 +320,8 @@ TEST(GlBackend, TooManyReservedComponentsAreNamed) {
                     "<numeric name=\"mjbuoy.sea.capacity\" data=\"65536\"/>"
                     "</custom><worldbody><body><freejoint/>"
                     "<geom name=\"h\" type=\"mesh\" mesh=\"w\" mass=\"100\"/></body>"
+                    "<body pos=\"0 5 0\"><freejoint/>"
+                    "<geom name=\"h2\" type=\"mesh\" mesh=\"w\" mass=\"100\"/></body>"
                     "</worldbody></mujoco>";
   std::string e;
   mjModel* m = loadXML(xml, &e);
@@ -326,7 +329,7 @@ TEST(GlBackend, TooManyReservedComponentsAreNamed) {
   char err[1024];
   EXPECT_FALSE(mjb_attach(m, "gl", err, sizeof(err)));
   EXPECT_NE(std::string(err).find("mjbuoy.sea.capacity"), std::string::npos) << err;
-  EXPECT_NE(std::string(err).find("3872 vertices x 65536"), std::string::npos) << err;
+  EXPECT_NE(std::string(err).find("7744 vertices x 65536"), std::string::npos) << err;
   mjbBuoy* b = mjb_attach(m, "cpu", err, sizeof(err));  // the cpu backend has no such limit
   EXPECT_TRUE(b) << err;
   mjb_detach(b);
