@@ -25,14 +25,17 @@ static const char* kStage[] = {"verts.comp", "tris.comp", "bodies.comp"};
 enum { kVerts, kTris, kBodies, kNStage };
 // tris.comp with WI_SPLIT: for seas with components whose pieces need
 // splitting (nfast < nwave); llvmpipe runs every loop body at least once,
-// so tris.comp leaves that loop out
-const int kSplit = int(kNStage);
+// so tris.comp leaves that loop out. Both again with WI_NOMOM for Kerner's
+// pressure, which needs no pressure moments (llvmpipe runs every if's
+// body, so a uniform could not skip them)
+const int kSplit = int(kNStage), kTrisK = kSplit + 1, kSplitK = kSplit + 2;
+const int kTrisProg[] = {int(kTris), kSplit, kTrisK, kSplitK};
 const int kMaxGroups = 65535;  // GL 4.3's minimum GL_MAX_COMPUTE_WORK_GROUP_COUNT
 const int kNTex = 7;           // buffer textures (units 0 .. kNTex - 1)
 
 struct GlBackend {
   GlContext ctx;
-  GLuint prog[kNStage + 1] = {0};  // by stage, then kSplit
+  GLuint prog[kNStage + 3] = {0};  // by stage, then kSplit, kTrisK, kSplitK
   GLuint buf[15] = {0};         // by binding point
   GLuint tex[kNTex] = {0};      // buffer textures of B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP, B_WAVE,
                                 // B_PHASE (units 0..6)
@@ -47,9 +50,10 @@ struct GlBackend {
   std::vector<int> perm;
   double reach = 0;
   int nfast = 0;
+  bool kerner = false;          // the sea's pressure needs no moments: kTrisK, kSplitK
   int vlocal = BUOY_VERT_LOCAL, local = BUOY_LOCAL, per = BUOY_PER, blocal = BUOY_BODY_LOCAL;
-  GLint uHasprev[2] = {-1, -1}, uFirst[2] = {-1, -1}, uSlamdt[2] = {-1, -1};  // per-step uniforms of
-                                // tris.comp and kSplit, looked up once
+  GLint uHasprev[4] = {-1, -1, -1, -1}, uFirst[4] = {-1, -1, -1, -1},
+        uSlamdt[4] = {-1, -1, -1, -1};  // per-step uniforms of the kTrisProg, looked up once
   std::vector<GBody> body;      // per step, one per hull body (staging without persist)
   std::vector<float> phase;     // per step, nslot x nwave
   std::vector<float> out;       // readback, nslot x 10 x 4
@@ -64,12 +68,17 @@ static GLint loc(GlBackend* g, int st, const char* name) {
   return g->ctx.gl.GetUniformLocation(g->prog[st], name);
 }
 
-// the uniform called name of both triangle programs (kTris, kSplit)
+// the uniform called name of all triangle programs (kTrisProg)
 static void trisUniform(GlBackend* g, const char* name, int v) {
-  for (int st : {int(kTris), kSplit}) g->ctx.gl.ProgramUniform1i(g->prog[st], loc(g, st, name), v);
+  for (int st : kTrisProg) g->ctx.gl.ProgramUniform1i(g->prog[st], loc(g, st, name), v);
 }
 static void trisUniform(GlBackend* g, const char* name, float v) {
-  for (int st : {int(kTris), kSplit}) g->ctx.gl.ProgramUniform1f(g->prog[st], loc(g, st, name), v);
+  for (int st : kTrisProg) g->ctx.gl.ProgramUniform1f(g->prog[st], loc(g, st, name), v);
+}
+
+// the triangle program of this step: split or not, moments or not
+static int trisProg(const GlBackend* g) {
+  return kTrisProg[(g->nfast < g->nwave ? 1 : 0) + (g->kerner ? 2 : 0)];
 }
 
 // buffer at binding point i with n bytes (data may be null)
@@ -186,9 +195,10 @@ bool glMake(Buoy* b, std::string* err) {
                      "\n#define BUOY_LOCAL " + std::to_string(g->local) +
                      "\n#define BUOY_PER " + std::to_string(g->per) +
                      "\n#define BUOY_BODY_LOCAL " + std::to_string(g->blocal) + "\n";
-  for (int i = 0; i <= kNStage; i++) {
-    g->prog[i] = i < kNStage ? glProgram(gl, kStage[i], err, defs)
-                             : glProgram(gl, "tris.comp", err, defs + "#define WI_SPLIT 1\n");
+  for (int i = 0; i < kNStage + 3; i++) {
+    std::string d = defs + (i == kSplit || i == kSplitK ? "#define WI_SPLIT 1\n" : "") +
+                    (i == kTrisK || i == kSplitK ? "#define WI_NOMOM 1\n" : "");
+    g->prog[i] = glProgram(gl, i < kNStage ? kStage[i] : "tris.comp", err, d);
     if (!g->prog[i]) {
       b->gl = g;
       glFree(b);
@@ -334,7 +344,7 @@ bool glMake(Buoy* b, std::string* err) {
   trisUniform(g, "tTri", 2);
   gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "tVert"), 3);
   trisUniform(g, "tExp", 4);
-  for (int st : {int(kVerts), int(kTris), kSplit}) {
+  for (int st : {int(kVerts), int(kTris), kSplit, kTrisK, kSplitK}) {
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "tWave"), 5);
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "tPhase"), 6);
   }
@@ -349,10 +359,10 @@ bool glMake(Buoy* b, std::string* err) {
   gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "rho"), float(sea.rho));
   seaUniforms(g, sea);
   uploadWaves(g, sea);
-  for (int i = 0; i < 2; i++) {
-    g->uHasprev[i] = loc(g, i ? kSplit : kTris, "hasprev");
-    g->uFirst[i] = loc(g, i ? kSplit : kTris, "first");
-    g->uSlamdt[i] = loc(g, i ? kSplit : kTris, "slamdt");
+  for (int i = 0; i < 4; i++) {
+    g->uHasprev[i] = loc(g, kTrisProg[i], "hasprev");
+    g->uFirst[i] = loc(g, kTrisProg[i], "first");
+    g->uSlamdt[i] = loc(g, kTrisProg[i], "slamdt");
   }
   timerInit(&g->timer, &gl);
   for (int i = 0; i < kNStage; i++) g->tstage[i] = timerStage(&g->timer, kStage[i]);
@@ -363,7 +373,7 @@ bool glMake(Buoy* b, std::string* err) {
 
 static void seaUniforms(GlBackend* g, const Sea& sea) {
   const GladGLContext& gl = g->ctx.gl;
-  for (int st : {int(kVerts), int(kTris), kSplit}) {
+  for (int st : {int(kVerts), int(kTris), kSplit, kTrisK, kSplitK}) {
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "nwave"), g->nwave);
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "ngerst"), sea.ng);
     gl.ProgramUniform1f(g->prog[st], loc(g, st, "depth"), float(sea.depth));
@@ -371,7 +381,8 @@ static void seaUniforms(GlBackend* g, const Sea& sea) {
                         float(sea.current[1]));
   }
   // flat water needs no dynamic pressure, whatever the model
-  trisUniform(g, "linear", int(!sea.kerner && !sea.waves.empty()));
+  g->kerner = sea.kerner || sea.waves.empty();
+  trisUniform(g, "linear", int(!g->kerner));
 }
 
 void glSetSea(Buoy* b) {
@@ -524,8 +535,8 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   gl.BindImageTexture(0, g->tex[4], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
-  for (int i = 0; i < 2; i++) {
-    GLuint p = g->prog[i ? kSplit : kTris];
+  for (int i = 0; i < 4; i++) {
+    GLuint p = g->prog[kTrisProg[i]];
     gl.ProgramUniform1i(p, g->uHasprev[i], s->hasPrev);
     gl.ProgramUniform1i(p, g->uFirst[i], clock != kMidStep);
     gl.ProgramUniform1f(p, g->uSlamdt[i], float(s->hasPrev ? d->time - s->tprev : 0));
@@ -546,7 +557,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   for (int pass = 0; pass < 2; pass++) {
     for (int st = 0; st < kNStage; st++) {
       timerBegin(&g->timer, g->tstage[st]);
-      gl.UseProgram(g->prog[st == kTris && g->nfast < g->nwave ? kSplit : st]);
+      gl.UseProgram(g->prog[st == kTris ? trisProg(g) : st]);
       if (groups[st] > 0) gl.DispatchCompute(groups[st], 1, 1);
       gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                        GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -27,33 +27,45 @@ vec2 cexp(vec2 z) { return exp(z.x) * vec2(cos(z.y), sin(z.y)); }
 // 1/6), far below the parity tolerance (1e-4)
 const float WI_TAYLOR = 1.0;
 const int WI_TERMS = 9;
+// WI_NOMOM (the programs for Kerner's pressure, gl.cc kTrisK: the
+// pressure's moments unused) sums s0 only, sa = sb = 0: the u chain is a
+// third of each term
 void ddSeries(vec2 x, vec2 y, int nt, out vec2 s0, out vec2 sa, out vec2 sb) {
   // terms n = 1, 2 written out (h_1(x,y) = x + y, h_1(x,x,y) = 2x + y: no
   // complex products)
-  vec2 yn = y, g = x + y, u = x + g;
+  vec2 yn = y, g = x + y;
   float f2 = 1.0 / 6.0, f3 = 1.0 / 24.0;  // 1/(n+2)!, 1/(n+3)!
   s0 = vec2(0.5, 0.0) + f2 * g;
+#ifdef WI_NOMOM
+  sa = sb = vec2(0.0);
+#else
+  vec2 u = x + g;
   sa = vec2(f2, 0.0) + f3 * g;
   sb = vec2(f2, 0.0) + f3 * u;
+#endif
   // term n = 2, always summed (nt >= 4)
   yn = cmul(y, y);
   g = cmul(x, g) + yn;
-  u = cmul(x, u) + g;
   f2 = f3;
   f3 = 1.0 / 120.0;
   s0 += f2 * g;
+#ifndef WI_NOMOM
+  u = cmul(x, u) + g;
   sa += f3 * g;
   sb += f3 * u;
+#endif
   int n = 3;
   do {  // nt >= 4; the test at the end: llvmpipe runs a loop's body once more, masked, after a break at the top
     f2 = f3;
     f3 /= float(n + 3);
     yn = cmul(yn, y);
     g = cmul(x, g) + yn;
-    u = cmul(x, u) + g;
     s0 += f2 * g;
+#ifndef WI_NOMOM
+    u = cmul(x, u) + g;
     sa += f3 * g;
     sb += f3 * u;
+#endif
   } while (++n < nt);
 }
 

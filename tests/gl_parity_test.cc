@@ -208,11 +208,15 @@ TEST(GlParity, PiecesBeyondTheFirstSeriesBoundRepeatTheStep) {
 }
 
 TEST(GlParity, SpectralSeaDeepAndFiniteDepth) {
-  // a 63-component JONSWAP sea (odd: the deep table's last texel holds one
-  // component, sea.glsl expTexel) in deep water, where the gl table pairs
-  // two components a texel, and at 8 m depth, where it does not; the cpu
-  // backend's direct sum is the reference, to the random scenes' tolerance
-  for (const char* depth : {"", "<numeric name=\"mjbuoy.sea.depth\" data=\"8\"/>"}) {
+  // a 63-component JONSWAP sea (odd: the table's last texel holds one
+  // component, sea.glsl expTexel) in deep water and at 8 m depth (the
+  // profiles' second exponential, tris.comp expAt), with the linear
+  // pressure and Kerner's (the programs without pressure moments, gl.cc
+  // kTrisK: the water velocity alone); the cpu backend's direct sum is the
+  // reference, to the random scenes' tolerance
+  for (int cs = 0; cs < 4; cs++) {
+    const char* depth = cs & 1 ? "<numeric name=\"mjbuoy.sea.depth\" data=\"8\"/>" : "";
+    const char* press = cs & 2 ? "<text name=\"mjbuoy.sea.pressure\" data=\"kerner\"/>" : "";
     std::string xml =
         std::string("<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" MJB_MODELS
                     "/meshes/wigley_576.obj\"/></asset><custom><text name=\"mjbuoy.hulls\" "
@@ -221,7 +225,7 @@ TEST(GlParity, SpectralSeaDeepAndFiniteDepth) {
                     "<numeric name=\"mjbuoy.spectrum.sea.tp\" data=\"5\"/>"
                     "<numeric name=\"mjbuoy.spectrum.sea.components\" data=\"63\"/>"
                     "<numeric name=\"mjbuoy.spectrum.sea.spreading\" data=\"10\"/>") +
-        depth +
+        depth + press +
         "</custom><worldbody><body name=\"w\" pos=\"0 0 0.03\"><freejoint/>"
         "<inertial pos=\"0 0 -0.08\" mass=\"176\" diaginertia=\"6 237 238\"/>"
         "<geom name=\"hw\" type=\"mesh\" mesh=\"w\"/></body></worldbody></mujoco>";
@@ -233,7 +237,7 @@ TEST(GlParity, SpectralSeaDeepAndFiniteDepth) {
       p.dc->time = p.dg->time = 1.7 * st;
       mj_step(p.mc, p.dc);
       mj_step(p.mg, p.dg);
-      EXPECT_TRUE(wrenchesMatch(p, 1, std::string(depth) + " state " + std::to_string(st)));
+      EXPECT_TRUE(wrenchesMatch(p, 1, std::string(depth) + press + " state " + std::to_string(st)));
     }
   }
 }
