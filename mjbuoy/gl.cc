@@ -25,17 +25,21 @@ static const char* kStage[] = {"verts.comp", "tris.comp", "bodies.comp"};
 enum { kVerts, kTris, kBodies, kNStage };
 // tris.comp with WI_SPLIT: for seas with components whose pieces need
 // splitting (nfast < nwave); llvmpipe runs every loop body at least once,
-// so tris.comp leaves that loop out. Both again with WI_NOMOM for Kerner's
-// pressure, which needs no pressure moments (llvmpipe runs every if's
-// body, so a uniform could not skip them)
-const int kSplit = int(kNStage), kTrisK = kSplit + 1, kSplitK = kSplit + 2;
-const int kTrisProg[] = {int(kTris), kSplit, kTrisK, kSplitK};
+// so tris.comp leaves that loop out. Variant v of tris.comp (bits: 1
+// WI_SPLIT, 2 WI_NOMOM for Kerner's pressure, which needs no pressure
+// moments, 4 WI_DEEP for seas whose every e^(-2kh) is 0, without the
+// finite-depth profile's second pass; llvmpipe runs every if's body, so a
+// uniform could not skip them) is program kTrisProg[v]; llvmpipe compiles
+// a program's machine code at its first dispatch, so the unused cost little
+const int kNTris = 8;
+const int kTrisProg[kNTris] = {int(kTris), kNStage, kNStage + 1, kNStage + 2,
+                               kNStage + 3, kNStage + 4, kNStage + 5, kNStage + 6};
 const int kMaxGroups = 65535;  // GL 4.3's minimum GL_MAX_COMPUTE_WORK_GROUP_COUNT
 const int kNTex = 7;           // buffer textures (units 0 .. kNTex - 1)
 
 struct GlBackend {
   GlContext ctx;
-  GLuint prog[kNStage + 3] = {0};  // by stage, then kSplit, kTrisK, kSplitK
+  GLuint prog[kNStage + kNTris - 1] = {0};  // by stage, then tris.comp's variants 1..7
   GLuint buf[15] = {0};         // by binding point
   GLuint tex[kNTex] = {0};      // buffer textures of B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP, B_WAVE,
                                 // B_PHASE (units 0..6)
@@ -50,10 +54,11 @@ struct GlBackend {
   std::vector<int> perm;
   double reach = 0;
   int nfast = 0;
-  bool kerner = false;          // the sea's pressure needs no moments: kTrisK, kSplitK
+  bool kerner = false;          // the sea's pressure needs no moments (WI_NOMOM)
+  bool deep = true;             // every e^(-2kh) is 0 (WI_DEEP)
   int vlocal = BUOY_VERT_LOCAL, local = BUOY_LOCAL, per = BUOY_PER, blocal = BUOY_BODY_LOCAL;
-  GLint uHasprev[4] = {-1, -1, -1, -1}, uFirst[4] = {-1, -1, -1, -1},
-        uSlamdt[4] = {-1, -1, -1, -1};  // per-step uniforms of the kTrisProg, looked up once
+  GLint uHasprev[kNTris], uFirst[kNTris], uSlamdt[kNTris];  // per-step uniforms of the
+                                // kTrisProg, looked up in glMake
   std::vector<GBody> body;      // per step, one per hull body (staging without persist)
   std::vector<float> phase;     // per step, nslot x nwave
   std::vector<float> out;       // readback, nslot x 10 x 4
@@ -78,7 +83,7 @@ static void trisUniform(GlBackend* g, const char* name, float v) {
 
 // the triangle program of this step: split or not, moments or not
 static int trisProg(const GlBackend* g) {
-  return kTrisProg[(g->nfast < g->nwave ? 1 : 0) + (g->kerner ? 2 : 0)];
+  return kTrisProg[(g->nfast < g->nwave ? 1 : 0) + (g->kerner ? 2 : 0) + (g->deep ? 4 : 0)];
 }
 
 // buffer at binding point i with n bytes (data may be null)
@@ -195,9 +200,10 @@ bool glMake(Buoy* b, std::string* err) {
                      "\n#define BUOY_LOCAL " + std::to_string(g->local) +
                      "\n#define BUOY_PER " + std::to_string(g->per) +
                      "\n#define BUOY_BODY_LOCAL " + std::to_string(g->blocal) + "\n";
-  for (int i = 0; i < kNStage + 3; i++) {
-    std::string d = defs + (i == kSplit || i == kSplitK ? "#define WI_SPLIT 1\n" : "") +
-                    (i == kTrisK || i == kSplitK ? "#define WI_NOMOM 1\n" : "");
+  for (int i = 0; i < kNStage + kNTris - 1; i++) {
+    int v = i < kNStage ? 0 : i - kNStage + 1;  // tris.comp's variant
+    std::string d = defs + (v & 1 ? "#define WI_SPLIT 1\n" : "") +
+                    (v & 2 ? "#define WI_NOMOM 1\n" : "") + (v & 4 ? "#define WI_DEEP 1\n" : "");
     g->prog[i] = glProgram(gl, i < kNStage ? kStage[i] : "tris.comp", err, d);
     if (!g->prog[i]) {
       b->gl = g;
@@ -344,7 +350,8 @@ bool glMake(Buoy* b, std::string* err) {
   trisUniform(g, "tTri", 2);
   gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "tVert"), 3);
   trisUniform(g, "tExp", 4);
-  for (int st : {int(kVerts), int(kTris), kSplit, kTrisK, kSplitK}) {
+  for (int st = 0; st < kNStage + kNTris - 1; st++) {
+    if (st == kBodies) continue;
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "tWave"), 5);
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "tPhase"), 6);
   }
@@ -359,7 +366,7 @@ bool glMake(Buoy* b, std::string* err) {
   gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "rho"), float(sea.rho));
   seaUniforms(g, sea);
   uploadWaves(g, sea);
-  for (int i = 0; i < 4; i++) {
+  for (int i = 0; i < kNTris; i++) {
     g->uHasprev[i] = loc(g, kTrisProg[i], "hasprev");
     g->uFirst[i] = loc(g, kTrisProg[i], "first");
     g->uSlamdt[i] = loc(g, kTrisProg[i], "slamdt");
@@ -373,7 +380,8 @@ bool glMake(Buoy* b, std::string* err) {
 
 static void seaUniforms(GlBackend* g, const Sea& sea) {
   const GladGLContext& gl = g->ctx.gl;
-  for (int st : {int(kVerts), int(kTris), kSplit, kTrisK, kSplitK}) {
+  for (int st = 0; st < kNStage + kNTris - 1; st++) {
+    if (st == kBodies) continue;
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "nwave"), g->nwave);
     gl.ProgramUniform1i(g->prog[st], loc(g, st, "ngerst"), sea.ng);
     gl.ProgramUniform1f(g->prog[st], loc(g, st, "depth"), float(sea.depth));
@@ -383,6 +391,8 @@ static void seaUniforms(GlBackend* g, const Sea& sea) {
   // flat water needs no dynamic pressure, whatever the model
   g->kerner = sea.kerner || sea.waves.empty();
   trisUniform(g, "linear", int(!g->kerner));
+  g->deep = true;  // as gwave's e2kh
+  for (const Wave& w : sea.waves) g->deep = g->deep && !(sea.depth > 0 && w.k * sea.depth < 17);
 }
 
 void glSetSea(Buoy* b) {
@@ -535,7 +545,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   gl.BindImageTexture(0, g->tex[4], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
-  for (int i = 0; i < 4; i++) {
+  for (int i = 0; i < kNTris; i++) {
     GLuint p = g->prog[kTrisProg[i]];
     gl.ProgramUniform1i(p, g->uHasprev[i], s->hasPrev);
     gl.ProgramUniform1i(p, g->uFirst[i], clock != kMidStep);

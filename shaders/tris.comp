@@ -153,7 +153,11 @@ void wavePiece(Piece P, GWave wv, vec4 E0, bool split, inout vec3 ps, inout vec3
     M1 += m1;
     M2 += m2;
     sv += sg * s.y;
+#ifdef WI_DEEP
+  } while (false);  // every e2 is 0 (gl.cc): no loop left to manage
+#else
   } while (++f < (e2 > 0.0 ? 2 : 1));
+#endif
   float amp = wv.amp * P.a2, cv = amp * wv.omega / (1.0 - e2);
   // velocity: horizontal (e+ + e-) cos, vertical (e+ - e-) sin, over 1 - e^(-2kh)
   vs += cv * vec3(S.x * vec2(wv.dx, wv.dy), sv);
