@@ -130,7 +130,7 @@ static GWave gwave(const Wave& w, double depth, double reach) {
     f *= n + 2;
     if (std::pow(2.5e-7 * f / (n + 1), 1.0 / n) >= r) break;
   }
-  o.terms = float(n);
+  o.terms = float(n | 1);  // odd: ddSeries sums its terms from the third two at a time
   return o;
 }
 

@@ -54,19 +54,24 @@ void ddSeries(vec2 x, vec2 y, int nt, out vec2 s0, out vec2 sa, out vec2 sb) {
   sa += f3 * g;
   sb += f3 * u;
 #endif
+  // terms n = 3, 4, ... two a pass (half the loop's passes: llvmpipe
+  // updates and tests its lane mask each pass); nt odd (gl.cc gwave;
+  // WI_TERMS), so the pairs end at nt - 1 (an even nt: one term more)
   int n = 3;
   do {  // nt >= 4; the test at the end: llvmpipe runs a loop's body once more, masked, after a break at the top
-    f2 = f3;
-    f3 /= float(n + 3);
-    yn = cmul(yn, y);
-    g = cmul(x, g) + yn;
-    s0 += f2 * g;
+    for (int h = 0; h < 2; h++) {  // unrolled (constant count)
+      f2 = f3;
+      f3 /= float(n + h + 3);
+      yn = cmul(yn, y);
+      g = cmul(x, g) + yn;
+      s0 += f2 * g;
 #ifndef WI_NOMOM
-    u = cmul(x, u) + g;
-    sa += f3 * g;
-    sb += f3 * u;
+      u = cmul(x, u) + g;
+      sa += f3 * g;
+      sb += f3 * u;
 #endif
-  } while (++n < nt);
+    }
+  } while ((n += 2) < nt);
 }
 
 // e^(i p) for |p| <= WI_ROT by its Taylor series to p^15 (alternating: the
