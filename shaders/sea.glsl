@@ -87,19 +87,6 @@ vec2 seaLabel(int b, vec2 x, vec2 a) {
   return a;
 }
 
-// surface height relative to the still level [m] above x, whose label is a
-float seaEta(int b, vec2 a, vec2 x) {
-  float z = 0.0;
-  // the test at the end (llvmpipe runs a loop's body once more, masked,
-  // after a break at the top)
-  int i = 0;
-  if (nwave > 0) do {
-    GWave w = waveAt(i);
-    z += w.amp * cos(thetaAt(w, phaseAt(b, i), a, x));
-  } while (++i < nwave);
-  return z;
-}
-
 // Wheeler stretch (as mjbuoy/sea.cc): the profile height zs in [-h, 0] of a
 // point z above the level under the surface eta
 float seaStretch(float z, float eta) {

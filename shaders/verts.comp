@@ -41,12 +41,12 @@ void main() {
       vec3 p = texelFetch(tVert, i).xyz;
       vec3 r = vec3(dot(r0, p), dot(r1, p), dot(r2, p)) + o.xyz;
       vec2 a = seaLabel(b, r.xy, r.xy);
-      // the surface height (sea.glsl seaEta, same order) and each
-      // component's e^(i theta), at dry vertices too (tris.comp turns the
-      // cut points' from them, and scales by the profiles' e^(k zs) at
-      // each piece's corner 0), in one pass: one cos and sin per vertex
-      // and component; two components a texel (sea.glsl expTexel), 0 past
-      // the last
+      // the surface height above the still level, sum amp cos(theta) in
+      // component order, and each component's e^(i theta), at dry
+      // vertices too (tris.comp turns the cut points' from them, and
+      // scales by the profiles' e^(k zs) at each piece's corner 0), in one
+      // pass: one cos and sin per vertex and component; two components a
+      // texel (sea.glsl expTexel), 0 past the last
       float eta = 0.0;
       int w = 0;
       if (nwave > 0) do {
