@@ -281,6 +281,14 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   B->rad.ssAsked = rc.ssAsked;
   err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
   if (!err.empty()) return err;
+  // the immersion factor's reference (docs/physics.md, "Immersion factor"):
+  // the group's displaced volume at the panel pose, and its hull bodies
+  for (RadBody& x : B->rad.rb) {
+    if (x.body != root) continue;
+    x.veq = groupVolume(*B, d, root, dz);
+    for (int hb : B->body)
+      if (m->body_weldid[hb] == root) x.hb.push_back(hb);
+  }
   for (std::string& n : B->rad.note) B->cfg.warn.push_back(n);
   B->rad.note.clear();
   if (rc.diffraction) err = setDiffraction(root, Rd, cx, B->wcap, &B->diff);
@@ -330,6 +338,10 @@ std::string attachRadiation(Buoy* B) {
     if (!e.empty()) return e;
   }
   diffSea(B->cfg.sea, &B->diff);
+  // each diffraction body's radiation body, for its immersion factor
+  for (DiffBody& db : B->diff.db)
+    for (size_t i = 0; i < B->rad.rb.size(); i++)
+      if (B->rad.rb[i].body == db.body) db.ri = int(i);
   return "";
 }
 
