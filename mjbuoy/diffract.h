@@ -26,6 +26,7 @@ struct DiffBody {
   std::vector<int> iw;     // per sea component: table row at or below its omega;
                            //   -1 below the first (D linear from 0), -2 above the last (none)
   std::vector<double> tw;  // weight of the next row
+  int ri = -1;             // its body's index in Radiation::rb (immersion factor)
 };
 
 struct Diffraction {

@@ -31,10 +31,12 @@ static bool zRange(const Buoy& B, const mjData* d, int root, double* lo, double*
   return *lo <= *hi;
 }
 
-double displacedVolume(const Buoy& B, const mjData* d, int root, double dz) {
+// the flat-water volume of the hulls for which pick(body) holds
+template <class F>
+static double volumeOf(const Buoy& B, const mjData* d, double dz, F pick) {
   double vol = 0, lev = B.cfg.sea.level;
   for (const Hull& h : B.hull) {
-    if (!inSubtree(B.m, h.body, root)) continue;
+    if (!pick(h.body)) continue;
     const mjtNum* R = d->xmat + 9 * h.body;
     const mjtNum* x = d->xpos + 3 * h.body;
     for (int t = h.t0; t < h.t0 + h.nt; t++) {
@@ -50,6 +52,14 @@ double displacedVolume(const Buoy& B, const mjData* d, int root, double dz) {
     }
   }
   return vol;
+}
+
+double displacedVolume(const Buoy& B, const mjData* d, int root, double dz) {
+  return volumeOf(B, d, dz, [&](int b) { return inSubtree(B.m, b, root); });
+}
+
+double groupVolume(const Buoy& B, const mjData* d, int root, double dz) {
+  return volumeOf(B, d, dz, [&](int b) { return B.m->body_weldid[b] == root; });
 }
 
 bool equilibriumHeave(const Buoy& B, const mjData* d, int root, double* dz, std::string* why) {

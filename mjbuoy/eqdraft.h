@@ -16,6 +16,9 @@ struct Buoy;
 // exact flat-water integral of wetTriangle (pressure.h), V = -sum dA n_z
 double displacedVolume(const Buoy& B, const mjData* d, int root, double dz);
 
+// the same for the hulls of root's rigid group (body_weldid == root) only
+double groupVolume(const Buoy& B, const mjData* d, int root, double dz);
+
 // heave offset dz [m] at which the subtree of root, a body with a free
 // joint, displaces its own mass (body_subtreemass / rho), its orientation
 // and x, y kept: bisection between fully submerged and dry to 1e-12 of

@@ -162,7 +162,13 @@ void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
     const mjtNum* w = s->wrench.data() + 6 * bd;
     applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
   }
-  // added mass into qM, Kirchhoff and memory forces (radstep.cc)
+  // added mass into qM, Kirchhoff and memory forces (radstep.cc), scaled
+  // by each body's immersion from this call's pressure force
+  if (!b->b.rad.rb.empty()) {
+    const mjb::Sea& sea = b->b.cfg.sea;
+    mjb::radImmersion(b->b.rad, s->part.data() + 6 * m->nbody * mjbPART_PRESSURE, s->bad.data(),
+                      s->badPart.data() + mjbPART_PRESSURE, mjbNPART, sea.rho * sea.g, &s->rad);
+  }
   mjb::radiationStep(b->b.rad, m, d, &s->rad, b->b.cfg.sea, &s->notices);
   // diffraction excitation of the same bodies, per wave component (diffract.cc)
   const mjb::Diffraction& df = b->b.diff;
@@ -170,8 +176,11 @@ void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
     mjb::diffractionStep(df, b->b.cfg.sea, m, d, s->dwrench.data(), s->dtold.data(),
                          &s->notices);
     for (size_t i = 0; i < df.db.size(); i++) {
-      const mjtNum* w = s->dwrench.data() + 6 * i;
+      mjtNum* w = s->dwrench.data() + 6 * i;
       int bd = df.db[i].body;
+      // a diffraction force acts on the wetted surface (immersion factor)
+      const int ri = df.db[i].ri;
+      if (ri >= 0) for (int j = 0; j < 6; j++) w[j] *= s->rad.imm[ri];
       applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
     }
   }

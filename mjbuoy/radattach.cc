@@ -183,6 +183,35 @@ static double poseHeave(Buoy* B, const mjData* d, int root, const std::string& w
   return 0;
 }
 
+// why A_inf of the panel solution is not positive semi-definite, and what
+// to do: the panels are too coarse for the draft. A collocation point a
+// draft d below the surface sees its panel's image 2 d away; a panel much
+// wider than d is then integrated at one point across a 1/r^2 kernel that
+// varies over d, and the diagonal fix (panel.cc rankineMatrices) carries
+// that error: the solution is not resolved (a 2 x 1 m box at 2.5 mm
+// draft gave A33 = -3.2e6 kg at rho 1e5)
+static std::string unresolved(const PanelMesh& p, const HydroCoef& c) {
+  double zlo = 0, wide = 0;
+  for (int f = 0; f < p.nface(); f++) {
+    const int* q = &p.face[4 * f];
+    const int nv = q[3] < 0 ? 3 : 4;
+    for (int k = 0; k < nv; k++) {
+      const double* a = &p.vert[3 * q[k]];
+      const double* b = &p.vert[3 * q[(k + 1) % nv]];
+      zlo = std::min(zlo, a[2]);
+      wide = std::max(wide, std::hypot(std::hypot(a[0] - b[0], a[1] - b[1]), a[2] - b[2]));
+    }
+  }
+  double lo = INFINITY;
+  for (int i = 0; i < 6; i++) lo = std::min(lo, c.Ainf[7 * i]);
+  return "the panel solver's infinite-frequency added mass is not positive semi-definite "
+         "(smallest diagonal entry " + fmt(lo) + "): its " + std::to_string(p.nface()) +
+         " wet panels, up to " + fmt(wide) + " m wide, do not resolve its draft of " +
+         fmt(-zlo) + " m (panels should be no wider than a few drafts); give the hull a "
+         "finer mesh below the waterline or raise mjbuoy.radiation.refine, or turn its "
+         "radiation off";
+}
+
 // coefficients of one group; "" or the error
 static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   const mjModel* m = B->m;
@@ -280,7 +309,24 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   B->rad.conv = rc.conv;
   B->rad.ssAsked = rc.ssAsked;
   err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
+  if (!err.empty() && err.find("positive semi-definite") != std::string::npos) {
+    // an unresolved wet surface, not a fault of the user's numbers
+    std::string why = unresolved(body, c);
+    if (!(rc.given && rc.on) && !namedOn(*B, root)) {
+      B->cfg.warn.push_back(who.substr(8) + " is off: " + why);
+      return "";
+    }
+    return who + ": " + why;
+  }
   if (!err.empty()) return err;
+  // the immersion factor's reference (docs/physics.md, "Immersion factor"):
+  // the group's displaced volume at the panel pose, and its hull bodies
+  for (RadBody& x : B->rad.rb) {
+    if (x.body != root) continue;
+    x.veq = groupVolume(*B, d, root, dz);
+    for (int hb : B->body)
+      if (m->body_weldid[hb] == root) x.hb.push_back(hb);
+  }
   for (std::string& n : B->rad.note) B->cfg.warn.push_back(n);
   B->rad.note.clear();
   if (rc.diffraction) err = setDiffraction(root, Rd, cx, B->wcap, &B->diff);
@@ -330,6 +376,10 @@ std::string attachRadiation(Buoy* B) {
     if (!e.empty()) return e;
   }
   diffSea(B->cfg.sea, &B->diff);
+  // each diffraction body's radiation body, for its immersion factor
+  for (DiffBody& db : B->diff.db)
+    for (size_t i = 0; i < B->rad.rb.size(); i++)
+      if (B->rad.rb[i].body == db.body) db.ri = int(i);
   return "";
 }
 

@@ -27,7 +27,11 @@ bool groupMoves(const mjModel* m, int root) {
 bool RadConfig::groupRadiates(const mjModel* m, const std::vector<int>& hullBody,
                               int root) const {
   if (!groupMoves(m, root)) return false;
-  bool yes = on, no = false;
+  // on by default (no mjbuoy.radiation entry) only for a group free to
+  // move: a hinged, sliding or jointed-to-a-parent hull radiates only when
+  // asked (docs/mjcf.md, "Radiation")
+  const bool free = m->body_jntnum[root] > 0 && m->jnt_type[m->body_jntadr[root]] == mjJNT_FREE;
+  bool yes = on && (given || free), no = false;
   for (int hb : hullBody) {
     if (m->body_weldid[hb] != root) continue;
     for (int b : {hb, root}) {

@@ -27,7 +27,8 @@ struct RadConfig {
   // whether the rigid group of weld root `root` radiates: an override
   // naming the root or any of its hull bodies (hullBody, one per hull)
   // wins over `on` (off over on); a group that cannot move (groupMoves)
-  // never radiates
+  // never radiates; `on` by default (not `given`) covers only groups
+  // whose top body has a free joint
   bool groupRadiates(const mjModel* m, const std::vector<int>& hullBody, int root) const;
 };
 

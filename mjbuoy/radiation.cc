@@ -354,12 +354,15 @@ void radMakeState(const Radiation& r, RadState* s) {
   s->ssX.assign(r.nmode, 0);
   s->ssPw.assign(r.nmode, 0);
   s->ssNu.assign(12 * r.rb.size(), 0);
+  s->imm.assign(r.rb.size(), 1.0);
+  s->mdiag.assign(r.rb.size(), NAN);
   radRestart(s);
 }
 
 void radRestart(RadState* s) {
   std::fill(s->fmem.begin(), s->fmem.end(), 0.0);
   std::fill(s->told.begin(), s->told.end(), 0);
+  std::fill(s->imm.begin(), s->imm.end(), 1.0);
   s->head = s->count = 0;
   s->key = -1;
   s->tcur = 0;

@@ -29,6 +29,12 @@ struct RadBody {
   int nk = 0;                // memory samples (0: no memory)
   SsModes ss;                // state-space memory (radfit.h); empty: the convolution
   int soff = 0;              // its first mode in RadState's ssX, ssPw
+  // immersion (docs/physics.md, "Immersion factor"): the hull bodies of
+  // the rigid group, whose pressure force gives the displaced volume now,
+  // and the volume at the pose of the panel solution [m^3]; veq 0: the
+  // coefficients are not scaled (setHydroCoef, a group without hulls)
+  std::vector<int> hb;
+  double veq = 0;
 };
 
 // all bodies of one attached model
@@ -53,10 +59,15 @@ struct RadState {
   std::vector<char> told;    // per body: a non-finite force was named
   std::vector<cplx> ssX, ssPw;  // per mode: state-space sums (SsState)
   std::vector<double> ssNu;  // per body 12: first and newest velocity samples
+  std::vector<double> imm;   // per body: immersion factor of this call, in [0, 1]
   int head = 0, count = 0;   // newest sample, samples held
   long key = -1;             // mjTIMER_STEP count at the last call (-1: none)
   double tcur = 0;           // time of the current step [s]
   long mstamp = -1;          // mjTIMER_POSITION count whose qM holds A_inf
+  // per body: qM's diagonal at its first dof once A_inf was added there;
+  // with mstamp it tells a qM that holds A_inf from one mj_crb rebuilt
+  // (mj_resetData then mj_forward gives the same counts again)
+  std::vector<double> mdiag;
 };
 
 // K_ij(k dt), k = 0..n-1, from B_ij of c: K(t) = (2/pi) int_0^inf B cos(w t) dw
@@ -84,8 +95,24 @@ void radRestart(RadState* s);
 
 struct Sea;
 
+// the immersion factor's knee: s = clamp(V / (kImmKnee V_eq), 0, 1) is 1
+// while the hulls keep at least this share of their displacement at the
+// panel solution's pose (docs/physics.md, "Immersion factor")
+const double kImmKnee = 0.5;
+
+// each body's immersion factor into s->imm from the pressure stage's
+// world force (part: the mjbPART_PRESSURE family, 6 per MuJoCo body;
+// bad[b], badp[np b]: body b's state or pressure was not finite, which
+// finishWrench names: the last factor is kept),
+// V = F_z / (rho g): the displaced volume below the water surface
+// (exact on flat water); O(hull bodies), no allocation
+void radImmersion(const Radiation& r, const double* part, const char* bad, const char* badp,
+                  int np, double rhog, RadState* s);
+
 // in mjcb_passive: add each body's A_inf to d->qM (refactored) and its
-// Kirchhoff and memory forces to d->qfrc_passive. The memory acts on the
+// Kirchhoff and memory forces to d->qfrc_passive, each scaled by the
+// body's immersion factor s->imm (radImmersion; the memory's history
+// holds s nu, the velocity of the wetted surface). The memory acts on the
 // velocity relative to the sea's uniform current, the Kirchhoff terms on
 // the velocity relative to the water at the body's COM (current and wave
 // orbital velocity; docs/physics.md section 14, "Kirchhoff terms in waves")

@@ -147,7 +147,37 @@ void relative(const mjtNum* R, const double U[3], double nu[6], double bias[6]) 
   mju_addTo3(bias, t);
 }
 
+// sum of qM's diagonal over the dofs that move rb
+double diagSum(const mjModel* m, const mjData* d, const RadBody& rb) {
+  double q = 0;
+  for (int i : rb.dof) q += d->qM[m->dof_Madr[i]];
+  return q;
+}
+
 }  // namespace
+
+void radImmersion(const Radiation& r, const double* part, const char* bad, const char* badp,
+                  int np, double rhog, RadState* s) {
+  for (size_t ib = 0; ib < r.rb.size(); ib++) {
+    const RadBody& rb = r.rb[ib];
+    if (!(rb.veq > 0)) {
+      s->imm[ib] = 1;
+      continue;
+    }
+    // V = F_z / (rho g): -sum dA n_z of the wet pieces on flat water
+    // (eqdraft.h), the same below the wave surface in waves
+    double fz = 0;
+    bool ok = true;
+    for (int b : rb.hb) {
+      ok = ok && !bad[b] && !badp[np * b] && std::isfinite(part[6 * b + 2]);
+      fz += part[6 * b + 2];
+    }
+    // a pressure that is not finite is named by finishWrench: keep the last
+    if (!ok) continue;
+    const double v = fz / (rhog * kImmKnee * rb.veq);
+    s->imm[ib] = v >= 1 ? 1.0 : v > 0 ? v : 0.0;
+  }
+}
 
 void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s, const Sea& sea,
                    std::string* notices) {
@@ -163,10 +193,15 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
   // qM is rebuilt by every mj_fwdPosition; a second callback after the same
   // one (mj_forwardSkip from the velocity stage) finds A_inf in it already
   const long pos = d->timer[mjTIMER_POSITION].number;
-  const bool addM = pos != s->mstamp;
+  // with the same count mj_crb may still have rebuilt qM since (a reset in
+  // between): then some body's diagonal sum is not the one left after adding
+  bool addM = pos != s->mstamp;
+  for (size_t ib = 0; ib < r.rb.size() && !addM; ib++)
+    addM = !(diagSum(m, d, r.rb[ib]) == s->mdiag[ib]);
   for (size_t ib = 0; ib < r.rb.size(); ib++) {
     const RadBody& rb = r.rb[ib];
     const int n = rb.dof.size();
+    const double si = s->imm[ib];  // immersion factor (radImmersion)
     double* J = s->jac.data();
     double nu[6], bias[6];
     kinematics(rb, m, d, J, nu, bias);
@@ -192,12 +227,16 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
       for (int k = 0; k < n; k++) mul6(rb.A, J + 6 * k, AJ + 6 * k);
       for (int a = 0; a < n; a++) {
         const int adr = m->dof_Madr[rb.dof[a]];
-        for (int b = a; b < n; b++) d->qM[adr + b - a] += dot6(J + 6 * a, AJ + 6 * b);
+        for (int b = a; b < n; b++) d->qM[adr + b - a] += si * dot6(J + 6 * a, AJ + 6 * b);
       }
     }
 
     double W[6];
     kirchhoff(rb.A, nw, bw, W);
+    for (int j = 0; j < 6; j++) W[j] *= si;  // linear in A: the terms of s A_inf
+    // the memory's input is the wetted surface's velocity s nu: a dry
+    // body radiates no waves (docs/physics.md, "Immersion factor")
+    for (int j = 0; j < 6; j++) nu[j] *= si;
 
     // memory: the step's first call records nu and evaluates the convolution
     double* fm = s->fmem.data() + 6 * ib;
@@ -218,7 +257,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
       for (int j = 0; j < 6; j++) hist[r.nh * j + s->head] = nu[j];
       memory(rb, hist, r.nh, s->head, s->count, r.dt, fm);
     }
-    for (int j = 0; j < 6; j++) W[j] += fm[j];
+    for (int j = 0; j < 6; j++) W[j] += si * fm[j];
 
     if (!std::isfinite(dot6(W, W))) {
       if (!s->told[ib]) {
@@ -240,6 +279,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
     mj_factorM(m, d);
     if (d->nefc > 0) mj_projectConstraint(m, d);
     s->mstamp = pos;
+    for (size_t ib = 0; ib < r.rb.size(); ib++) s->mdiag[ib] = diagSum(m, d, r.rb[ib]);
   }
 }
 

@@ -144,6 +144,21 @@ TEST(RobustLimits, EveryFieldAcceptsItsBoundsAndRefusesBeyond) {
 // depth Airy profile and dispersion are those of deep water (tanh(k d) = 1,
 // cosh(k (z + d)) / cosh(k d) = e^(k z)), so the wrench equals the deep
 // one up to the Wheeler stretch's dependence on depth
+TEST(RobustLimits, DensestWaterWithRadiationNamesTheUnresolvedDraft) {
+  // at rho = 1e5 kg/m^3 the 500 kg box of model() floats at a draft of
+  // m / (rho A_wp) = 500 / (1e5 x 2) = 2.5 mm under its 12-triangle mesh's
+  // panels of up to 2.2 m: the panel integrals are not resolved and A_inf
+  // comes out indefinite (a negative heave added mass). Radiation asked
+  // for: an error naming the body, the draft and what to do, never a
+  // solution with negative kinetic energy (docs/physics.md section 14)
+  std::string e = attachError(model("<numeric name=\"mjbuoy.sea.density\" data=\"1e5\"/>"
+                                    "<text name=\"mjbuoy.radiation\" data=\"on\"/>"));
+  EXPECT_NE(e.find("radiation of body \"box\""), std::string::npos) << e;
+  EXPECT_NE(e.find("not positive semi-definite"), std::string::npos) << e;
+  EXPECT_NE(e.find("do not resolve its draft of 0.0025 m"), std::string::npos) << e;
+  EXPECT_NE(e.find("mjbuoy.radiation.refine"), std::string::npos) << e;
+}
+
 TEST(RobustLimits, ShortWavesOverDeepFiniteWaterStayFinite) {
   const char* wave = "<numeric name=\"mjbuoy.wave.a\" data=\"0.05 1 0 0 0.5\"/>";
   Scene deep(model(wave));
