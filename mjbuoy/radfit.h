@@ -22,6 +22,11 @@ struct KFit {
 // tolerances of fitKernel (docs/physics.md section 14)
 const double kFitTolT = 0.02, kFitTolF = 0.03;
 const int kFitMaxOrder = 20;  // real exponentials (a complex pair counts 2)
+// a diagonal K below this fraction of the largest of its kind (translation
+// or rotation) is fitted to that floor, not to its own size (radiation.cc;
+// the yaw of the test hemisphere, 2.6e-4 of its roll, is panel noise; the
+// roll of the 64-triangle Wigley, 1.3e-3 of its yaw, is not)
+const double kFitNoise = 3e-3;
 
 // fit n samples K[k] = K(k h) (n >= 4): matrix pencil on samples decimated
 // to at most ~300, residues by least squares with the trapezoid steady gain

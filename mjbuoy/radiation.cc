@@ -182,26 +182,32 @@ void fitMemory(const HydroCoef& c, double dt, const std::vector<RadBody>& done, 
       }
       found = true;
     }
-    // the pair's scale: sqrt(S_i S_j), S_d the largest diagonal K (L2) or
-    // B (peak) of d's kind (translation or rotation, the same units), so
-    // that a pair that is noise (yaw of a body of revolution) is not held
-    // to its own size
+    // the pair's scale sqrt(S_i S_j), S_d dof d's own diagonal K (L2) and
+    // B (peak), but at least kFitNoise of the largest diagonal of d's kind
+    // (translation or rotation, the same units): each diagonal is held to
+    // its own size (a slender hull's roll damping is 1e-3 of its yaw
+    // damping and decides the roll decay), a coupling to the size at which
+    // B stays positive semi-definite (|B_ij| <= sqrt(B_ii B_jj)), and only a
+    // diagonal that is noise (yaw of a body of revolution) to the floor
     double sT = 0, sB = 0;
     {
-      double S[2][2] = {{0, 0}, {0, 0}};  // [kind of i, j][L2 of K, peak B]
+      double D[6][2] = {}, S[2][2] = {};  // [dof or kind][L2 of K, peak B]
       for (size_t q = 0; q < rb->pair.size(); q++) {
         const int d = rb->pair[q] / 6;
         if (rb->pair[q] != 7 * d) continue;
         double n2 = 0;
         for (int k = 0; k < nk; k++) n2 += rb->K[q * nk + k] * rb->K[q * nk + k];
-        for (int e = 0; e < 2; e++) {
-          if (d / 3 != (e ? j : i) / 3) continue;
-          S[e][0] = std::max(S[e][0], std::sqrt(n2));
-          S[e][1] = std::max(S[e][1], maxAbs(c.B, d, d));
-        }
+        D[d][0] = std::sqrt(n2);
+        D[d][1] = maxAbs(c.B, d, d);
+        for (int e = 0; e < 2; e++) S[d / 3][e] = std::max(S[d / 3][e], D[d][e]);
       }
-      sT = std::sqrt(S[0][0] * S[1][0]);
-      sB = std::sqrt(S[0][1] * S[1][1]);
+      double E[2][2];
+      for (int e = 0; e < 2; e++) {
+        E[0][e] = std::max(D[i][e], kFitNoise * S[i / 3][e]);
+        E[1][e] = std::max(D[j][e], kFitNoise * S[j / 3][e]);
+      }
+      sT = std::sqrt(E[0][0] * E[1][0]);
+      sB = std::sqrt(E[0][1] * E[1][1]);
     }
     if (!found && !fitKernel(rb->K.data() + p * nk, nk, dt, c.omega, sT, sB, &fit[p])) {
       char e[512];
