@@ -426,6 +426,29 @@ TEST(Radiation, ResetEmptiesTheMemory) {
   }
 }
 
+TEST(Radiation, ResetAfterAForwardRepeatsTheRun) {
+  // mj_resetData, then mj_forward (a viewer or a sensor read after the
+  // reset), then mj_resetData again and the run: it must repeat the first
+  // run bit for bit. mj_resetData zeroes MuJoCo's timer counts, so the
+  // first step repeats the forward's mjTIMER_POSITION count while its
+  // mj_fwdPosition has rebuilt qM without A_inf (before the fix the added
+  // mass was left out of that step)
+  Scene s(slide("Euler", 0.001));
+  ASSERT_TRUE(s.ok()) << s.err;
+  ASSERT_EQ(mjb::setHydroCoef(s.b, 1, heave(30), -1), "");
+  auto go = [&]() {
+    mj_resetData(s.m, s.d);
+    s.d->qpos[0] = 0.01;
+    run(s.m, s.d, 400);
+    return s.d->qpos[0];
+  };
+  const double x1 = go();
+  mj_resetData(s.m, s.d);
+  mj_forward(s.m, s.d);
+  const double x2 = go();
+  EXPECT_EQ(std::memcmp(&x1, &x2, sizeof(double)), 0) << x1 << " " << x2;
+}
+
 TEST(Radiation, CopiedStateContinuesIdentically) {
   // mj_copyData + mjb_copyData halfway: the copy's second half is the
   // original's bit for bit (history included), under RK4 and Euler, and with
