@@ -60,8 +60,15 @@ if [ $run_release = 1 ]; then
 fi
 
 if [ $run_sanitize = 1 ]; then
+  # one radiation cache for both phases (docs/testing.md "Radiation
+  # cache"): the panel solutions the release tests computed are read by
+  # the sanitize tests (their keys are the same bits: no fast-math, same
+  # SSE2 code), so ASan runs no panel solve the release phase already ran
+  radcache=$(sed -n 's/^MJBUOY_TEST_RADCACHE:PATH=//p' "$build/CMakeCache.txt" 2>/dev/null)
+  radcache=${radcache:-$(realpath -m "$build/radcache")}
   sanitize_build() {
-    cmake -S . -B "$asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMJBUOY_SANITIZE=ON >/dev/null &&
+    cmake -S . -B "$asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMJBUOY_SANITIZE=ON \
+      -DMJBUOY_TEST_RADCACHE="$radcache" >/dev/null &&
       cmake --build "$asan" -j"$jobs" 2>&1 | { grep -E "error|Error" || true; } &&
       test -x "$asan/tools/mjbuoy-sim"
   }
