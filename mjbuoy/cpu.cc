@@ -393,6 +393,72 @@ static void pass1Lanes(Pass1& q, const int* wl, int nl, int* rest) {
   for (int i = 0; i < in.nrest; i++) pass1Tri(q, rest[i]);
 }
 
+// whether pass 2 can run in lanes: every exponent it raises to is 0.5, 1
+// or 2 (hydro.cc's powp without the general pow)
+static bool flowExponents(const HullParams& par, bool slam) {
+  auto ok = [](double p) { return p == 0.5 || p == 1 || p == 2; };
+  return ok(par.drag[2]) && ok(par.suction[2]) && (!slam || ok(par.slam[2]));
+}
+
+// pass 1's results pass 2 reads: the wet extent along the flow and its
+// length, the mean position along it, ITTC's C_F, the slamming dt
+struct Flow2 {
+  double lo, len, sbar, cf, dt;
+};
+
+// pass 2 for the wet triangles wl[0, nf) in vector lanes (trivec.h)
+static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const double vel[6],
+                       const double* com, const Rigid& rig, const double dir[3],
+                       const Flow2& f2, const int* wl, int nf, double* const w[]) {
+  const HullParams& par = hl.par;
+  const Sea& sea = b.cfg.sea;
+  FlowIn in;
+  in.idx = wl;
+  in.m = nf;
+  in.area = s->tri.area.data();
+  in.c = s->tri.c.data();
+  in.nrm = s->tri.n.data();
+  in.u = s->tri.u.data();
+  in.v = s->tri.v.data();
+  in.tarea = b.tarea.data();
+  in.prevA = s->prevA.data();
+  in.prevV = s->prevV.data();
+  for (int j = 0; j < 6; j++) in.vel[j] = vel[j];
+  for (int j = 0; j < 3; j++) {
+    in.com[j] = com[j];
+    in.dir[j] = dir[j];
+    in.drag[j] = par.drag[j];
+    in.suction[j] = par.suction[j];
+    in.gcom[j] = rig.com[j];
+  }
+  in.visc = par.viscous > 0;
+  in.rcf = sea.rho * f2.cf;
+  in.kv = par.viscous;
+  in.lo = f2.lo;
+  in.len = f2.len;
+  in.sbar = f2.sbar;
+  in.vref = par.vref;
+  in.slam = s->hasPrev && par.slam[0] > 0 && f2.dt > 0;
+  in.gain = par.slam[0];
+  in.gmax = par.slam[1];
+  in.pw = par.slam[2];
+  in.share = hl.share;
+  in.shull = hl.area;
+  in.dt = f2.dt;
+  in.minv = rig.minv;
+  for (int j = 0; j < 6; j++) in.iinv[j] = rig.iinv[j];
+  if (simdLevel() == kSimdAvx512) {
+    flowLanesAvx512(&in);
+  } else {
+    flowLanesAvx2(&in);
+  }
+  for (int j = 0; j < 6; j++) {
+    w[mjbPART_VISCOUS][j] += in.wv[j];
+    w[mjbPART_DRAG][j] += in.wd[j];
+    w[mjbPART_SLAM][j] += in.ws[j];
+  }
+}
+
 // forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
 // is the body's wrench of force family p; slot picks the thread's scratch
 static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6],
@@ -541,43 +607,58 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   }
 
   // pass 2: hydrodynamic forces at each wet centroid, with the water's
-  // velocity averaged over the wet part (pass 1; docs/physics.md, "Cost")
+  // velocity averaged over the wet part (pass 1; docs/physics.md, "Cost");
+  // with a vector level in lanes (trivec.h) when the exponents allow
   const double slamdt = s->hasPrev ? t - s->tprev : 0;
-  for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-    double* v = &s->tri.v[3 * k];
-    if (!(s->tri.area[k] > 0)) {
-      v[0] = v[1] = v[2] = 0;
-      continue;
-    }
-    double A = s->tri.area[k];
-    const double* c = &s->tri.c[3 * k];
-    const double* n = &s->tri.n[3 * k];
-    const double* uwk = &s->tri.u[3 * k];
-    double wc[3];
-    cross(vel, c, wc);
-    for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uwk[j];
-
-    double g[3];
-    if (par.viscous > 0) {
-      double sk = len > 0 ? (dot(c, dir) - lo) / len : sbar;
-      viscousForce(rho, cf, par.viscous * (1 + sbar - sk), A, n, v, g);
-      add(w[mjbPART_VISCOUS], g, c);
-    }
-    dragForce(par.drag, par.suction, par.vref, A, n, v, g);
-    add(w[mjbPART_DRAG], g, c);
-    if (s->hasPrev) {
-      // the stopping force is sized by the effective mass of the rigid
-      // group at this point along v (docs/physics.md, "Slamming with the
-      // effective mass"), not its mass: it acts off the COM
-      double sp = std::sqrt(dot(v, v)), meff = 0;
-      if (sp > 0) {
-        double u[3] = {v[0] / sp, v[1] / sp, v[2] / sp}, pw[3];
-        for (int j = 0; j < 3; j++) pw[j] = c[j] + com[j];
-        meff = effMass(rig, pw, u);
+  if (lanes && flowExponents(par, s->hasPrev)) {
+    int nf = 0;
+    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+      if (s->tri.area[k] > 0) {
+        wl[nf++] = k;
+      } else {
+        double* v = &s->tri.v[3 * k];
+        v[0] = v[1] = v[2] = 0;
       }
-      slamForce(par.slam[0], par.slam[1], par.slam[2], hl.share * meff, hl.area, b.tarea[k], A,
-                v, s->prevA[k], &s->prevV[3 * k], n, slamdt, g);
-      add(w[mjbPART_SLAM], g, c);
+    }
+    Flow2 f2{lo, len, sbar, cf, slamdt};
+    pass2Lanes(b, hl, s, vel, com, rig, dir, f2, wl, nf, w);
+  } else {
+    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+      double* v = &s->tri.v[3 * k];
+      if (!(s->tri.area[k] > 0)) {
+        v[0] = v[1] = v[2] = 0;
+        continue;
+      }
+      double A = s->tri.area[k];
+      const double* c = &s->tri.c[3 * k];
+      const double* n = &s->tri.n[3 * k];
+      const double* uwk = &s->tri.u[3 * k];
+      double wc[3];
+      cross(vel, c, wc);
+      for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uwk[j];
+
+      double g[3];
+      if (par.viscous > 0) {
+        double sk = len > 0 ? (dot(c, dir) - lo) / len : sbar;
+        viscousForce(rho, cf, par.viscous * (1 + sbar - sk), A, n, v, g);
+        add(w[mjbPART_VISCOUS], g, c);
+      }
+      dragForce(par.drag, par.suction, par.vref, A, n, v, g);
+      add(w[mjbPART_DRAG], g, c);
+      if (s->hasPrev) {
+        // the stopping force is sized by the effective mass of the rigid
+        // group at this point along v (docs/physics.md, "Slamming with the
+        // effective mass"), not its mass: it acts off the COM
+        double sp = std::sqrt(dot(v, v)), meff = 0;
+        if (sp > 0) {
+          double u[3] = {v[0] / sp, v[1] / sp, v[2] / sp}, pw[3];
+          for (int j = 0; j < 3; j++) pw[j] = c[j] + com[j];
+          meff = effMass(rig, pw, u);
+        }
+        slamForce(par.slam[0], par.slam[1], par.slam[2], hl.share * meff, hl.area, b.tarea[k], A,
+                  v, s->prevA[k], &s->prevV[3 * k], n, slamdt, g);
+        add(w[mjbPART_SLAM], g, c);
+      }
     }
   }
 

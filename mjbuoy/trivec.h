@@ -38,10 +38,36 @@ struct TriIn {
   double f[3], t[3], wet, lo, hi;
 };
 
+// one hull's wet triangles for pass 2 (hydro.h's viscous, drag and
+// slamming forces at each wet centroid); the exponents of drag, suction
+// and slamming must each be 0.5, 1 or 2 (cpu.cc checks; others: scalar)
+struct FlowIn {
+  const int* idx;  // global triangle indices, wet area > 0
+  int m;
+  const double *area, *c, *nrm, *u;  // pass 1's, per triangle
+  double* v;                         // written: flow-relative velocity [m/s]
+  const double* tarea;               // the triangles' whole areas [m^2]
+  const double *prevA, *prevV;       // slamming history (prev step)
+  double vel[6];                     // body velocity [angular; linear] at the COM
+  double com[3];                     // body COM, world [m]
+  // viscous: on, rho cf, viscous gain, extent and mean position along dir
+  int visc;
+  double rcf, kv, lo, len, sbar, dir[3];
+  double drag[3], suction[3], vref;
+  // slamming: on (history and gain and dt > 0), gain, gmax, power, the
+  // hull's share and area [m^2], dt [s], the rigid group (rigid.h)
+  int slam;
+  double gain, gmax, pw, share, shull, dt, minv, iinv[6], gcom[3];
+  // sums [force; torque about the COM] by family
+  double wv[6], wd[6], ws[6];
+};
+
 // (trivec_avx2.cc, trivec_avx512.cc: compiled for those instruction sets,
 // called only when the cpu has them)
 void triLanesAvx2(TriIn* in);
 void triLanesAvx512(TriIn* in);
+void flowLanesAvx2(FlowIn* in);
+void flowLanesAvx512(FlowIn* in);
 
 }  // namespace mjb
 

@@ -13,4 +13,5 @@ struct Ops4 {
 }  // namespace
 
 void triLanesAvx2(TriIn* in) { triLanes<4, Ops4>(in); }
+void flowLanesAvx2(FlowIn* in) { flowLanes<4, Ops4>(in); }
 }  // namespace mjb

@@ -14,4 +14,5 @@ struct Ops8 {
 }  // namespace
 
 void triLanesAvx512(TriIn* in) { triLanes<8, Ops8>(in); }
+void flowLanesAvx512(FlowIn* in) { flowLanes<8, Ops8>(in); }
 }  // namespace mjb

@@ -271,6 +271,137 @@ static void triLanes(TriIn* in) {
   in->hi = TLanes<W>::hmax(hi);
 }
 
+// x^p for x >= 0 and p = 0.5, 1 or 2 (hydro.cc's powp; others not used)
+template <class V, class M>
+static inline V powLanes(V x, double p) {
+  return p == 0.5 ? M::sqrt(x) : p == 1 ? x : x * x;
+}
+
+// w[0..2] += g, w[3..5] += c x g (cpu.cc add), in the lanes of use
+template <class V, class I>
+static inline void addLanes(V* w, const V g[3], const V c[3], I use) {
+  const V z = V{};
+  const V t[3] = {c[1] * g[2] - c[2] * g[1], c[2] * g[0] - c[0] * g[2],
+                  c[0] * g[1] - c[1] * g[0]};
+  for (int j = 0; j < 3; j++) {
+    w[j] += use ? g[j] : z;
+    w[3 + j] += use ? t[j] : z;
+  }
+}
+
+// pass 2 for the wet triangles [p0, p0 + nl) of in.idx as W lanes:
+// hydro.cc's viscousForce, dragForce and slamForce (the same tests, the
+// same NaN for a non-finite input), rigid.cc's effMass
+template <int W, class M>
+static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
+                      typename TLanes<W>::V* wd, typename TLanes<W>::V* ws) {
+  typedef typename TLanes<W>::V V;
+  typedef typename TLanes<W>::I I;
+  // gathered into plain rows, then loaded (GCC 12 warns of lane stores)
+  double g1[3][W], g3[4][3][W];
+  int tk[W];
+  for (int l = 0; l < W; l++) {
+    const int k = in->idx[p0 + (l < nl ? l : nl - 1)];
+    tk[l] = k;
+    g1[0][l] = in->area[k];
+    g1[1][l] = in->tarea[k];
+    g1[2][l] = in->prevA[k];
+    for (int j = 0; j < 3; j++) {
+      g3[0][j][l] = in->c[3 * k + j];
+      g3[1][j][l] = in->nrm[3 * k + j];
+      g3[2][j][l] = in->u[3 * k + j];
+      g3[3][j][l] = in->prevV[3 * k + j];
+    }
+  }
+  V A, S, Ap, c[3], n[3], v[3], vp[3];
+  __builtin_memcpy(&A, g1[0], sizeof A);
+  __builtin_memcpy(&S, g1[1], sizeof S);
+  __builtin_memcpy(&Ap, g1[2], sizeof Ap);
+  for (int j = 0; j < 3; j++) {
+    __builtin_memcpy(&c[j], g3[0][j], sizeof A);
+    __builtin_memcpy(&n[j], g3[1][j], sizeof A);
+    __builtin_memcpy(&v[j], g3[2][j], sizeof A);
+    __builtin_memcpy(&vp[j], g3[3][j], sizeof A);
+  }
+  I use = A == A;
+  for (int l = 0; l < W; l++) use[l] = l < nl ? -1 : 0;
+  const double* w = in->vel;
+  const V wc[3] = {w[1] * c[2] - w[2] * c[1], w[2] * c[0] - w[0] * c[2],
+                   w[0] * c[1] - w[1] * c[0]};
+  for (int j = 0; j < 3; j++) v[j] = w[3 + j] + wc[j] - v[j];
+  for (int l = 0; l < nl; l++) {
+    for (int j = 0; j < 3; j++) in->v[3 * tk[l] + j] = v[j][l];
+  }
+  const V z = V{}, one = V{} + 1, nanv = V{} + __builtin_nan("");
+  const V v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  const V vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+  const V sp = M::sqrt(v2);
+  const I on = sp > 0;
+  // a non-finite |v|^2 or area: NaN forces (reported), never zero
+  const I fin = ((v2 - v2) == 0) & ((A - A) == 0);
+  V g[3];
+  if (in->visc) {
+    V t[3];
+    for (int j = 0; j < 3; j++) t[j] = v[j] - vn * n[j];
+    const V tl = M::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    const V cd = c[0] * in->dir[0] + c[1] * in->dir[1] + c[2] * in->dir[2];
+    const V sk = in->len > 0 ? (cd - in->lo) / in->len : z + in->sbar;
+    const V ff = in->kv * (1 + in->sbar - sk);
+    const I sh = tl > 1e-12 * sp;
+    const V s = -0.5 * in->rcf * ff * A * v2 / (sh ? tl : one);
+    for (int j = 0; j < 3; j++) g[j] = fin ? (sh ? s * t[j] : z) : nanv;
+    addLanes(wv, g, c, use);
+  }
+  const V cs = vn / (on ? sp : one);
+  {
+    const V u = sp / in->vref;
+    const V sa = -(in->drag[0] * u + in->drag[1] * u * u) * A *
+                 powLanes<V, M>(cs > 0 ? cs : z, in->drag[2]);
+    const V sb = (in->suction[0] * u + in->suction[1] * u * u) * A *
+                 powLanes<V, M>(cs < 0 ? -cs : z, in->suction[2]);
+    const V s = cs > 0 ? sa : cs < 0 ? sb : z;
+    for (int j = 0; j < 3; j++) g[j] = fin ? (on ? s * n[j] : z) : nanv;
+    addLanes(wd, g, c, use);
+  }
+  if (in->slam) {
+    // effective mass along v at the centroid (rigid.cc effMass)
+    const V is = 1 / (on ? sp : one);
+    const V u0 = v[0] * is, u1 = v[1] * is, u2 = v[2] * is;
+    V d[3];
+    for (int j = 0; j < 3; j++) d[j] = c[j] + in->com[j] - in->gcom[j];
+    const V e0 = d[1] * u2 - d[2] * u1, e1 = d[2] * u0 - d[0] * u2, e2 = d[0] * u1 - d[1] * u0;
+    const double* J = in->iinv;
+    const V Je0 = J[0] * e0 + J[3] * e1 + J[4] * e2;
+    const V Je1 = J[3] * e0 + J[1] * e1 + J[5] * e2;
+    const V Je2 = J[4] * e0 + J[5] * e1 + J[2] * e2;
+    const V meff = on ? 1 / (in->minv + e0 * Je0 + e1 * Je1 + e2 * Je2) : z;
+    const V mass = in->share * meff;
+    V dq[3];
+    for (int j = 0; j < 3; j++) dq[j] = A * v[j] - Ap * vp[j];
+    const V gam = M::sqrt(dq[0] * dq[0] + dq[1] * dq[1] + dq[2] * dq[2]) / (S * in->dt);
+    const V rg = gam / in->gmax;
+    const V r = rg < 1 ? rg : one;  // fmin(NaN, 1) is 1 too
+    const V s = -in->gain * powLanes<V, M>(r, in->pw) * cs * mass * 2 * A / in->shull / in->dt;
+    const I hit = on & (A > 0) & (cs > 0);
+    for (int j = 0; j < 3; j++) g[j] = fin ? (hit ? s * v[j] : z) : nanv;
+    addLanes(ws, g, c, use);
+  }
+}
+
+template <int W, class M>
+static void flowLanes(FlowIn* in) {
+  typedef typename TLanes<W>::V V;
+  V wv[6] = {}, wd[6] = {}, ws[6] = {};
+  for (int p = 0; p < in->m; p += W) {
+    flowChunk<W, M>(in, p, in->m - p < W ? in->m - p : W, wv, wd, ws);
+  }
+  for (int j = 0; j < 6; j++) {
+    in->wv[j] = TLanes<W>::hsum(wv[j]);
+    in->wd[j] = TLanes<W>::hsum(wd[j]);
+    in->ws[j] = TLanes<W>::hsum(ws[j]);
+  }
+}
+
 }  // namespace
 }  // namespace mjb
 

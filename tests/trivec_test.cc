@@ -123,13 +123,23 @@ TEST(TriVec, LanesMatchTheScalarTriangles) {
       "<numeric name=\"mjbuoy.wave.a\" data=\"0.3 12 20 0 0.6\"/>"
       "<numeric name=\"mjbuoy.wave.b\" data=\"0.1 5 -50 40 0.5\"/>"
       "<numeric name=\"mjbuoy.airy.c\" data=\"0.1 8 -120 10\"/>";
+  const std::string swell = "<numeric name=\"mjbuoy.wave.a\" data=\"0.3 20 20 0 0.6\"/>";
+  const std::string expo =
+      "<numeric name=\"mjbuoy.hull.drag\" data=\"100 400 1\"/>"
+      "<numeric name=\"mjbuoy.hull.suction\" data=\"100 200 2\"/>"
+      "<numeric name=\"mjbuoy.hull.slamming\" data=\"1 0.5 ";
   const Case cases[] = {{"steep Gerstner (Q 1, fold 0.94), linear", steep, "linear"},
                         {"steep Gerstner, kerner", steep, "kerner"},
                         {"JONSWAP 64, linear", jonswap, "linear"},
                         {"finite depth 3 m, 2 Gerstner + Airy, linear", shallow, "linear"},
-                        {"flat", "", "linear"}};
+                        {"flat", "", "linear"},
+                        {"swell, drag exponent 1, suction 2, slamming power 1", swell + expo + "1\"/>",
+                         "linear"},
+                        {"swell, slamming power 3 (hydrodynamics on the scalar path)",
+                         swell + expo + "3\"/>", "linear"}};
   const int prev = mjb::simdLevel();
   for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
     Scene one(scene(c.sea, c.pm, 1)), two(scene(c.sea, c.pm, 2));
     ASSERT_TRUE(one.ok() && two.ok()) << c.name << ": " << one.err << two.err;
     mjb::simdSet(mjb::kSimdScalar);
