@@ -133,8 +133,8 @@ TEST(TriVec, LanesMatchTheScalarTriangles) {
                         {"JONSWAP 64, linear", jonswap, "linear"},
                         {"finite depth 3 m, 2 Gerstner + Airy, linear", shallow, "linear"},
                         {"flat", "", "linear"},
-                        {"swell, drag exponent 1, suction 2, slamming power 1", swell + expo + "1\"/>",
-                         "linear"},
+                        {"swell, drag exponent 1, suction 2, slamming power 1",
+                         swell + expo + "1\"/>", "linear"},
                         {"swell, slamming power 3 (hydrodynamics on the scalar path)",
                          swell + expo + "3\"/>", "linear"}};
   const int prev = mjb::simdLevel();
