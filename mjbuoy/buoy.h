@@ -99,6 +99,10 @@ struct State {
   // scratchSize), per doubles each
   std::vector<double> scr;
   size_t per = 0, mi = 0;
+  // per thread: triangle indices for the lane kernels (cpu.cc, trivec.h),
+  // 2 per triangle of the largest hull
+  std::vector<int> iscr;
+  size_t iper = 0;
   // per thread: surface solves done and Newton steps they took (cpu
   // backend; mjbuoy-bench reports steps per solve)
   std::vector<long> nsolve, niter;

@@ -11,6 +11,7 @@
 #include "pressure.h"
 #include "rigid.h"
 #include "seavec.h"
+#include "trivec.h"
 #include "vmath.h"
 #include "waveint.h"
 #include "wavepress.h"
@@ -21,6 +22,13 @@ namespace mjb {
 static size_t maxItems(const Buoy& b) {
   size_t n = 1;
   for (const Hull& h : b.hull) n = std::max(n, size_t(std::max(h.nv, h.nt)));
+  return n;
+}
+
+// most triangles of one hull
+static size_t maxTris(const Buoy& b) {
+  size_t n = 1;
+  for (const Hull& h : b.hull) n = std::max(n, size_t(h.nt));
   return n;
 }
 
@@ -90,6 +98,8 @@ void makeState(const Buoy& b, State* s) {
   s->mi = maxItems(b);
   s->per = scratchSize(b);
   s->scr.assign(s->per * std::max(1, b.nthreads), 0);
+  s->iper = 2 * maxTris(b);
+  s->iscr.assign(s->iper * std::max(1, b.nthreads), 0);
   s->nsolve.assign(std::max(1, b.nthreads), 0);
   s->niter.assign(std::max(1, b.nthreads), 0);
   s->vsec.assign(std::max(1, b.nthreads), 0);
@@ -257,6 +267,198 @@ static void guessWeights(const State& s, int ih, double t, double L[3]) {
   }
 }
 
+// pass 1's data for one hull (hullWrench): what the triangles read and the
+// sums they add to (pressure wrench wp, wet area, extent along the flow)
+struct Pass1 {
+  const Buoy& b;
+  const Sea& sea;
+  State* s;
+  const HullScr& hs;
+  const Hull& hl;
+  const double* com;
+  const double* dir;
+  double* wp;
+  double wet, lo, hi;
+};
+
+// cut, pressure force and torque of triangle k, the water's mean wave
+// velocity over its wet part; the scalar reference of pass1Lanes
+static void pass1Tri(Pass1& q, int k) {
+  const Buoy& b = q.b;
+  const Sea& sea = q.sea;
+  State* s = q.s;
+  const size_t nw = sea.waves.size();
+  const bool linear = !sea.kerner && nw > 0;
+  const double rg = sea.rho * sea.g;
+  double* wp = q.wp;
+  const int* fc = b.face.data() + 3 * k;
+  double p[3][3], h[3] = {s->h[fc[0]], s->h[fc[1]], s->h[fc[2]]};
+  for (int e = 0; e < 3; e++) std::memcpy(p[e], s->rel.data() + 3 * fc[e], 3 * sizeof(double));
+  Wet wt;
+  wetTriangle(p, h, &wt);
+  if (!std::isfinite(wt.area) || !std::isfinite(wt.dA)) {
+    wp[0] += NAN;  // reported by finishWrench, never a silent zero
+    s->tri.area[k] = 0;
+    return;
+  }
+  s->tri.area[k] = wt.area > 0 ? wt.area : 0;
+  if (!(wt.area > 0)) return;
+  const double* n = wt.n;
+  double mo[3], P = rg * wt.dA, Pr[3] = {rg * wt.drA[0], rg * wt.drA[1], rg * wt.drA[2]};
+  // the water's mean wave velocity over the wet part, and with linear
+  // pressure the dynamic part, both in closed form (waveint.h)
+  double* uq = &s->tri.u[3 * k];
+  for (int j = 0; j < 3; j++) uq[j] = j < 2 ? sea.current[j] : 0;
+  if (nw > 0) {
+    double Pd, Prd[3], V[3];
+    wetWaves(sea, s->tab, nw, wt, fc, q.hl.v0, s->lab.data(), q.hs, linear, &Pd, Prd, V);
+    for (int j = 0; j < 3; j++) uq[j] += V[j] / wt.area;
+    if (linear) {
+      hydrostaticLevel(sea, wt, q.com, &P, Pr);
+      P += Pd;
+      for (int j = 0; j < 3; j++) Pr[j] += Prd[j];
+    }
+  }
+  cross(Pr, n, mo);
+  for (int j = 0; j < 3; j++) {
+    wp[j] -= P * n[j];
+    wp[3 + j] -= mo[j];
+    s->tri.c[3 * k + j] = wt.rA[j] / wt.area;
+    s->tri.n[3 * k + j] = n[j];
+  }
+  q.wet += wt.area;
+  for (int i = 0; i < wt.nq; i++) {
+    double e = dot(wt.q[i], q.dir);
+    q.lo = std::min(q.lo, e);
+    q.hi = std::max(q.hi, e);
+  }
+}
+
+// the wholly wet triangles wl[0, nl) in vector lanes (trivec.h); those the
+// lanes leave (a piece too coarse for the series, not finite) through
+// pass1Tri; rest: nl ints of scratch
+static void pass1Lanes(Pass1& q, const int* wl, int nl, int* rest) {
+  const Sea& sea = q.sea;
+  State* s = q.s;
+  const WaveTab& t = s->tab;
+  TriIn in;
+  in.idx = wl;
+  in.m = nl;
+  in.face = q.b.face.data();
+  in.v0 = q.hl.v0;
+  in.rel = s->rel.data();
+  in.h = s->h.data();
+  in.lab = s->lab.data();
+  in.zs = q.hs.ZS;
+  in.E = q.hs.E;
+  in.nw = int(sea.waves.size());
+  in.es = int(eStride(sea));
+  in.n = in.nw > 0 ? t.n : 0;
+  in.finite = t.finite;
+  in.depth = t.depth;
+  in.k = t.k.data();
+  in.kdx = t.kdx.data();
+  in.kdy = t.kdy.data();
+  in.gm = t.gm.data();
+  for (int f = 0; f < 2; f++) {
+    in.wp[f] = t.wp[f].data();
+    in.wux[f] = t.wux[f].data();
+    in.wuy[f] = t.wuy[f].data();
+    in.wz[f] = t.wz[f].data();
+  }
+  in.linear = !sea.kerner && in.nw > 0;
+  in.rg = sea.rho * sea.g;
+  in.level = sea.level;
+  in.comz = q.com[2];
+  in.cur[0] = sea.current[0];
+  in.cur[1] = sea.current[1];
+  for (int j = 0; j < 3; j++) in.dir[j] = q.dir[j];
+  in.area = s->tri.area.data();
+  in.c = s->tri.c.data();
+  in.nrm = s->tri.n.data();
+  in.u = s->tri.u.data();
+  in.rest = rest;
+  if (simdLevel() == kSimdAvx512) {
+    triLanesAvx512(&in);
+  } else {
+    triLanesAvx2(&in);
+  }
+  for (int j = 0; j < 3; j++) {
+    q.wp[j] += in.f[j];
+    q.wp[3 + j] += in.t[j];
+  }
+  q.wet += in.wet;
+  q.lo = std::min(q.lo, in.lo);
+  q.hi = std::max(q.hi, in.hi);
+  for (int i = 0; i < in.nrest; i++) pass1Tri(q, rest[i]);
+}
+
+// whether pass 2 can run in lanes: every exponent it raises to is 0.5, 1
+// or 2 (hydro.cc's powp without the general pow)
+static bool flowExponents(const HullParams& par, bool slam) {
+  auto ok = [](double p) { return p == 0.5 || p == 1 || p == 2; };
+  return ok(par.drag[2]) && ok(par.suction[2]) && (!slam || ok(par.slam[2]));
+}
+
+// pass 1's results pass 2 reads: the wet extent along the flow and its
+// length, the mean position along it, ITTC's C_F, the slamming dt
+struct Flow2 {
+  double lo, len, sbar, cf, dt;
+};
+
+// pass 2 for the wet triangles wl[0, nf) in vector lanes (trivec.h)
+static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const double vel[6],
+                       const double* com, const Rigid& rig, const double dir[3],
+                       const Flow2& f2, const int* wl, int nf, double* const w[]) {
+  const HullParams& par = hl.par;
+  const Sea& sea = b.cfg.sea;
+  FlowIn in;
+  in.idx = wl;
+  in.m = nf;
+  in.area = s->tri.area.data();
+  in.c = s->tri.c.data();
+  in.nrm = s->tri.n.data();
+  in.u = s->tri.u.data();
+  in.v = s->tri.v.data();
+  in.tarea = b.tarea.data();
+  in.prevA = s->prevA.data();
+  in.prevV = s->prevV.data();
+  for (int j = 0; j < 6; j++) in.vel[j] = vel[j];
+  for (int j = 0; j < 3; j++) {
+    in.com[j] = com[j];
+    in.dir[j] = dir[j];
+    in.drag[j] = par.drag[j];
+    in.suction[j] = par.suction[j];
+    in.gcom[j] = rig.com[j];
+  }
+  in.visc = par.viscous > 0;
+  in.rcf = sea.rho * f2.cf;
+  in.kv = par.viscous;
+  in.lo = f2.lo;
+  in.len = f2.len;
+  in.sbar = f2.sbar;
+  in.vref = par.vref;
+  in.slam = s->hasPrev && par.slam[0] > 0 && f2.dt > 0;
+  in.gain = par.slam[0];
+  in.gmax = par.slam[1];
+  in.pw = par.slam[2];
+  in.share = hl.share;
+  in.shull = hl.area;
+  in.dt = f2.dt;
+  in.minv = rig.minv;
+  for (int j = 0; j < 6; j++) in.iinv[j] = rig.iinv[j];
+  if (simdLevel() == kSimdAvx512) {
+    flowLanesAvx512(&in);
+  } else {
+    flowLanesAvx2(&in);
+  }
+  for (int j = 0; j < 6; j++) {
+    w[mjbPART_VISCOUS][j] += in.wv[j];
+    w[mjbPART_DRAG][j] += in.wd[j];
+    w[mjbPART_SLAM][j] += in.ws[j];
+  }
+}
+
 // forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
 // is the body's wrench of force family p; slot picks the thread's scratch
 static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6],
@@ -267,7 +469,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   const WaveNow* wn = s->wn.data();
   double* tmp = sc + 2 * sea.waves.size();
   const HullParams& par = hl.par;
-  const double rho = sea.rho, rg = rho * sea.g, t = d->time;
+  const double rho = sea.rho, t = d->time;
   const mjtNum* x = d->xpos + 3 * hl.body;
   const mjtNum* R = d->xmat + 9 * hl.body;
   const mjtNum* com = d->xipos + 3 * hl.body;
@@ -367,62 +569,29 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   for (int j = 0; j < 3; j++) vr[j] = vel[3 + j] - uw[j];
   double speed = std::sqrt(dot(vr, vr));
   for (int j = 0; j < 3; j++) dir[j] = speed > 1e-9 ? vr[j] / speed : R[3 * j];
-  double lo = INFINITY, hi = -INFINITY;
 
   // pass 1: cut, pressure force and torque: Kerner's rho g (eta - z), linear
   // in the cut's depth, exactly (-rho g dA n, -rho g drA x n); or linear
   // wave theory (wavepress.h), which flat water reduces to the same;
-  // a triangle with no vertex below the surface has no wet part
-  const bool linear = !sea.kerner && nw > 0;
-  double* wp = w[mjbPART_PRESSURE];
-  double wet = 0;
+  // a triangle with no vertex below the surface has no wet part. With a
+  // vector level the wholly wet triangles go through the lanes (trivec.h)
+  Pass1 q{b, sea, s, hs, hl, com, dir, w[mjbPART_PRESSURE], 0, INFINITY, -INFINITY};
+  const bool lanes = simdLevel() != kSimdScalar;
+  int* wl = s->iscr.data() + s->iper * slot;
+  int nl = 0;
   for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
     const int* fc = b.face.data() + 3 * k;
-    double p[3][3], h[3] = {s->h[fc[0]], s->h[fc[1]], s->h[fc[2]]};
-    if (h[0] >= 0 && h[1] >= 0 && h[2] >= 0) {
+    const double h0 = s->h[fc[0]], h1 = s->h[fc[1]], h2 = s->h[fc[2]];
+    if (h0 >= 0 && h1 >= 0 && h2 >= 0) {
       s->tri.area[k] = 0;
-      continue;
-    }
-    for (int e = 0; e < 3; e++) std::memcpy(p[e], s->rel.data() + 3 * fc[e], 3 * sizeof(double));
-    Wet wt;
-    wetTriangle(p, h, &wt);
-    if (!std::isfinite(wt.area) || !std::isfinite(wt.dA)) {
-      wp[0] += NAN;  // reported by finishWrench, never a silent zero
-      s->tri.area[k] = 0;
-      continue;
-    }
-    s->tri.area[k] = wt.area > 0 ? wt.area : 0;
-    if (!(wt.area > 0)) continue;
-    const double* n = wt.n;
-    double mo[3], P = rg * wt.dA, Pr[3] = {rg * wt.drA[0], rg * wt.drA[1], rg * wt.drA[2]};
-    // the water's mean wave velocity over the wet part, and with linear
-    // pressure the dynamic part, both in closed form (waveint.h)
-    double* uq = &s->tri.u[3 * k];
-    for (int j = 0; j < 3; j++) uq[j] = j < 2 ? sea.current[j] : 0;
-    if (nw > 0) {
-      double Pd, Prd[3], V[3];
-      wetWaves(sea, s->tab, nw, wt, fc, hl.v0, s->lab.data(), hs, linear, &Pd, Prd, V);
-      for (int j = 0; j < 3; j++) uq[j] += V[j] / wt.area;
-      if (linear) {
-        hydrostaticLevel(sea, wt, com, &P, Pr);
-        P += Pd;
-        for (int j = 0; j < 3; j++) Pr[j] += Prd[j];
-      }
-    }
-    cross(Pr, n, mo);
-    for (int j = 0; j < 3; j++) {
-      wp[j] -= P * n[j];
-      wp[3 + j] -= mo[j];
-      s->tri.c[3 * k + j] = wt.rA[j] / wt.area;
-      s->tri.n[3 * k + j] = n[j];
-    }
-    wet += wt.area;
-    for (int i = 0; i < wt.nq; i++) {
-      double e = dot(wt.q[i], dir);
-      lo = std::min(lo, e);
-      hi = std::max(hi, e);
+    } else if (lanes && h0 <= 0 && h1 <= 0 && h2 <= 0) {
+      wl[nl++] = k;
+    } else {
+      pass1Tri(q, k);
     }
   }
+  if (nl > 0) pass1Lanes(q, wl, nl, wl + hl.nt);
+  double wet = q.wet, lo = q.lo, hi = q.hi;
 
   // viscous resistance: ITTC 1957 C_F at the hull's Reynolds number, and
   // Kerner's per-triangle form factor, laminar (low) at the front and
@@ -438,43 +607,58 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   }
 
   // pass 2: hydrodynamic forces at each wet centroid, with the water's
-  // velocity averaged over the wet part (pass 1; docs/physics.md, "Cost")
+  // velocity averaged over the wet part (pass 1; docs/physics.md, "Cost");
+  // with a vector level in lanes (trivec.h) when the exponents allow
   const double slamdt = s->hasPrev ? t - s->tprev : 0;
-  for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-    double* v = &s->tri.v[3 * k];
-    if (!(s->tri.area[k] > 0)) {
-      v[0] = v[1] = v[2] = 0;
-      continue;
-    }
-    double A = s->tri.area[k];
-    const double* c = &s->tri.c[3 * k];
-    const double* n = &s->tri.n[3 * k];
-    const double* uwk = &s->tri.u[3 * k];
-    double wc[3];
-    cross(vel, c, wc);
-    for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uwk[j];
-
-    double g[3];
-    if (par.viscous > 0) {
-      double sk = len > 0 ? (dot(c, dir) - lo) / len : sbar;
-      viscousForce(rho, cf, par.viscous * (1 + sbar - sk), A, n, v, g);
-      add(w[mjbPART_VISCOUS], g, c);
-    }
-    dragForce(par.drag, par.suction, par.vref, A, n, v, g);
-    add(w[mjbPART_DRAG], g, c);
-    if (s->hasPrev) {
-      // the stopping force is sized by the effective mass of the rigid
-      // group at this point along v (docs/physics.md, "Slamming with the
-      // effective mass"), not its mass: it acts off the COM
-      double sp = std::sqrt(dot(v, v)), meff = 0;
-      if (sp > 0) {
-        double u[3] = {v[0] / sp, v[1] / sp, v[2] / sp}, pw[3];
-        for (int j = 0; j < 3; j++) pw[j] = c[j] + com[j];
-        meff = effMass(rig, pw, u);
+  if (lanes && flowExponents(par, s->hasPrev)) {
+    int nf = 0;
+    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+      if (s->tri.area[k] > 0) {
+        wl[nf++] = k;
+      } else {
+        double* v = &s->tri.v[3 * k];
+        v[0] = v[1] = v[2] = 0;
       }
-      slamForce(par.slam[0], par.slam[1], par.slam[2], hl.share * meff, hl.area, b.tarea[k], A,
-                v, s->prevA[k], &s->prevV[3 * k], n, slamdt, g);
-      add(w[mjbPART_SLAM], g, c);
+    }
+    Flow2 f2{lo, len, sbar, cf, slamdt};
+    pass2Lanes(b, hl, s, vel, com, rig, dir, f2, wl, nf, w);
+  } else {
+    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+      double* v = &s->tri.v[3 * k];
+      if (!(s->tri.area[k] > 0)) {
+        v[0] = v[1] = v[2] = 0;
+        continue;
+      }
+      double A = s->tri.area[k];
+      const double* c = &s->tri.c[3 * k];
+      const double* n = &s->tri.n[3 * k];
+      const double* uwk = &s->tri.u[3 * k];
+      double wc[3];
+      cross(vel, c, wc);
+      for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uwk[j];
+
+      double g[3];
+      if (par.viscous > 0) {
+        double sk = len > 0 ? (dot(c, dir) - lo) / len : sbar;
+        viscousForce(rho, cf, par.viscous * (1 + sbar - sk), A, n, v, g);
+        add(w[mjbPART_VISCOUS], g, c);
+      }
+      dragForce(par.drag, par.suction, par.vref, A, n, v, g);
+      add(w[mjbPART_DRAG], g, c);
+      if (s->hasPrev) {
+        // the stopping force is sized by the effective mass of the rigid
+        // group at this point along v (docs/physics.md, "Slamming with the
+        // effective mass"), not its mass: it acts off the COM
+        double sp = std::sqrt(dot(v, v)), meff = 0;
+        if (sp > 0) {
+          double u[3] = {v[0] / sp, v[1] / sp, v[2] / sp}, pw[3];
+          for (int j = 0; j < 3; j++) pw[j] = c[j] + com[j];
+          meff = effMass(rig, pw, u);
+        }
+        slamForce(par.slam[0], par.slam[1], par.slam[2], hl.share * meff, hl.area, b.tarea[k], A,
+                  v, s->prevA[k], &s->prevV[3 * k], n, slamdt, g);
+        add(w[mjbPART_SLAM], g, c);
+      }
     }
   }
 

@@ -1,0 +1,74 @@
+// trivec: the triangle stage's wholly wet triangles (no cut: hydrostatic
+// integrals, the closed-form wave series of waveint.h, centroid, normal,
+// water velocity and the flow extent) over lanes of 4 (AVX2 + FMA) or 8
+// (AVX-512F) triangles; chosen at run time by vmath.h's level. cpu.cc's
+// per-triangle loop (wetTriangle, wetWaves) stays the reference
+// (tests/trivec_test.cc). Plain data only: no inline code to share.
+#ifndef MJBUOY_TRIVEC_H_
+#define MJBUOY_TRIVEC_H_
+
+namespace mjb {
+
+// one hull's wholly wet triangles for the lane kernels
+struct TriIn {
+  const int* idx;  // global triangle indices
+  int m;           // how many
+  const int* face; // 3 global vertex indices per triangle
+  int v0;          // the hull's first vertex
+  const double *rel, *h, *lab;  // per global vertex: position relative to the COM,
+                                // height above the surface, Gerstner label [m]
+  const double *zs, *E;  // per hull vertex: stretched height [m], e^L (es nw a vertex)
+  int nw, es;
+  // the call's wave table (WaveTab, sorted order): n components
+  int n, finite;
+  double depth;
+  const double *k, *kdx, *kdy, *gm;
+  const double *wp[2], *wux[2], *wuy[2], *wz[2];
+  int linear;  // linear pressure (dynamic part), else Kerner's rho g (eta - z)
+  double rg, level, comz, cur[2], dir[3];
+  // written per triangle done: wet area, centroid (relative to the COM),
+  // unit normal, mean water velocity [m/s]
+  double *area, *c, *nrm, *u;
+  // triangles left to the scalar path (a piece too coarse for the series,
+  // or not finite): their indices, and how many
+  int* rest;
+  int nrest;
+  // sums over the triangles done: pressure force [N] and torque [N m]
+  // (to add), wet area [m^2]; extent of their corners along dir [m]
+  double f[3], t[3], wet, lo, hi;
+};
+
+// one hull's wet triangles for pass 2 (hydro.h's viscous, drag and
+// slamming forces at each wet centroid); the exponents of drag, suction
+// and slamming must each be 0.5, 1 or 2 (cpu.cc checks; others: scalar)
+struct FlowIn {
+  const int* idx;  // global triangle indices, wet area > 0
+  int m;
+  const double *area, *c, *nrm, *u;  // pass 1's, per triangle
+  double* v;                         // written: flow-relative velocity [m/s]
+  const double* tarea;               // the triangles' whole areas [m^2]
+  const double *prevA, *prevV;       // slamming history (prev step)
+  double vel[6];                     // body velocity [angular; linear] at the COM
+  double com[3];                     // body COM, world [m]
+  // viscous: on, rho cf, viscous gain, extent and mean position along dir
+  int visc;
+  double rcf, kv, lo, len, sbar, dir[3];
+  double drag[3], suction[3], vref;
+  // slamming: on (history and gain and dt > 0), gain, gmax, power, the
+  // hull's share and area [m^2], dt [s], the rigid group (rigid.h)
+  int slam;
+  double gain, gmax, pw, share, shull, dt, minv, iinv[6], gcom[3];
+  // sums [force; torque about the COM] by family
+  double wv[6], wd[6], ws[6];
+};
+
+// (trivec_avx2.cc, trivec_avx512.cc: compiled for those instruction sets,
+// called only when the cpu has them)
+void triLanesAvx2(TriIn* in);
+void triLanesAvx512(TriIn* in);
+void flowLanesAvx2(FlowIn* in);
+void flowLanesAvx512(FlowIn* in);
+
+}  // namespace mjb
+
+#endif  // MJBUOY_TRIVEC_H_

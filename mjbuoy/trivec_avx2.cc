@@ -1,0 +1,17 @@
+// the wholly wet triangles over 4 lanes, AVX2 + FMA (compiled with -mavx2
+// -mfma; called only when the cpu has them, vmath.cc)
+#include <immintrin.h>
+
+#include "trivec_kern.h"
+
+namespace mjb {
+namespace {
+struct Ops4 {
+  typedef TLanes<4>::V V;
+  static V sqrt(V x) { return (V)_mm256_sqrt_pd((__m256d)x); }
+};
+}  // namespace
+
+void triLanesAvx2(TriIn* in) { triLanes<4, Ops4>(in); }
+void flowLanesAvx2(FlowIn* in) { flowLanes<4, Ops4>(in); }
+}  // namespace mjb

@@ -1,0 +1,18 @@
+// the wholly wet triangles over 8 lanes, AVX-512F (compiled with -mavx512f
+// -mfma; called only when the cpu has them, vmath.cc)
+#include <immintrin.h>
+
+#include "trivec_kern.h"
+
+namespace mjb {
+namespace {
+struct Ops8 {
+  typedef TLanes<8>::V V;
+  // (the masked form: GCC 12 warns of _mm512_sqrt_pd's undefined pass-through)
+  static V sqrt(V x) { return (V)_mm512_mask_sqrt_pd((__m512d)x, 0xff, (__m512d)x); }
+};
+}  // namespace
+
+void triLanesAvx512(TriIn* in) { triLanes<8, Ops8>(in); }
+void flowLanesAvx512(FlowIn* in) { flowLanes<8, Ops8>(in); }
+}  // namespace mjb

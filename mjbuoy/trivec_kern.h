@@ -1,0 +1,408 @@
+// trivec_kern: trivec.h's wholly wet triangles for W triangles at once (GCC
+// vector extensions), included by one file per instruction set. Everything
+// here is static: no inline function compiled for AVX can be shared with
+// the scalar path. Includes nothing but trivec.h and waveker.h.
+//
+// Each lane does what cpu.cc's scalar loop does for a triangle with every
+// vertex at or below the surface: wetTriangle's uncut branch, the linear
+// hydrostatic part (wavepress.cc hydrostaticLevel) or Kerner's, and
+// waveint.cc's series about vertex 0 for every component whose exponent on
+// the piece reaches above -40 (the same set the scalar path sums). A lane
+// whose piece is too coarse for the series (k rho > kRMax for the largest
+// k: the scalar path subdivides) or not finite goes back to the scalar
+// path. Only the rounding differs: FMA contraction, the order of sums, and
+// series terms past the scalar's count (each below 2^-54 of the first).
+#ifndef MJBUOY_TRIVEC_KERN_H_
+#define MJBUOY_TRIVEC_KERN_H_
+
+#include "trivec.h"
+#include "waveker.h"
+
+namespace mjb {
+namespace {
+
+template <int W>
+struct TLanes {
+  typedef double V __attribute__((vector_size(8 * W)));
+  typedef long I __attribute__((vector_size(8 * W)));  // what comparisons give
+  template <class U>
+  static double hmax(U v) {
+    double r = v[0];
+    for (int i = 1; i < W; i++) r = v[i] > r ? v[i] : r;
+    return r;
+  }
+  template <class U>
+  static double hsum(U v) {
+    double s = 0;
+    for (int i = 0; i < W; i++) s += v[i];
+    return s;
+  }
+  template <class U>
+  static bool all(U m) {
+    for (int i = 0; i < W; i++) if (!m[i]) return false;
+    return true;
+  }
+};
+
+// the series sums of one exponent family f for the lanes (waveint_kern.h's
+// seriesChunk with lanes over pieces instead of components): acc[7] per
+// lane, S and T_c about corner 0 times e^L0, weighted
+template <int W>
+static void familyLanes(const TriIn& in, int f, const double* const e0[W],
+                        typename TLanes<W>::V zx, const typename TLanes<W>::V dz[2],
+                        const typename TLanes<W>::V dp[2][2],
+                        const typename TLanes<W>::V dl[2][2], double rmax,
+                        typename TLanes<W>::V acc[7]) {
+  typedef typename TLanes<W>::V V;
+  typedef typename TLanes<W>::I I;
+  const bool mom = in.linear;
+  const double sgn = f == 0 ? 1 : -1;
+  const double *wp = in.wp[f], *wux = in.wux[f], *wuy = in.wuy[f], *wz = in.wz[f];
+  const int eo = 2 * f * in.nw;
+  // components past 40 / zx (k ascending) have e^L below e^-40 on the
+  // piece: skipped per lane, as waveint.cc's jsk
+  const V lim = zx > 0 ? 40 / zx : V{} + __builtin_inf();
+  for (int j = 0; j < in.n; j++) {
+    const double k = in.k[j];
+    const I keep = k <= lim;
+    bool any = false;
+    for (int l = 0; l < W; l++) any |= keep[l] != 0;
+    if (!any) break;
+    const double gm = in.gm[j];
+    V ur[2], ui[2];
+    for (int c = 0; c < 2; c++) {
+      const V X = dp[c][0] + gm * (dl[c][0] - dp[c][0]);
+      const V Y = dp[c][1] + gm * (dl[c][1] - dp[c][1]);
+      ur[c] = (sgn * k) * dz[c];
+      ui[c] = in.kdx[j] * X + in.kdy[j] * Y;
+    }
+    const int N = seriesTerms(k * rmax);
+    V pr = V{} + 1, pi = V{}, hr = pr, hi = pi, gr = pr, gi = pi, fr = pr, fi = pi;
+    V Sr = V{} + kInvF2[0], Si = V{}, T0r = V{} + kInvF3[0], T0i = V{};
+    V T1r = T0r, T1i = V{}, T2r = T0r, T2i = V{};
+    for (int m = 1; m < N; m++) {
+      V t = pr * ur[1] - pi * ui[1];
+      pi = pr * ui[1] + pi * ur[1];
+      pr = t;
+      t = hr * ur[0] - hi * ui[0] + pr;
+      hi = hr * ui[0] + hi * ur[0] + pi;
+      hr = t;
+      const double c2 = kInvF2[m];
+      Sr += c2 * hr;
+      Si += c2 * hi;
+      if (!mom) continue;
+      t = gr * ur[0] - gi * ui[0] + hr;
+      gi = gr * ui[0] + gi * ur[0] + hi;
+      gr = t;
+      t = fr * ur[1] - fi * ui[1] + hr;
+      fi = fr * ui[1] + fi * ur[1] + hi;
+      fr = t;
+      const double c3 = kInvF3[m];
+      T0r += c3 * hr;
+      T0i += c3 * hi;
+      T1r += c3 * gr;
+      T1i += c3 * gi;
+      T2r += c3 * fr;
+      T2i += c3 * fi;
+    }
+    V er, ei;
+    for (int l = 0; l < W; l++) {
+      er[l] = e0[l][eo + j];
+      ei[l] = e0[l][eo + in.nw + j];
+    }
+    er = keep ? er : V{};
+    ei = keep ? ei : V{};
+    const V Ir = er * Sr - ei * Si, Ii = er * Si + ei * Sr;
+    acc[0] += wp[j] * Ir;
+    if (mom) {
+      acc[1] += wp[j] * (er * T0r - ei * T0i);
+      acc[2] += wp[j] * (er * T1r - ei * T1i);
+      acc[3] += wp[j] * (er * T2r - ei * T2i);
+    }
+    acc[4] += wux[j] * Ir;
+    acc[5] += wuy[j] * Ir;
+    acc[6] += wz[j] * Ii;
+  }
+}
+
+// triangles [p0, p0 + nl) of in.idx as W lanes (the last repeated in the
+// lanes past nl, whose results are dropped); sums into f, t, wet, lo, hi
+template <int W, class M>
+static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
+                     typename TLanes<W>::V* Tq, typename TLanes<W>::V* wet,
+                     typename TLanes<W>::V* lo, typename TLanes<W>::V* hi) {
+  typedef typename TLanes<W>::V V;
+  typedef typename TLanes<W>::I I;
+  V p[3][3], d[3], zs[3], lb[3][2];
+  const double* e0[W];
+  int tk[W];
+  for (int l = 0; l < W; l++) {
+    const int k = in->idx[p0 + (l < nl ? l : nl - 1)];
+    tk[l] = k;
+    for (int c = 0; c < 3; c++) {
+      const int g = in->face[3 * k + c];
+      for (int j = 0; j < 3; j++) p[c][j][l] = in->rel[3 * g + j];
+      d[c][l] = -in->h[g];
+      zs[c][l] = in->zs[g - in->v0];
+      lb[c][0][l] = in->lab[2 * g];
+      lb[c][1][l] = in->lab[2 * g + 1];
+      if (c == 0) e0[l] = in->E + in->es * in->nw * (g - in->v0);
+    }
+  }
+  // wetTriangle's uncut branch: normal, area, centroid
+  V e1[3], e2[3], cr[3], sr[3], n[3];
+  for (int j = 0; j < 3; j++) {
+    e1[j] = p[1][j] - p[0][j];
+    e2[j] = p[2][j] - p[0][j];
+  }
+  cr[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  cr[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  cr[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  const V len = M::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+  const I ok = len > 0;
+  const V il = ok ? 1 / len : V{};
+  for (int j = 0; j < 3; j++) {
+    n[j] = cr[j] * il;
+    sr[j] = p[0][j] + p[1][j] + p[2][j];
+  }
+  const V A = 0.5 * (cr[0] * n[0] + cr[1] * n[1] + cr[2] * n[2]);
+  // depth below the level (linear) or the surface (Kerner), linear over it
+  if (in->linear) {
+    for (int c = 0; c < 3; c++) d[c] = in->level - (p[c][2] + in->comz);
+  }
+  const V sd = d[0] + d[1] + d[2];
+  V P = in->rg * A * sd / 3, Pr[3], Vw[3] = {V{}, V{}, V{}};
+  for (int j = 0; j < 3; j++) {
+    Pr[j] = in->rg * A / 12 * (d[0] * p[0][j] + d[1] * p[1][j] + d[2] * p[2][j] + sd * sr[j]);
+  }
+  I good = ok;
+  if (in->n > 0) {
+    V dz[2], dp[2][2], dl[2][2], r2 = V{};
+    for (int c = 0; c < 2; c++) {
+      dz[c] = zs[c + 1] - zs[0];
+      V hp = V{}, hl = V{};
+      for (int j = 0; j < 2; j++) {
+        dp[c][j] = p[c + 1][j] - p[0][j];
+        dl[c][j] = lb[c + 1][j] - lb[0][j];
+        hp += dp[c][j] * dp[c][j];
+        hl += dl[c][j] * dl[c][j];
+      }
+      const V q = dz[c] * dz[c] + (hp > hl ? hp : hl);
+      r2 = q > r2 ? q : r2;
+    }
+    const V rho = M::sqrt(r2);
+    good &= in->k[in->n - 1] * rho <= kRMax;
+    // lanes left to the scalar path: no series (zero differences)
+    for (int c = 0; c < 2; c++) {
+      dz[c] = good ? dz[c] : V{};
+      for (int j = 0; j < 2; j++) {
+        dp[c][j] = good ? dp[c][j] : V{};
+        dl[c][j] = good ? dl[c][j] : V{};
+      }
+    }
+    const double rmax = TLanes<W>::hmax(good ? rho : V{});
+    V zmax = zs[0], zmin = zs[0];
+    for (int c = 1; c < 3; c++) {
+      zmax = zs[c] > zmax ? zs[c] : zmax;
+      zmin = zs[c] < zmin ? zs[c] : zmin;
+    }
+    V acc[7] = {};
+    for (int f = 0; f < (in->finite ? 2 : 1); f++) {
+      const V zx = f == 0 ? -zmax : zmin + 2 * in->depth;
+      familyLanes<W>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+    }
+    const V a2 = 2 * A;
+    if (in->linear) {
+      P += in->rg * a2 * acc[0];
+      for (int j = 0; j < 3; j++) {
+        Pr[j] += in->rg * a2 * (acc[1] * p[0][j] + acc[2] * p[1][j] + acc[3] * p[2][j]);
+      }
+    }
+    for (int j = 0; j < 3; j++) Vw[j] = a2 * acc[4 + j];
+  }
+  // per triangle done, and the sums
+  const V inv = ok ? 1 / A : V{};
+  const V u[3] = {in->cur[0] + Vw[0] * inv, in->cur[1] + Vw[1] * inv, 0 + Vw[2] * inv};
+  for (int l = 0; l < nl; l++) {
+    const int k = tk[l];
+    if (!good[l]) {
+      if (ok[l] || len[l] != len[l]) in->rest[in->nrest++] = k;
+      else in->area[k] = 0;  // degenerate: no wet part (wetTriangle)
+      continue;
+    }
+    in->area[k] = A[l];
+    for (int j = 0; j < 3; j++) {
+      in->c[3 * k + j] = sr[j][l] / 3;
+      in->nrm[3 * k + j] = n[j][l];
+      in->u[3 * k + j] = u[j][l];
+    }
+  }
+  I use = good;
+  for (int l = nl; l < W; l++) use[l] = 0;
+  const V zero = V{};
+  F[0] -= use ? P * n[0] : zero;
+  F[1] -= use ? P * n[1] : zero;
+  F[2] -= use ? P * n[2] : zero;
+  Tq[0] -= use ? Pr[1] * n[2] - Pr[2] * n[1] : zero;
+  Tq[1] -= use ? Pr[2] * n[0] - Pr[0] * n[2] : zero;
+  Tq[2] -= use ? Pr[0] * n[1] - Pr[1] * n[0] : zero;
+  *wet += use ? A : zero;
+  for (int c = 0; c < 3; c++) {
+    const V e = p[c][0] * in->dir[0] + p[c][1] * in->dir[1] + p[c][2] * in->dir[2];
+    *lo = (use & (e < *lo)) ? e : *lo;
+    *hi = (use & (e > *hi)) ? e : *hi;
+  }
+}
+
+template <int W, class M>
+static void triLanes(TriIn* in) {
+  typedef typename TLanes<W>::V V;
+  V F[3] = {}, Tq[3] = {}, wet = V{}, lo = V{} + __builtin_inf(), hi = -lo;
+  in->nrest = 0;
+  for (int p = 0; p < in->m; p += W) {
+    triChunk<W, M>(in, p, in->m - p < W ? in->m - p : W, F, Tq, &wet, &lo, &hi);
+  }
+  for (int j = 0; j < 3; j++) {
+    in->f[j] = TLanes<W>::hsum(F[j]);
+    in->t[j] = TLanes<W>::hsum(Tq[j]);
+  }
+  in->wet = TLanes<W>::hsum(wet);
+  in->lo = -TLanes<W>::hmax(-lo);
+  in->hi = TLanes<W>::hmax(hi);
+}
+
+// x^p for x >= 0 and p = 0.5, 1 or 2 (hydro.cc's powp; others not used)
+template <class V, class M>
+static inline V powLanes(V x, double p) {
+  return p == 0.5 ? M::sqrt(x) : p == 1 ? x : x * x;
+}
+
+// w[0..2] += g, w[3..5] += c x g (cpu.cc add), in the lanes of use
+template <class V, class I>
+static inline void addLanes(V* w, const V g[3], const V c[3], I use) {
+  const V z = V{};
+  const V t[3] = {c[1] * g[2] - c[2] * g[1], c[2] * g[0] - c[0] * g[2],
+                  c[0] * g[1] - c[1] * g[0]};
+  for (int j = 0; j < 3; j++) {
+    w[j] += use ? g[j] : z;
+    w[3 + j] += use ? t[j] : z;
+  }
+}
+
+// pass 2 for the wet triangles [p0, p0 + nl) of in.idx as W lanes:
+// hydro.cc's viscousForce, dragForce and slamForce (the same tests, the
+// same NaN for a non-finite input), rigid.cc's effMass
+template <int W, class M>
+static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
+                      typename TLanes<W>::V* wd, typename TLanes<W>::V* ws) {
+  typedef typename TLanes<W>::V V;
+  typedef typename TLanes<W>::I I;
+  // gathered into plain rows, then loaded (GCC 12 warns of lane stores)
+  double g1[3][W], g3[4][3][W];
+  int tk[W];
+  for (int l = 0; l < W; l++) {
+    const int k = in->idx[p0 + (l < nl ? l : nl - 1)];
+    tk[l] = k;
+    g1[0][l] = in->area[k];
+    g1[1][l] = in->tarea[k];
+    g1[2][l] = in->prevA[k];
+    for (int j = 0; j < 3; j++) {
+      g3[0][j][l] = in->c[3 * k + j];
+      g3[1][j][l] = in->nrm[3 * k + j];
+      g3[2][j][l] = in->u[3 * k + j];
+      g3[3][j][l] = in->prevV[3 * k + j];
+    }
+  }
+  V A, S, Ap, c[3], n[3], v[3], vp[3];
+  __builtin_memcpy(&A, g1[0], sizeof A);
+  __builtin_memcpy(&S, g1[1], sizeof S);
+  __builtin_memcpy(&Ap, g1[2], sizeof Ap);
+  for (int j = 0; j < 3; j++) {
+    __builtin_memcpy(&c[j], g3[0][j], sizeof A);
+    __builtin_memcpy(&n[j], g3[1][j], sizeof A);
+    __builtin_memcpy(&v[j], g3[2][j], sizeof A);
+    __builtin_memcpy(&vp[j], g3[3][j], sizeof A);
+  }
+  I use = A == A;
+  for (int l = 0; l < W; l++) use[l] = l < nl ? -1 : 0;
+  const double* w = in->vel;
+  const V wc[3] = {w[1] * c[2] - w[2] * c[1], w[2] * c[0] - w[0] * c[2],
+                   w[0] * c[1] - w[1] * c[0]};
+  for (int j = 0; j < 3; j++) v[j] = w[3 + j] + wc[j] - v[j];
+  for (int l = 0; l < nl; l++) {
+    for (int j = 0; j < 3; j++) in->v[3 * tk[l] + j] = v[j][l];
+  }
+  const V z = V{}, one = V{} + 1, nanv = V{} + __builtin_nan("");
+  const V v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  const V vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+  const V sp = M::sqrt(v2);
+  const I on = sp > 0;
+  // a non-finite |v|^2 or area: NaN forces (reported), never zero
+  const I fin = ((v2 - v2) == 0) & ((A - A) == 0);
+  V g[3];
+  if (in->visc) {
+    V t[3];
+    for (int j = 0; j < 3; j++) t[j] = v[j] - vn * n[j];
+    const V tl = M::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    const V cd = c[0] * in->dir[0] + c[1] * in->dir[1] + c[2] * in->dir[2];
+    const V sk = in->len > 0 ? (cd - in->lo) / in->len : z + in->sbar;
+    const V ff = in->kv * (1 + in->sbar - sk);
+    const I sh = tl > 1e-12 * sp;
+    const V s = -0.5 * in->rcf * ff * A * v2 / (sh ? tl : one);
+    for (int j = 0; j < 3; j++) g[j] = fin ? (sh ? s * t[j] : z) : nanv;
+    addLanes(wv, g, c, use);
+  }
+  const V cs = vn / (on ? sp : one);
+  {
+    const V u = sp / in->vref;
+    const V sa = -(in->drag[0] * u + in->drag[1] * u * u) * A *
+                 powLanes<V, M>(cs > 0 ? cs : z, in->drag[2]);
+    const V sb = (in->suction[0] * u + in->suction[1] * u * u) * A *
+                 powLanes<V, M>(cs < 0 ? -cs : z, in->suction[2]);
+    const V s = cs > 0 ? sa : cs < 0 ? sb : z;
+    for (int j = 0; j < 3; j++) g[j] = fin ? (on ? s * n[j] : z) : nanv;
+    addLanes(wd, g, c, use);
+  }
+  if (in->slam) {
+    // effective mass along v at the centroid (rigid.cc effMass)
+    const V is = 1 / (on ? sp : one);
+    const V u0 = v[0] * is, u1 = v[1] * is, u2 = v[2] * is;
+    V d[3];
+    for (int j = 0; j < 3; j++) d[j] = c[j] + in->com[j] - in->gcom[j];
+    const V e0 = d[1] * u2 - d[2] * u1, e1 = d[2] * u0 - d[0] * u2, e2 = d[0] * u1 - d[1] * u0;
+    const double* J = in->iinv;
+    const V Je0 = J[0] * e0 + J[3] * e1 + J[4] * e2;
+    const V Je1 = J[3] * e0 + J[1] * e1 + J[5] * e2;
+    const V Je2 = J[4] * e0 + J[5] * e1 + J[2] * e2;
+    const V meff = on ? 1 / (in->minv + e0 * Je0 + e1 * Je1 + e2 * Je2) : z;
+    const V mass = in->share * meff;
+    V dq[3];
+    for (int j = 0; j < 3; j++) dq[j] = A * v[j] - Ap * vp[j];
+    const V gam = M::sqrt(dq[0] * dq[0] + dq[1] * dq[1] + dq[2] * dq[2]) / (S * in->dt);
+    const V rg = gam / in->gmax;
+    const V r = rg < 1 ? rg : one;  // fmin(NaN, 1) is 1 too
+    const V s = -in->gain * powLanes<V, M>(r, in->pw) * cs * mass * 2 * A / in->shull / in->dt;
+    const I hit = on & (A > 0) & (cs > 0);
+    for (int j = 0; j < 3; j++) g[j] = fin ? (hit ? s * v[j] : z) : nanv;
+    addLanes(ws, g, c, use);
+  }
+}
+
+template <int W, class M>
+static void flowLanes(FlowIn* in) {
+  typedef typename TLanes<W>::V V;
+  V wv[6] = {}, wd[6] = {}, ws[6] = {};
+  for (int p = 0; p < in->m; p += W) {
+    flowChunk<W, M>(in, p, in->m - p < W ? in->m - p : W, wv, wd, ws);
+  }
+  for (int j = 0; j < 6; j++) {
+    in->wv[j] = TLanes<W>::hsum(wv[j]);
+    in->wd[j] = TLanes<W>::hsum(wd[j]);
+    in->ws[j] = TLanes<W>::hsum(ws[j]);
+  }
+}
+
+}  // namespace
+}  // namespace mjb
+
+#endif  // MJBUOY_TRIVEC_KERN_H_

@@ -1,0 +1,175 @@
+// the triangle stage's wholly wet triangles in lanes (AVX2, AVX-512;
+// trivec.h) against the scalar reference (cpu.cc's per-triangle loop) and
+// against Archimedes, on every instruction set this cpu has
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "testutil.h"
+#include "vmath.h"
+
+namespace mjbt {
+namespace {
+
+// the vector levels this cpu has (a missing one is printed as not checked)
+std::vector<int> levels() {
+  const int prev = mjb::simdLevel(), best = mjb::simdSet(mjb::kSimdAvx512);
+  mjb::simdSet(prev);
+  std::vector<int> l;
+  for (int level = mjb::kSimdAvx2; level <= mjb::kSimdAvx512; level++) {
+    if (level <= best) {
+      l.push_back(level);
+    } else {
+      std::printf("[trivec] %s path not checked: this cpu lacks %s\n", mjb::simdName(level),
+                  level == mjb::kSimdAvx2 ? "AVX2 with FMA" : "AVX-512F");
+    }
+  }
+  return l;
+}
+
+// a 2 m x 1 m x 0.5 m box (V = 1 m^3) with its centre at depth z0 on flat
+// water; hull triangles are the box's 12, all wholly wet below the surface
+std::string submergedBox(double z0) {
+  std::ostringstream s;
+  s << "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"h*\"/></custom><worldbody>"
+    << "<body pos=\"0.3 -0.2 " << z0 << "\" euler=\"20 -35 60\"><freejoint/>"
+    << "<geom name=\"h\" type=\"box\" size=\"1 0.5 0.25\" mass=\"500\"/></body>"
+    << "</worldbody></mujoco>";
+  return s.str();
+}
+
+// Archimedes: a closed body wholly below flat water feels rho g V upward
+// through its centre of buoyancy (here the box's centre, its COM), whatever
+// its orientation; the exact integrals of pressure.h give it to round-off
+// (a few ulp of rho g V per triangle). Every path, every triangle in lanes
+TEST(TriVec, SubmergedBoxFeelsArchimedesOnEveryPath) {
+  Scene sc(submergedBox(-2));
+  ASSERT_TRUE(sc.ok()) << sc.err;
+  const int prev = mjb::simdLevel();
+  std::vector<int> lv = levels();
+  lv.insert(lv.begin(), mjb::kSimdScalar);
+  const double F = kRho * kG * 1.0;
+  for (int level : lv) {
+    mjb::simdSet(level);
+    mj_forward(sc.m, sc.d);
+    const mjtNum* p = mjb_wrenchPart(sc.b, sc.d, mjbPART_PRESSURE) + 6;
+    EXPECT_NEAR(p[0], 0, 1e-12 * F) << mjb::simdName(level);
+    EXPECT_NEAR(p[1], 0, 1e-12 * F) << mjb::simdName(level);
+    EXPECT_NEAR(p[2], F, 1e-12 * F) << mjb::simdName(level);
+    for (int j = 3; j < 6; j++) EXPECT_NEAR(p[j], 0, 1e-12 * F) << mjb::simdName(level);
+  }
+  mjb::simdSet(prev);
+}
+
+// a Wigley hull (576 triangles) heeled and pitched, and a box, on sea s
+// with pressure model pm, threads th
+std::string scene(const std::string& sea, const char* pm, int th) {
+  std::ostringstream s;
+  s << "<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" MJB_MODELS
+    << "/meshes/wigley_576.obj\"/></asset><custom><text name=\"mjbuoy.hulls\" data=\"h*\"/>"
+    << sea << "<text name=\"mjbuoy.sea.pressure\" data=\"" << pm << "\"/>"
+    << "<numeric name=\"mjbuoy.threads\" data=\"" << th << "\"/></custom><worldbody>"
+    << "<body pos=\"0 0 -0.02\" euler=\"6 -3 30\"><freejoint/><inertial pos=\"0 0 -0.08\" "
+    << "mass=\"176.2\" diaginertia=\"6.02 237.28 238.6\"/><geom name=\"h0\" type=\"mesh\" "
+    << "mesh=\"w\" contype=\"0\" conaffinity=\"0\"/></body>"
+    << "<body pos=\"-6 2 0\" euler=\"0 10 0\"><freejoint/><geom name=\"h1\" type=\"box\" "
+    << "size=\"1.5 0.6 0.3\" mass=\"600\"/></body></worldbody></mujoco>";
+  return s.str();
+}
+
+// every wrench part of every body after 10 steps (the slamming history on)
+std::vector<double> parts(Scene& s) {
+  mj_resetData(s.m, s.d);
+  for (int i = 0; i < 10; i++) mj_step(s.m, s.d);
+  std::vector<double> out;
+  for (int p = 0; p < mjbNPART; p++) {
+    const mjtNum* w = mjb_wrenchPart(s.b, s.d, p);
+    out.insert(out.end(), w, w + 6 * s.m->nbody);
+  }
+  return out;
+}
+
+// The lanes do the scalar path's arithmetic for a wholly wet triangle
+// (same formulas, same components summed) and differ by rounding only: FMA
+// contraction, the order of the sums over triangles, and series terms past
+// the scalar's count (each below 2^-54 of the first, waveint.cc). A
+// series about corner 0 loses at most e^kRMax = e^4 of relative precision
+// (waveker.h), so a triangle's integrals differ by about 64 e^4 eps, 1e-12,
+// of their size. The vertex stage's lanes move labels by up to 2e-12 / (1 -
+// fold) m (tests/seavec_test.cc), 4e-11 m at fold 0.95, and heights with
+// them: against the hull's 0.1 m of draft and the swell's amplitude, a
+// relative 4e-10 of the pressure. 10 steps carry these rounding-level
+// differences in the state. Bound: each family's parts within 1e-9 of that
+// family's largest part (plus 1e-9 N for a family that is near zero)
+TEST(TriVec, LanesMatchTheScalarTriangles) {
+  struct Case {
+    const char* name;
+    std::string sea;
+    const char* pm;
+  };
+  const std::string steep = "<numeric name=\"mjbuoy.wave.a\" data=\"0.6 4 20 0 1\"/>";
+  const std::string jonswap =
+      "<text name=\"mjbuoy.spectrum.sea.type\" data=\"jonswap\"/>"
+      "<numeric name=\"mjbuoy.spectrum.sea.hs\" data=\"0.6\"/>"
+      "<numeric name=\"mjbuoy.spectrum.sea.tp\" data=\"5\"/>"
+      "<numeric name=\"mjbuoy.spectrum.sea.components\" data=\"64\"/>"
+      "<numeric name=\"mjbuoy.spectrum.sea.spreading\" data=\"10\"/>";
+  const std::string shallow =
+      "<numeric name=\"mjbuoy.sea.depth\" data=\"3\"/>"
+      "<numeric name=\"mjbuoy.wave.a\" data=\"0.3 12 20 0 0.6\"/>"
+      "<numeric name=\"mjbuoy.wave.b\" data=\"0.1 5 -50 40 0.5\"/>"
+      "<numeric name=\"mjbuoy.airy.c\" data=\"0.1 8 -120 10\"/>";
+  const std::string swell = "<numeric name=\"mjbuoy.wave.a\" data=\"0.3 20 20 0 0.6\"/>";
+  const std::string expo =
+      "<numeric name=\"mjbuoy.hull.drag\" data=\"100 400 1\"/>"
+      "<numeric name=\"mjbuoy.hull.suction\" data=\"100 200 2\"/>"
+      "<numeric name=\"mjbuoy.hull.slamming\" data=\"1 0.5 ";
+  const Case cases[] = {{"steep Gerstner (Q 1, fold 0.94), linear", steep, "linear"},
+                        {"steep Gerstner, kerner", steep, "kerner"},
+                        {"JONSWAP 64, linear", jonswap, "linear"},
+                        {"finite depth 3 m, 2 Gerstner + Airy, linear", shallow, "linear"},
+                        {"flat", "", "linear"},
+                        {"swell, drag exponent 1, suction 2, slamming power 1",
+                         swell + expo + "1\"/>", "linear"},
+                        {"swell, slamming power 3 (hydrodynamics on the scalar path)",
+                         swell + expo + "3\"/>", "linear"}};
+  const int prev = mjb::simdLevel();
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    Scene one(scene(c.sea, c.pm, 1)), two(scene(c.sea, c.pm, 2));
+    ASSERT_TRUE(one.ok() && two.ok()) << c.name << ": " << one.err << two.err;
+    mjb::simdSet(mjb::kSimdScalar);
+    const std::vector<double> ref = parts(one);
+    const int n6 = 6 * one.m->nbody;
+    for (int level : levels()) {
+      mjb::simdSet(level);
+      const std::vector<double> a = parts(one);
+      EXPECT_EQ(parts(one), a) << c.name << ", " << mjb::simdName(level);
+      EXPECT_EQ(parts(two), a) << c.name << ", " << mjb::simdName(level);
+      double worst = 0;
+      for (int p = 0; p < mjbNPART; p++) {
+        double big = 0, diff = 0;
+        for (int i = 0; i < n6; i++) {
+          big = std::fmax(big, std::fabs(ref[p * n6 + i]));
+          diff = std::fmax(diff, std::fabs(a[p * n6 + i] - ref[p * n6 + i]));
+        }
+        EXPECT_LE(diff, 1e-9 * big + 1e-9) << c.name << ", " << mjb::simdName(level)
+                                           << ", family " << p;
+        if (p == mjbPART_PRESSURE) {
+          EXPECT_GT(big, 100) << c.name;
+        }
+        worst = std::fmax(worst, diff / (big + 1e-300));
+      }
+      std::printf("[trivec] %s, %s: parts within %.3g of scalar (relative)\n", c.name,
+                  mjb::simdName(level), worst);
+    }
+  }
+  mjb::simdSet(prev);
+}
+
+}  // namespace
+}  // namespace mjbt
