@@ -16,6 +16,7 @@
 #define MJBUOY_TRIVEC_KERN_H_
 
 #include "trivec.h"
+#include "serieskern.h"
 #include "waveker.h"
 
 namespace mjb {
@@ -77,34 +78,8 @@ static void familyLanes(const TriIn& in, int f, const double* const e0[W],
       ui[c] = in.kdx[j] * X + in.kdy[j] * Y;
     }
     const int N = seriesTerms(k * rmax);
-    V pr = V{} + 1, pi = V{}, hr = pr, hi = pi, gr = pr, gi = pi, fr = pr, fi = pi;
-    V Sr = V{} + kInvF2[0], Si = V{}, T0r = V{} + kInvF3[0], T0i = V{};
-    V T1r = T0r, T1i = V{}, T2r = T0r, T2i = V{};
-    for (int m = 1; m < N; m++) {
-      V t = pr * ur[1] - pi * ui[1];
-      pi = pr * ui[1] + pi * ur[1];
-      pr = t;
-      t = hr * ur[0] - hi * ui[0] + pr;
-      hi = hr * ui[0] + hi * ur[0] + pi;
-      hr = t;
-      const double c2 = kInvF2[m];
-      Sr += c2 * hr;
-      Si += c2 * hi;
-      if (!mom) continue;
-      t = gr * ur[0] - gi * ui[0] + hr;
-      gi = gr * ui[0] + gi * ur[0] + hi;
-      gr = t;
-      t = fr * ur[1] - fi * ui[1] + hr;
-      fi = fr * ui[1] + fi * ur[1] + hi;
-      fr = t;
-      const double c3 = kInvF3[m];
-      T0r += c3 * hr;
-      T0i += c3 * hi;
-      T1r += c3 * gr;
-      T1i += c3 * gi;
-      T2r += c3 * fr;
-      T2i += c3 * fi;
-    }
+    V S[2], T[6];
+    seriesLoop(ur, ui, N, mom, S, T);
     V er, ei;
     for (int l = 0; l < W; l++) {
       er[l] = e0[l][eo + j];
@@ -112,12 +87,12 @@ static void familyLanes(const TriIn& in, int f, const double* const e0[W],
     }
     er = keep ? er : V{};
     ei = keep ? ei : V{};
-    const V Ir = er * Sr - ei * Si, Ii = er * Si + ei * Sr;
+    const V Ir = er * S[0] - ei * S[1], Ii = er * S[1] + ei * S[0];
     acc[0] += wp[j] * Ir;
     if (mom) {
-      acc[1] += wp[j] * (er * T0r - ei * T0i);
-      acc[2] += wp[j] * (er * T1r - ei * T1i);
-      acc[3] += wp[j] * (er * T2r - ei * T2i);
+      acc[1] += wp[j] * (er * T[0] - ei * T[1]);
+      acc[2] += wp[j] * (er * T[2] - ei * T[3]);
+      acc[3] += wp[j] * (er * T[4] - ei * T[5]);
     }
     acc[4] += wux[j] * Ir;
     acc[5] += wuy[j] * Ir;

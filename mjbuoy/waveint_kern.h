@@ -5,6 +5,7 @@
 #ifndef MJBUOY_WAVEINT_KERN_H_
 #define MJBUOY_WAVEINT_KERN_H_
 
+#include "serieskern.h"
 #include "waveker.h"
 
 namespace mjb {
@@ -58,42 +59,16 @@ static inline void seriesChunk(const KernIn& in, int j, typename Vec<W>::T* acc)
   const int N = seriesTerms(in.k[j + W - 1] * in.rho);
   // h_m(u1, u2) = u1 h_(m-1) + u2^m; g_m = h_m(u1, u1, u2) = u1 g_(m-1) + h_m;
   // f_m = h_m(u1, u2, u2) = u2 f_(m-1) + h_m; h_m(0, 0, u1, u2) = h_m
-  V pr = V{} + 1, pi = V{}, hr = pr, hi = pi, gr = pr, gi = pi, fr = pr, fi = pi;
-  V Sr = V{} + kInvF2[0], Si = V{}, T0r = V{} + kInvF3[0], T0i = V{};
-  V T1r = T0r, T1i = V{}, T2r = T0r, T2i = V{};
-  for (int m = 1; m < N; m++) {
-    V t = pr * ur[1] - pi * ui[1];
-    pi = pr * ui[1] + pi * ur[1];
-    pr = t;
-    t = hr * ur[0] - hi * ui[0] + pr;
-    hi = hr * ui[0] + hi * ur[0] + pi;
-    hr = t;
-    const double c2 = kInvF2[m];
-    Sr += c2 * hr;
-    Si += c2 * hi;
-    if (!MOM) continue;
-    t = gr * ur[0] - gi * ui[0] + hr;
-    gi = gr * ui[0] + gi * ur[0] + hi;
-    gr = t;
-    t = fr * ur[1] - fi * ui[1] + hr;
-    fi = fr * ui[1] + fi * ur[1] + hi;
-    fr = t;
-    const double c3 = kInvF3[m];
-    T0r += c3 * hr;
-    T0i += c3 * hi;
-    T1r += c3 * gr;
-    T1i += c3 * gi;
-    T2r += c3 * fr;
-    T2i += c3 * fi;
-  }
+  V S[2], T[6];
+  seriesLoop(ur, ui, N, MOM, S, T);
   const V er = L::ld(in.e0r + j), ei = L::ld(in.e0i + j);
   const V wp = L::ld(in.wp + j);
-  const V Ir = er * Sr - ei * Si, Ii = er * Si + ei * Sr;
+  const V Ir = er * S[0] - ei * S[1], Ii = er * S[1] + ei * S[0];
   acc[0] += wp * Ir;
   if (MOM) {
-    acc[1] += wp * (er * T0r - ei * T0i);
-    acc[2] += wp * (er * T1r - ei * T1i);
-    acc[3] += wp * (er * T2r - ei * T2i);
+    acc[1] += wp * (er * T[0] - ei * T[1]);
+    acc[2] += wp * (er * T[2] - ei * T[3]);
+    acc[3] += wp * (er * T[4] - ei * T[5]);
   }
   acc[4] += L::ld(in.wux + j) * Ir;
   acc[5] += L::ld(in.wuy + j) * Ir;
