@@ -18,6 +18,7 @@
 #include "hemisphere.h"
 #include "config.h"
 #include "eqdraft.h"
+#include "floatbox.h"
 #include "hull.h"
 #include "panelmesh.h"
 #include "radattach.h"
@@ -373,26 +374,6 @@ namespace {
 // ---- heave free decay of a floating box: time domain against frequency
 // domain (issue 16) ----
 
-// 1 m x 1 m x 1 m box floating at 0.5 m draft (m = rho 0.5 m^3), radiation
-// on with refine 1 (384 wet panels and the lid)
-std::string boxDecayModel() {
-  std::ostringstream s;
-  s << "<mujoco><option timestep=\"0.005\"/><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
-    << "<numeric name=\"mjbuoy.sea.density\" data=\"" << kRho << "\"/>"
-    << "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
-    << "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0.5\"/>"
-    << "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0.5\"/>"
-    << "<numeric name=\"mjbuoy.hull.slamming\" data=\"0 100 2\"/>"
-    << "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
-    << "<numeric name=\"mjbuoy.radiation.refine\" data=\"1\"/>"
-    << "<numeric name=\"mjbuoy.radiation.omega\" data=\"0.9 9 12\"/>"
-    << "</custom><worldbody><body name=\"box\"><freejoint/>"
-    << "<inertial pos=\"0 0 -0.2\" mass=\"" << kRho * 0.5 << "\" diaginertia=\"100 100 100\"/>"
-    << "<geom name=\"hull\" type=\"box\" size=\"0.5 0.5 0.5\" contype=\"0\" conaffinity=\"0\"/>"
-    << "</body></worldbody></mujoco>";
-  return s.str();
-}
-
 TEST(RadAttach, BoxHeaveDecayMatchesItsFrequencyDomain) {
   // the frequency-domain prediction from the same wet surface's A33(w),
   // B33(w) (panelSolve on hullPanels of the box's hull mesh, the attach
@@ -401,7 +382,7 @@ TEST(RadAttach, BoxHeaveDecayMatchesItsFrequencyDomain) {
   // complex w), complex Newton. The time domain gets only A_inf and K(t)
   // from B (Cummins), so agreement checks the memory, A_inf in the inertia
   // and the frame change on a second shape
-  Scene s(boxDecayModel());
+  Scene s(mjbt::floatingCubeXML());
   ASSERT_TRUE(s.ok()) << s.err;
   std::vector<std::string> warn;
   mjb::Mesh mesh = mjb::hullMesh(s.m, 0, &warn);

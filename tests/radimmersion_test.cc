@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "buoy.h"
+#include "floatbox.h"
 #include "testutil.h"
 
 namespace {
@@ -16,27 +17,6 @@ namespace {
 using mjbt::Scene;
 using mjbt::kG;
 using mjbt::kRho;
-
-// 1 m cube, 500 kg (draft 0.5 m, centre at the surface when floating), COM
-// 0.2 m below the centre, radiation on. The same model as RadAttach's box
-// decay (radattach_test.cc), so both share one cached panel solution
-std::string boxModel() {
-  std::ostringstream s;
-  s << "<mujoco><option timestep=\"0.005\"/><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
-    << "<numeric name=\"mjbuoy.sea.density\" data=\"" << kRho << "\"/>"
-    << "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
-    << "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0.5\"/>"
-    << "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0.5\"/>"
-    << "<numeric name=\"mjbuoy.hull.slamming\" data=\"0 100 2\"/>"
-    << "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
-    << "<numeric name=\"mjbuoy.radiation.refine\" data=\"1\"/>"
-    << "<numeric name=\"mjbuoy.radiation.omega\" data=\"0.9 9 12\"/>"
-    << "</custom><worldbody><body name=\"box\"><freejoint/>"
-    << "<inertial pos=\"0 0 -0.2\" mass=\"" << kRho * 0.5 << "\" diaginertia=\"100 100 100\"/>"
-    << "<geom name=\"hull\" type=\"box\" size=\"0.5 0.5 0.5\" contype=\"0\" conaffinity=\"0\"/>"
-    << "</body></worldbody></mujoco>";
-  return s.str();
-}
 
 const double kMass = kRho * 0.5;
 
@@ -54,7 +34,7 @@ TEST(RadImmersion, DryHullFallsAtG) {
   // above the water nothing touches the hull: Newton gives qacc_z = -g
   // exactly (no added mass, no memory, no Kirchhoff force, no diffraction).
   // Before the immersion factor it fell at -g m / (m + A33)
-  Scene s(boxModel());
+  Scene s(mjbt::floatingCubeXML());
   ASSERT_TRUE(s.ok()) << s.err;
   const mjb::Buoy& B = *mjb::buoyOf(s.b);
   ASSERT_EQ(B.rad.rb.size(), 1u);
@@ -104,7 +84,7 @@ TEST(RadImmersion, FloatingBodyHasItsFullAddedMass) {
   // its 0.5 m^3 displacement (centre below 0.25 m), the whole A33 of the
   // panel solution is in the inertia, bit for bit as before the factor:
   // the linear tests (free decay, RAO) run unchanged
-  Scene s(boxModel());
+  Scene s(mjbt::floatingCubeXML());
   ASSERT_TRUE(s.ok()) << s.err;
   const double a33 = mjb::buoyOf(s.b)->rad.rb[0].A[14];
   for (double z : {0.0, -0.05, 0.05, 0.2, -0.4, -1.0}) {
@@ -118,7 +98,7 @@ TEST(RadImmersion, EmergingHullLosesItsAddedMassContinuously) {
   // s = clamp(V / (0.5 V_eq), 0, 1) = clamp((0.5 - z) / 0.25, 0, 1), and
   // the heave inertia m + s A33 is continuous with slope at most A33 / 0.25
   // per metre of heave
-  Scene s(boxModel());
+  Scene s(mjbt::floatingCubeXML());
   ASSERT_TRUE(s.ok()) << s.err;
   const double a33 = mjb::buoyOf(s.b)->rad.rb[0].A[14];
   double last = NAN, worst = 0;

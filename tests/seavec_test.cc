@@ -14,6 +14,7 @@
 #include "buoy.h"
 #include "sea.h"
 #include "seavec.h"
+#include "simdlevels.h"
 #include "testutil.h"
 #include "vmath.h"
 
@@ -93,23 +94,6 @@ Out solveAll(const mjb::Sea& sea, double t, const std::vector<double>& x,
   return o;
 }
 
-// the levels to check besides scalar: those this cpu has, the others
-// reported as skipped with the reason
-std::vector<int> vectorLevels() {
-  const int prev = mjb::simdLevel(), best = mjb::simdSet(mjb::kSimdAvx512);
-  mjb::simdSet(prev);
-  std::vector<int> l;
-  for (int level = mjb::kSimdAvx2; level <= mjb::kSimdAvx512; level++) {
-    if (level <= best) {
-      l.push_back(level);
-    } else {
-      std::printf("[seavec] %s path not checked: this cpu lacks %s\n", mjb::simdName(level),
-                  level == mjb::kSimdAvx2 ? "AVX2 with FMA" : "AVX-512F");
-    }
-  }
-  return l;
-}
-
 // Both paths run Newton to |F| <= 1e-12 m on F(a) = a - sum Q A D
 // sin(theta(a)) - x (sea.cc), whose Jacobian J = I - sum Q k A cos D D^T has
 // |J^-1| <= 1 / (1 - sum Q k A): each label is within 1e-12 / (1 - fold) of
@@ -133,7 +117,7 @@ void checkSea(const mjb::Sea& sea, double guess, const char* what) {
   double sumAk = 0;
   for (const mjb::Wave& wv : sea.waves) sumAk += std::fabs(wv.amp) * wv.k;
   const double tolA = 2e-12 / (1 - fold);
-  for (int level : vectorLevels()) {
+  for (int level : vectorLevels("seavec")) {
     mjb::simdSet(level);
     const Out o = solveAll(sea, t, x, y, guess);
     double worstA = 0, worstZ = 0, worstF = 0;
@@ -237,7 +221,7 @@ TEST(SeaVec, CpuBackendRepeatsItsBitsOnEachPath) {
   Scene one(scene(1)), two(scene(2));
   ASSERT_TRUE(one.ok() && two.ok()) << one.err << two.err;
   const int prev = mjb::simdLevel();
-  std::vector<int> levels = vectorLevels();
+  std::vector<int> levels = vectorLevels("seavec");
   levels.insert(levels.begin(), mjb::kSimdScalar);
   std::vector<double> w0;
   for (int level : levels) {

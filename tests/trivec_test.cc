@@ -9,27 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include "simdlevels.h"
 #include "testutil.h"
 #include "vmath.h"
 
 namespace mjbt {
 namespace {
-
-// the vector levels this cpu has (a missing one is printed as not checked)
-std::vector<int> levels() {
-  const int prev = mjb::simdLevel(), best = mjb::simdSet(mjb::kSimdAvx512);
-  mjb::simdSet(prev);
-  std::vector<int> l;
-  for (int level = mjb::kSimdAvx2; level <= mjb::kSimdAvx512; level++) {
-    if (level <= best) {
-      l.push_back(level);
-    } else {
-      std::printf("[trivec] %s path not checked: this cpu lacks %s\n", mjb::simdName(level),
-                  level == mjb::kSimdAvx2 ? "AVX2 with FMA" : "AVX-512F");
-    }
-  }
-  return l;
-}
 
 // a 2 m x 1 m x 0.5 m box (V = 1 m^3) with its centre at depth z0 on flat
 // water; hull triangles are the box's 12, all wholly wet below the surface
@@ -50,7 +35,7 @@ TEST(TriVec, SubmergedBoxFeelsArchimedesOnEveryPath) {
   Scene sc(submergedBox(-2));
   ASSERT_TRUE(sc.ok()) << sc.err;
   const int prev = mjb::simdLevel();
-  std::vector<int> lv = levels();
+  std::vector<int> lv = vectorLevels("trivec");
   lv.insert(lv.begin(), mjb::kSimdScalar);
   const double F = kRho * kG * 1.0;
   for (int level : lv) {
@@ -145,7 +130,7 @@ TEST(TriVec, LanesMatchTheScalarTriangles) {
     mjb::simdSet(mjb::kSimdScalar);
     const std::vector<double> ref = parts(one);
     const int n6 = 6 * one.m->nbody;
-    for (int level : levels()) {
+    for (int level : vectorLevels("trivec")) {
       mjb::simdSet(level);
       const std::vector<double> a = parts(one);
       EXPECT_EQ(parts(one), a) << c.name << ", " << mjb::simdName(level);
