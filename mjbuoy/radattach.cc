@@ -308,8 +308,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   checkCoef(B, who, &c);
   B->rad.conv = rc.conv;
   B->rad.ssAsked = rc.ssAsked;
-  err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
-  if (!err.empty() && err.find("positive semi-definite") != std::string::npos) {
+  if (addedMassIndefinite(c.Ainf)) {
     // an unresolved wet surface, not a fault of the user's numbers
     std::string why = unresolved(body, c);
     if (!(rc.given && rc.on) && !namedOn(*B, root)) {
@@ -318,6 +317,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
     }
     return who + ": " + why;
   }
+  err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
   if (!err.empty()) return err;
   // the immersion factor's reference (docs/physics.md, "Immersion factor"):
   // the group's displaced volume at the panel pose, and its hull bodies

@@ -239,6 +239,8 @@ void clearSimple(const mjModel* m, const std::vector<int>& dof, Radiation* r) {
 
 }  // namespace
 
+bool addedMassIndefinite(const double A[36]) { return finite(A, 36) && !psd(A); }
+
 void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K) {
   const int nw = c.nw();
   for (int k = 0; k < n; k++) {

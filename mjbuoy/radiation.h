@@ -80,6 +80,10 @@ void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K);
 double memoryLength(const HydroCoef& c);
 const double kMaxMemory = 60;
 
+// true when A (6 x 6, row-major) is finite but not positive semi-definite
+// within round-off: the water it carries would have negative kinetic energy
+bool addedMassIndefinite(const double A[36]);
+
 // add radiation to body of an attached model (replacing what it had):
 // c's A_inf, and its memory over tmem seconds (0: memoryLength(c); <0: no
 // memory). Checks c and body; "" or the error. Changes m->dof_simplenum of
