@@ -308,6 +308,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   checkCoef(B, who, &c);
   B->rad.conv = rc.conv;
   B->rad.ssAsked = rc.ssAsked;
+  std::copy(rc.roll, rc.roll + 2, B->rad.roll);
   err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
   if (!err.empty() && err.find("positive semi-definite") != std::string::npos) {
     // an unresolved wet surface, not a fault of the user's numbers
