@@ -90,6 +90,20 @@ TEST(RollDamping, QuadraticTermLowersTheInverseAmplitudeLinearly) {
   EXPECT_NEAR(step, pred, 0.03 * pred);
 }
 
+TEST(RollDamping, WithoutRadiationItWarns) {
+  // the term belongs to the radiating bodies: a floating box with radiation
+  // off would silently get none
+  Scene s("<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
+          "<text name=\"mjbuoy.radiation\" data=\"off\"/>"
+          "<numeric name=\"mjbuoy.radiation.rolldamping\" data=\"2.7 0\"/></custom>"
+          "<worldbody><body name=\"box\"><freejoint/><geom name=\"hull\" type=\"box\" "
+          "size=\"0.5 0.5 0.5\" mass=\"500\" contype=\"0\" conaffinity=\"0\"/></body>"
+          "</worldbody></mujoco>");
+  ASSERT_TRUE(s.ok()) << s.err;
+  EXPECT_NE(std::string(mjb_warnings(s.b)).find("mjbuoy.radiation.rolldamping acts only"),
+            std::string::npos) << mjb_warnings(s.b);
+}
+
 TEST(RollDamping, BadEntriesAreNamed) {
   for (const char* bad : {"-1 0", "1", "0 -2", "1e16 0"}) {
     Scene s(roller(bad));
