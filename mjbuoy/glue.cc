@@ -537,6 +537,7 @@ std::string mjb::setHydroCoef(mjbBuoy* b, int body, const HydroCoef& c, double t
   // no callback of this model may run meanwhile: its data lock, exclusive
   std::unique_lock<std::shared_mutex> lk(b->mu);
   b->b.rad.conv = b->b.cfg.rad.conv;
+  std::copy(b->b.cfg.rad.roll, b->b.cfg.rad.roll + 2, b->b.rad.roll);
   std::string e = setRadiation(b->b.m, body, c, tmem, &b->b.rad);
   for (std::string& n : b->b.rad.note) b->b.warnings += "mjbuoy: warning: " + n + "\n";
   b->b.rad.note.clear();

@@ -308,6 +308,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   checkCoef(B, who, &c);
   B->rad.conv = rc.conv;
   B->rad.ssAsked = rc.ssAsked;
+  std::copy(rc.roll, rc.roll + 2, B->rad.roll);
   if (addedMassIndefinite(c.Ainf)) {
     // an unresolved wet surface, not a fault of the user's numbers
     std::string why = unresolved(body, c);
@@ -356,7 +357,14 @@ std::string attachRadiation(Buoy* B) {
     if (std::find(roots.begin(), roots.end(), r) == roots.end() && groupRadiates(*B, r))
       roots.push_back(r);
   }
-  if (roots.empty()) return "";
+  if (roots.empty()) {
+    if (rc.roll[0] > 0 || rc.roll[1] > 0) {
+      B->cfg.warn.push_back("radiation: mjbuoy.radiation.rolldamping acts only on bodies with "
+                            "radiation on, and no hull body has it; turn radiation on "
+                            "(mjbuoy.radiation) or remove the entry");
+    }
+    return "";
+  }
   if (B->cfg.sea.depth > 0) {
     B->cfg.warn.push_back("radiation: the panel solver is for deep water; mjbuoy.sea.depth = " +
                           fmt(B->cfg.sea.depth) + " m is not used for the radiation coefficients");

@@ -114,11 +114,29 @@ static std::string checkRad(const char* name, const char* what, double v, double
   return "";
 }
 
+// mjbuoy.radiation.rolldamping: linear and quadratic viscous roll damping,
+// each 0 to 1e15 (the hull damping's angular bound, docs/mjcf.md section 2)
+static std::string parseRollDamping(const char* name, int n, const mjtNum* v, RadConfig* r) {
+  const char* ex = "2.7 0";
+  if (n != 2) {
+    return "mjbuoy: " + tag("numeric", name) + " has " + std::to_string(n) + " value(s), expected " +
+           "2 (linear N m s/rad, quadratic N m s^2/rad^2), e.g. data=\"" + ex + "\"";
+  }
+  std::string e = checkRad(name, "value 1 (linear)", v[0], 0, 1e15, false, "N m s/rad", ex);
+  if (e.empty()) e = checkRad(name, "value 2 (quadratic)", v[1], 0, 1e15, false, "N m s^2/rad^2", ex);
+  if (e.empty()) {
+    r->roll[0] = v[0];
+    r->roll[1] = v[1];
+  }
+  return e;
+}
+
 static std::string parseNumeric(const mjModel* m, int i, RadConfig* r) {
   const char* name = m->names + m->name_numericadr[i];
   const char* key = name + 7;
   int n = m->numeric_size[i];
   const mjtNum* v = m->numeric_data + m->numeric_adr[i];
+  if (!std::strcmp(key, "radiation.rolldamping")) return parseRollDamping(name, n, v, r);
   struct F { const char* key; int n; const char* unit; const char* ex; };
   static const F kF[] = {{"radiation.omega", 3, "rad/s, rad/s, count", "0.5 6 20"},
                          {"radiation.refine", 1, "refine level", "0"},
@@ -127,8 +145,8 @@ static std::string parseNumeric(const mjModel* m, int i, RadConfig* r) {
   for (const F& c : kF) if (!std::strcmp(key, c.key)) f = &c;
   if (!f) {
     return "mjbuoy: unknown entry " + tag("numeric", name) +
-           "; radiation numeric entries are mjbuoy.radiation.omega, mjbuoy.radiation.refine "
-           "and mjbuoy.radiation.memory (see docs/mjcf.md)";
+           "; radiation numeric entries are mjbuoy.radiation.omega, mjbuoy.radiation.refine, "
+           "mjbuoy.radiation.memory and mjbuoy.radiation.rolldamping (see docs/mjcf.md)";
   }
   if (n != f->n) {
     return "mjbuoy: " + tag("numeric", name) + " has " + std::to_string(n) + " value(s), expected " +

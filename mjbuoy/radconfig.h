@@ -23,6 +23,9 @@ struct RadConfig {
   bool conv = false;            // mjbuoy.radiation.memorymodel: statespace (default) or convolution
   bool ssAsked = false;         // memorymodel = statespace given explicitly: warn on a fallback
   std::string cache;            // mjbuoy.radiation.cache: directory or "off"; "": default
+  // mjbuoy.radiation.rolldamping: viscous roll damping about each radiating
+  // group's body x axis, linear [N m s/rad] and quadratic [N m s^2/rad^2]
+  double roll[2] = {0, 0};
   bool radiates(int body) const;
   // whether the rigid group of weld root `root` radiates: an override
   // naming the root or any of its hull bodies (hullBody, one per hull)

@@ -46,6 +46,9 @@ struct Radiation {
   std::vector<int> simple0;  // m->dof_simplenum before the first body was set
   bool conv = false;         // mjbuoy.radiation.memorymodel = convolution: no fit
   bool ssAsked = false;      // statespace given explicitly: a fallback is noted
+  // viscous roll damping about each body's x axis, linear [N m s/rad] and
+  // quadratic [N m s^2/rad^2] (mjbuoy.radiation.rolldamping)
+  double roll[2] = {0, 0};
   int nmode = 0;             // state-space modes of all bodies
   std::vector<std::string> note;  // fits that fell back to the convolution (when ssAsked)
 };

@@ -152,6 +152,37 @@ TEST(Radiation, MunkMomentOfObliqueMotion) {
   }
 }
 
+TEST(Radiation, MunkMomentOfABodyHeldInACurrent) {
+  // a body at rest in a uniform current U at angle beta to its x axis is
+  // the body moving at -U through still water (Galilean; docs/physics.md
+  // section 14, "Current"): with (u, v) = -U (cos beta, sin beta) the
+  // Munk moment is N = -(A22 - A11) u v = -(A22 - A11) U^2 cos beta sin beta
+  // (Newman 1977 section 4.13), and no force
+  const double A11 = 50, A22 = 200, U = 0.5;
+  for (double beta : {0.3, 1.1}) {
+    char x[1024];
+    std::snprintf(x, sizeof(x),
+                  "<mujoco><option><flag gravity=\"disable\"/></option><custom>"
+                  "<numeric name=\"mjbuoy.sea.current\" data=\"%.17g %.17g\"/></custom>"
+                  "<worldbody><body name=\"b\"><freejoint/>"
+                  "<inertial pos=\"0 0 0\" mass=\"10\" diaginertia=\"1 2 3\"/>"
+                  "<geom type=\"sphere\" size=\"0.1\" contype=\"0\" conaffinity=\"0\" mass=\"0\"/>"
+                  "</body></worldbody></mujoco>", U * std::cos(beta), U * std::sin(beta));
+    Scene s(x);
+    ASSERT_TRUE(s.ok()) << s.err;
+    mjb::HydroCoef c;
+    c.Ainf[0] = A11; c.Ainf[7] = A22; c.Ainf[14] = 300;
+    c.Ainf[21] = 10; c.Ainf[28] = 20; c.Ainf[35] = 30;
+    ASSERT_EQ(mjb::setHydroCoef(s.b, 1, c, -1), "");
+    mj_forward(s.m, s.d);
+    const double N = -(A22 - A11) * U * U * std::cos(beta) * std::sin(beta);
+    std::printf("[radiation] held in a %.2f m/s current at %.2f rad: N %.9g N m (expected %.9g)\n",
+                U, beta, s.d->qfrc_passive[5], N);
+    for (int i = 0; i < 5; i++) EXPECT_NEAR(s.d->qfrc_passive[i], 0, 1e-9) << i;
+    EXPECT_NEAR(s.d->qfrc_passive[5], N, 1e-9 * std::fabs(N));
+  }
+}
+
 TEST(Radiation, SpinningSphereFeelsNoVelocityForce) {
   // isotropic added mass a I (a sphere's) carries no Kirchhoff force: the
   // fluid force is -a times the centre's acceleration (Newman 1977 section
