@@ -39,6 +39,7 @@ struct Tables {
 static const Tables kTab;
 const double* kInvF2 = kTab.f2;
 const double* kInvF3 = kTab.f3;
+const double* kSeriesR = kTab.rm;
 
 int seriesTerms(double r) {
   int N = 1;

@@ -38,6 +38,8 @@ void seriesAvx512(const KernIn& in, int j0, int j1, double out[7]);
 // the number of series terms for radius r <= kRMax: the first term left
 // out is below 2^-54 of the leading one (docs/physics.md, "Cost")
 int seriesTerms(double r);
+// the largest radius N terms serve, for N <= kNMax (rising with N)
+extern const double* kSeriesR;
 // 1/(m+2)! and 1/(m+3)! for m < kNMax
 extern const double* kInvF2;
 extern const double* kInvF3;
