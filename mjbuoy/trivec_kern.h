@@ -10,8 +10,9 @@
 // the piece reaches above -40 (the same set the scalar path sums). A lane
 // whose piece is too coarse for the series (k rho > kRMax for the largest
 // k: the scalar path subdivides) or not finite goes back to the scalar
-// path. Only the rounding differs: FMA contraction, the order of sums, and
-// series terms past the scalar's count (each below 2^-54 of the first).
+// path. Only the rounding differs: FMA contraction, the order of sums,
+// series terms past the scalar's count (each below 2^-54 of the first), and
+// T_2 by the sum rule T_0 + T_1 + T_2 = S (serieskern.h).
 #ifndef MJBUOY_TRIVEC_KERN_H_
 #define MJBUOY_TRIVEC_KERN_H_
 
