@@ -186,10 +186,18 @@ static void vertexWaves(const WaveTab& t, size_t nw, size_t stride, const HullSc
     for (int f = 0; f < nf; f++) {
       double* er = hs.E + stride * nw * wq[c] + 2 * f * nw;
       double* ei = er + nw;
+      const double* af = a + f * n;
+      if (t.ident) {  // no gather: a loop the compiler vectorises
+        for (int j = 0; j < n; j++) {
+          er[j] = af[j] * sc[2 * j + 1];
+          ei[j] = af[j] * sc[2 * j];
+        }
+        continue;
+      }
       for (int j = 0; j < n; j++) {
         const int i = t.perm[j];
-        er[j] = a[f * n + j] * sc[2 * i + 1];
-        ei[j] = a[f * n + j] * sc[2 * i];
+        er[j] = af[j] * sc[2 * i + 1];
+        ei[j] = af[j] * sc[2 * i];
       }
     }
   }

@@ -11,39 +11,55 @@ namespace mjb {
 namespace {
 
 // for corner differences u_c = ur[c] + i ui[c] (c = 0, 1) and N terms:
-// S = sum_m kInvF2[m] h_m and, when mom, T = sum_m kInvF3[m] (h_m, g_m, f_m)
+// S = sum_m kInvF2[m] h_m and, when MOM, T = sum_m kInvF3[m] (h_m, g_m, f_m)
 // with h_m = u1 h_(m-1) + u2^m, g_m = u1 g_(m-1) + h_m, f_m = u2 f_(m-1) + h_m;
-// S = (re, im), T = (T0, T1, T2) as (re, im) pairs, T left at m = 0 without mom
-template <class V>
-__attribute__((always_inline)) inline void seriesLoop(const V ur[2], const V ui[2], int N,
-                                                      bool mom, V S[2], V T[6]) {
+// S = (re, im), T = (T0, T1, T2) as (re, im) pairs, T left at m = 0 without
+// MOM. ID: T2 by the moments' sum rule T0 + T1 + T2 = S (the barycentric
+// weights add up to 1, so sum_c h_m(u_c, 0, u1, u2) / (m+3)! = h_m(u1, u2)
+// / (m+2)! term by term; docs/physics.md "Dynamic part in closed form")
+// instead of the f chain, a quarter of the work per term; its sums start
+// at m = 1 and the m = 0 terms come last, so coincident corners still give
+// 1/2 and 1/6 exactly
+template <class V, bool MOM, bool ID>
+__attribute__((always_inline)) inline void seriesLoop(const V ur[2], const V ui[2], int N, V S[2],
+                                                      V T[6]) {
+  const double s0 = ID ? 0 : kInvF2[0], t0 = ID ? 0 : kInvF3[0];
   V pr = V{} + 1, pi = V{}, hr = pr, hi = pi, gr = pr, gi = pi, fr = pr, fi = pi;
-  V Sr = V{} + kInvF2[0], Si = V{}, T0r = V{} + kInvF3[0], T0i = V{};
+  V Sr = V{} + s0, Si = V{}, T0r = V{} + t0, T0i = V{};
   V T1r = T0r, T1i = V{}, T2r = T0r, T2i = V{};
   for (int m = 1; m < N; m++) {
     V t = pr * ur[1] - pi * ui[1];
     pi = pr * ui[1] + pi * ur[1];
     pr = t;
-    t = hr * ur[0] - hi * ui[0] + pr;
-    hi = hr * ui[0] + hi * ur[0] + pi;
+    // (grouped so each is two dependent FMAs: the chain's latency)
+    t = hr * ur[0] + (pr - hi * ui[0]);
+    hi = hr * ui[0] + (pi + hi * ur[0]);
     hr = t;
     const double c2 = kInvF2[m];
     Sr += c2 * hr;
     Si += c2 * hi;
-    if (!mom) continue;
-    t = gr * ur[0] - gi * ui[0] + hr;
-    gi = gr * ui[0] + gi * ur[0] + hi;
+    if (!MOM) continue;
+    t = gr * ur[0] + (hr - gi * ui[0]);
+    gi = gr * ui[0] + (hi + gi * ur[0]);
     gr = t;
-    t = fr * ur[1] - fi * ui[1] + hr;
-    fi = fr * ui[1] + fi * ur[1] + hi;
-    fr = t;
     const double c3 = kInvF3[m];
     T0r += c3 * hr;
     T0i += c3 * hi;
     T1r += c3 * gr;
     T1i += c3 * gi;
+    if (ID) continue;
+    t = fr * ur[1] + (hr - fi * ui[1]);
+    fi = fr * ui[1] + (hi + fi * ur[1]);
+    fr = t;
     T2r += c3 * fr;
     T2i += c3 * fi;
+  }
+  if (ID) {
+    T2r = Sr - T0r - T1r + kInvF3[0];
+    T2i = Si - T0i - T1i;
+    Sr += kInvF2[0];
+    T0r += kInvF3[0];
+    T1r += kInvF3[0];
   }
   S[0] = Sr;
   S[1] = Si;
@@ -53,6 +69,46 @@ __attribute__((always_inline)) inline void seriesLoop(const V ur[2], const V ui[
   T[3] = T1i;
   T[4] = T2r;
   T[5] = T2i;
+}
+
+// S alone for two sets of corner differences a = 0, 1 at once (seriesLoop
+// without MOM, the same operations in the same order for each): the h
+// recurrence waits on its own latency (two dependent FMAs a term), so two
+// independent ones keep the FMA units busy
+template <class V>
+__attribute__((always_inline)) inline void seriesPair(const V ur[2][2], const V ui[2][2], int N,
+                                                      V S[2][2]) {
+  V pr[2], pi[2], hr[2], hi[2], Sr[2], Si[2];
+  for (int a = 0; a < 2; a++) {
+    pr[a] = hr[a] = V{} + 1;
+    pi[a] = hi[a] = Si[a] = V{};
+    Sr[a] = V{} + kInvF2[0];
+  }
+  for (int m = 1; m < N; m++) {
+    const double c2 = kInvF2[m];
+    for (int a = 0; a < 2; a++) {
+      V t = pr[a] * ur[a][1] - pi[a] * ui[a][1];
+      pi[a] = pr[a] * ui[a][1] + pi[a] * ur[a][1];
+      pr[a] = t;
+      t = hr[a] * ur[a][0] + (pr[a] - hi[a] * ui[a][0]);
+      hi[a] = hr[a] * ui[a][0] + (pi[a] + hi[a] * ur[a][0]);
+      hr[a] = t;
+      Sr[a] += c2 * hr[a];
+      Si[a] += c2 * hi[a];
+    }
+  }
+  for (int a = 0; a < 2; a++) {
+    S[a][0] = Sr[a];
+    S[a][1] = Si[a];
+  }
+}
+
+// seriesTerms(r) for r at or above the r that gave N (the table's radii
+// rise with N): the search resumes at N, so a loop over ascending k pays
+// for it once
+__attribute__((always_inline)) inline int termsFrom(int N, double r) {
+  while (N < kNMax && !(r <= kSeriesR[N])) N++;
+  return N;
 }
 
 }  // namespace

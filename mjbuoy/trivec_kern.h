@@ -10,8 +10,9 @@
 // the piece reaches above -40 (the same set the scalar path sums). A lane
 // whose piece is too coarse for the series (k rho > kRMax for the largest
 // k: the scalar path subdivides) or not finite goes back to the scalar
-// path. Only the rounding differs: FMA contraction, the order of sums, and
-// series terms past the scalar's count (each below 2^-54 of the first).
+// path. Only the rounding differs: FMA contraction, the order of sums,
+// series terms past the scalar's count (each below 2^-54 of the first), and
+// T_2 by the sum rule T_0 + T_1 + T_2 = S (serieskern.h).
 #ifndef MJBUOY_TRIVEC_KERN_H_
 #define MJBUOY_TRIVEC_KERN_H_
 
@@ -45,10 +46,56 @@ struct TLanes {
   }
 };
 
+// the lanes' corner differences of component j's exponent (sign sgn of
+// the exponent family): u = sgn k dz + i k D.(dx, or the label's)
+template <int W>
+static inline void laneU(const TriIn& in, int j, double sgn, const typename TLanes<W>::V dz[2],
+                         const typename TLanes<W>::V dp[2][2],
+                         const typename TLanes<W>::V dl[2][2], typename TLanes<W>::V ur[2],
+                         typename TLanes<W>::V ui[2]) {
+  typedef typename TLanes<W>::V V;
+  const double k = in.k[j], gm = in.gm[j];
+  for (int c = 0; c < 2; c++) {
+    const V X = dp[c][0] + gm * (dl[c][0] - dp[c][0]);
+    const V Y = dp[c][1] + gm * (dl[c][1] - dp[c][1]);
+    ur[c] = (sgn * k) * dz[c];
+    ui[c] = in.kdx[j] * X + in.kdy[j] * Y;
+  }
+}
+
+// component j of family f: its S, T times each lane's e^L0 (zero in the
+// lanes outside keep) and its weights, into acc[7]
+template <int W, bool MOM>
+static inline void laneAdd(const TriIn& in, int f, int j, const double* const e0[W],
+                           typename TLanes<W>::I keep, const typename TLanes<W>::V S[2],
+                           const typename TLanes<W>::V T[6], typename TLanes<W>::V acc[7]) {
+  typedef typename TLanes<W>::V V;
+  const int eo = 2 * f * in.nw;
+  V er, ei;
+  for (int l = 0; l < W; l++) {
+    er[l] = e0[l][eo + j];
+    ei[l] = e0[l][eo + in.nw + j];
+  }
+  er = keep ? er : V{};
+  ei = keep ? ei : V{};
+  const V Ir = er * S[0] - ei * S[1], Ii = er * S[1] + ei * S[0];
+  acc[0] += in.wp[f][j] * Ir;
+  if (MOM) {
+    acc[1] += in.wp[f][j] * (er * T[0] - ei * T[1]);
+    acc[2] += in.wp[f][j] * (er * T[2] - ei * T[3]);
+    acc[3] += in.wp[f][j] * (er * T[4] - ei * T[5]);
+  }
+  acc[4] += in.wux[f][j] * Ir;
+  acc[5] += in.wuy[f][j] * Ir;
+  acc[6] += in.wz[f][j] * Ii;
+}
+
 // the series sums of one exponent family f for the lanes (waveint_kern.h's
 // seriesChunk with lanes over pieces instead of components): acc[7] per
-// lane, S and T_c about corner 0 times e^L0, weighted
-template <int W>
+// lane, S and T_c about corner 0 times e^L0, weighted; with the moments
+// (MOM) T2 by the sum rule (serieskern.h), without them two components at
+// a time (seriesPair)
+template <int W, bool MOM>
 static void familyLanes(const TriIn& in, int f, const double* const e0[W],
                         typename TLanes<W>::V zx, const typename TLanes<W>::V dz[2],
                         const typename TLanes<W>::V dp[2][2],
@@ -56,47 +103,33 @@ static void familyLanes(const TriIn& in, int f, const double* const e0[W],
                         typename TLanes<W>::V acc[7]) {
   typedef typename TLanes<W>::V V;
   typedef typename TLanes<W>::I I;
-  const bool mom = in.linear;
   const double sgn = f == 0 ? 1 : -1;
-  const double *wp = in.wp[f], *wux = in.wux[f], *wuy = in.wuy[f], *wz = in.wz[f];
-  const int eo = 2 * f * in.nw;
   // components past 40 / zx (k ascending) have e^L below e^-40 on the
   // piece: skipped per lane, as waveint.cc's jsk
   const V lim = zx > 0 ? 40 / zx : V{} + __builtin_inf();
-  for (int j = 0; j < in.n; j++) {
-    const double k = in.k[j];
-    const I keep = k <= lim;
+  int N = 1;
+  for (int j = 0; j < in.n;) {
+    const I keep = in.k[j] <= lim;
     bool any = false;
     for (int l = 0; l < W; l++) any |= keep[l] != 0;
     if (!any) break;
-    const double gm = in.gm[j];
-    V ur[2], ui[2];
-    for (int c = 0; c < 2; c++) {
-      const V X = dp[c][0] + gm * (dl[c][0] - dp[c][0]);
-      const V Y = dp[c][1] + gm * (dl[c][1] - dp[c][1]);
-      ur[c] = (sgn * k) * dz[c];
-      ui[c] = in.kdx[j] * X + in.kdy[j] * Y;
+    if (!MOM && j + 1 < in.n) {
+      V ur[2][2], ui[2][2], S[2][2], T[6] = {};
+      laneU<W>(in, j, sgn, dz, dp, dl, ur[0], ui[0]);
+      laneU<W>(in, j + 1, sgn, dz, dp, dl, ur[1], ui[1]);
+      N = termsFrom(N, in.k[j + 1] * rmax);
+      seriesPair<V>(ur, ui, N, S);
+      laneAdd<W, false>(in, f, j, e0, keep, S[0], T, acc);
+      laneAdd<W, false>(in, f, j + 1, e0, in.k[j + 1] <= lim, S[1], T, acc);
+      j += 2;
+      continue;
     }
-    const int N = seriesTerms(k * rmax);
-    V S[2], T[6];
-    seriesLoop(ur, ui, N, mom, S, T);
-    V er, ei;
-    for (int l = 0; l < W; l++) {
-      er[l] = e0[l][eo + j];
-      ei[l] = e0[l][eo + in.nw + j];
-    }
-    er = keep ? er : V{};
-    ei = keep ? ei : V{};
-    const V Ir = er * S[0] - ei * S[1], Ii = er * S[1] + ei * S[0];
-    acc[0] += wp[j] * Ir;
-    if (mom) {
-      acc[1] += wp[j] * (er * T[0] - ei * T[1]);
-      acc[2] += wp[j] * (er * T[2] - ei * T[3]);
-      acc[3] += wp[j] * (er * T[4] - ei * T[5]);
-    }
-    acc[4] += wux[j] * Ir;
-    acc[5] += wuy[j] * Ir;
-    acc[6] += wz[j] * Ii;
+    V ur[2], ui[2], S[2], T[6];
+    laneU<W>(in, j, sgn, dz, dp, dl, ur, ui);
+    N = termsFrom(N, in.k[j] * rmax);
+    seriesLoop<V, MOM, true>(ur, ui, N, S, T);
+    laneAdd<W, MOM>(in, f, j, e0, keep, S, T, acc);
+    j++;
   }
 }
 
@@ -184,7 +217,11 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
     V acc[7] = {};
     for (int f = 0; f < (in->finite ? 2 : 1); f++) {
       const V zx = f == 0 ? -zmax : zmin + 2 * in->depth;
-      familyLanes<W>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+      if (in->linear) {
+        familyLanes<W, true>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+      } else {
+        familyLanes<W, false>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+      }
     }
     const V a2 = 2 * A;
     if (in->linear) {

@@ -39,6 +39,7 @@ struct Tables {
 static const Tables kTab;
 const double* kInvF2 = kTab.f2;
 const double* kInvF3 = kTab.f3;
+const double* kSeriesR = kTab.rm;
 
 int seriesTerms(double r) {
   int N = 1;
@@ -75,6 +76,8 @@ void WaveTab::fill(const Sea& sea, const WaveNow* w) {
   std::sort(perm.begin(), perm.begin() + n, [w](int a, int b) {
     return w[a].k < w[b].k || (w[a].k == w[b].k && a < b);
   });
+  ident = true;
+  for (int j = 0; j < n; j++) ident = ident && perm[j] == j;
   for (int j = 0; j < n; j++) {
     const WaveNow& c = w[perm[j]];
     k[j] = c.k;

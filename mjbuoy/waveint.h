@@ -31,6 +31,7 @@ struct WaveTab {
   bool finite = false;  // finite depth: a second exponent -k (z' + 2 h)
   double depth = 0;
   std::vector<int> perm;                // sorted index -> WaveNow index
+  bool ident = false;                   // perm is the identity (already ascending)
   std::vector<double> k, kdx, kdy, gm;  // k [rad/m], k D, 1 if Gerstner else 0
   // weights of Re(I) in the pressure [m], in the horizontal velocity along
   // x and y [m/s] and of Im(I) in the vertical velocity [m/s]; [1]: the

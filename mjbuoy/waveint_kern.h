@@ -40,27 +40,29 @@ struct Vec<1> {
   static double sum(T v) { return v; }
 };
 
-// components [j, j + W): their series to the degree the widest needs
-// (the last: k ascending), accumulated into acc[7]; MOM false: S only
-template <int W, bool MOM>
-static inline void seriesChunk(const KernIn& in, int j, typename Vec<W>::T* acc) {
+// corner differences of the exponent of components [j, j + W): u = sgn k
+// dz + i k D.(dx)
+template <int W>
+static inline void cornerU(const KernIn& in, int j, typename Vec<W>::T ur[2],
+                           typename Vec<W>::T ui[2]) {
   typedef typename Vec<W>::T V;
   typedef Vec<W> L;
   const V k = L::ld(in.k + j), kdx = L::ld(in.kdx + j), kdy = L::ld(in.kdy + j);
   const V gm = L::ld(in.gm + j);
-  // corner differences of the exponent: u = sgn k dz + i k D.(dx)
-  V ur[2], ui[2];
   for (int c = 0; c < 2; c++) {
     V X = in.dp[c][0] + gm * (in.dl[c][0] - in.dp[c][0]);
     V Y = in.dp[c][1] + gm * (in.dl[c][1] - in.dp[c][1]);
     ur[c] = (in.sgn * in.dz[c]) * k;
     ui[c] = kdx * X + kdy * Y;
   }
-  const int N = seriesTerms(in.k[j + W - 1] * in.rho);
-  // h_m(u1, u2) = u1 h_(m-1) + u2^m; g_m = h_m(u1, u1, u2) = u1 g_(m-1) + h_m;
-  // f_m = h_m(u1, u2, u2) = u2 f_(m-1) + h_m; h_m(0, 0, u1, u2) = h_m
-  V S[2], T[6];
-  seriesLoop(ur, ui, N, MOM, S, T);
+}
+
+// components [j, j + W)'s S, T times e^L0 and their weights, into acc[7]
+template <int W, bool MOM>
+static inline void addWeighted(const KernIn& in, int j, const typename Vec<W>::T S[2],
+                               const typename Vec<W>::T T[6], typename Vec<W>::T* acc) {
+  typedef typename Vec<W>::T V;
+  typedef Vec<W> L;
   const V er = L::ld(in.e0r + j), ei = L::ld(in.e0i + j);
   const V wp = L::ld(in.wp + j);
   const V Ir = er * S[0] - ei * S[1], Ii = er * S[1] + ei * S[0];
@@ -75,18 +77,52 @@ static inline void seriesChunk(const KernIn& in, int j, typename Vec<W>::T* acc)
   acc[6] += L::ld(in.wz + j) * Ii;
 }
 
-// [j0, j1): chunks of W, the rest one at a time
+// components [j, j + W): their series to the degree the widest needs
+// (the last: k ascending; *N the count so far, seriesTerms'), accumulated
+// into acc[7]; MOM false: S only; ID: seriesLoop's sum rule
+template <int W, bool MOM, bool ID>
+static inline void seriesChunk(const KernIn& in, int j, int* N, typename Vec<W>::T* acc) {
+  typedef typename Vec<W>::T V;
+  V ur[2], ui[2], S[2], T[6];
+  cornerU<W>(in, j, ur, ui);
+  *N = termsFrom(*N, in.k[j + W - 1] * in.rho);
+  // h_m(u1, u2) = u1 h_(m-1) + u2^m; g_m = h_m(u1, u1, u2) = u1 g_(m-1) + h_m;
+  // f_m = h_m(u1, u2, u2) = u2 f_(m-1) + h_m; h_m(0, 0, u1, u2) = h_m
+  seriesLoop<V, MOM, ID>(ur, ui, *N, S, T);
+  addWeighted<W, MOM>(in, j, S, T, acc);
+}
+
+// components [j, j + 2 W) without the moments, two chunks in flight
+// (seriesPair), to the degree the last needs
+template <int W>
+static inline void seriesChunk2(const KernIn& in, int j, int* N, typename Vec<W>::T* acc) {
+  typedef typename Vec<W>::T V;
+  V ur[2][2], ui[2][2], S[2][2], T[6] = {};
+  cornerU<W>(in, j, ur[0], ui[0]);
+  cornerU<W>(in, j + W, ur[1], ui[1]);
+  *N = termsFrom(*N, in.k[j + 2 * W - 1] * in.rho);
+  seriesPair<V>(ur, ui, *N, S);
+  addWeighted<W, false>(in, j, S[0], T, acc);
+  addWeighted<W, false>(in, j + W, S[1], T, acc);
+}
+
+// [j0, j1): chunks of W (two at a time without the moments when W > 1),
+// the rest one at a time; W > 1 (the vector levels) with the sum rule
 template <int W>
 static void seriesRange(const KernIn& in, int j0, int j1, double out[7]) {
+  const bool id = W > 1;
   typename Vec<W>::T acc[7] = {};
   typename Vec<1>::T acc1[7] = {};
-  int j = j0;
+  int j = j0, N = 1;
   if (in.mom) {
-    for (; j + W <= j1; j += W) seriesChunk<W, true>(in, j, acc);
-    for (; j < j1; j++) seriesChunk<1, true>(in, j, acc1);
+    for (; j + W <= j1; j += W) seriesChunk<W, true, id>(in, j, &N, acc);
+    for (; j < j1; j++) seriesChunk<1, true, id>(in, j, &N, acc1);
   } else {
-    for (; j + W <= j1; j += W) seriesChunk<W, false>(in, j, acc);
-    for (; j < j1; j++) seriesChunk<1, false>(in, j, acc1);
+    if (W > 1) {
+      for (; j + 2 * W <= j1; j += 2 * W) seriesChunk2<W>(in, j, &N, acc);
+    }
+    for (; j + W <= j1; j += W) seriesChunk<W, false, false>(in, j, &N, acc);
+    for (; j < j1; j++) seriesChunk<1, false, false>(in, j, &N, acc1);
   }
   for (int i = 0; i < 7; i++) out[i] += Vec<W>::sum(acc[i]) + Vec<1>::sum(acc1[i]);
 }

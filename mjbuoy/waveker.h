@@ -29,7 +29,9 @@ struct KernIn {
 // w Re(e^L0 T_c) for c = 0, 1, 2, wux Re(e^L0 S), wuy Re(..), wz Im(..)
 // (7 values; times 2 area they are the integrals); every component in the
 // range must have k rho <= kRMax. By level: glibc-free arithmetic only, so
-// levels differ by FMA contraction and summation order
+// levels differ by FMA contraction, summation order, terms past the
+// scalar's count (two chunks share one) and, on the vector levels, T_2 by
+// the sum rule T_0 + T_1 + T_2 = S (serieskern.h)
 void seriesSums(const KernIn& in, int j0, int j1, double out[7]);
 void seriesScalar(const KernIn& in, int j0, int j1, double out[7]);
 void seriesAvx2(const KernIn& in, int j0, int j1, double out[7]);
@@ -38,6 +40,8 @@ void seriesAvx512(const KernIn& in, int j0, int j1, double out[7]);
 // the number of series terms for radius r <= kRMax: the first term left
 // out is below 2^-54 of the leading one (docs/physics.md, "Cost")
 int seriesTerms(double r);
+// the largest radius N terms serve, for N <= kNMax (rising with N)
+extern const double* kSeriesR;
 // 1/(m+2)! and 1/(m+3)! for m < kNMax
 extern const double* kInvF2;
 extern const double* kInvF3;
