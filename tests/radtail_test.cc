@@ -168,9 +168,11 @@ TEST(RadTail, KramersKronigHoldsWithTheDefaultRange) {
     const mjb::HydroCoef& c = mjb::buoyOf(s.b)->coef[0].second;
     std::string r0, r1;
     const double e0 = kkError(c, 2, false, &r0), e1 = kkError(c, 2, true, &r1);
+    double p[6];
+    mjb::tailExponents(c, p);
     std::printf("[radtail] %s A33 by Kramers-Kronig, no tail (largest %.1f%%):%s\n"
-                "[radtail] %s with the tail (largest %.1f%%):%s\n", k.file, 100 * e0, r0.c_str(),
-                k.file, 100 * e1, r1.c_str());
+                "[radtail] %s with the tail, p33 = %.2f (largest %.1f%%):%s\n", k.file, 100 * e0,
+                r0.c_str(), k.file, p[2], 100 * e1, r1.c_str());
     EXPECT_LT(e1, k.tol33) << k.file;
     EXPECT_GT(e0, 0.2) << k.file;
   }
