@@ -16,9 +16,33 @@
 
 namespace mjb {
 
-std::vector<double> defaultOmega(double R, double g) {
+double panelEdge90(const PanelMesh& p) {
+  std::vector<double> len;
+  for (int f = 0; f < p.nface(); f++) {
+    const int* q = &p.face[4 * f];
+    const int nv = q[3] < 0 ? 3 : 4;
+    for (int k = 0; k < nv; k++) {
+      const double* a = &p.vert[3 * q[k]];
+      const double* b = &p.vert[3 * q[(k + 1) % nv]];
+      len.push_back(std::hypot(std::hypot(a[0] - b[0], a[1] - b[1]), a[2] - b[2]));
+    }
+  }
+  if (len.empty()) return 0;
+  // nearest rank: the smallest length with at least 90% of them at or below
+  const size_t r = size_t(std::ceil(0.9 * len.size())) - 1;
+  std::nth_element(len.begin(), len.begin() + r, len.end());
+  return len[r];
+}
+
+double defaultTopKR(double R, double h) {
+  // 6 panels per wavelength: k_h = 2 pi / (6 h)
+  const double kh = h > 0 ? 2 * M_PI / (6 * h) : INFINITY;
+  return std::min(kTopKRMax, std::max(kTopKRMin, kh * R));
+}
+
+std::vector<double> defaultOmega(double R, double h, double g) {
   const int n = 20;
-  double w0 = std::sqrt(g * 0.05 / R), w1 = std::sqrt(g * 5 / R);
+  double w0 = std::sqrt(g * 0.05 / R), w1 = std::sqrt(g * defaultTopKR(R, h) / R);
   std::vector<double> w(n);
   for (int i = 0; i < n; i++) w[i] = w0 + (w1 - w0) * i / (n - 1);
   return w;
@@ -265,7 +289,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
     int n = (int)rc.omega[2];
     for (int i = 0; i < n; i++) omega.push_back(rc.omega[0] + (rc.omega[1] - rc.omega[0]) * i / (n - 1));
   } else {
-    omega = defaultOmega(waterplaneRadius(body), B->cfg.sea.g);
+    omega = defaultOmega(waterplaneRadius(body), panelEdge90(body), B->cfg.sea.g);
   }
   HydroCoef c;
   c.rho = B->cfg.sea.rho;

@@ -14,9 +14,21 @@ namespace mjb {
 struct Buoy;
 
 // default frequencies of a hull whose waterplane has radius R [m] (of the
-// disk of equal area): n = 20 omegas uniform from kR = 0.05 to 5,
-// omega = sqrt(g k) (deep water)
-std::vector<double> defaultOmega(double R, double g);
+// disk of equal area) and whose wet panels have the 90th-percentile edge
+// length h [m] (panelEdge90): n = 20 omegas uniform from kR = 0.05 to
+// defaultTopKR(R, h), omega = sqrt(g k) (deep water; docs/physics.md
+// section 14, "Default frequencies")
+std::vector<double> defaultOmega(double R, double h, double g);
+
+// highest k R of the default range: where the panels still resolve the
+// radiated wave, 6 panels per wavelength, k_h = 2 pi / (6 h), within
+// [kTopKRMin, kTopKRMax]: min(5, max(1.5, k_h R))
+double defaultTopKR(double R, double h);
+const double kTopKRMin = 1.5, kTopKRMax = 5;
+
+// the 90th-percentile edge length [m] of a panel mesh (every edge of
+// every panel, nearest rank; 0 for no panels)
+double panelEdge90(const PanelMesh& p);
 
 // waterplane radius [m] of a wet panel mesh: sqrt(A_wp / pi), A_wp = |sum
 // of the panels' vertical area| (the wetted surface closes on the

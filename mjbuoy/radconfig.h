@@ -15,7 +15,7 @@ struct RadConfig {
   bool given = false;           // mjbuoy.radiation was in the model
   std::vector<int> onBody;      // mjbuoy.radiation.body.<body>: on / off overrides
   std::vector<int> offBody;
-  double omega[3] = {0, 0, 0};  // wmin, wmax [rad/s], count; count 0: from the hull size
+  double omega[3] = {0, 0, 0};  // wmin, wmax [rad/s], count; count 0: defaultOmega (radattach.h)
   int refine = 0;               // hullPanels refine level 0..4
   bool lid = true;              // interior lid against irregular frequencies
   bool diffraction = true;      // diffraction excitation (docs/physics.md section 15)

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "radtail.h"
+
 namespace mjb {
 
 namespace {
@@ -241,8 +243,12 @@ void clearSimple(const mjModel* m, const std::vector<int>& dof, Radiation* r) {
 
 bool addedMassIndefinite(const double A[36]) { return finite(A, 36) && !psd(A); }
 
-void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K) {
+void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K, bool tail) {
   const int nw = c.nw();
+  // beyond the last frequency B_ij(w) = B_ij(w_N) (w_N / w)^p (radtail.h)
+  double pd[6], p = 0;
+  if (tail) tailExponents(c, pd), p = tailExponent(pd, i, j);
+  const double bN = nw ? c.B[36 * (nw - 1) + 6 * i + j] : 0, wN = nw ? c.omega.back() : 0;
   for (int k = 0; k < n; k++) {
     const double t = k * dt;
     double w0 = 0, b0 = 0, sum = 0;  // B(0) = 0
@@ -252,7 +258,7 @@ void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K) 
       w0 = w1;
       b0 = b1;
     }
-    K[k] = 2 / M_PI * sum;  // B = 0 beyond the last frequency
+    K[k] = 2 / M_PI * sum + (p > 0 && bN != 0 ? tailK(bN, wN, p, t) : 0);
   }
 }
 

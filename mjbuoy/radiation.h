@@ -75,8 +75,10 @@ struct RadState {
 
 // K_ij(k dt), k = 0..n-1, from B_ij of c: K(t) = (2/pi) int_0^inf B cos(w t) dw
 // with B linear between the table's frequencies, linear from 0 at w = 0 to
-// the first and zero beyond the last (docs/physics.md section 14)
-void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K);
+// the first and, beyond the last, the power-law tail of radtail.h (tail
+// false: zero there; docs/physics.md section 14, "High-frequency tail")
+void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K,
+                 bool tail = true);
 
 // memory length [s] for c when none is given: the time after which every
 // |K_ij| stays below 1% of the largest |K| (at most kMaxMemory)

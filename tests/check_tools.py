@@ -385,7 +385,8 @@ def hydro(tools, models, tmp):
     """mjbuoy-hydro on a floating box with radiation on: its tables are
     consistent (A_inf symmetric; K(0) = (2/pi) int_0^inf B dw, with B linear
     between the printed frequencies and from 0 at w = 0: the trapezoid rule
-    is exact, docs/physics.md section 14; the Haskind relation between the
+    is exact, plus the printed tail's B_N w_N / (p - 1), docs/physics.md
+    section 14; the Haskind relation between the
     heave exciting force and B33); a model without radiation and a full disk
     are refused by name"""
     exe = os.path.join(tools, "mjbuoy-hydro")
@@ -421,6 +422,14 @@ def hydro(tools, models, tmp):
         b = [0.0] + [r[9] for r in ab]
         k0 = 2 / 3.141592653589793 * sum(0.5 * (b[i] + b[i + 1]) * (w[i + 1] - w[i])
                                           for i in range(len(w) - 1))
+        # the tail beyond w_N, B_N (w_N / w)^p: (2/pi) B_N w_N / (p - 1)
+        # (docs/physics.md section 14, "High-frequency tail")
+        tl = [l for l in lines if l.startswith("# tail beyond")]
+        check(len(tl) == 1, "the tail's exponents are printed")
+        if tl:
+            p = float(tl[0].split(":")[-1].split()[2])
+            if p > 0:
+                k0 += 2 / 3.141592653589793 * b[-1] * w[-1] / (p - 1)
         check(abs(k[0][3] - k0) <= 1e-4 * abs(k0), "heave K(0) %g = (2/pi) int B dw %g" % (k[0][3], k0))
         check(abs(k[1][0] - 0.1) < 1e-9, "K(t) at the --kt-step")
         # Haskind, deep water (Newman 1962, J. Ship Res. 6(3):10-17;

@@ -535,9 +535,13 @@ namespace {
 
 TEST(Radiation, AutomaticMemoryLengthIsWhereKHasDecayed) {
   // default memory: the time after which |K| stays below 1% of its peak.
-  // For K = k0 (1 - a t) e^{-a t} with B cut at W = 200 rad/s the peak is
-  // K(0) = k0 - (2/pi) int_W^inf B dw, and int_W^inf w^2 / (a^2 + w^2)^2 dw
-  // = (pi/2 - atan(W/a) + a W / (a^2 + W^2)) / (2 a); the time is the root of
+  // For K = k0 (1 - a t) e^{-a t} with the table ending at W = 200 rad/s
+  // the peak is K(0) = k0 - (2/pi) (int_W^inf B dw - B(W) W / (p - 1)):
+  // the tail B(W) (W / w)^p of docs/physics.md section 14 stands for B
+  // beyond W, with p = 2 here (B ~ 2 k0 a / w^2 for w >> a: the slope of
+  // the last three frequencies, the table having no A; it differs from 2
+  // by O(a^2 / W^2)), and int_W^inf w^2 / (a^2 + w^2)^2 dw =
+  // (pi/2 - atan(W/a) + a W / (a^2 + W^2)) / (2 a); the time is the root of
   // k0 (a t - 1) e^{-a t} = 0.01 K(0) past the zero crossing at 1/a (bisection),
   // found on a grid of pi / (4 W)
   Pair P;
@@ -551,7 +555,7 @@ TEST(Radiation, AutomaticMemoryLengthIsWhereKHasDecayed) {
   c.omega.back() = W;  // the table ends at W exactly
   for (int i = 0; i < 36; i++) c.B[c.B.size() - 36 + i] = i == 14 ? P.B(W) : 0;
   const double tail = (M_PI / 2 - std::atan(W / a) + a * W / (a * a + W * W)) / (2 * a);
-  const double K0 = P.k0 - 2 / M_PI * 2 * P.k0 * a * tail;
+  const double K0 = P.k0 - 2 / M_PI * (2 * P.k0 * a * tail - P.B(W) * W);
   double t = bisect([&](double x) { return P.k0 * (a * x - 1) * std::exp(-a * x) - 0.01 * K0; },
                     2 / a, 5);
   EXPECT_NEAR(mjb::memoryLength(c), t, M_PI / (4 * W) + 0.002 * t);

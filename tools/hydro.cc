@@ -16,6 +16,7 @@
 #include "mjbuoy.h"
 #include "outfile.h"
 #include "radiation.h"
+#include "radtail.h"
 
 static const char* kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
 
@@ -43,6 +44,10 @@ static bool printBody(FILE* o, const mjModel* m, int body, const mjb::HydroCoef&
   int n = (int)std::floor(tk / dt) + 1;
   std::vector<std::vector<double>> K(6, std::vector<double>(n));
   for (int i = 0; i < 6; i++) mjb::retardation(c, i, i, dt, n, K[i].data());
+  double pt[6];
+  mjb::tailExponents(c, pt);
+  std::fprintf(o, "\n# tail beyond the last frequency, B_ii(w) = B_ii(w_N) (w_N / w)^p_i, p (0: none):");
+  for (int i = 0; i < 6; i++) std::fprintf(o, " %.6g", pt[i]);
   std::fprintf(o, "\n# t[s]");
   for (int i = 0; i < 6; i++) std::fprintf(o, " K_%s", kDof[i]);
   std::fprintf(o, "   (retardation function, diagonal [N/m, N m/rad] per s)\n");
