@@ -332,6 +332,46 @@ TEST(RadAttach, LinearDragDefaultsFollowRadiation) {
   }
 }
 
+
+// passivity (docs/physics.md section 14, "High-frequency tail"): a free
+// heave decay cannot gain energy. The 1000 x 200 x 20 m barge of
+// RobustModel.TinyAndHugeBoxesSettleAtTheirDrafts (half the water's
+// density, released 2 m above its draft), radiation on. Its old default
+// table (kR to 5) stopped at 0.44 rad/s, where B33 was still 47% of its
+// peak; the memory cut there rang (Gibbs) to a negative damping at 0.49
+// rad/s and the heave grew at that frequency from t = 60 s to 3.2 E0 at
+// 300 s. Mechanical energy E = 1/2 (m + A33_inf) w^2 + 1/2 rho g A_wp z^2
+// (the waterline stays on the vertical walls, |z| < 10 m): the memory and
+// the drag only take energy out, so E(t) <= E(0) throughout, and heave
+// damps out
+TEST(RadAttach, HugeBargeHeaveDecayDoesNotGainEnergy) {
+  const double a = 500, b = 100, c = 10, lift = 2, mass = 0.5 * kRho * 8 * a * b * c;
+  char xml[1024];
+  std::snprintf(xml, sizeof(xml),
+                "<mujoco><option timestep=\"0.02\"/><custom><text name=\"mjbuoy.radiation\" data=\"on\"/><text name=\"mjbuoy.hulls\" "
+                "data=\"hull\"/></custom><worldbody><body name=\"b\" pos=\"0 0 %g\"><freejoint/>"
+                "<geom name=\"hull\" type=\"box\" size=\"%g %g %g\" mass=\"%.17g\"/></body>"
+                "</worldbody></mujoco>", lift, a, b, c, mass);
+  Scene s(xml);
+  ASSERT_TRUE(s.ok()) << s.err;
+  mj_forward(s.m, s.d);
+  const double M = s.d->qM[s.m->dof_Madr[2]], C = kRho * kG * 4 * a * b, E0 = 0.5 * C * lift * lift;
+  ASSERT_GT(M, 2 * mass);  // radiation is on: heave added mass
+  double emax = 0, elate = 0;
+  for (long k = 0, n = mjbt::stepsTo(s.m, s.d, 300); k < n; k++) {
+    mj_step(s.m, s.d);
+    const double z = s.d->qpos[2], w = s.d->qvel[2];
+    const double E = 0.5 * M * w * w + 0.5 * C * z * z;
+    ASSERT_TRUE(std::isfinite(E));
+    emax = std::max(emax, E);
+    if (s.d->time > 240) elate = std::max(elate, E);
+  }
+  EXPECT_LE(emax, E0 * (1 + 1e-3));
+  EXPECT_LT(elate, 1e-3 * E0);
+  std::printf("[radattach] 1 km barge heave decay: max E/E0 %.4f, late (240-300 s) %.2e\n",
+              emax / E0, elate / E0);
+}
+
 // the drag defaults with radiation on (docs/physics.md section 16): the
 // hemisphere with the library's default viscous, drag, suction and
 // slamming terms (nothing set) decays as potential flow predicts plus only
