@@ -332,7 +332,6 @@ TEST(RadAttach, LinearDragDefaultsFollowRadiation) {
   }
 }
 
-
 // passivity (docs/physics.md section 14, "High-frequency tail"): a free
 // heave decay cannot gain energy. The 1000 x 200 x 20 m barge of
 // RobustModel.TinyAndHugeBoxesSettleAtTheirDrafts (half the water's
