@@ -471,7 +471,8 @@ def hydro(tools, models, tmp):
         p = run([exe, box, "--plot", png], cwd=tmp, env=env)
         check(p.returncode == 0 and os.path.exists(png) and
               open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n", "--plot writes a PNG")
-    open(box, "w").write(xml % "")
+    # radiation is on by default for a free body: off explicitly
+    open(box, "w").write(xml % '<text name="mjbuoy.radiation" data="off"/>')
     p = run([exe, box], cwd=tmp)
     refused(p, "mjbuoy-hydro on a model without radiation", "mjbuoy.radiation")
     open(box, "w").write(xml % '<text name="mjbuoy.radiation" data="on"/>')

@@ -69,9 +69,11 @@ TEST(Cpu, ThreadsGiveTheBitsOfOneThread) {
 
 TEST(Cpu, GeneralizedForceMatchesMjApplyFT) {
   // hulls on a hinged arm (dof chain of length 7) and on a body welded to
-  // it: qfrc_passive equals MuJoCo's own mj_applyFT of each body's wrench
+  // it: qfrc_passive equals MuJoCo's own mj_applyFT of each body's wrench.
+  // Radiation off: its forces reach qfrc_passive but not the readable
+  // wrench (docs/physics.md section 14), and the mapping is what is tested
   const char* xml =
-      "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"h*\"/>"
+      "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"h*\"/><text name=\"mjbuoy.radiation\" data=\"off\"/>"
       "<numeric name=\"mjbuoy.wave.a\" data=\"0.2 8 30 0 0.5\"/></custom><worldbody>"
       "<body name=\"base\" pos=\"0 0 0.1\"><freejoint/>"
       "<geom name=\"h0\" type=\"box\" size=\"1 0.5 0.2\" mass=\"400\"/>"

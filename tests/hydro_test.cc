@@ -136,7 +136,10 @@ TEST(Hydro, FreeHeaveDecayIsMonotonic) {
 }
 
 TEST(Hydro, DriftsWithTheCurrentOnlyThroughDrag) {
-  const char cur[] = "<numeric name=\"mjbuoy.sea.current\" data=\"0.3 0.4\"/>";
+  // radiation off: Kerner's drag alone (with radiation on:
+  // DriftsWithTheCurrentWithRadiationOn)
+  const char cur[] = "<numeric name=\"mjbuoy.sea.current\" data=\"0.3 0.4\"/>"
+                     "<text name=\"mjbuoy.radiation\" data=\"off\"/>";
   Scene s(box(cur, "<freejoint/>"));
   ASSERT_TRUE(s.ok()) << s.err;
   s.settle(90, 1, [] { return 0; });

@@ -48,8 +48,10 @@ TEST(Hydrostatics, TorusAtRandomPosesMatchesTetrahedralClipping) {
   std::vector<Vector3d> v;
   std::vector<int> f;
   torus(1.0, 0.3, 32, 16, &v, &f);
+  // radiation off: hydrostatics only (and the torus, heavier than the water
+  // it displaces, has no floating draft to solve the panels at)
   Scene s("<mujoco><asset>" + meshXML(v, f) + "</asset>"
-          "<custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
+          "<custom><text name=\"mjbuoy.hulls\" data=\"hull\"/><text name=\"mjbuoy.radiation\" data=\"off\"/>"
           "<numeric name=\"mjbuoy.sea.level\" data=\"0.2\"/></custom>"
           "<worldbody><body name=\"b\"><freejoint/>"
           "<geom name=\"hull\" type=\"mesh\" mesh=\"torus\" contype=\"0\" conaffinity=\"0\"/>"
@@ -107,8 +109,10 @@ TEST(Hydrostatics, TwoHullsOnOneBodyAddUp) {
   mesh << "\" face=\"";
   for (int i : f) mesh << i << " ";
   mesh << "\"/>";
+  // radiation off: hydrostatics only (the panel solver would warn about
+  // the two boxes' coarse, lidless panels)
   Scene s("<mujoco><asset>" + mesh.str() + "</asset>"
-          "<custom><text name=\"mjbuoy.hulls\" data=\"a b\"/></custom>"
+          "<custom><text name=\"mjbuoy.hulls\" data=\"a b\"/><text name=\"mjbuoy.radiation\" data=\"off\"/></custom>"
           "<worldbody><body name=\"b\"><freejoint/>"
           "<geom name=\"a\" type=\"box\" size=\"0.6 0.3 0.2\" pos=\"0 1 0\" euler=\"0 0 30\"/>"
           "<geom name=\"b\" type=\"mesh\" mesh=\"boxmesh\" pos=\"0 -1 0\"/>"
