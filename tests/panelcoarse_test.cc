@@ -242,8 +242,8 @@ TEST(PanelCoarseConverged, WigleyAgainstFullResolution) {
       ci.panels0 = ci.panels = wet(b, l);
     }
     HydroCoef c = solve(b, l, om, &sec);
-    std::printf("[coarse] wigley %d coarsened: %d -> %d wet panels, %.1f s\n", n, ci.panels0,
-                ci.panels, sec);
+    std::printf("[coarse] wigley %d %s: %d -> %d wet panels, %.1f s\n", n,
+                n > 600 ? "coarsened" : "own mesh", ci.panels0, ci.panels, sec);
     for (int w = 0; w < c.nw(); w++) {
       double x[4], y[4];
       coef(c, w, x);
