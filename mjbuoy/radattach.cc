@@ -214,6 +214,17 @@ static std::string unresolved(const PanelMesh& p, const HydroCoef& c) {
          "radiation off";
 }
 
+// the wet panels counted against mjbuoy.radiation.panels: those of a
+// hull without symmetry that cost as much to solve. k mirror planes split
+// the LU into 2^k systems of N / 2^k (docs/physics.md section 13, "Mirror
+// symmetry"): N^3 / 4^k, as much as N / 4^(k/3) unsymmetric panels
+static double solveSize(const PanelMesh& body, const PanelMesh& lid, bool useLid) {
+  int n = body.nface() + (useLid ? lid.nface() : 0);
+  int m = panelMirrors(body, useLid ? lid : PanelMesh());
+  int k = (m & 1) + (m >> 1 & 1);
+  return n * std::pow(4.0, -k / 3.0);
+}
+
 // a coarsened copy of the group's hull within the budget
 // mjbuoy.radiation.panels (docs/physics.md section 13, "Coarsened hulls"):
 // body, lid, note and *np become its own, with a warning giving the
@@ -279,9 +290,10 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
            bodyName(m, root) + "\" data=\"off\"/>";
   }
   int np = body.nface() + (rc.lid ? lid.nface() : 0);
-  if (rc.panels > 0 && np > rc.panels)
+  if (rc.panels > 0 && solveSize(body, lid, rc.lid) > rc.panels)
     coarsenGroup(B, who, v, f, pos, d->xquat + 4 * root, &body, &lid, &note, &np);
-  if (rc.panels > 0 && np > rc.panels && !(rc.given && rc.on) && !namedOn(*B, root)) {
+  if (rc.panels > 0 && solveSize(body, lid, rc.lid) > rc.panels && !(rc.given && rc.on) &&
+      !namedOn(*B, root)) {
     // on by default only within the cost bound (seconds at attach)
     B->cfg.warn.push_back(who.substr(8) + " is off: " + std::to_string(np) + " wet panels, "
                           "above the " + std::to_string(rc.panels) + " radiation solves "
