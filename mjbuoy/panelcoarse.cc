@@ -74,7 +74,7 @@ static void weldedTriangles(const float* vert, int nvert, const int* face, int n
 // length where the collapse left long slivers on flat parts (the panel
 // solution needs resolution where the geometry needs none)
 // (0.7: the Wigley hull's pitch damping within 5% of the full mesh's,
-// against 10% with the collapse alone; docs/physics.md section 13)
+// 4 to 13% low with the collapse alone; docs/physics.md section 13)
 const double kShapeShare = 0.7;
 
 // triangles tri (n, indices into pv) as a soup (9 floats each), the
@@ -136,8 +136,8 @@ bool coarsenPanels(const float* vert, int nvert, const int* face, int nface, con
   weldedTriangles(vert, nvert, face, nface, &pv, &idx);
   size_t nv = pv.size() / 3, ni = idx.size();
   std::vector<unsigned> out(ni);
-  // first guess: wet triangles in proportion to the budget; then shrink by
-  // the overshoot (refine and the lid add panels)
+  // first guess: triangles in proportion to the budget; then scaled by the
+  // panels' over- or undershoot (the cut, refine and the lid add panels)
   int ntri = int(ni / 3);
   info->tri0 = ntri;
   int target = std::max(8, int(0.95 * ntri * budget / std::max(1, info->panels0)));
@@ -181,7 +181,7 @@ bool coarsenPanels(const float* vert, int nvert, const int* face, int nface, con
   }
   if (found) return true;
   char s[200];
-  std::snprintf(s, sizeof s, "the hull's %d wet triangles could not be simplified to %d wet "
+  std::snprintf(s, sizeof s, "the hull's %d triangles could not be simplified to %d wet "
                 "panels or fewer (%d triangles at the last try)", ntri, budget, target);
   *note = s;
   return false;

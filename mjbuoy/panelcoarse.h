@@ -11,7 +11,7 @@
 namespace mjb {
 
 // what coarsenPanels did: wet panels (body, plus lid when counted),
-// wet triangles (a quad is two), displaced volume [m^3] and waterplane area [m^2] of the wet
+// hull triangles, displaced volume [m^3] and waterplane area [m^2] of the wet
 // panels before (0) and after; err: the simplifier's error, relative to
 // the mesh's extent
 struct CoarseInfo {
@@ -29,15 +29,18 @@ double panelVolume(const PanelMesh& body);
 // vertical area vectors (the wet surface closes on the waterplane)
 double panelWaterplane(const PanelMesh& body);
 
-// the wet surface of the hull (hullPanels of vert, face at pos, quat;
-// refine 0) as triangles, simplified by quadric edge collapse (Garland and
-// Heckbert 1997, meshoptimizer's meshopt_simplify; cut points welded; the
-// waterline, its border, collapses only along itself) until hullPanels
-// (refine) gives at most budget wet panels (body, plus the lid when
-// countLid): *body, *lid, *note become hullPanels' on the coarse surface
-// (same panel frame). body and lid come in as the uncoarsened panels (for
-// the counts in *info). false (with *note; body, lid unchanged) when the
-// simplifier cannot reach the budget
+// the hull's triangles (vert: 3 floats per vertex, face: 3 indices per
+// triangle, counterclockwise outside) welded (vertices within 1e-6 of the
+// extent become one), simplified by quadric edge collapse (Garland and
+// Heckbert 1997; meshoptimizer's meshopt_simplify) to 70% of a target
+// count and brought to it by bisecting the longest edges, then cut and
+// paneled by hullPanels (same pos, quat, refine); the target is adjusted
+// until the wet panels (body, plus the lid when countLid) are at most
+// budget and, if it can be had in 10 tries, at least 97% of it. *body,
+// *lid, *note become hullPanels' on the coarse hull (same panel frame).
+// body and lid come in as the uncoarsened panels (for the counts in
+// *info). false (with *note; body, lid unchanged) when no try is within
+// the budget
 bool coarsenPanels(const float* vert, int nvert, const int* face, int nface, const double pos[3],
                    const double quat[4], int refine, bool countLid, int budget, PanelMesh* body,
                    PanelMesh* lid, std::string* note, CoarseInfo* info);
