@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <utility>
 
@@ -11,6 +12,7 @@
 #include "coefxform.h"
 #include "diffract.h"
 #include "eqdraft.h"
+#include "panelcoarse.h"
 #include "panelmesh.h"
 #include "radcache.h"
 
@@ -236,6 +238,49 @@ static std::string unresolved(const PanelMesh& p, const HydroCoef& c) {
          "radiation off";
 }
 
+// the wet panels counted against mjbuoy.radiation.panels: those of a
+// hull without symmetry that cost as much to solve. k mirror planes split
+// the LU into 2^k systems of N / 2^k (docs/physics.md section 13, "Mirror
+// symmetry"): N^3 / 4^k, as much as N / 4^(k/3) unsymmetric panels
+static double solveSize(const PanelMesh& body, const PanelMesh& lid, bool useLid) {
+  int n = body.nface() + (useLid ? lid.nface() : 0);
+  int m = panelMirrors(body, useLid ? lid : PanelMesh());
+  int k = (m & 1) + (m >> 1 & 1);
+  return n * std::pow(4.0, -k / 3.0);
+}
+
+// a coarsened copy of the group's hull within the budget
+// mjbuoy.radiation.panels (docs/physics.md section 13, "Coarsened hulls"):
+// body, lid, note and *np become its own, with a warning giving the
+// change; left as they are, with a warning, if it cannot be had
+static void coarsenGroup(Buoy* B, const std::string& who, const std::vector<float>& v,
+                         const std::vector<int>& f, const double pos[3], const double* quat,
+                         PanelMesh* body, PanelMesh* lid, std::string* note, int* np) {
+  const RadConfig& rc = B->cfg.rad;
+  CoarseInfo ci;
+  std::string cn = *note;
+  if (!coarsenPanels(v.data(), v.size() / 3, f.data(), f.size() / 3, pos, quat, rc.refine,
+                     rc.lid, rc.panels, body, lid, &cn, &ci)) {
+    B->cfg.warn.push_back(who.substr(8) + ": not coarsened: " + cn);
+    return;
+  }
+  *note = cn;
+  *np = ci.panels;
+  auto pct = [](double r) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%+.1f%%", 100 * (r - 1));
+    return std::string(b);
+  };
+  B->cfg.warn.push_back(who.substr(8) + ": hull coarsened for the panel solver from " +
+                        std::to_string(ci.panels0) + " to " + std::to_string(ci.panels) +
+                        " wet panels (" + std::to_string(ci.tri0) + " to " +
+                        std::to_string(ci.tri) + " triangles; mjbuoy.radiation.panels = " +
+                        std::to_string(rc.panels) + "): displaced volume " + pct(ci.vol / ci.vol0) +
+                        ", waterplane area " + pct(ci.awp / ci.awp0) + " (the hydrostatics keep "
+                        "the full mesh); mjbuoy.radiation.panels = 0 solves the full mesh "
+                        "(minutes, cached)");
+}
+
 // coefficients of one group; "" or the error
 static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   const mjModel* m = B->m;
@@ -269,12 +314,15 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
            bodyName(m, root) + "\" data=\"off\"/>";
   }
   int np = body.nface() + (rc.lid ? lid.nface() : 0);
-  if (np > kDefaultPanels && !(rc.given && rc.on) && !namedOn(*B, root)) {
-    // on by default only within the issue's cost bound (seconds at attach)
+  if (rc.panels > 0 && solveSize(body, lid, rc.lid) > rc.panels)
+    coarsenGroup(B, who, v, f, pos, d->xquat + 4 * root, &body, &lid, &note, &np);
+  if (rc.panels > 0 && solveSize(body, lid, rc.lid) > rc.panels && !(rc.given && rc.on) &&
+      !namedOn(*B, root)) {
+    // on by default only within the cost bound (seconds at attach)
     B->cfg.warn.push_back(who.substr(8) + " is off: " + std::to_string(np) + " wet panels, "
-                          "above the " + std::to_string(kDefaultPanels) + " radiation solves "
-                          "by default (seconds at attach); switch it on explicitly with <text "
-                          "name=\"mjbuoy.radiation\" data=\"on\"/> (minutes, cached), or "
+                          "above the " + std::to_string(rc.panels) + " radiation solves "
+                          "by default (mjbuoy.radiation.panels); switch it on explicitly with "
+                          "<text name=\"mjbuoy.radiation\" data=\"on\"/> (minutes, cached), or "
                           "coarsen the hull below the waterline");
     return "";
   }

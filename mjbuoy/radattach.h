@@ -35,12 +35,14 @@ double panelEdge90(const PanelMesh& p);
 // waterplane); the largest horizontal vertex distance if that is 0
 double waterplaneRadius(const PanelMesh& p);
 
-// radiation on without an entry asking for it (RadConfig::on defaulting to
-// true; it defaults to false for now) skips, with a warning, a rigid group
-// with more wet panels (hull and lid) than this, or not wet at qpos0, or
-// whose panel solution fails: the panel solution's O(N^3) cost (a
-// 408-panel hemisphere at 12 frequencies: 2.7 s on 2 cores) stays within
-// seconds and a default never makes an attach fail
+// the default wet-panel budget (mjbuoy.radiation.panels, RadConfig::panels):
+// a rigid group with more wet panels (hull and lid) is solved on a
+// coarsened copy of its hull within it (panelcoarse.h); radiation on
+// without an entry asking for it skips, with a warning, a group that
+// cannot be coarsened to it, or is not wet at qpos0, or whose panel
+// solution fails: the panel solution's O(N^3) cost (a 408-panel
+// hemisphere at 12 frequencies: 2.7 s on 2 cores) stays within seconds
+// and a default never makes an attach fail
 const int kDefaultPanels = 400;
 
 // for each rigid group of hull bodies with radiation on (all its hulls'

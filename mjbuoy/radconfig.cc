@@ -1,5 +1,5 @@
 // radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, diffraction, cache, memorymodel,
-// omega, refine, memory} and mjbuoy.radiation.body.<body> (schema: docs/mjcf.md)
+// omega, refine, panels, memory} and mjbuoy.radiation.body.<body> (schema: docs/mjcf.md)
 #include "radconfig.h"
 
 #include <algorithm>
@@ -140,13 +140,15 @@ static std::string parseNumeric(const mjModel* m, int i, RadConfig* r) {
   struct F { const char* key; int n; const char* unit; const char* ex; };
   static const F kF[] = {{"radiation.omega", 3, "rad/s, rad/s, count", "0.5 6 20"},
                          {"radiation.refine", 1, "refine level", "0"},
+                         {"radiation.panels", 1, "wet panels, 0 = the hull's own", "400"},
                          {"radiation.memory", 1, "s, 0 = automatic", "0"}};
   const F* f = nullptr;
   for (const F& c : kF) if (!std::strcmp(key, c.key)) f = &c;
   if (!f) {
     return "mjbuoy: unknown entry " + tag("numeric", name) +
            "; radiation numeric entries are mjbuoy.radiation.omega, mjbuoy.radiation.refine, "
-           "mjbuoy.radiation.memory and mjbuoy.radiation.rolldamping (see docs/mjcf.md)";
+           "mjbuoy.radiation.panels, mjbuoy.radiation.memory and mjbuoy.radiation.rolldamping (see "
+           "docs/mjcf.md)";
   }
   if (n != f->n) {
     return "mjbuoy: " + tag("numeric", name) + " has " + std::to_string(n) + " value(s), expected " +
@@ -163,6 +165,12 @@ static std::string parseNumeric(const mjModel* m, int i, RadConfig* r) {
   } else if (f == kF + 1) {
     e = checkRad(name, "value", v[0], 0, 4, true, "times each panel is split in 4", f->ex);
     r->refine = (int)v[0];
+  } else if (f == kF + 2) {
+    // 0: no coarsening; else at least a coarse sphere's worth (the panel
+    // count of the 12 x 24 hemisphere within 3% of Hulme is 288), at most
+    // what a dense solve can hold (20000 complex unknowns: 6.4 GB)
+    if (v[0] != 0) e = checkRad(name, "value", v[0], 100, 20000, true, "wet panels, 0 = no coarsening", f->ex);
+    r->panels = e.empty() ? (int)v[0] : r->panels;
   } else {
     e = checkRad(name, "value", v[0], 0, 60, false, "s, 0 = automatic", f->ex);
     r->memory = v[0];

@@ -17,6 +17,7 @@ struct RadConfig {
   std::vector<int> offBody;
   double omega[3] = {0, 0, 0};  // wmin, wmax [rad/s], count; count 0: defaultOmega (radattach.h)
   int refine = 0;               // hullPanels refine level 0..4
+  int panels = 400;             // wet panel budget (kDefaultPanels): a finer hull is coarsened; 0: never
   bool lid = true;              // interior lid against irregular frequencies
   bool diffraction = true;      // diffraction excitation (docs/physics.md section 15)
   double memory = 0;            // memory length [s]; 0: automatic

@@ -115,6 +115,10 @@ TEST(RadAttach, BadEntriesAreRefusedByName) {
       {"<numeric name=\"mjbuoy.radiation.omega\" data=\"1 5\"/>", "has 2 value(s), expected 3"},
       {"<numeric name=\"mjbuoy.radiation.refine\" data=\"1.5\"/>", "mjbuoy.radiation.refine\"> value = 1.5"},
       {"<numeric name=\"mjbuoy.radiation.memory\" data=\"-1\"/>", "must be >= 0 and <= 60"},
+      {"<numeric name=\"mjbuoy.radiation.panels\" data=\"50\"/>",
+       "mjbuoy.radiation.panels\"> value = 50 is out of range: it must be a whole number >= 100 "
+       "and <= 20000 [wet panels, 0 = no coarsening]"},
+      {"<numeric name=\"mjbuoy.radiation.panels\" data=\"400.5\"/>", "mjbuoy.radiation.panels\"> value = 400.5"},
   };
   for (const Case& c : cs) {
     Scene s(boxModel(c.xml));

@@ -220,6 +220,42 @@ TEST(RadCache, ChangedMeshOrSettingMisses) {
   EXPECT_EQ(stats(same).hit, 1);
 }
 
+// a hull above the panel budget (mjbuoy.radiation.panels) is solved on a
+// coarsened copy, whose panels are the key: a changed budget is a new
+// solution, the same one a hit; the warning names the body and the counts
+std::string wigley(const std::string& dir, int budget) {
+  return "<mujoco><asset><mesh name=\"w\" file=\"" MJB_MODELS "/meshes/wigley_2800.obj\"/>"
+         "</asset><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
+         "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+         "<text name=\"mjbuoy.radiation.diffraction\" data=\"off\"/>"
+         "<text name=\"mjbuoy.radiation.cache\" data=\"" + dir + "\"/>"
+         "<numeric name=\"mjbuoy.radiation.omega\" data=\"2 8 3\"/>"
+         "<numeric name=\"mjbuoy.radiation.panels\" data=\"" + std::to_string(budget) + "\"/>"
+         "</custom><worldbody><body name=\"boat\"><freejoint/>"
+         "<geom name=\"hull\" type=\"mesh\" mesh=\"w\" mass=\"176.2\"/>"
+         "</body></worldbody></mujoco>";
+}
+
+TEST(RadCache, CoarseningBudgetIsInTheKey) {
+  TmpDir t;
+  Scene a(wigley(t.path, 400));
+  ASSERT_TRUE(a.ok()) << a.err;
+  EXPECT_EQ(stats(a).miss, 1);
+  std::string w = mjb_warnings(a.b);
+  EXPECT_NE(w.find("radiation of body \"boat\": hull coarsened for the panel solver from "),
+            std::string::npos) << w;
+  EXPECT_NE(w.find("mjbuoy.radiation.panels = 400"), std::string::npos) << w;
+  EXPECT_NE(w.find("displaced volume"), std::string::npos) << w;
+  Scene b(wigley(t.path, 300));
+  ASSERT_TRUE(b.ok()) << b.err;
+  EXPECT_EQ(stats(b).hit, 0);
+  EXPECT_EQ(stats(b).miss, 1);
+  Scene c(wigley(t.path, 400));
+  ASSERT_TRUE(c.ok()) << c.err;
+  EXPECT_EQ(stats(c).hit, 1);
+  expectSame(coef(a), coef(c));
+}
+
 // a cache directory that cannot be made (its parent is a file) is a
 // warning naming it: the coefficients are computed all the same
 TEST(RadCache, UnwritableDirectoryIsAWarning) {
