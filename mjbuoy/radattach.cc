@@ -18,17 +18,24 @@
 
 namespace mjb {
 
-double panelEdge90(const PanelMesh& p) {
-  std::vector<double> len;
-  for (int f = 0; f < p.nface(); f++) {
-    const int* q = &p.face[4 * f];
+// f(a, length) for each panel edge from corner a (an edge shared by two
+// panels comes twice)
+template <class F>
+static void eachEdge(const PanelMesh& p, F f) {
+  for (int i = 0; i < p.nface(); i++) {
+    const int* q = &p.face[4 * i];
     const int nv = q[3] < 0 ? 3 : 4;
     for (int k = 0; k < nv; k++) {
       const double* a = &p.vert[3 * q[k]];
       const double* b = &p.vert[3 * q[(k + 1) % nv]];
-      len.push_back(std::hypot(std::hypot(a[0] - b[0], a[1] - b[1]), a[2] - b[2]));
+      f(a, std::hypot(std::hypot(a[0] - b[0], a[1] - b[1]), a[2] - b[2]));
     }
   }
+}
+
+double panelEdge90(const PanelMesh& p) {
+  std::vector<double> len;
+  eachEdge(p, [&](const double*, double l) { len.push_back(l); });
   if (len.empty()) return 0;
   // nearest rank: the smallest length with at least 90% of them at or below
   const size_t r = size_t(std::ceil(0.9 * len.size())) - 1;
@@ -218,16 +225,10 @@ static double poseHeave(Buoy* B, const mjData* d, int root, const std::string& w
 // draft gave A33 = -3.2e6 kg at rho 1e5)
 static std::string unresolved(const PanelMesh& p, const HydroCoef& c) {
   double zlo = 0, wide = 0;
-  for (int f = 0; f < p.nface(); f++) {
-    const int* q = &p.face[4 * f];
-    const int nv = q[3] < 0 ? 3 : 4;
-    for (int k = 0; k < nv; k++) {
-      const double* a = &p.vert[3 * q[k]];
-      const double* b = &p.vert[3 * q[(k + 1) % nv]];
-      zlo = std::min(zlo, a[2]);
-      wide = std::max(wide, std::hypot(std::hypot(a[0] - b[0], a[1] - b[1]), a[2] - b[2]));
-    }
-  }
+  eachEdge(p, [&](const double* a, double l) {
+    zlo = std::min(zlo, a[2]);
+    wide = std::max(wide, l);
+  });
   double lo = INFINITY;
   for (int i = 0; i < 6; i++) lo = std::min(lo, c.Ainf[7 * i]);
   return "the panel solver's infinite-frequency added mass is not positive semi-definite "
