@@ -325,6 +325,16 @@ TEST(RobustForces, OverlappingClosedPiecesOfOneMeshWarn) {
   EXPECT_EQ(std::string(mjb_warnings(b.b)).find("overlap"), std::string::npos) << mjb_warnings(b.b);
   EXPECT_EQ(std::string(mjb_warnings(c.b)).find("overlap"), std::string::npos) << mjb_warnings(c.b);
   EXPECT_NE(std::string(mjb_warnings(d.b)).find(over), std::string::npos) << mjb_warnings(d.b);
+  // two long boxes in a plus sign, 4 x 0.6 m each, the second 5 cm higher:
+  // they share a 0.6 x 0.6 x 0.45 m block, yet every vertex and face
+  // centroid of each lies outside the other (|x| or |y| at least 0.67 m):
+  // only their surfaces passing through one another shows it. The same
+  // cross with one box lying on the other (touching faces) shares nothing
+  Scene e(boxes({{0, 0, 0, 2, 0.3, 0.25}, {0, 0, 0.05, 0.3, 2, 0.25}}));
+  Scene f(boxes({{0, 0, 0, 2, 0.3, 0.25}, {0, 0, 0.5, 0.3, 2, 0.25}}));
+  ASSERT_TRUE(e.ok() && f.ok()) << e.err << f.err;
+  EXPECT_NE(std::string(mjb_warnings(e.b)).find(over), std::string::npos) << mjb_warnings(e.b);
+  EXPECT_EQ(std::string(mjb_warnings(f.b)).find("overlap"), std::string::npos) << mjb_warnings(f.b);
   // the double count itself: held 5 m down, the pressure force is
   // rho g (V_hull + V_house) = 1000 9.81 (1 + 0.36) N, not the union's
   // 1000 9.81 (1 + 0.36 - 0.12): the warning is about a real error
