@@ -382,6 +382,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   B->rad.conv = rc.conv;
   B->rad.ssAsked = rc.ssAsked;
   std::copy(rc.roll, rc.roll + 2, B->rad.roll);
+  B->rad.entry = rc.entry;
   if (addedMassIndefinite(c.Ainf)) {
     // an unresolved wet surface, not a fault of the user's numbers
     std::string why = unresolved(body, c);

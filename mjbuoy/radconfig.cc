@@ -1,4 +1,4 @@
-// radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, diffraction, cache, memorymodel,
+// radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, diffraction, entry, cache, memorymodel,
 // omega, refine, panels, memory} and mjbuoy.radiation.body.<body> (schema: docs/mjcf.md)
 #include "radconfig.h"
 
@@ -88,6 +88,8 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
     r->lid = v;
   } else if (!std::strcmp(key, "radiation.diffraction")) {
     r->diffraction = v;
+  } else if (!std::strcmp(key, "radiation.entry")) {
+    r->entry = v;
   } else if (!std::strncmp(key, "radiation.body.", 15)) {
     int b = mj_name2id(m, mjOBJ_BODY, key + 15);
     if (b < 0) {
@@ -98,7 +100,7 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
   } else {
     return "mjbuoy: unknown entry " + tag("text", name) +
            "; radiation text entries are mjbuoy.radiation, mjbuoy.radiation.lid, "
-           "mjbuoy.radiation.diffraction, mjbuoy.radiation.cache, mjbuoy.radiation.memorymodel and mjbuoy.radiation.body.<body> (see docs/mjcf.md)";
+           "mjbuoy.radiation.diffraction, mjbuoy.radiation.entry, mjbuoy.radiation.cache, mjbuoy.radiation.memorymodel and mjbuoy.radiation.body.<body> (see docs/mjcf.md)";
   }
   return "";
 }

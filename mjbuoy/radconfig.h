@@ -27,6 +27,9 @@ struct RadConfig {
   // mjbuoy.radiation.rolldamping: viscous roll damping about each radiating
   // group's body x axis, linear [N m s/rad] and quadratic [N m s^2/rad^2]
   double roll[2] = {0, 0};
+  // mjbuoy.radiation.entry: the water's momentum taken up as the immersion
+  // factor rises (docs/physics.md section 14, "Water entry")
+  bool entry = false;
   bool radiates(int body) const;
   // whether the rigid group of weld root `root` radiates: an override
   // naming the root or any of its hull bodies (hullBody, one per hull)

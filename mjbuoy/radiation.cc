@@ -369,6 +369,7 @@ void radMakeState(const Radiation& r, RadState* s) {
   s->ssPw.assign(r.nmode, 0);
   s->ssNu.assign(12 * r.rb.size(), 0);
   s->imm.assign(r.rb.size(), 1.0);
+  s->sstep.assign(2 * r.rb.size(), 1.0);
   s->mdiag.assign(r.rb.size(), NAN);
   radRestart(s);
 }
@@ -377,6 +378,7 @@ void radRestart(RadState* s) {
   std::fill(s->fmem.begin(), s->fmem.end(), 0.0);
   std::fill(s->told.begin(), s->told.end(), 0);
   std::fill(s->imm.begin(), s->imm.end(), 1.0);
+  std::fill(s->sstep.begin(), s->sstep.end(), 1.0);
   s->head = s->count = 0;
   s->key = -1;
   s->tcur = 0;

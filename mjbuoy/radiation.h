@@ -49,6 +49,9 @@ struct Radiation {
   // viscous roll damping about each body's x axis, linear [N m s/rad] and
   // quadratic [N m s^2/rad^2] (mjbuoy.radiation.rolldamping)
   double roll[2] = {0, 0};
+  // the water's momentum taken up as the immersion factor rises
+  // (mjbuoy.radiation.entry; docs/physics.md section 14, "Water entry")
+  bool entry = false;
   int nmode = 0;             // state-space modes of all bodies
   std::vector<std::string> note;  // fits that fell back to the convolution (when ssAsked)
 };
@@ -63,6 +66,7 @@ struct RadState {
   std::vector<cplx> ssX, ssPw;  // per mode: state-space sums (SsState)
   std::vector<double> ssNu;  // per body 12: first and newest velocity samples
   std::vector<double> imm;   // per body: immersion factor of this call, in [0, 1]
+  std::vector<double> sstep; // per body 2: immersion factor at the last step's time, this step's
   int head = 0, count = 0;   // newest sample, samples held
   long key = -1;             // mjTIMER_STEP count at the last call (-1: none)
   double tcur = 0;           // time of the current step [s]

@@ -147,6 +147,17 @@ void relative(const mjtNum* R, const double U[3], double nu[6], double bias[6]) 
   mju_addTo3(bias, t);
 }
 
+// rate [1/s] of the immersion factor si on the memory's clock, from the
+// factor at the last step's time and this step's (ss[0], ss[1], kept
+// here); an RK4 stage takes its slope from the step's start at tcur
+double immRate(int tick, double si, double t, double tcur, double h, double* ss) {
+  if (tick == kRestart) ss[0] = ss[1] = si;
+  if (tick == kNew) ss[0] = ss[1];
+  if (tick == kMid) return t > tcur ? (si - ss[1]) / (t - tcur) : 0;
+  ss[1] = si;
+  return (ss[1] - ss[0]) / h;
+}
+
 // sum of qM's diagonal over the dofs that move rb
 double diagSum(const mjModel* m, const mjData* d, const RadBody& rb) {
   double q = 0;
@@ -234,6 +245,15 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
     double W[6];
     kirchhoff(rb.A, nw, bw, W);
     for (int j = 0; j < 6; j++) W[j] *= si;  // linear in A: the terms of s A_inf
+    // water entry: the hull takes up the momentum s A nu_w of the water
+    // it wets as s rises, -ds/dt A nu_w; on exit the water keeps its own
+    // (docs/physics.md section 14, "Water entry")
+    const double ds = immRate(tick, si, d->time, s->tcur, r.dt, s->sstep.data() + 2 * ib);
+    if (r.entry && ds > 0) {
+      double P[6];
+      mul6(rb.A, nw, P);
+      for (int j = 0; j < 6; j++) W[j] -= ds * P[j];
+    }
     // viscous roll damping about the body's x axis, on the wetted share
     // (docs/physics.md section 14, "Viscous roll damping")
     const double p = nu[3];

@@ -109,6 +109,8 @@ TEST(RadAttach, BadEntriesAreRefusedByName) {
       {"<text name=\"mjbuoy.radiation\" data=\"yes\"/>", "mjbuoy.radiation\"> data = \"yes\""},
       {"<text name=\"mjbuoy.radiation.diffraction\" data=\"1\"/>",
        "mjbuoy.radiation.diffraction\"> data = \"1\" is not a switch; give \"on\" or \"off\""},
+      {"<text name=\"mjbuoy.radiation.entry\" data=\"yes\"/>",
+       "mjbuoy.radiation.entry\"> data = \"yes\" is not a switch; give \"on\" or \"off\""},
       {"<text name=\"mjbuoy.radiation.body.nobody\" data=\"on\"/>", "body \"nobody\", which does not exist"},
       {"<text name=\"mjbuoy.radiation.colour\" data=\"on\"/>", "unknown entry <text name=\"mjbuoy.radiation.colour\">"},
       {"<numeric name=\"mjbuoy.radiation.omega\" data=\"1 0.5 10\"/>", "value 2 (highest omega) = 0.5"},
