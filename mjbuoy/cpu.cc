@@ -467,48 +467,39 @@ static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const double vel
   }
 }
 
-// forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
-// is the body's wrench of force family p; slot picks the thread's scratch
-static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6],
-                       const Rigid& rig, bool first, State* s, int slot, double* const w[]) {
-  double* sc = s->scr.data() + s->per * slot;
-  const Hull& hl = b.hull[ih];
-  const Sea& sea = b.cfg.sea;
-  const WaveNow* wn = s->wn.data();
-  double* tmp = sc + 2 * sea.waves.size();
-  const HullParams& par = hl.par;
-  const double rho = sea.rho, t = d->time;
-  const mjtNum* x = d->xpos + 3 * hl.body;
-  const mjtNum* R = d->xmat + 9 * hl.body;
-  const mjtNum* com = d->xipos + 3 * hl.body;
-
-  // whole hull above the highest crest the waves can make: all dry, which
-  // gives exactly what the passes below give then (no force, no history)
-  if (x[2] - hl.rad > s->crest + 1e-6 * (1 + std::fabs(x[2]) + hl.rad)) {
-    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-      s->tri.area[k] = 0;
-      for (int j = 0; j < 3; j++) s->tri.v[3 * k + j] = 0;
-    }
-    if (first) {
-      std::memset(&s->curA[hl.t0], 0, hl.nt * sizeof(double));
-      std::memset(&s->curV[3 * hl.t0], 0, 3 * hl.nt * sizeof(double));
-      // the next step's guesses: cold, as after a restart
-      std::memset(&s->offNew[2 * hl.v0], 0, 2 * hl.nv * sizeof(double));
-      s->hoffNew[2 * ih] = s->hoffNew[2 * ih + 1] = 0;
-      s->hvNew[ih] = 0;
-    }
-    return;
+// whole hull above the highest crest the waves can make: all dry, which
+// gives exactly what the passes give then (no force, no history)
+static void dryHull(const Hull& hl, int ih, bool first, State* s) {
+  for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+    s->tri.area[k] = 0;
+    for (int j = 0; j < 3; j++) s->tri.v[3 * k + j] = 0;
   }
-  if (first) s->hvNew[ih] = 1;
-  double L[3];
-  guessWeights(*s, ih, t, L);
+  if (!first) return;
+  std::memset(&s->curA[hl.t0], 0, hl.nt * sizeof(double));
+  std::memset(&s->curV[3 * hl.t0], 0, 3 * hl.nt * sizeof(double));
+  // the next step's guesses: cold, as after a restart
+  std::memset(&s->offNew[2 * hl.v0], 0, 2 * hl.nv * sizeof(double));
+  s->hoffNew[2 * ih] = s->hoffNew[2 * ih + 1] = 0;
+  s->hvNew[ih] = 0;
+}
 
-  // vertices: body frame -> relative to COM, and height above the surface;
-  // the label search starts from the vertex's label offset of the last
-  // step (zero after a restart), which moves by mm per step, and runs for
-  // all vertices at once (structure of arrays)
-  const auto tv0 = std::chrono::steady_clock::now();
-  const size_t nw = sea.waves.size(), mi = s->mi;
+// hullWrench's per-call data: the body's pose, the thread's scratch and the
+// label guesses' weights L (guessWeights)
+struct HullCall {
+  const Buoy& b;
+  const Hull& hl;
+  int ih;
+  const mjtNum *x, *R, *com;
+  double L[3];
+  bool first;
+  State* s;
+  int slot;
+  double *sc, *tmp;
+};
+
+// the vertex stage's scratch layout in sc (scratchSize)
+static HullScr hullScr(const Sea& sea, double* sc, size_t mi, int nv) {
+  const size_t nw = sea.waves.size();
   HullScr hs;
   hs.X = sc + (4 + kLaneTmp) * nw;
   hs.Y = hs.X + mi;
@@ -518,36 +509,54 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   hs.ZS = hs.Z + mi;
   hs.SC = hs.ZS + mi;
   hs.E = hs.SC + 2 * nw * mi;
-  hs.arg = hs.E + eStride(sea) * nw * hl.nv;
-  double *X = hs.X, *Y = hs.Y, *A0 = hs.A0, *A1 = hs.A1, *Z = hs.Z;
+  hs.arg = hs.E + eStride(sea) * nw * nv;
+  return hs;
+}
+
+// vertices: body frame -> relative to COM (rel), world x, y and the label
+// search's start: the vertex's label offset of the last steps (zero after
+// a restart), which moves by mm per step
+static void placeVertices(const HullCall& c, const HullScr& hs) {
+  const Hull& hl = c.hl;
+  State* s = c.s;
+  const mjtNum *x = c.x, *R = c.R, *com = c.com;
+  const double* L = c.L;
   for (int q = 0; q < hl.nv; q++) {
     const int i = hl.v0 + q;
-    const double* p = b.vert.data() + 3 * i;
+    const double* p = c.b.vert.data() + 3 * i;
     double* r = s->rel.data() + 3 * i;
     for (int j = 0; j < 3; j++) {
       r[j] = R[3 * j] * p[0] + R[3 * j + 1] * p[1] + R[3 * j + 2] * p[2] + x[j] - com[j];
     }
-    X[q] = r[0] + com[0];
-    Y[q] = r[1] + com[1];
+    hs.X[q] = r[0] + com[0];
+    hs.Y[q] = r[1] + com[1];
     const double *o = &s->off[2 * i], *o1 = &s->offOld[2 * i], *o2 = &s->offOld2[2 * i];
-    A0[q] = X[q] + (L[0] * o[0] + L[1] * o1[0] + L[2] * o2[0]);
-    A1[q] = Y[q] + (L[0] * o[1] + L[1] * o1[1] + L[2] * o2[1]);
+    hs.A0[q] = hs.X[q] + (L[0] * o[0] + L[1] * o1[0] + L[2] * o2[0]);
+    hs.A1[q] = hs.Y[q] + (L[0] * o[1] + L[1] * o1[1] + L[2] * o2[1]);
   }
-  s->niter[slot] += sea.solveMany(wn, hl.nv, X, Y, A0, A1, Z, hs.SC, tmp);
-  s->nsolve[slot] += hl.nv + 1;  // and the COM's below
+}
+
+// after the label search: labels, the next step's guesses, heights above
+// the surface, and at wet vertices (h <= 0, a wet piece's corner 0) the
+// stretched height and e^L, kExpChunk vertices per vertexWaves call
+static void vertexHeights(const HullCall& c, const HullScr& hs) {
+  const Hull& hl = c.hl;
+  const Sea& sea = c.b.cfg.sea;
+  State* s = c.s;
+  const size_t nw = sea.waves.size();
+  const double zc = c.com[2];
   int wq[kExpChunk], nq = 0;
   for (int q = 0; q < hl.nv; q++) {
     const int i = hl.v0 + q;
-    s->lab[2 * i] = A0[q];
-    s->lab[2 * i + 1] = A1[q];
-    if (first) {
-      s->offNew[2 * i] = A0[q] - X[q];
-      s->offNew[2 * i + 1] = A1[q] - Y[q];
+    s->lab[2 * i] = hs.A0[q];
+    s->lab[2 * i + 1] = hs.A1[q];
+    if (c.first) {
+      s->offNew[2 * i] = hs.A0[q] - hs.X[q];
+      s->offNew[2 * i + 1] = hs.A1[q] - hs.Y[q];
     }
-    s->h[i] = s->rel[3 * i + 2] + com[2] - Z[q];
-    // wet vertices (h <= 0) can be a wet piece's corner 0: e^L there
+    s->h[i] = s->rel[3 * i + 2] + zc - hs.Z[q];
     if (nw > 0 && s->h[i] <= 0) {
-      hs.ZS[q] = stretch(sea.depth, s->rel[3 * i + 2] + com[2] - sea.level, Z[q] - sea.level);
+      hs.ZS[q] = stretch(sea.depth, s->rel[3 * i + 2] + zc - sea.level, hs.Z[q] - sea.level);
       wq[nq++] = q;
       if (nq == kExpChunk) {
         vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg);
@@ -556,39 +565,58 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     }
   }
   if (nq > 0) vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg);
-  s->vsec[slot] += std::chrono::duration<double>(std::chrono::steady_clock::now() - tv0).count();
+}
 
-  // the hull's flow: its COM velocity relative to the water there; the
-  // wetted length L is the wet extent along it (body x when at rest)
-  double uw[3], vr[3], dir[3];
-  {
-    const double *o = &s->hoff[2 * ih], *o1 = &s->hoffOld[2 * ih], *o2 = &s->hoffOld2[2 * ih];
-    double a[2] = {com[0] + (L[0] * o[0] + L[1] * o1[0] + L[2] * o2[0]),
-                   com[1] + (L[0] * o[1] + L[1] * o1[1] + L[2] * o2[1])};
-    int nit = 0;
-    double hz = sea.solve(wn, com[0], com[1], a, sc, tmp, &nit);
-    s->niter[slot] += nit;
-    if (first) {
-      s->hoffNew[2 * ih] = a[0] - com[0];
-      s->hoffNew[2 * ih + 1] = a[1] - com[1];
-    }
-    sea.velocitySC(wn, sc, com[2] - sea.level, hz - sea.level, uw);
+// the vertex stage, timed into vsec: positions, the label search for all
+// vertices at once (structure of arrays), heights and e^L
+static void vertexStage(const HullCall& c, const HullScr& hs) {
+  const auto tv0 = std::chrono::steady_clock::now();
+  State* s = c.s;
+  placeVertices(c, hs);
+  s->niter[c.slot] += c.b.cfg.sea.solveMany(s->wn.data(), c.hl.nv, hs.X, hs.Y, hs.A0, hs.A1,
+                                            hs.Z, hs.SC, c.tmp);
+  s->nsolve[c.slot] += c.hl.nv + 1;  // and the COM's (hullFlow)
+  vertexHeights(c, hs);
+  s->vsec[c.slot] += std::chrono::duration<double>(std::chrono::steady_clock::now() - tv0).count();
+}
+
+// the hull's flow: its COM velocity relative to the water there, its speed
+// (returned) and direction dir (body x when at rest)
+static double hullFlow(const HullCall& c, const double vel[6], double dir[3]) {
+  const Sea& sea = c.b.cfg.sea;
+  State* s = c.s;
+  const int ih = c.ih;
+  const mjtNum* com = c.com;
+  const double* L = c.L;
+  double uw[3], vr[3];
+  const double *o = &s->hoff[2 * ih], *o1 = &s->hoffOld[2 * ih], *o2 = &s->hoffOld2[2 * ih];
+  double a[2] = {com[0] + (L[0] * o[0] + L[1] * o1[0] + L[2] * o2[0]),
+                 com[1] + (L[0] * o[1] + L[1] * o1[1] + L[2] * o2[1])};
+  int nit = 0;
+  double hz = sea.solve(s->wn.data(), com[0], com[1], a, c.sc, c.tmp, &nit);
+  s->niter[c.slot] += nit;
+  if (c.first) {
+    s->hoffNew[2 * ih] = a[0] - com[0];
+    s->hoffNew[2 * ih + 1] = a[1] - com[1];
   }
+  sea.velocitySC(s->wn.data(), c.sc, com[2] - sea.level, hz - sea.level, uw);
   for (int j = 0; j < 3; j++) vr[j] = vel[3 + j] - uw[j];
   double speed = std::sqrt(dot(vr, vr));
-  for (int j = 0; j < 3; j++) dir[j] = speed > 1e-9 ? vr[j] / speed : R[3 * j];
+  for (int j = 0; j < 3; j++) dir[j] = speed > 1e-9 ? vr[j] / speed : c.R[3 * j];
+  return speed;
+}
 
-  // pass 1: cut, pressure force and torque: Kerner's rho g (eta - z), linear
-  // in the cut's depth, exactly (-rho g dA n, -rho g drA x n); or linear
-  // wave theory (wavepress.h), which flat water reduces to the same;
-  // a triangle with no vertex below the surface has no wet part. With a
-  // vector level the wholly wet triangles go through the lanes (trivec.h)
-  Pass1 q{b, sea, s, hs, hl, com, dir, w[mjbPART_PRESSURE], 0, INFINITY, -INFINITY};
+// pass 1 over the hull's triangles: a triangle with no vertex below the
+// surface has no wet part; with a vector level the wholly wet ones go
+// through the lanes (trivec.h), the cut ones through pass1Tri; wl: 2 nt
+// ints of scratch
+static void pass1Hull(Pass1& q, int* wl) {
+  const Hull& hl = q.hl;
+  State* s = q.s;
   const bool lanes = simdLevel() != kSimdScalar;
-  int* wl = s->iscr.data() + s->iper * slot;
   int nl = 0;
   for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-    const int* fc = b.face.data() + 3 * k;
+    const int* fc = q.b.face.data() + 3 * k;
     const double h0 = s->h[fc[0]], h1 = s->h[fc[1]], h2 = s->h[fc[2]];
     if (h0 >= 0 && h1 >= 0 && h2 >= 0) {
       s->tri.area[k] = 0;
@@ -599,76 +627,117 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     }
   }
   if (nl > 0) pass1Lanes(q, wl, nl, wl + hl.nt);
-  double wet = q.wet, lo = q.lo, hi = q.hi;
+}
 
-  // viscous resistance: ITTC 1957 C_F at the hull's Reynolds number, and
-  // Kerner's per-triangle form factor, laminar (low) at the front and
-  // turbulent (high) at the rear: 1+k_i = (1+k)(1 + sbar - s_i), s in [0, 1]
-  // from rear to front, whose area-weighted mean is the hull's 1+k
-  double len = hi > lo ? hi - lo : 0;
-  double cf = ittc57(speed * len / sea.nu), sbar = 0;
-  if (wet > 0 && len > 0) {
-    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-      if (s->tri.area[k] > 0) sbar += s->tri.area[k] * (dot(&s->tri.c[3 * k], dir) - lo) / len;
-    }
-    sbar /= wet;
+// Kerner's per-triangle form factor's mean position: 1+k_i = (1+k)(1 +
+// sbar - s_i), s in [0, 1] from rear to front along dir, whose
+// area-weighted mean is the hull's 1+k; wet area, extent [lo, lo + len]
+static double formMean(const Hull& hl, const State* s, const double dir[3], double wet,
+                       double lo, double len) {
+  double sbar = 0;
+  if (!(wet > 0 && len > 0)) return sbar;
+  for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+    if (s->tri.area[k] > 0) sbar += s->tri.area[k] * (dot(&s->tri.c[3 * k], dir) - lo) / len;
   }
+  return sbar / wet;
+}
 
-  // pass 2: hydrodynamic forces at each wet centroid, with the water's
-  // velocity averaged over the wet part (pass 1; docs/physics.md, "Cost");
-  // with a vector level in lanes (trivec.h) when the exponents allow
-  const double slamdt = s->hasPrev ? t - s->tprev : 0;
-  if (lanes && flowExponents(par, s->hasPrev)) {
-    int nf = 0;
-    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-      if (s->tri.area[k] > 0) {
+// pass 2's scalar reference for wet triangle k: viscous, drag and slamming
+// at its centroid with its relative velocity v (stored in tri.v)
+static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
+                     const double dir[3], const Flow2& f2, int k, double* const w[]) {
+  const HullParams& par = c.hl.par;
+  State* s = c.s;
+  double* v = &s->tri.v[3 * k];
+  double A = s->tri.area[k];
+  const double* cc = &s->tri.c[3 * k];
+  const double* n = &s->tri.n[3 * k];
+  const double* uwk = &s->tri.u[3 * k];
+  double wc[3];
+  cross(vel, cc, wc);
+  for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uwk[j];
+  double g[3];
+  if (par.viscous > 0) {
+    double sk = f2.len > 0 ? (dot(cc, dir) - f2.lo) / f2.len : f2.sbar;
+    viscousForce(c.b.cfg.sea.rho, f2.cf, par.viscous * (1 + f2.sbar - sk), A, n, v, g);
+    add(w[mjbPART_VISCOUS], g, cc);
+  }
+  dragForce(par.drag, par.suction, par.vref, A, n, v, g);
+  add(w[mjbPART_DRAG], g, cc);
+  if (!s->hasPrev) return;
+  // the stopping force is sized by the effective mass of the rigid group
+  // at this point along v (docs/physics.md, "Slamming with the effective
+  // mass"), not its mass: it acts off the COM
+  double sp = std::sqrt(dot(v, v)), meff = 0;
+  if (sp > 0) {
+    double u[3] = {v[0] / sp, v[1] / sp, v[2] / sp}, pw[3];
+    for (int j = 0; j < 3; j++) pw[j] = cc[j] + c.com[j];
+    meff = effMass(rig, pw, u);
+  }
+  slamForce(par.slam[0], par.slam[1], par.slam[2], c.hl.share * meff, c.hl.area, c.b.tarea[k],
+            A, v, s->prevA[k], &s->prevV[3 * k], n, f2.dt, g);
+  add(w[mjbPART_SLAM], g, cc);
+}
+
+// pass 2: hydrodynamic forces at each wet centroid, with the water's
+// velocity averaged over the wet part (pass 1; docs/physics.md, "Cost");
+// with a vector level in lanes (trivec.h) when the exponents allow; dry
+// triangles get v = 0; wl: nt ints of scratch
+static void pass2Hull(const HullCall& c, const double vel[6], const Rigid& rig,
+                      const double dir[3], const Flow2& f2, int* wl, double* const w[]) {
+  const Hull& hl = c.hl;
+  State* s = c.s;
+  const bool lanes = simdLevel() != kSimdScalar && flowExponents(hl.par, s->hasPrev);
+  int nf = 0;
+  for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+    if (s->tri.area[k] > 0) {
+      if (lanes) {
         wl[nf++] = k;
       } else {
-        double* v = &s->tri.v[3 * k];
-        v[0] = v[1] = v[2] = 0;
+        pass2Tri(c, vel, rig, dir, f2, k, w);
       }
-    }
-    Flow2 f2{lo, len, sbar, cf, slamdt};
-    pass2Lanes(b, hl, s, vel, com, rig, dir, f2, wl, nf, w);
-  } else {
-    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+    } else {
       double* v = &s->tri.v[3 * k];
-      if (!(s->tri.area[k] > 0)) {
-        v[0] = v[1] = v[2] = 0;
-        continue;
-      }
-      double A = s->tri.area[k];
-      const double* c = &s->tri.c[3 * k];
-      const double* n = &s->tri.n[3 * k];
-      const double* uwk = &s->tri.u[3 * k];
-      double wc[3];
-      cross(vel, c, wc);
-      for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uwk[j];
-
-      double g[3];
-      if (par.viscous > 0) {
-        double sk = len > 0 ? (dot(c, dir) - lo) / len : sbar;
-        viscousForce(rho, cf, par.viscous * (1 + sbar - sk), A, n, v, g);
-        add(w[mjbPART_VISCOUS], g, c);
-      }
-      dragForce(par.drag, par.suction, par.vref, A, n, v, g);
-      add(w[mjbPART_DRAG], g, c);
-      if (s->hasPrev) {
-        // the stopping force is sized by the effective mass of the rigid
-        // group at this point along v (docs/physics.md, "Slamming with the
-        // effective mass"), not its mass: it acts off the COM
-        double sp = std::sqrt(dot(v, v)), meff = 0;
-        if (sp > 0) {
-          double u[3] = {v[0] / sp, v[1] / sp, v[2] / sp}, pw[3];
-          for (int j = 0; j < 3; j++) pw[j] = c[j] + com[j];
-          meff = effMass(rig, pw, u);
-        }
-        slamForce(par.slam[0], par.slam[1], par.slam[2], hl.share * meff, hl.area, b.tarea[k], A,
-                  v, s->prevA[k], &s->prevV[3 * k], n, slamdt, g);
-        add(w[mjbPART_SLAM], g, c);
-      }
+      v[0] = v[1] = v[2] = 0;
     }
   }
+  if (nf > 0) pass2Lanes(c.b, hl, s, vel, c.com, rig, dir, f2, wl, nf, w);
+}
+
+// forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
+// is the body's wrench of force family p; slot picks the thread's scratch
+static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6],
+                       const Rigid& rig, bool first, State* s, int slot, double* const w[]) {
+  const Hull& hl = b.hull[ih];
+  const Sea& sea = b.cfg.sea;
+  HullCall c{b, hl, ih, d->xpos + 3 * hl.body, d->xmat + 9 * hl.body, d->xipos + 3 * hl.body,
+             {0, 0, 0}, first, s, slot, s->scr.data() + s->per * slot, nullptr};
+  c.tmp = c.sc + 2 * sea.waves.size();
+  if (c.x[2] - hl.rad > s->crest + 1e-6 * (1 + std::fabs(c.x[2]) + hl.rad)) {
+    dryHull(hl, ih, first, s);
+    return;
+  }
+  if (first) s->hvNew[ih] = 1;
+  guessWeights(*s, ih, d->time, c.L);
+  const HullScr hs = hullScr(sea, c.sc, s->mi, hl.nv);
+  vertexStage(c, hs);
+  double dir[3];
+  const double speed = hullFlow(c, vel, dir);
+
+  // pass 1: cut, pressure force and torque: Kerner's rho g (eta - z), linear
+  // in the cut's depth, exactly (-rho g dA n, -rho g drA x n); or linear
+  // wave theory (wavepress.h), which flat water reduces to the same
+  Pass1 q{b, sea, s, hs, hl, c.com, dir, w[mjbPART_PRESSURE], 0, INFINITY, -INFINITY};
+  int* wl = s->iscr.data() + s->iper * slot;
+  pass1Hull(q, wl);
+
+  // viscous resistance: ITTC 1957 C_F at the hull's Reynolds number over
+  // the wetted length, the wet extent along the flow
+  const double len = q.hi > q.lo ? q.hi - q.lo : 0;
+  const double cf = ittc57(speed * len / sea.nu);
+  const double sbar = formMean(hl, s, dir, q.wet, q.lo, len);
+  Flow2 f2{q.lo, len, sbar, cf, s->hasPrev ? d->time - s->tprev : 0};
+  pass2Hull(c, vel, rig, dir, f2, wl, w);
 
   // slamming history: the last call at this step's time
   if (first) {
@@ -677,12 +746,11 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
       for (int j = 0; j < 3; j++) s->curV[3 * k + j] = s->tri.v[3 * k + j];
     }
   }
-
   // simple damping (Cruz 2023), scaled by the wet fraction r_s = S_wet / S
-  double rs = wet / hl.area;
+  const double rs = q.wet / hl.area;
   for (int j = 0; j < 3; j++) {
-    w[mjbPART_DAMPING][j] -= par.damp[0] * rs * vel[3 + j];
-    w[mjbPART_DAMPING][3 + j] -= par.damp[1] * rs * vel[j];
+    w[mjbPART_DAMPING][j] -= hl.par.damp[0] * rs * vel[3 + j];
+    w[mjbPART_DAMPING][3 + j] -= hl.par.damp[1] * rs * vel[j];
   }
 }
 

@@ -300,7 +300,7 @@ double Sea::solve(const WaveNow* w, double x, double y, double a[2], double* sc,
 long Sea::solveMany(const WaveNow* w, int m, const double* x, const double* y, double* a0,
                     double* a1, double* z, double* sc, double* tmp) const {
   // AVX2 or AVX-512: lanes of 4 or 8 points in lockstep (seavec.h), whose
-  // gain is libmvec's sin and cos of the guesses (a lockstep version over
+  // gain is vector sin and cos of the guesses (a lockstep version over
   // SSE2 lanes, with scalar sin and cos, measured no faster than this loop)
   const int n = waves.size();
   const int lv = simdLevel();

@@ -1,6 +1,7 @@
 // seavec: the vertex stage's surface search (Sea::solveMany) over lanes of
-// 4 (AVX2 + FMA) or 8 (AVX-512F) points in lockstep, with libmvec's sin and
-// cos; chosen at run time by vmath.h's level, Sea::solveMany's scalar loop
+// 4 (AVX2 + FMA) or 8 (AVX-512F) points in lockstep, with sin and cos from
+// one range reduction (sincoskern.h; libmvec's for huge phases) and
+// libmvec's in the Newton steps; chosen at run time by vmath.h's level, Sea::solveMany's scalar loop
 // stays the reference (tests/seavec_test.cc). Includes no inline code.
 #ifndef MJBUOY_SEAVEC_H_
 #define MJBUOY_SEAVEC_H_

@@ -9,11 +9,13 @@
 // trial phases by angle addition (sea.cc's shift) where the phase moves by
 // less than kShift, else directly. Lanes that have stopped are masked, so
 // every lane takes the steps its point takes alone; only the rounding
-// differs (libmvec's sin and cos, FMA contraction).
+// differs (the lanes' sin and cos, sincoskern.h, or libmvec's; FMA
+// contraction).
 #ifndef MJBUOY_SEAVEC_KERN_H_
 #define MJBUOY_SEAVEC_KERN_H_
 
 #include "seavec.h"
+#include "sincoskern.h"
 
 namespace mjb {
 namespace {
@@ -40,6 +42,16 @@ struct Lanes {
     return v < 0 ? -v : v;
   }
 };
+
+// sin and cos of the lanes' phases th: one range reduction for both
+// (sincoskern.h), libmvec's two functions for phases beyond its range
+template <int W, class M>
+static inline void sinCosPhases(typename Lanes<W>::V th, typename Lanes<W>::V* s,
+                                typename Lanes<W>::V* c) {
+  if (sinCosLanes<typename Lanes<W>::V, typename Lanes<W>::I>(th, s, c)) return;
+  *s = M::sin(th);
+  *c = M::cos(th);
+}
 
 // sea.cc's shift: sin, cos of theta + d from s, c of theta, the series for
 // |d| < kShort or the longer one, per lane (same constants and grouping)
@@ -181,8 +193,10 @@ static long solveChunk(const LaneIn& in, int p0, int nl) {
   } else {
     for (int i = 0; i < ng; i++) {
       const V th = w[i].k * (w[i].dx * a0 + w[i].dy * a1) - w[i].wt + w[i].ph;
-      L::st(cur + 2 * i * W, M::sin(th));
-      L::st(cur + (2 * i + 1) * W, M::cos(th));
+      V s, c;
+      sinCosPhases<W, M>(th, &s, &c);
+      L::st(cur + 2 * i * W, s);
+      L::st(cur + (2 * i + 1) * W, c);
     }
     newtonLanes<W, M>(w, ng, x, y, &a0, &a1, cur, nxt, &it);
   }
@@ -203,7 +217,8 @@ static long solveChunk(const LaneIn& in, int p0, int nl) {
   // Airy components: a direct sum at the physical point
   for (int i = ng; i < n; i++) {
     const V th = w[i].k * (w[i].dx * x + w[i].dy * y) - w[i].wt + w[i].ph;
-    const V s = M::sin(th), c = M::cos(th);
+    V s, c;
+    sinCosPhases<W, M>(th, &s, &c);
     z += w[i].amp * c;
     for (int l = 0; l < nl; l++) {
       in.sc[2 * n * (p0 + l) + 2 * i] = s[l];

@@ -103,11 +103,11 @@ __attribute__((always_inline)) inline void seriesPair(const V ur[2][2], const V 
   }
 }
 
-// seriesTerms(r) for r at or above the r that gave N (the table's radii
-// rise with N): the search resumes at N, so a loop over ascending k pays
-// for it once
-__attribute__((always_inline)) inline int termsFrom(int N, double r) {
-  while (N < kNMax && !(r <= kSeriesR[N])) N++;
+// the term count for radius r by the radii R (kSeriesR, kSeriesRv) for r
+// at or above the r that gave N (the radii rise with N): the search
+// resumes at N, so a loop over ascending k pays for it once
+__attribute__((always_inline)) inline int termsFrom(int N, double r, const double* R) {
+  while (N < kNMax && !(r <= R[N])) N++;
   return N;
 }
 

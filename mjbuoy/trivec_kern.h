@@ -11,8 +11,9 @@
 // whose piece is too coarse for the series (k rho > kRMax for the largest
 // k: the scalar path subdivides) or not finite goes back to the scalar
 // path. Only the rounding differs: FMA contraction, the order of sums,
-// series terms past the scalar's count (each below 2^-54 of the first), and
-// T_2 by the sum rule T_0 + T_1 + T_2 = S (serieskern.h).
+// the series' count of terms (cut at 2^-kSeriesBitsV of the first instead
+// of the scalar's 2^-54, waveker.h), and T_2 by the sum rule T_0 + T_1 +
+// T_2 = S (serieskern.h).
 #ifndef MJBUOY_TRIVEC_KERN_H_
 #define MJBUOY_TRIVEC_KERN_H_
 
@@ -117,7 +118,7 @@ static void familyLanes(const TriIn& in, int f, const double* const e0[W],
       V ur[2][2], ui[2][2], S[2][2], T[6] = {};
       laneU<W>(in, j, sgn, dz, dp, dl, ur[0], ui[0]);
       laneU<W>(in, j + 1, sgn, dz, dp, dl, ur[1], ui[1]);
-      N = termsFrom(N, in.k[j + 1] * rmax);
+      N = termsFrom(N, in.k[j + 1] * rmax, kSeriesRv);
       seriesPair<V>(ur, ui, N, S);
       laneAdd<W, false>(in, f, j, e0, keep, S[0], T, acc);
       laneAdd<W, false>(in, f, j + 1, e0, in.k[j + 1] <= lim, S[1], T, acc);
@@ -126,7 +127,7 @@ static void familyLanes(const TriIn& in, int f, const double* const e0[W],
     }
     V ur[2], ui[2], S[2], T[6];
     laneU<W>(in, j, sgn, dz, dp, dl, ur, ui);
-    N = termsFrom(N, in.k[j] * rmax);
+    N = termsFrom(N, in.k[j] * rmax, kSeriesRv);
     seriesLoop<V, MOM, true>(ur, ui, N, S, T);
     laneAdd<W, MOM>(in, f, j, e0, keep, S, T, acc);
     j++;

@@ -12,9 +12,25 @@
 
 namespace mjb {
 
-// 1/(m+2)!, 1/(m+3)!, and the largest radius N terms serve (seriesTerms)
+// the largest radius N terms serve, N <= kNMax, when the first term left
+// out, m = N, of the widest sum (T_c: C(N+2, 2) monomials of size r^N over
+// (N+3)!, leading term 1/6) must be below 2^-bits of the leading term; the
+// terms after it shrink by at least half while r <= kRMax and N >= 8, or
+// r <= 1 (their ratio r (N+3)/((N+1)(N+4)))
+static void radii(int bits, double* rm) {
+  rm[0] = 0;
+  long double fact = 6;  // (N+3)!
+  for (int N = 1; N <= kNMax; N++) {
+    fact *= N + 3;
+    long double c = std::ldexp(1.0L, -bits) * fact / (3.0L * (N + 1) * (N + 2));
+    rm[N] = double(std::pow(c, 1.0L / N));
+  }
+}
+
+// 1/(m+2)!, 1/(m+3)!, and the largest radius N terms serve: the scalar
+// reference's (seriesTerms) and the vector lanes' (kSeriesRv)
 struct Tables {
-  double f2[kNMax], f3[kNMax], rm[kNMax + 1];
+  double f2[kNMax], f3[kNMax], rm[kNMax + 1], rv[kNMax + 1];
   Tables() {
     long double a = 0.5L, b = 1.0L / 6;
     for (int m = 0; m < kNMax; m++) {
@@ -23,23 +39,15 @@ struct Tables {
       a /= m + 3;
       b /= m + 4;
     }
-    // the first term left out, m = N, of the widest sum (T_c: C(N+2, 2)
-    // monomials of size r^N over (N+3)!, leading term 1/6) is below 2^-54
-    // of the leading term; the terms after it shrink by at least half
-    // while r <= kRMax and N >= 8, or r <= 1 (their ratio r (N+3)/((N+1)(N+4)))
-    rm[0] = 0;
-    long double fact = 6;  // (N+3)!
-    for (int N = 1; N <= kNMax; N++) {
-      fact *= N + 3;
-      long double c = std::ldexp(1.0L, -54) * fact / (3.0L * (N + 1) * (N + 2));
-      rm[N] = double(std::pow(c, 1.0L / N));
-    }
+    radii(54, rm);
+    radii(kSeriesBitsV, rv);
   }
 };
 static const Tables kTab;
 const double* kInvF2 = kTab.f2;
 const double* kInvF3 = kTab.f3;
 const double* kSeriesR = kTab.rm;
+const double* kSeriesRv = kTab.rv;
 
 int seriesTerms(double r) {
   int N = 1;

@@ -81,11 +81,12 @@ static inline void addWeighted(const KernIn& in, int j, const typename Vec<W>::T
 // (the last: k ascending; *N the count so far, seriesTerms'), accumulated
 // into acc[7]; MOM false: S only; ID: seriesLoop's sum rule
 template <int W, bool MOM, bool ID>
-static inline void seriesChunk(const KernIn& in, int j, int* N, typename Vec<W>::T* acc) {
+static inline void seriesChunk(const KernIn& in, int j, const double* R, int* N,
+                               typename Vec<W>::T* acc) {
   typedef typename Vec<W>::T V;
   V ur[2], ui[2], S[2], T[6];
   cornerU<W>(in, j, ur, ui);
-  *N = termsFrom(*N, in.k[j + W - 1] * in.rho);
+  *N = termsFrom(*N, in.k[j + W - 1] * in.rho, R);
   // h_m(u1, u2) = u1 h_(m-1) + u2^m; g_m = h_m(u1, u1, u2) = u1 g_(m-1) + h_m;
   // f_m = h_m(u1, u2, u2) = u2 f_(m-1) + h_m; h_m(0, 0, u1, u2) = h_m
   seriesLoop<V, MOM, ID>(ur, ui, *N, S, T);
@@ -95,34 +96,37 @@ static inline void seriesChunk(const KernIn& in, int j, int* N, typename Vec<W>:
 // components [j, j + 2 W) without the moments, two chunks in flight
 // (seriesPair), to the degree the last needs
 template <int W>
-static inline void seriesChunk2(const KernIn& in, int j, int* N, typename Vec<W>::T* acc) {
+static inline void seriesChunk2(const KernIn& in, int j, const double* R, int* N,
+                                typename Vec<W>::T* acc) {
   typedef typename Vec<W>::T V;
   V ur[2][2], ui[2][2], S[2][2], T[6] = {};
   cornerU<W>(in, j, ur[0], ui[0]);
   cornerU<W>(in, j + W, ur[1], ui[1]);
-  *N = termsFrom(*N, in.k[j + 2 * W - 1] * in.rho);
+  *N = termsFrom(*N, in.k[j + 2 * W - 1] * in.rho, R);
   seriesPair<V>(ur, ui, *N, S);
   addWeighted<W, false>(in, j, S[0], T, acc);
   addWeighted<W, false>(in, j + W, S[1], T, acc);
 }
 
 // [j0, j1): chunks of W (two at a time without the moments when W > 1),
-// the rest one at a time; W > 1 (the vector levels) with the sum rule
+// the rest one at a time; W > 1 (the vector levels) with the sum rule and
+// the lanes' term counts (kSeriesRv)
 template <int W>
 static void seriesRange(const KernIn& in, int j0, int j1, double out[7]) {
   const bool id = W > 1;
+  const double* R = W > 1 ? kSeriesRv : kSeriesR;
   typename Vec<W>::T acc[7] = {};
   typename Vec<1>::T acc1[7] = {};
   int j = j0, N = 1;
   if (in.mom) {
-    for (; j + W <= j1; j += W) seriesChunk<W, true, id>(in, j, &N, acc);
-    for (; j < j1; j++) seriesChunk<1, true, id>(in, j, &N, acc1);
+    for (; j + W <= j1; j += W) seriesChunk<W, true, id>(in, j, R, &N, acc);
+    for (; j < j1; j++) seriesChunk<1, true, id>(in, j, R, &N, acc1);
   } else {
     if (W > 1) {
-      for (; j + 2 * W <= j1; j += 2 * W) seriesChunk2<W>(in, j, &N, acc);
+      for (; j + 2 * W <= j1; j += 2 * W) seriesChunk2<W>(in, j, R, &N, acc);
     }
-    for (; j + W <= j1; j += W) seriesChunk<W, false, false>(in, j, &N, acc);
-    for (; j < j1; j++) seriesChunk<1, false, false>(in, j, &N, acc1);
+    for (; j + W <= j1; j += W) seriesChunk<W, false, false>(in, j, R, &N, acc);
+    for (; j < j1; j++) seriesChunk<1, false, false>(in, j, R, &N, acc1);
   }
   for (int i = 0; i < 7; i++) out[i] += Vec<W>::sum(acc[i]) + Vec<1>::sum(acc1[i]);
 }

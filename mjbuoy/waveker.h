@@ -31,7 +31,8 @@ struct KernIn {
 // range must have k rho <= kRMax. By level: glibc-free arithmetic only, so
 // levels differ by FMA contraction, summation order, terms past the
 // scalar's count (two chunks share one) and, on the vector levels, T_2 by
-// the sum rule T_0 + T_1 + T_2 = S (serieskern.h)
+// the sum rule T_0 + T_1 + T_2 = S (serieskern.h) and the series cut at
+// 2^-kSeriesBitsV instead of 2^-54
 void seriesSums(const KernIn& in, int j0, int j1, double out[7]);
 void seriesScalar(const KernIn& in, int j0, int j1, double out[7]);
 void seriesAvx2(const KernIn& in, int j0, int j1, double out[7]);
@@ -42,6 +43,14 @@ void seriesAvx512(const KernIn& in, int j0, int j1, double out[7]);
 int seriesTerms(double r);
 // the largest radius N terms serve, for N <= kNMax (rising with N)
 extern const double* kSeriesR;
+// the vector lanes' series stop where the first term left out is below
+// 2^-kSeriesBitsV of the leading one, the lanes' own rounding level (a
+// triangle's integrals already differ from the scalar path's by about 64
+// e^4 eps, 1e-12, trivec_kern.h): 2 to 4 terms fewer than the scalar
+// reference's 2^-54 (docs/physics.md, "Dynamic part in closed form")
+static const int kSeriesBitsV = 40;
+// the largest radius N terms serve in the vector lanes (kSeriesR's kind)
+extern const double* kSeriesRv;
 // 1/(m+2)! and 1/(m+3)! for m < kNMax
 extern const double* kInvF2;
 extern const double* kInvF3;

@@ -15,6 +15,7 @@
 #include "sea.h"
 #include "seavec.h"
 #include "simdlevels.h"
+#include "sincoskern.h"
 #include "testutil.h"
 #include "vmath.h"
 
@@ -101,7 +102,8 @@ Out solveAll(const mjb::Sea& sea, double t, const std::vector<double>& x,
 // of a label itself where a search stops for lack of progress (16 ulp of
 // |a|). A height z = level + sum A cos(theta) moves by sum A k tolA with
 // the labels; each cosine is within 4 ulp (libmvec, glibc manual "Errors in
-// Math Functions") plus 1 ulp for glibc's scalar one, of a phase rounded
+// Math Functions"; the lanes' own, sincoskern.h, within 3) plus 1 ulp for
+// glibc's scalar one, of a phase rounded
 // to about 4 ulp of |theta|: A (5 eps + 4 eps |theta|) per component
 void checkSea(const mjb::Sea& sea, double guess, const char* what) {
   const double t = 3.7;
@@ -172,6 +174,58 @@ void checkSea(const mjb::Sea& sea, double guess, const char* what) {
                 what, mjb::simdName(level), worstA, tolA, worstZ, worstF, o.nit, ref.nit, m);
   }
   mjb::simdSet(prev);
+}
+
+// the lanes' sine and cosine (sincoskern.h: Cody-Waite reduction by pi/2
+// in three parts, Taylor series on [-pi/4, pi/4]) against long double's
+// sinl and cosl: within 3 ulp of the result (or of 2^-53 where it is below
+// 1/2, the size of r's own rounding; r's rounding, 1/2 ulp, and the
+// series' rounding, at most 2 ulp, measured 2.0) for phases up to 2^20 pi/2, both
+// signs, next to multiples of pi/2 and far from them; refused (false)
+// beyond, for infinity and NaN. Compiled here without AVX and FMA, two
+// lanes, so each product and sum rounds apart: the bound holds without the
+// FMAs the vector builds may contract to
+TEST(SeaVec, SinCosLanesWithinThreeUlp) {
+  typedef double V __attribute__((vector_size(16)));
+  typedef long I __attribute__((vector_size(16)));
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<double> xs;
+  for (int i = 0; i < 200000; i++) xs.push_back(u(rng) * std::pow(10.0, 6 * std::fabs(u(rng))));
+  const long double hp = 1.570796326794896619231321691639751442L;
+  for (long m : {1L, 2L, 3L, 4L, 5L, 100L, 1001L, 65536L, 1000003L}) {
+    for (double d : {0.0, 1e-12, -1e-9, 1e-6, 0.3, -0.78, 0.785}) {
+      xs.push_back(double(m * hp) + d);
+      xs.push_back(-double(m * hp) + d);
+    }
+  }
+  auto ulp = [](double v) {
+    const double a = std::fmax(std::fabs(v), 0.5);
+    return std::nextafter(a, INFINITY) - a;
+  };
+  double worst = 0;
+  int n = 0;
+  for (size_t i = 0; i + 1 < xs.size(); i += 2) {
+    const V x = {xs[i], xs[i + 1]};
+    V s, c;
+    const bool inr = std::fabs(x[0]) < 1.6e6 && std::fabs(x[1]) < 1.6e6;
+    const bool got = mjb::sinCosLanes<V, I>(x, &s, &c);
+    if (!inr) continue;
+    ASSERT_TRUE(got) << x[0] << " " << x[1];
+    for (int l = 0; l < 2; l++) {
+      const double rs = double(sinl((long double)x[l])), rc = double(cosl((long double)x[l]));
+      worst = std::fmax(worst, std::fabs(s[l] - rs) / ulp(rs));
+      worst = std::fmax(worst, std::fabs(c[l] - rc) / ulp(rc));
+      EXPECT_LE(std::fabs(s[l] - rs), 3 * ulp(rs)) << x[l];
+      EXPECT_LE(std::fabs(c[l] - rc), 3 * ulp(rc)) << x[l];
+      n++;
+    }
+  }
+  std::printf("[seavec] sinCosLanes: %d phases, worst %.2f ulp\n", n, worst);
+  V s, c;
+  EXPECT_FALSE((mjb::sinCosLanes<V, I>(V{1, 1.7e6}, &s, &c)));
+  EXPECT_FALSE((mjb::sinCosLanes<V, I>(V{1, INFINITY}, &s, &c)));
+  EXPECT_FALSE((mjb::sinCosLanes<V, I>(V{NAN, 1}, &s, &c)));
 }
 
 TEST(SeaVec, LanesMatchTheScalarSearch) {
