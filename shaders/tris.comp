@@ -36,8 +36,13 @@ vec4 expAt(int v, int w, GWave wv, float zs, vec2 r) {
   vec4 t = texelFetch(tExp, expTexel(v, w));
   vec2 e = cmul((w & 1) == 0 ? t.xy : t.zw, r);
   // e^(k zs) >= e^(-k h) > e^-17 where e2kh > 0 (zs >= -h): no overflow
-  float ep = exp(wv.k * zs), em = wv.e2kh > 0.0 ? wv.e2kh / ep : 0.0;
+  float ep = exp(wv.k * zs);
+#ifdef WI_DEEP
+  return vec4(ep * e, 0.0, 0.0);  // (every e2kh is 0, gl.cc: no division)
+#else
+  float em = wv.e2kh > 0.0 ? wv.e2kh / ep : 0.0;
   return vec4(ep * e, em * e);
+#endif
 }
 
 uniform int nchunk;
@@ -109,11 +114,18 @@ Piece makePiece(vec3 p0, vec3 p1, vec3 p2, float z0, float z1, float z2, vec2 m0
   return P;
 }
 
+// component wv's phase is at the position (Airy), not at the label
+#ifdef WI_AIRY
+#define AIRY(wv) true
+#else
+#define AIRY(wv) ((wv).kind != 0.0)
+#endif
+
 // the exponent's changes from corner 0 to corners 1, 2 of piece P for
 // component wv: L = k zs + i theta (Airy phase at x, Gerstner at the label)
 void pieceSpan(Piece P, GWave wv, out vec2 x, out vec2 y) {
-  vec2 kd = wv.k * vec2(wv.dx, wv.dy);
-  vec4 d = wv.kind != 0.0 ? P.dp : P.dl;
+  vec2 kd = vec2(wv.kx, wv.ky);
+  vec4 d = AIRY(wv) ? P.dp : P.dl;
   x = vec2(wv.k * (P.zs.y - P.zs.x), dot(kd, d.xy));
   y = vec2(wv.k * (P.zs.z - P.zs.x), dot(kd, d.zw));
 }
@@ -132,7 +144,12 @@ void wavePiece(Piece P, GWave wv, vec4 E0, bool split, inout vec3 ps, inout vec3
   // e^(k zs) and, at finite depth, e^(-k (zs + 2h)) (real parts flip);
   // loops test at their end: llvmpipe runs every if's body and, after a
   // break at the top, a loop's body once more, each for all lanes, masked
-  float e2 = wv.e2kh, sv = 0.0;
+#ifdef WI_DEEP
+  const float e2 = 0.0;  // (gl.cc): the divisions below fold away
+#else
+  float e2 = wv.e2kh;
+#endif
+  float sv = 0.0;
   vec2 S = vec2(0.0), M1 = S, M2 = S;
   int f = 0;
   do {
@@ -158,9 +175,10 @@ void wavePiece(Piece P, GWave wv, vec4 E0, bool split, inout vec3 ps, inout vec3
 #else
   } while (++f < (e2 > 0.0 ? 2 : 1));
 #endif
-  float amp = wv.amp * P.a2, cv = amp * wv.omega / (1.0 - e2);
-  // velocity: horizontal (e+ + e-) cos, vertical (e+ - e-) sin, over 1 - e^(-2kh)
-  vs += cv * vec3(S.x * vec2(wv.dx, wv.dy), sv);
+  float amp = wv.amp * P.a2, cv = amp * wv.c / (1.0 - e2);
+  // velocity: horizontal (e+ + e-) cos, vertical (e+ - e-) sin, over 1 - e^(-2kh),
+  // amp omega = amp c k
+  vs += cv * vec3(S.x * vec2(wv.kx, wv.ky), wv.k * sv);
   // pressure: (e+ + e-) cos over 1 + e^(-2kh), its moments
   ps += amp / (1.0 + e2) * vec3(S.x, M1.x, M2.x);
 }
@@ -266,7 +284,12 @@ Tri setup(int k, float zc) {
   // waveint.glsl); the water velocity is its mean over the wet part
   // (docs/physics.md)
   if (nwave > 0) {
+#ifdef WI_AIRY
+    // no Gerstner component (gl.cc): every phase is at the position
+    vec2 L0 = P0.xy, L1 = P1.xy, L2 = P2.xy;
+#else
     vec2 L0 = texelFetch(tLab, t.x).xy, L1 = texelFetch(tLab, t.y).xy, L2 = texelFetch(tLab, t.z).xy;
+#endif
     // labels: at the cut points cut with the same fractions as the positions
     vec2 ma = o0 ? L0 : o1 ? L1 : L2, mb = o0 ? L1 : o1 ? L2 : L0, mc = o0 ? L2 : o1 ? L0 : L1;
     vec2 mab = ma + a.w / (a.w - bq.w) * (mb - ma), mca = ma + a.w / (a.w - c.w) * (mc - ma);
@@ -324,7 +347,7 @@ void wave(inout Tri T, int pc) {
         int w = 0;
         do {
           GWave wv = waveAt(w);
-          vec2 r = rotation(wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? dx0 : dm0));
+          vec2 r = rotation(dot(vec2(wv.kx, wv.ky), AIRY(wv) ? dx0 : dm0));
           wavePiece(P, wv, expAt(i0, w, wv, P.zs.x, r), false, ps, vs);
         } while (++w < nfast);
       }
@@ -333,8 +356,8 @@ void wave(inout Tri T, int pc) {
       // program, gl.cc kSplit: this loop's body would run at least once)
       for (int w = nfast; w < nwave; w++) {
         GWave wv = waveAt(w);
-        float ph = wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? dx0 : dm0);
-        wavePiece(P, wv, expAt(i0, w, wv, P.zs.x, vec2(cos(ph), sin(ph))), true, ps, vs);
+        float ph = dot(vec2(wv.kx, wv.ky), AIRY(wv) ? dx0 : dm0);
+        wavePiece(P, wv, expAt(i0, w, wv, P.zs.x, seaCosSin(ph)), true, ps, vs);
       }
 #endif
       if (lin) {

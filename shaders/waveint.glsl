@@ -11,7 +11,7 @@
 const float WI_KHMAX = 17.0;
 
 vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
-vec2 cexp(vec2 z) { return exp(z.x) * vec2(cos(z.y), sin(z.y)); }
+vec2 cexp(vec2 z) { return exp(z.x) * seaCosSin(z.y); }  // (sea.glsl)
 
 // nodes 0, x, y within r of each other (|x|, |y|, |y - x| <= r): s0 =
 // exp[0,x,y], sa = exp[0,0,x,y], sb = exp[0,x,x,y], as the Taylor series
@@ -59,9 +59,11 @@ void ddSeries(vec2 x, vec2 y, int nt, out vec2 s0, out vec2 sa, out vec2 sb) {
   // WI_TERMS), so the pairs end at nt - 1 (an even nt: one term more)
   int n = 3;
   do {  // nt >= 4; the test at the end: llvmpipe runs a loop's body once more, masked, after a break at the top
+    // 1/(n+3)!, 1/(n+4)! from one division
+    float q = f3 / float((n + 3) * (n + 4));
     for (int h = 0; h < 2; h++) {  // unrolled (constant count)
       f2 = f3;
-      f3 /= float(n + h + 3);
+      f3 = h == 0 ? q * float(n + 4) : q;
       yn = cmul(yn, y);
       g = cmul(x, g) + yn;
       s0 += f2 * g;
