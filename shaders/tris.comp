@@ -97,12 +97,13 @@ struct Piece {
   int rot;           // corner 0 is the polygon corner c0 + rot of (c0, c1, c2)
 };
 
+// (rot >= 0: corner 0 is that corner instead)
 Piece makePiece(vec3 p0, vec3 p1, vec3 p2, float z0, float z1, float z2, vec2 m0, vec2 m1,
-                vec2 m2, vec3 n) {
+                vec2 m2, vec3 n, int rot) {
   Piece P;
   float A = 0.5 * dot(cross(p1 - p0, p2 - p0), n);
   P.a2 = A > 0.0 ? 2.0 * A : 0.0;
-  P.rot = z0 >= z1 && z0 >= z2 ? 0 : z1 >= z2 ? 1 : 2;
+  P.rot = rot >= 0 ? rot : z0 >= z1 && z0 >= z2 ? 0 : z1 >= z2 ? 1 : 2;
   bool r0 = P.rot == 0, r1 = P.rot == 1;
   P.q0 = r0 ? p0 : r1 ? p1 : p2;
   P.q1 = r0 ? p1 : r1 ? p2 : p0;
@@ -304,8 +305,9 @@ Tri setup(int k, float zc) {
     vec2 n2 = nw == 3 ? L2 : nw == 1 ? mca : mc;
     float z0 = nw == 3 ? s0 : nw == 1 ? sa : 0.0, z1 = nw == 3 ? s1 : nw == 1 ? 0.0 : sb;
     float z2 = nw == 3 ? s2 : nw == 1 ? 0.0 : sc;
-    Piece A1 = makePiece(c0, c1, c2, z0, z1, z2, n0, n1, n2, n);
-    Piece A2 = makePiece(c0, c2, pca, z0, z2, 0.0, n0, n2, mca, n);
+#ifdef WI_SPLIT
+    Piece A1 = makePiece(c0, c1, c2, z0, z1, z2, n0, n1, n2, n, -1);
+    Piece A2 = makePiece(c0, c2, pca, z0, z2, 0.0, n0, n2, mca, n, -1);
     // corner 0 of the pieces (the highest; a quad's two share it): a
     // vertex, or the cut point pab, whose e^L is that of its edge's dry
     // end (zs = 0 at both; verts.comp stores every vertex) turned by the
@@ -316,6 +318,19 @@ Tri setup(int k, float zc) {
     int i0 = cut0 && nw == 1 ? ib : iv;
     vec2 dx0 = cut0 ? pab.xy - (nw == 1 ? bq.xy : a.xy) : vec2(0.0);
     vec2 dm0 = cut0 ? mab - (nw == 1 ? mb : ma) : vec2(0.0);
+#else
+    // every component fast (k reach <= WI_ROT, gl.cc): corner 0 a wet
+    // vertex, whose e^L verts.comp stored, no turn: the highest of a
+    // whole triangle, a lone wet vertex (a), a quad's c for both pieces;
+    // Re(L - L0) <= k reach <= 2 leaves the series' bound as it is
+    // (docs/physics.md "Cost (gl backend, float)")
+    int r1 = nw == 3 ? -1 : nw == 1 ? 0 : 2;
+    Piece A1 = makePiece(c0, c1, c2, z0, z1, z2, n0, n1, n2, n, r1);
+    Piece A2 = makePiece(c0, c2, pca, z0, z2, 0.0, n0, n2, mca, n, 1);
+    int ia = o0 ? t.x : o1 ? t.y : t.z, ic = o0 ? t.z : o1 ? t.x : t.y;
+    int i0 = nw == 3 ? (A1.rot == 0 ? t.x : A1.rot == 1 ? t.y : t.z) : nw == 1 ? ia : ic;
+    vec2 dx0 = vec2(0.0), dm0 = vec2(0.0);
+#endif
     int nv = nw == 2 ? 2 : 1;
     T.nv = nv;
     T.i0 = i0;
@@ -347,7 +362,11 @@ void wave(inout Tri T, int pc) {
         int w = 0;
         do {
           GWave wv = waveAt(w);
+#ifdef WI_SPLIT
           vec2 r = rotation(dot(vec2(wv.kx, wv.ky), AIRY(wv) ? dx0 : dm0));
+#else
+          const vec2 r = vec2(1.0, 0.0);  // corner 0 is a vertex (setup)
+#endif
           wavePiece(P, wv, expAt(i0, w, wv, P.zs.x, r), false, ps, vs);
         } while (++w < nfast);
       }
