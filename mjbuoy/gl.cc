@@ -28,20 +28,22 @@ enum { kVerts, kTris, kBodies, kNStage };
 // a uniform cannot skip work, a define can. Bits: WI_SPLIT (tris.comp:
 // components whose pieces need splitting, nfast < nwave), WI_NOMOM (Kerner's
 // pressure: no pressure moments), WI_DEEP (every e^(-2kh) is 0: no
-// finite-depth second pass), WI_AIRY (no Gerstner component: no label
-// solve, no labels), WI_ONE (one component: its loops unrolled). verts.comp
-// reads only WI_AIRY and WI_ONE. llvmpipe compiles a program's machine code
-// at its first dispatch, so the unused cost only their GLSL compile
+// finite-depth second pass), all three read by tris.comp only; WI_AIRY
+// (no Gerstner component: no label solve) and WI_ONE (one component: its
+// loops unrolled), read by verts.comp only. llvmpipe compiles a program's
+// machine code at its first dispatch, so the unused cost only their GLSL
+// compile at attach (12 programs and bodies.comp)
 enum { kVSplit = 1, kVNomom = 2, kVDeep = 4, kVAiry = 8, kVOne = 16, kNVar = 32 };
 static const char* kVarDef[] = {"WI_SPLIT", "WI_NOMOM", "WI_DEEP", "WI_AIRY", "WI_ONE"};
-const int kVertVar = kVAiry | kVOne;  // the bits verts.comp reads
+const int kVertVar = kVAiry | kVOne;             // the bits verts.comp reads
+const int kTrisVar = kVSplit | kVNomom | kVDeep;  // the bits tris.comp reads
 const int kMaxGroups = 65535;  // GL 4.3's minimum GL_MAX_COMPUTE_WORK_GROUP_COUNT
 const int kNTex = 7;           // buffer textures (units 0 .. kNTex - 1)
 
 struct GlBackend {
   GlContext ctx;
   GLuint vprog[kNVar] = {0};    // verts.comp by variant (only kVertVar bits: the rest 0)
-  GLuint tprog[kNVar] = {0};    // tris.comp by variant
+  GLuint tprog[kNVar] = {0};    // tris.comp by variant (only kTrisVar bits: the rest 0)
   GLuint bprog = 0;             // bodies.comp
   GLuint buf[15] = {0};         // by binding point
   GLuint tex[kNTex] = {0};      // buffer textures of B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP, B_WAVE,
@@ -77,17 +79,17 @@ static GLint loc(GlBackend* g, GLuint p, const char* name) {
 
 // the uniform called name of all triangle programs
 static void trisUniform(GlBackend* g, const char* name, int v) {
-  for (GLuint p : g->tprog) g->ctx.gl.ProgramUniform1i(p, loc(g, p, name), v);
+  for (GLuint p : g->tprog) if (p) g->ctx.gl.ProgramUniform1i(p, loc(g, p, name), v);
 }
 static void trisUniform(GlBackend* g, const char* name, float v) {
-  for (GLuint p : g->tprog) g->ctx.gl.ProgramUniform1f(p, loc(g, p, name), v);
+  for (GLuint p : g->tprog) if (p) g->ctx.gl.ProgramUniform1f(p, loc(g, p, name), v);
 }
 
 // the programs of this step's stages (kVerts, kTris, kBodies)
 static void progs(const GlBackend* g, GLuint* p) {
   int v = g->var | (g->nfast < g->nwave ? kVSplit : 0);
   p[kVerts] = g->vprog[v & kVertVar];
-  p[kTris] = g->tprog[v];
+  p[kTris] = g->tprog[v & kTrisVar];
   p[kBodies] = g->bprog;
 }
 
@@ -209,7 +211,7 @@ bool glMake(Buoy* b, std::string* err) {
   for (int i = 0; i <= 2 * kNVar; i++) {
     int v = i % kNVar;
     bool vert = i >= kNVar && i < 2 * kNVar;
-    if (vert && (v & ~kVertVar)) continue;
+    if (v & ~(vert ? kVertVar : kTrisVar)) continue;
     std::string d = defs;
     for (int j = 0; j < 5; j++) {
       if (v & (1 << j)) d += std::string("#define ") + kVarDef[j] + " 1\n";
@@ -382,6 +384,7 @@ bool glMake(Buoy* b, std::string* err) {
   seaUniforms(g, sea);
   uploadWaves(g, sea);
   for (int i = 0; i < kNVar; i++) {
+    if (!g->tprog[i]) continue;
     g->uHasprev[i] = loc(g, g->tprog[i], "hasprev");
     g->uFirst[i] = loc(g, g->tprog[i], "first");
     g->uSlamdt[i] = loc(g, g->tprog[i], "slamdt");
@@ -569,6 +572,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
   for (int i = 0; i < kNVar; i++) {
     GLuint p = g->tprog[i];
+    if (!p) continue;
     gl.ProgramUniform1i(p, g->uHasprev[i], s->hasPrev);
     gl.ProgramUniform1i(p, g->uFirst[i], clock != kMidStep);
     gl.ProgramUniform1f(p, g->uSlamdt[i], float(s->hasPrev ? d->time - s->tprev : 0));

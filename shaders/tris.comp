@@ -116,11 +116,7 @@ Piece makePiece(vec3 p0, vec3 p1, vec3 p2, float z0, float z1, float z2, vec2 m0
 }
 
 // component wv's phase is at the position (Airy), not at the label
-#ifdef WI_AIRY
-#define AIRY(wv) true
-#else
 #define AIRY(wv) ((wv).kind != 0.0)
-#endif
 
 // the exponent's changes from corner 0 to corners 1, 2 of piece P for
 // component wv: L = k zs + i theta (Airy phase at x, Gerstner at the label)
@@ -285,12 +281,7 @@ Tri setup(int k, float zc) {
   // waveint.glsl); the water velocity is its mean over the wet part
   // (docs/physics.md)
   if (nwave > 0) {
-#ifdef WI_AIRY
-    // no Gerstner component (gl.cc): every phase is at the position
-    vec2 L0 = P0.xy, L1 = P1.xy, L2 = P2.xy;
-#else
     vec2 L0 = texelFetch(tLab, t.x).xy, L1 = texelFetch(tLab, t.y).xy, L2 = texelFetch(tLab, t.z).xy;
-#endif
     // labels: at the cut points cut with the same fractions as the positions
     vec2 ma = o0 ? L0 : o1 ? L1 : L2, mb = o0 ? L1 : o1 ? L2 : L0, mc = o0 ? L2 : o1 ? L0 : L1;
     vec2 mab = ma + a.w / (a.w - bq.w) * (mb - ma), mca = ma + a.w / (a.w - c.w) * (mc - ma);

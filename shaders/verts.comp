@@ -41,7 +41,7 @@ void main() {
       vec3 p = texelFetch(tVert, i).xyz;
       vec3 r = vec3(dot(r0, p), dot(r1, p), dot(r2, p)) + o.xyz;
 #ifdef WI_AIRY
-      vec2 a = r.xy;  // no Gerstner component: no label (gl.cc; tris.comp reads none)
+      vec2 a = r.xy;  // no Gerstner component: the label is the position (gl.cc)
 #else
       vec2 a = seaLabel(b, r.xy, r.xy);
 #endif
@@ -60,9 +60,7 @@ void main() {
         eta += two ? e1.z : 0.0;
         imageStore(iExp, expTexel(i, w), vec4(e0.xy, two ? e1.xy : vec2(0.0)));
       } while ((w += 2) < nwave);
-#ifndef WI_AIRY
       lab[i] = a;
-#endif
       vout[i] = vec4(r, r.z + o.w - eta);
     }
   }
