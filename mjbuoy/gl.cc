@@ -23,23 +23,28 @@ using namespace glsl;  // NOLINT: the shared layouts
 
 static const char* kStage[] = {"verts.comp", "tris.comp", "bodies.comp"};
 enum { kVerts, kTris, kBodies, kNStage };
-// tris.comp with WI_SPLIT: for seas with components whose pieces need
-// splitting (nfast < nwave); llvmpipe runs every loop body at least once,
-// so tris.comp leaves that loop out. Variant v of tris.comp (bits: 1
-// WI_SPLIT, 2 WI_NOMOM for Kerner's pressure, which needs no pressure
-// moments, 4 WI_DEEP for seas whose every e^(-2kh) is 0, without the
-// finite-depth profile's second pass; llvmpipe runs every if's body, so a
-// uniform could not skip them) is program kTrisProg[v]; llvmpipe compiles
-// a program's machine code at its first dispatch, so the unused cost little
-const int kNTris = 8;
-const int kTrisProg[kNTris] = {int(kTris), kNStage, kNStage + 1, kNStage + 2,
-                               kNStage + 3, kNStage + 4, kNStage + 5, kNStage + 6};
+// program variants, by #define at build (glMake), picked per step (progs):
+// llvmpipe runs every if's body and every loop's at least once, masked, so
+// a uniform cannot skip work, a define can. Bits: WI_SPLIT (tris.comp:
+// components whose pieces need splitting, nfast < nwave), WI_NOMOM (Kerner's
+// pressure: no pressure moments), WI_DEEP (every e^(-2kh) is 0: no
+// finite-depth second pass), all three read by tris.comp only; WI_AIRY
+// (no Gerstner component: no label solve) and WI_ONE (one component: its
+// loops unrolled), read by verts.comp only. llvmpipe compiles a program's
+// machine code at its first dispatch, so the unused cost only their GLSL
+// compile at attach (12 programs and bodies.comp)
+enum { kVSplit = 1, kVNomom = 2, kVDeep = 4, kVAiry = 8, kVOne = 16, kNVar = 32 };
+static const char* kVarDef[] = {"WI_SPLIT", "WI_NOMOM", "WI_DEEP", "WI_AIRY", "WI_ONE"};
+const int kVertVar = kVAiry | kVOne;             // the bits verts.comp reads
+const int kTrisVar = kVSplit | kVNomom | kVDeep;  // the bits tris.comp reads
 const int kMaxGroups = 65535;  // GL 4.3's minimum GL_MAX_COMPUTE_WORK_GROUP_COUNT
 const int kNTex = 7;           // buffer textures (units 0 .. kNTex - 1)
 
 struct GlBackend {
   GlContext ctx;
-  GLuint prog[kNStage + kNTris - 1] = {0};  // by stage, then tris.comp's variants 1..7
+  GLuint vprog[kNVar] = {0};    // verts.comp by variant (only kVertVar bits: the rest 0)
+  GLuint tprog[kNVar] = {0};    // tris.comp by variant (only kTrisVar bits: the rest 0)
+  GLuint bprog = 0;             // bodies.comp
   GLuint buf[15] = {0};         // by binding point
   GLuint tex[kNTex] = {0};      // buffer textures of B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP, B_WAVE,
                                 // B_PHASE (units 0..6)
@@ -54,11 +59,10 @@ struct GlBackend {
   std::vector<int> perm;
   double reach = 0;
   int nfast = 0;
-  bool kerner = false;          // the sea's pressure needs no moments (WI_NOMOM)
-  bool deep = true;             // every e^(-2kh) is 0 (WI_DEEP)
+  int var = 0;                  // the sea's variant bits but kVSplit (seaUniforms)
   int vlocal = BUOY_VERT_LOCAL, local = BUOY_LOCAL, per = BUOY_PER, blocal = BUOY_BODY_LOCAL;
-  GLint uHasprev[kNTris], uFirst[kNTris], uSlamdt[kNTris];  // per-step uniforms of the
-                                // kTrisProg, looked up in glMake
+  GLint uHasprev[kNVar], uFirst[kNVar], uSlamdt[kNVar];  // per-step uniforms of the
+                                // tprog, looked up in glMake
   std::vector<GBody> body;      // per step, one per hull body (staging without persist)
   std::vector<float> phase;     // per step, nslot x nwave
   std::vector<float> out;       // readback, nslot x 10 x 4
@@ -69,21 +73,24 @@ struct GlBackend {
   float* phasep = nullptr;
 };
 
-static GLint loc(GlBackend* g, int st, const char* name) {
-  return g->ctx.gl.GetUniformLocation(g->prog[st], name);
+static GLint loc(GlBackend* g, GLuint p, const char* name) {
+  return g->ctx.gl.GetUniformLocation(p, name);
 }
 
-// the uniform called name of all triangle programs (kTrisProg)
+// the uniform called name of all triangle programs
 static void trisUniform(GlBackend* g, const char* name, int v) {
-  for (int st : kTrisProg) g->ctx.gl.ProgramUniform1i(g->prog[st], loc(g, st, name), v);
+  for (GLuint p : g->tprog) if (p) g->ctx.gl.ProgramUniform1i(p, loc(g, p, name), v);
 }
 static void trisUniform(GlBackend* g, const char* name, float v) {
-  for (int st : kTrisProg) g->ctx.gl.ProgramUniform1f(g->prog[st], loc(g, st, name), v);
+  for (GLuint p : g->tprog) if (p) g->ctx.gl.ProgramUniform1f(p, loc(g, p, name), v);
 }
 
-// the triangle program of this step: split or not, moments or not
-static int trisProg(const GlBackend* g) {
-  return kTrisProg[(g->nfast < g->nwave ? 1 : 0) + (g->kerner ? 2 : 0) + (g->deep ? 4 : 0)];
+// the programs of this step's stages (kVerts, kTris, kBodies)
+static void progs(const GlBackend* g, GLuint* p) {
+  int v = g->var | (g->nfast < g->nwave ? kVSplit : 0);
+  p[kVerts] = g->vprog[v & kVertVar];
+  p[kTris] = g->tprog[v & kTrisVar];
+  p[kBodies] = g->bprog;
 }
 
 // buffer at binding point i with n bytes (data may be null)
@@ -118,8 +125,8 @@ static bool groupSizes(GlBackend* g, std::string* err) {
 static GWave gwave(const Wave& w, double depth, double reach) {
   double kh = w.k * depth;
   float e2 = depth > 0 && kh < 17 ? float(std::exp(-2 * kh)) : 0.0f;
-  GWave o{float(w.amp), float(w.k), float(w.omega), 0, float(w.dx), float(w.dy), float(w.kind), e2,
-          float(w.kind == 0 ? w.steep : 0), 0, 0, 0};
+  GWave o{float(w.k * w.dx), float(w.k * w.dy), float(w.amp), float(w.kind), float(w.k),
+          float(w.omega / w.k), 0, e2, float(w.kind == 0 ? w.steep : 0), float(w.dx), float(w.dy), 0};
   // the series length of its piece integrals (shaders/waveint.glsl
   // ddSeries): the fewest terms n >= 4 whose first left out, (n + 1) r^n /
   // (n + 2)!, is below 2.5e-7 at the node gap r = k reach; the largest,
@@ -200,12 +207,18 @@ bool glMake(Buoy* b, std::string* err) {
                      "\n#define BUOY_LOCAL " + std::to_string(g->local) +
                      "\n#define BUOY_PER " + std::to_string(g->per) +
                      "\n#define BUOY_BODY_LOCAL " + std::to_string(g->blocal) + "\n";
-  for (int i = 0; i < kNStage + kNTris - 1; i++) {
-    int v = i < kNStage ? 0 : i - kNStage + 1;  // tris.comp's variant
-    std::string d = defs + (v & 1 ? "#define WI_SPLIT 1\n" : "") +
-                    (v & 2 ? "#define WI_NOMOM 1\n" : "") + (v & 4 ? "#define WI_DEEP 1\n" : "");
-    g->prog[i] = glProgram(gl, i < kNStage ? kStage[i] : "tris.comp", err, d);
-    if (!g->prog[i]) {
+  // every tris.comp variant, the verts.comp ones of its bits, bodies.comp
+  for (int i = 0; i <= 2 * kNVar; i++) {
+    int v = i % kNVar;
+    bool vert = i >= kNVar && i < 2 * kNVar;
+    if (v & ~(vert ? kVertVar : kTrisVar)) continue;
+    std::string d = defs;
+    for (int j = 0; j < 5; j++) {
+      if (v & (1 << j)) d += std::string("#define ") + kVarDef[j] + " 1\n";
+    }
+    GLuint& p = i == 2 * kNVar ? g->bprog : vert ? g->vprog[v] : g->tprog[v];
+    p = glProgram(gl, kStage[i == 2 * kNVar ? kBodies : vert ? kVerts : kTris], err, d);
+    if (!p) {
       b->gl = g;
       glFree(b);
       return false;
@@ -348,28 +361,33 @@ bool glMake(Buoy* b, std::string* err) {
   trisUniform(g, "tVout", 0);
   trisUniform(g, "tLab", 1);
   trisUniform(g, "tTri", 2);
-  gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "tVert"), 3);
   trisUniform(g, "tExp", 4);
-  for (int st = 0; st < kNStage + kNTris - 1; st++) {
-    if (st == kBodies) continue;
-    gl.ProgramUniform1i(g->prog[st], loc(g, st, "tWave"), 5);
-    gl.ProgramUniform1i(g->prog[st], loc(g, st, "tPhase"), 6);
+  for (GLuint p : g->vprog) {
+    if (!p) continue;
+    gl.ProgramUniform1i(p, loc(g, p, "tVert"), 3);
+    gl.ProgramUniform1i(p, loc(g, p, "nvchunk"), g->nvchunk);
   }
-  gl.ProgramUniform1i(g->prog[kVerts], loc(g, kVerts, "nvchunk"), g->nvchunk);
+  for (int i = 0; i < 2 * kNVar; i++) {
+    GLuint p = i < kNVar ? g->tprog[i] : g->vprog[i - kNVar];
+    if (!p) continue;
+    gl.ProgramUniform1i(p, loc(g, p, "tWave"), 5);
+    gl.ProgramUniform1i(p, loc(g, p, "tPhase"), 6);
+  }
 
   // uniforms that never change
   trisUniform(g, "nchunk", g->nchunk);
   trisUniform(g, "rhog", float(sea.rho * sea.g));
   trisUniform(g, "rho", float(sea.rho));
-  gl.ProgramUniform1i(g->prog[kBodies], loc(g, kBodies, "nslot"), g->nslot);
-  gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "nu"), float(sea.nu));
-  gl.ProgramUniform1f(g->prog[kBodies], loc(g, kBodies, "rho"), float(sea.rho));
+  gl.ProgramUniform1i(g->bprog, loc(g, g->bprog, "nslot"), g->nslot);
+  gl.ProgramUniform1f(g->bprog, loc(g, g->bprog, "nu"), float(sea.nu));
+  gl.ProgramUniform1f(g->bprog, loc(g, g->bprog, "rho"), float(sea.rho));
   seaUniforms(g, sea);
   uploadWaves(g, sea);
-  for (int i = 0; i < kNTris; i++) {
-    g->uHasprev[i] = loc(g, kTrisProg[i], "hasprev");
-    g->uFirst[i] = loc(g, kTrisProg[i], "first");
-    g->uSlamdt[i] = loc(g, kTrisProg[i], "slamdt");
+  for (int i = 0; i < kNVar; i++) {
+    if (!g->tprog[i]) continue;
+    g->uHasprev[i] = loc(g, g->tprog[i], "hasprev");
+    g->uFirst[i] = loc(g, g->tprog[i], "first");
+    g->uSlamdt[i] = loc(g, g->tprog[i], "slamdt");
   }
   timerInit(&g->timer, &gl);
   for (int i = 0; i < kNStage; i++) g->tstage[i] = timerStage(&g->timer, kStage[i]);
@@ -380,19 +398,24 @@ bool glMake(Buoy* b, std::string* err) {
 
 static void seaUniforms(GlBackend* g, const Sea& sea) {
   const GladGLContext& gl = g->ctx.gl;
-  for (int st = 0; st < kNStage + kNTris - 1; st++) {
-    if (st == kBodies) continue;
-    gl.ProgramUniform1i(g->prog[st], loc(g, st, "nwave"), g->nwave);
-    gl.ProgramUniform1i(g->prog[st], loc(g, st, "ngerst"), sea.ng);
-    gl.ProgramUniform1f(g->prog[st], loc(g, st, "depth"), float(sea.depth));
-    gl.ProgramUniform2f(g->prog[st], loc(g, st, "current"), float(sea.current[0]),
-                        float(sea.current[1]));
+  for (int i = 0; i < 2 * kNVar; i++) {
+    GLuint p = i < kNVar ? g->tprog[i] : g->vprog[i - kNVar];
+    if (!p) continue;
+    gl.ProgramUniform1i(p, loc(g, p, "nwave"), g->nwave);
+    gl.ProgramUniform1i(p, loc(g, p, "ngerst"), sea.ng);
+    gl.ProgramUniform1f(p, loc(g, p, "depth"), float(sea.depth));
+    gl.ProgramUniform2f(p, loc(g, p, "current"), float(sea.current[0]), float(sea.current[1]));
   }
   // flat water needs no dynamic pressure, whatever the model
-  g->kerner = sea.kerner || sea.waves.empty();
-  trisUniform(g, "linear", int(!g->kerner));
-  g->deep = true;  // as gwave's e2kh
-  for (const Wave& w : sea.waves) g->deep = g->deep && !(sea.depth > 0 && w.k * sea.depth < 17);
+  bool kerner = sea.kerner || sea.waves.empty();
+  trisUniform(g, "linear", int(!kerner));
+  bool deep = true, airy = true;  // as gwave's e2kh; Airy: no label search
+  for (const Wave& w : sea.waves) {
+    deep = deep && !(sea.depth > 0 && w.k * sea.depth < 17);
+    airy = airy && w.kind != 0;
+  }
+  g->var = (kerner ? kVNomom : 0) | (deep ? kVDeep : 0) | (airy ? kVAiry : 0) |
+           (g->nwave == 1 ? kVOne : 0);
 }
 
 void glSetSea(Buoy* b) {
@@ -446,7 +469,9 @@ void glFree(Buoy* b) {
     GlCurrent cur(&g->ctx);
     const GladGLContext& gl = g->ctx.gl;
     timerFree(&g->timer);
-    for (GLuint& p : g->prog) if (p) gl.DeleteProgram(p);
+    for (GLuint& p : g->vprog) if (p) gl.DeleteProgram(p);
+    for (GLuint& p : g->tprog) if (p) gl.DeleteProgram(p);
+    if (g->bprog) gl.DeleteProgram(g->bprog);
     for (GLuint& x : g->buf) if (x) gl.DeleteBuffers(1, &x);
     for (GLuint& x : g->tex) if (x) gl.DeleteTextures(1, &x);
   }
@@ -545,8 +570,9 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   gl.BindImageTexture(0, g->tex[4], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
-  for (int i = 0; i < kNTris; i++) {
-    GLuint p = g->prog[kTrisProg[i]];
+  for (int i = 0; i < kNVar; i++) {
+    GLuint p = g->tprog[i];
+    if (!p) continue;
     gl.ProgramUniform1i(p, g->uHasprev[i], s->hasPrev);
     gl.ProgramUniform1i(p, g->uFirst[i], clock != kMidStep);
     gl.ProgramUniform1f(p, g->uSlamdt[i], float(s->hasPrev ? d->time - s->tprev : 0));
@@ -565,9 +591,11 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   // sized for (tris.comp pieceRho, reported per body in out[40 i + 3]):
   // the wave buffer is redone for the new reach, and the step repeated
   for (int pass = 0; pass < 2; pass++) {
+    GLuint prog[kNStage];
+    progs(g, prog);
     for (int st = 0; st < kNStage; st++) {
       timerBegin(&g->timer, g->tstage[st]);
-      gl.UseProgram(g->prog[st == kTris ? trisProg(g) : st]);
+      gl.UseProgram(prog[st]);
       if (groups[st] > 0) gl.DispatchCompute(groups[st], 1, 1);
       gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                        GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

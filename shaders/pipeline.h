@@ -98,19 +98,20 @@ struct GBody {
   vec4 rig2;       // xz yz (xy), 0 0
 };
 
-struct GWave {     // read as three texels (sea.glsl waveAt), the last only by the label solve
-  float amp;
-  float k;
-  float omega;
-  float terms;     // series terms of a piece's integrals (waveint.glsl ddSeries, gl.cc gwave)
-  float dx;
-  float dy;
+struct GWave {     // read as three texels (sea.glsl): the first is all the surface needs,
+                   // the first two all the pressure, the third only the label solve
+  float kx;        // wave vector k (dx, dy) [1/m]
+  float ky;
+  float amp;       // [m]
   float kind;      // 0 Gerstner, 1 Airy (whose steep is 0 here)
+  float k;         // wave number [1/m]
+  float c;         // phase speed omega / k [m/s]
+  float terms;     // series terms of a piece's integrals (waveint.glsl ddSeries, gl.cc gwave)
   float e2kh;      // e^(-2 k h) at finite depth h if k h < 17, else 0 (deep: 0)
   float steep;
-  float pad0;
-  float pad1;
-  float pad2;
+  float dx;        // unit direction
+  float dy;
+  float pad;
 };
 
 struct GChunk {

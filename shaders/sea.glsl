@@ -8,15 +8,37 @@
 uniform samplerBuffer tWave;   // B_WAVE as RGBA32F, three texels per component
 uniform samplerBuffer tPhase;  // B_PHASE as R32F
 
-// component i, but its steepness (0: only the label solve reads it, a
-// texel more to gather)
+// component i's first texel, all the surface needs (k dx, k dy, amp, kind)
+vec4 waveHead(int i) { return texelFetch(tWave, 3 * i); }
+// component i but its label-solve texel (steep, dx, dy: 0 here)
 GWave waveAt(int i) {
   vec4 u = texelFetch(tWave, 3 * i), v = texelFetch(tWave, 3 * i + 1);
   return GWave(u.x, u.y, u.z, u.w, v.x, v.y, v.z, v.w, 0.0, 0.0, 0.0, 0.0);
 }
-float waveSteep(int i) { return texelFetch(tWave, 3 * i + 2).x; }
 
+// (cos t, sin t) from one range reduction (llvmpipe's cos and sin reduce
+// each their own): t = q pi/2 + r, |r| <= pi/4 (pi/2 in two floats,
+// Cody-Waite), Taylor polynomials to r^9 and r^8, whose first terms left
+// out, r^11/11! and r^10/10!, are below 2.4e-8 at r = pi/4 (a fifth of
+// float's resolution of 1), then turned by q quarter turns
+vec2 seaCosSin(float t) {
+  float q = floor(t * 0.63661977 + 0.5);
+  float r = fma(q, -1.5707964, t);
+  r = fma(q, 4.3711388e-8, r);
+  float r2 = r * r;
+  float s = r * (1.0 + r2 * (-1.0 / 6.0 + r2 * (1.0 / 120.0 + r2 * (-1.0 / 5040.0 +
+            r2 * (1.0 / 362880.0)))));
+  float c = 1.0 + r2 * (-0.5 + r2 * (1.0 / 24.0 + r2 * (-1.0 / 720.0 + r2 * (1.0 / 40320.0))));
+  int iq = int(q) & 3;  // two's complement: q mod 4 for negative q too
+  vec2 cs = (iq & 1) != 0 ? vec2(-s, c) : vec2(c, s);
+  return iq >= 2 ? -cs : cs;
+}
+
+#ifdef WI_ONE
+const int nwave = 1;     // (gl.cc: a one-component sea's programs, their loops unrolled)
+#else
 uniform int nwave;
+#endif
 uniform int ngerst;      // Gerstner components among them (steep > 0 ones matter)
 uniform float depth;     // water depth [m], 0 = deep
 uniform vec2 current;    // [m/s]
@@ -28,12 +50,17 @@ float phaseAt(int b, int i) { return texelFetch(tPhase, b * nwave + i).x; }
 // llvmpipe stores lane by lane)
 int expTexel(int v, int w) { return v * ((nwave + 1) >> 1) + (w >> 1); }
 
-float theta(GWave w, float ph, vec2 a) { return ph + w.k * (w.dx * a.x + w.dy * a.y); }
+// the phase of component w (head: waveHead) at a, ph at the COM
+float theta(vec4 w, float ph, vec2 a) { return ph + dot(w.xy, a); }
 
 // the phase of component w (phase ph at the COM) at the point x whose
 // Gerstner label is a: Gerstner components at the label, Airy ones (kind
 // 1) at x
-float thetaAt(GWave w, float ph, vec2 a, vec2 x) { return theta(w, ph, w.kind != 0.0 ? x : a); }
+#ifdef WI_AIRY
+float thetaAt(vec4 w, float ph, vec2 a, vec2 x) { return theta(w, ph, x); }  // (all Airy, gl.cc)
+#else
+float thetaAt(vec4 w, float ph, vec2 a, vec2 x) { return theta(w, ph, w.w != 0.0 ? x : a); }
+#endif
 
 // residual f = a - Q A D sin(theta(a)) - x and the upper triangle of its
 // Jacobian J = I - sum Q A k cos(theta) D D^T (j00, j01, j11); Airy
@@ -42,12 +69,13 @@ vec2 seaResidual(int b, vec2 x, vec2 a, out vec3 J) {
   vec2 f = a - x;
   J = vec3(1.0, 0.0, 1.0);
   for (int i = 0; i < nwave; i++) {
-    GWave w = waveAt(i);
-    float qa = waveSteep(i) * w.amp;
+    vec4 w = waveHead(i), u = texelFetch(tWave, 3 * i + 2);  // u: steep, dx, dy
+    float qa = u.x * w.z;
     if (qa == 0.0) continue;
-    float th = theta(w, phaseAt(b, i), a), s = sin(th), c = cos(th), jc = qa * w.k * c;
-    f -= qa * s * vec2(w.dx, w.dy);
-    J -= jc * vec3(w.dx * w.dx, w.dx * w.dy, w.dy * w.dy);
+    vec2 cs = seaCosSin(theta(w, phaseAt(b, i), a));
+    // J's k D D^T as (k D) D^T
+    f -= qa * cs.y * u.yz;
+    J -= qa * cs.x * vec3(w.x * u.y, w.x * u.z, w.y * u.z);
   }
   return f;
 }

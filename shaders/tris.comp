@@ -36,8 +36,13 @@ vec4 expAt(int v, int w, GWave wv, float zs, vec2 r) {
   vec4 t = texelFetch(tExp, expTexel(v, w));
   vec2 e = cmul((w & 1) == 0 ? t.xy : t.zw, r);
   // e^(k zs) >= e^(-k h) > e^-17 where e2kh > 0 (zs >= -h): no overflow
-  float ep = exp(wv.k * zs), em = wv.e2kh > 0.0 ? wv.e2kh / ep : 0.0;
+  float ep = exp(wv.k * zs);
+#ifdef WI_DEEP
+  return vec4(ep * e, 0.0, 0.0);  // (every e2kh is 0, gl.cc: no division)
+#else
+  float em = wv.e2kh > 0.0 ? wv.e2kh / ep : 0.0;
   return vec4(ep * e, em * e);
+#endif
 }
 
 uniform int nchunk;
@@ -92,12 +97,13 @@ struct Piece {
   int rot;           // corner 0 is the polygon corner c0 + rot of (c0, c1, c2)
 };
 
+// (rot >= 0: corner 0 is that corner instead)
 Piece makePiece(vec3 p0, vec3 p1, vec3 p2, float z0, float z1, float z2, vec2 m0, vec2 m1,
-                vec2 m2, vec3 n) {
+                vec2 m2, vec3 n, int rot) {
   Piece P;
   float A = 0.5 * dot(cross(p1 - p0, p2 - p0), n);
   P.a2 = A > 0.0 ? 2.0 * A : 0.0;
-  P.rot = z0 >= z1 && z0 >= z2 ? 0 : z1 >= z2 ? 1 : 2;
+  P.rot = rot >= 0 ? rot : z0 >= z1 && z0 >= z2 ? 0 : z1 >= z2 ? 1 : 2;
   bool r0 = P.rot == 0, r1 = P.rot == 1;
   P.q0 = r0 ? p0 : r1 ? p1 : p2;
   P.q1 = r0 ? p1 : r1 ? p2 : p0;
@@ -109,11 +115,14 @@ Piece makePiece(vec3 p0, vec3 p1, vec3 p2, float z0, float z1, float z2, vec2 m0
   return P;
 }
 
+// component wv's phase is at the position (Airy), not at the label
+#define AIRY(wv) ((wv).kind != 0.0)
+
 // the exponent's changes from corner 0 to corners 1, 2 of piece P for
 // component wv: L = k zs + i theta (Airy phase at x, Gerstner at the label)
 void pieceSpan(Piece P, GWave wv, out vec2 x, out vec2 y) {
-  vec2 kd = wv.k * vec2(wv.dx, wv.dy);
-  vec4 d = wv.kind != 0.0 ? P.dp : P.dl;
+  vec2 kd = vec2(wv.kx, wv.ky);
+  vec4 d = AIRY(wv) ? P.dp : P.dl;
   x = vec2(wv.k * (P.zs.y - P.zs.x), dot(kd, d.xy));
   y = vec2(wv.k * (P.zs.z - P.zs.x), dot(kd, d.zw));
 }
@@ -132,7 +141,12 @@ void wavePiece(Piece P, GWave wv, vec4 E0, bool split, inout vec3 ps, inout vec3
   // e^(k zs) and, at finite depth, e^(-k (zs + 2h)) (real parts flip);
   // loops test at their end: llvmpipe runs every if's body and, after a
   // break at the top, a loop's body once more, each for all lanes, masked
-  float e2 = wv.e2kh, sv = 0.0;
+#ifdef WI_DEEP
+  const float e2 = 0.0;  // (gl.cc): the divisions below fold away
+#else
+  float e2 = wv.e2kh;
+#endif
+  float sv = 0.0;
   vec2 S = vec2(0.0), M1 = S, M2 = S;
   int f = 0;
   do {
@@ -158,9 +172,10 @@ void wavePiece(Piece P, GWave wv, vec4 E0, bool split, inout vec3 ps, inout vec3
 #else
   } while (++f < (e2 > 0.0 ? 2 : 1));
 #endif
-  float amp = wv.amp * P.a2, cv = amp * wv.omega / (1.0 - e2);
-  // velocity: horizontal (e+ + e-) cos, vertical (e+ - e-) sin, over 1 - e^(-2kh)
-  vs += cv * vec3(S.x * vec2(wv.dx, wv.dy), sv);
+  float amp = wv.amp * P.a2, cv = amp * wv.c / (1.0 - e2);
+  // velocity: horizontal (e+ + e-) cos, vertical (e+ - e-) sin, over 1 - e^(-2kh),
+  // amp omega = amp c k
+  vs += cv * vec3(S.x * vec2(wv.kx, wv.ky), wv.k * sv);
   // pressure: (e+ + e-) cos over 1 + e^(-2kh), its moments
   ps += amp / (1.0 + e2) * vec3(S.x, M1.x, M2.x);
 }
@@ -281,8 +296,9 @@ Tri setup(int k, float zc) {
     vec2 n2 = nw == 3 ? L2 : nw == 1 ? mca : mc;
     float z0 = nw == 3 ? s0 : nw == 1 ? sa : 0.0, z1 = nw == 3 ? s1 : nw == 1 ? 0.0 : sb;
     float z2 = nw == 3 ? s2 : nw == 1 ? 0.0 : sc;
-    Piece A1 = makePiece(c0, c1, c2, z0, z1, z2, n0, n1, n2, n);
-    Piece A2 = makePiece(c0, c2, pca, z0, z2, 0.0, n0, n2, mca, n);
+#ifdef WI_SPLIT
+    Piece A1 = makePiece(c0, c1, c2, z0, z1, z2, n0, n1, n2, n, -1);
+    Piece A2 = makePiece(c0, c2, pca, z0, z2, 0.0, n0, n2, mca, n, -1);
     // corner 0 of the pieces (the highest; a quad's two share it): a
     // vertex, or the cut point pab, whose e^L is that of its edge's dry
     // end (zs = 0 at both; verts.comp stores every vertex) turned by the
@@ -293,6 +309,19 @@ Tri setup(int k, float zc) {
     int i0 = cut0 && nw == 1 ? ib : iv;
     vec2 dx0 = cut0 ? pab.xy - (nw == 1 ? bq.xy : a.xy) : vec2(0.0);
     vec2 dm0 = cut0 ? mab - (nw == 1 ? mb : ma) : vec2(0.0);
+#else
+    // every component fast (k reach <= WI_ROT, gl.cc): corner 0 a wet
+    // vertex, whose e^L verts.comp stored, no turn: the highest of a
+    // whole triangle, a lone wet vertex (a), a quad's c for both pieces;
+    // Re(L - L0) <= k reach <= 2 leaves the series' bound as it is
+    // (docs/physics.md "Cost (gl backend, float)")
+    int r1 = nw == 3 ? -1 : nw == 1 ? 0 : 2;
+    Piece A1 = makePiece(c0, c1, c2, z0, z1, z2, n0, n1, n2, n, r1);
+    Piece A2 = makePiece(c0, c2, pca, z0, z2, 0.0, n0, n2, mca, n, 1);
+    int ia = o0 ? t.x : o1 ? t.y : t.z, ic = o0 ? t.z : o1 ? t.x : t.y;
+    int i0 = nw == 3 ? (A1.rot == 0 ? t.x : A1.rot == 1 ? t.y : t.z) : nw == 1 ? ia : ic;
+    vec2 dx0 = vec2(0.0), dm0 = vec2(0.0);
+#endif
     int nv = nw == 2 ? 2 : 1;
     T.nv = nv;
     T.i0 = i0;
@@ -324,7 +353,11 @@ void wave(inout Tri T, int pc) {
         int w = 0;
         do {
           GWave wv = waveAt(w);
-          vec2 r = rotation(wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? dx0 : dm0));
+#ifdef WI_SPLIT
+          vec2 r = rotation(dot(vec2(wv.kx, wv.ky), AIRY(wv) ? dx0 : dm0));
+#else
+          const vec2 r = vec2(1.0, 0.0);  // corner 0 is a vertex (setup)
+#endif
           wavePiece(P, wv, expAt(i0, w, wv, P.zs.x, r), false, ps, vs);
         } while (++w < nfast);
       }
@@ -333,8 +366,8 @@ void wave(inout Tri T, int pc) {
       // program, gl.cc kSplit: this loop's body would run at least once)
       for (int w = nfast; w < nwave; w++) {
         GWave wv = waveAt(w);
-        float ph = wv.k * dot(vec2(wv.dx, wv.dy), wv.kind != 0.0 ? dx0 : dm0);
-        wavePiece(P, wv, expAt(i0, w, wv, P.zs.x, vec2(cos(ph), sin(ph))), true, ps, vs);
+        float ph = dot(vec2(wv.kx, wv.ky), AIRY(wv) ? dx0 : dm0);
+        wavePiece(P, wv, expAt(i0, w, wv, P.zs.x, seaCosSin(ph)), true, ps, vs);
       }
 #endif
       if (lin) {

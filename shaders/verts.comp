@@ -23,9 +23,9 @@ uniform int nvchunk;
 // e^(i theta) of component w at body b's point x of label a (xy), and its
 // height amp cos(theta) (z)
 vec3 turnAt(int b, int w, vec2 a, vec2 x) {
-  GWave wv = waveAt(w);
-  float th = thetaAt(wv, phaseAt(b, w), a, x), c = cos(th);
-  return vec3(c, sin(th), wv.amp * c);
+  vec4 wv = waveHead(w);
+  vec2 cs = seaCosSin(thetaAt(wv, phaseAt(b, w), a, x));
+  return vec3(cs, wv.z * cs.x);
 }
 
 void main() {
@@ -40,7 +40,11 @@ void main() {
       int i = ch.t0 + j;
       vec3 p = texelFetch(tVert, i).xyz;
       vec3 r = vec3(dot(r0, p), dot(r1, p), dot(r2, p)) + o.xyz;
+#ifdef WI_AIRY
+      vec2 a = r.xy;  // no Gerstner component: the label is the position (gl.cc)
+#else
       vec2 a = seaLabel(b, r.xy, r.xy);
+#endif
       // the surface height above the still level, sum amp cos(theta) in
       // component order, and each component's e^(i theta), at dry
       // vertices too (tris.comp turns the cut points' from them, and

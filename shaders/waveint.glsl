@@ -11,7 +11,7 @@
 const float WI_KHMAX = 17.0;
 
 vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
-vec2 cexp(vec2 z) { return exp(z.x) * vec2(cos(z.y), sin(z.y)); }
+vec2 cexp(vec2 z) { return exp(z.x) * seaCosSin(z.y); }  // (sea.glsl)
 
 // nodes 0, x, y within r of each other (|x|, |y|, |y - x| <= r): s0 =
 // exp[0,x,y], sa = exp[0,0,x,y], sb = exp[0,x,x,y], as the Taylor series
@@ -27,50 +27,46 @@ vec2 cexp(vec2 z) { return exp(z.x) * vec2(cos(z.y), sin(z.y)); }
 // 1/6), far below the parity tolerance (1e-4)
 const float WI_TAYLOR = 1.0;
 const int WI_TERMS = 9;
-// WI_NOMOM (the programs for Kerner's pressure, gl.cc kTrisK: the
+// WI_NOMOM (the programs for Kerner's pressure, gl.cc kVNomom: the
 // pressure's moments unused) sums s0 only, sa = sb = 0: the u chain is a
 // third of each term
-void ddSeries(vec2 x, vec2 y, int nt, out vec2 s0, out vec2 sa, out vec2 sb) {
-  // terms n = 1, 2 written out (h_1(x,y) = x + y, h_1(x,x,y) = 2x + y: no
-  // complex products)
-  vec2 yn = y, g = x + y;
-  float f2 = 1.0 / 6.0, f3 = 1.0 / 24.0;  // 1/(n+2)!, 1/(n+3)!
-  s0 = vec2(0.5, 0.0) + f2 * g;
-#ifdef WI_NOMOM
-  sa = sb = vec2(0.0);
-#else
-  vec2 u = x + g;
-  sa = vec2(f2, 0.0) + f3 * g;
-  sb = vec2(f2, 0.0) + f3 * u;
-#endif
-  // term n = 2, always summed (nt >= 4)
-  yn = cmul(y, y);
+
+// term n >= 2 of the series from term n - 1's h_{n-1}(x,y) in g and
+// h_{n-1}(x,x,y) in u, yn = y^(n-1): f2 = 1/(n+2)!, f3 = 1/(n+3)!
+void ddTerm(vec2 x, vec2 y, float f2, float f3, inout vec2 yn, inout vec2 g, inout vec2 u,
+            inout vec2 s0, inout vec2 sa, inout vec2 sb) {
+  yn = cmul(yn, y);
   g = cmul(x, g) + yn;
-  f2 = f3;
-  f3 = 1.0 / 120.0;
   s0 += f2 * g;
 #ifndef WI_NOMOM
   u = cmul(x, u) + g;
   sa += f3 * g;
   sb += f3 * u;
 #endif
-  // terms n = 3, 4, ... two a pass (half the loop's passes: llvmpipe
-  // updates and tests its lane mask each pass); nt odd (gl.cc gwave;
-  // WI_TERMS), so the pairs end at nt - 1 (an even nt: one term more)
+}
+
+void ddSeries(vec2 x, vec2 y, int nt, out vec2 s0, out vec2 sa, out vec2 sb) {
+  // term 0 and term 1, which needs no complex product (h_1(x,y) = x + y,
+  // h_1(x,x,y) = 2x + y)
+  vec2 yn = y, g = x + y, u = x + g;
+  s0 = vec2(0.5, 0.0) + (1.0 / 6.0) * g;
+  sa = sb = vec2(0.0);
+#ifndef WI_NOMOM
+  sa = vec2(1.0 / 6.0, 0.0) + (1.0 / 24.0) * g;
+  sb = vec2(1.0 / 6.0, 0.0) + (1.0 / 24.0) * u;
+#endif
+  // term 2, always summed (nt >= 4), then terms 3, 4, ... two a pass
+  // (half the loop's passes: llvmpipe updates and tests its lane mask
+  // each pass); nt odd (gl.cc gwave; WI_TERMS), so the pairs end at nt -
+  // 1 (an even nt: one term more)
+  ddTerm(x, y, 1.0 / 24.0, 1.0 / 120.0, yn, g, u, s0, sa, sb);
+  float f3 = 1.0 / 120.0;  // 1/(n+2)! at the pass's first term n
   int n = 3;
   do {  // nt >= 4; the test at the end: llvmpipe runs a loop's body once more, masked, after a break at the top
-    for (int h = 0; h < 2; h++) {  // unrolled (constant count)
-      f2 = f3;
-      f3 /= float(n + h + 3);
-      yn = cmul(yn, y);
-      g = cmul(x, g) + yn;
-      s0 += f2 * g;
-#ifndef WI_NOMOM
-      u = cmul(x, u) + g;
-      sa += f3 * g;
-      sb += f3 * u;
-#endif
-    }
+    float q = f3 / float((n + 3) * (n + 4));  // 1/(n+4)!: one division a pass
+    ddTerm(x, y, f3, q * float(n + 4), yn, g, u, s0, sa, sb);
+    ddTerm(x, y, q * float(n + 4), q, yn, g, u, s0, sa, sb);
+    f3 = q;
   } while ((n += 2) < nt);
 }
 

@@ -212,7 +212,7 @@ TEST(GlParity, SpectralSeaDeepAndFiniteDepth) {
   // component, sea.glsl expTexel) in deep water and at 8 m depth (the
   // profiles' second exponential, tris.comp expAt), with the linear
   // pressure and Kerner's (the programs without pressure moments, gl.cc
-  // kTrisK: the water velocity alone); the cpu backend's direct sum is the
+  // kVNomom: the water velocity alone); the cpu backend's direct sum is the
   // reference, to the random scenes' tolerance
   for (int cs = 0; cs < 4; cs++) {
     const char* depth = cs & 1 ? "<numeric name=\"mjbuoy.sea.depth\" data=\"8\"/>" : "";
