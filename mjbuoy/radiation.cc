@@ -133,6 +133,8 @@ void kernels(const HydroCoef& c, double tmem, double dt, RadBody* rb) {
     }
   }
   rb->K.resize(rb->pair.size() * rb->nk);
+  double pd[6];  // the tail's exponents, fitted once for every pair
+  tailExponents(c, pd);
   for (size_t p = 0; p < rb->pair.size(); p++) {
     int i = rb->pair[p] / 6, j = rb->pair[p] % 6;
     // K is symmetric like B: the transposed pair copies
@@ -141,7 +143,7 @@ void kernels(const HydroCoef& c, double tmem, double dt, RadBody* rb) {
       std::copy_n(rb->K.begin() + (q - rb->pair.begin()) * rb->nk, rb->nk,
                   rb->K.begin() + p * rb->nk);
     } else {
-      retardation(c, i, j, dt, rb->nk, rb->K.data() + p * rb->nk);
+      retardationP(c, pd, i, j, dt, rb->nk, rb->K.data() + p * rb->nk);
       steadyZero(rb->K.data() + p * rb->nk, rb->nk);
     }
   }
@@ -244,10 +246,15 @@ void clearSimple(const mjModel* m, const std::vector<int>& dof, Radiation* r) {
 bool addedMassIndefinite(const double A[36]) { return finite(A, 36) && !psd(A); }
 
 void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K, bool tail) {
+  double pd[6];
+  if (tail) tailExponents(c, pd);
+  retardationP(c, tail ? pd : nullptr, i, j, dt, n, K);
+}
+
+void retardationP(const HydroCoef& c, const double* pd, int i, int j, double dt, int n, double* K) {
   const int nw = c.nw();
   // beyond the last frequency B_ij(w) = B_ij(w_N) (w_N / w)^p (radtail.h)
-  double pd[6], p = 0;
-  if (tail) tailExponents(c, pd), p = tailExponent(pd, i, j);
+  const double p = pd ? tailExponent(pd, i, j) : 0;
   const double bN = nw ? c.B[36 * (nw - 1) + 6 * i + j] : 0, wN = nw ? c.omega.back() : 0;
   for (int k = 0; k < n; k++) {
     const double t = k * dt;
@@ -273,10 +280,12 @@ double memoryLength(const HydroCoef& c) {
   int last = 0;
   for (int i = 0; i < 6; i++) for (int j = 0; j < 6; j++) bmax = std::max(bmax, maxAbs(c.B, i, j));
   std::vector<std::vector<double>> all;
+  double pd[6];  // the tail's exponents, fitted once for every pair
+  tailExponents(c, pd);
   for (int i = 0; i < 6; i++) {
     for (int j = i; j < 6; j++) {
       if (maxAbs(c.B, i, j) <= 1e-12 * bmax) continue;
-      retardation(c, i, j, dc, n, K.data());
+      retardationP(c, pd, i, j, dc, n, K.data());
       all.push_back(K);
       for (double k : K) peak = std::max(peak, std::fabs(k));
     }

@@ -84,6 +84,11 @@ struct RadState {
 void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K,
                  bool tail = true);
 
+// the same with the tail exponents p of tailExponents(c, p) given (nullptr:
+// no tail), for callers that build several pairs of one c: the exponents'
+// fit is done once, not once per pair
+void retardationP(const HydroCoef& c, const double* p, int i, int j, double dt, int n, double* K);
+
 // memory length [s] for c when none is given: the time after which every
 // |K_ij| stays below 1% of the largest |K| (at most kMaxMemory)
 double memoryLength(const HydroCoef& c);

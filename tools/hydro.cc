@@ -43,9 +43,9 @@ static bool printBody(FILE* o, const mjModel* m, int body, const mjb::HydroCoef&
   }
   int n = (int)std::floor(tk / dt) + 1;
   std::vector<std::vector<double>> K(6, std::vector<double>(n));
-  for (int i = 0; i < 6; i++) mjb::retardation(c, i, i, dt, n, K[i].data());
   double pt[6];
   mjb::tailExponents(c, pt);
+  for (int i = 0; i < 6; i++) mjb::retardationP(c, pt, i, i, dt, n, K[i].data());
   std::fprintf(o, "\n# tail beyond the last frequency, B_ii(w) = B_ii(w_N) (w_N / w)^p_i, p (0: none):");
   for (int i = 0; i < 6; i++) std::fprintf(o, " %.6g", pt[i]);
   std::fprintf(o, "\n# t[s]");
@@ -168,7 +168,9 @@ int main(int argc, char** argv) {
       double len = tk > 0 ? tk : mjb::memoryLength(c);
       int n = (int)std::floor(len / dt) + 1;
       std::vector<std::vector<double>> K(6, std::vector<double>(n));
-      for (int k = 0; k < 6; k++) mjb::retardation(c, k, k, dt, n, K[k].data());
+      double pt[6];
+      mjb::tailExponents(c, pt);
+      for (int k = 0; k < 6; k++) mjb::retardationP(c, pt, k, k, dt, n, K[k].data());
       std::string name = m->names + m->name_bodyadr[B->coef[i].first];
       if (!mjbhydro::plotCoef(png, "radiation of body " + name + " (" + model + ")", c, K, dt,
                               &e))
