@@ -30,6 +30,7 @@ struct Hull {
   double share;       // this hull's share (by area) of its rigid group's hulls
   double rad;         // largest vertex distance from the body origin [m]
   HullParams par;
+  char radDrag = 0;   // linear drag terms radiation's default zeroed (config.h kRadDrag)
 };
 
 // static data of one attached model, built once by mjb_attach

@@ -107,20 +107,29 @@ static const Field kThreads = {"threads", 1, 0, 64, false, "threads, 0 = auto", 
 // suction drag terms default to 0: a normal pressure linear in the
 // velocity is the form of wave radiation damping, which the panel
 // solution now gives; the quadratic (separation) terms, skin friction and
-// slamming stay (docs/physics.md section 16). Values the user gave stay
+// slamming stay (docs/physics.md section 16). Values the user gave stay.
+// radDrag records, per hull, which terms were zeroed (restoreDrag)
 static void radiationDragDefaults(const mjModel* m, const std::vector<int>& gid,
                                   const RadConfig& rad,
                                   const std::vector<std::vector<char>>& set,
                                   const std::vector<char>& defSet,
-                                  std::vector<HullParams>* par) {
+                                  std::vector<HullParams>* par, std::vector<char>* radDrag) {
   const int kDrag = 2, kSuction = 3;  // kHullFields rows
   std::vector<int> hb;
   for (int g : gid) hb.push_back(m->geom_bodyid[g]);
+  radDrag->assign(gid.size(), 0);
   for (size_t h = 0; h < gid.size(); h++) {
     if (!rad.groupRadiates(m, hb, m->body_weldid[hb[h]])) continue;
-    if (!set[h][kDrag] && !defSet[kDrag]) (*par)[h].drag[0] = 0;
-    if (!set[h][kSuction] && !defSet[kSuction]) (*par)[h].suction[0] = 0;
+    char& z = (*radDrag)[h];
+    if (!set[h][kDrag] && !defSet[kDrag]) (*par)[h].drag[0] = 0, z |= kRadDrag;
+    if (!set[h][kSuction] && !defSet[kSuction]) (*par)[h].suction[0] = 0, z |= kRadSuction;
   }
+}
+
+void restoreDrag(HullParams* p, char* bits) {
+  if (*bits & kRadDrag) p->drag[0] = kHullDefault.drag[0];
+  if (*bits & kRadSuction) p->suction[0] = kHullDefault.suction[0];
+  *bits = 0;
 }
 
 std::string fmt(double v) {
@@ -435,7 +444,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
   if (!ex.empty()) return ex;
   ex = parseRadConfig(m, &c->rad);
   if (!ex.empty()) return ex;
-  radiationDragDefaults(m, gid, c->rad, set, defSet, &par);
+  radiationDragDefaults(m, gid, c->rad, set, defSet, &par, &c->radDrag);
   c->sea.derive();
   double q = c->sea.fold();
   if (!(q < 1)) {

@@ -29,12 +29,22 @@ struct Config {
   int threads = 0;                 // cpu backend threads; 0 = auto
   std::vector<int> geom;           // hull geom ids, ascending
   std::vector<HullParams> param;   // one per hull geom
+  std::vector<char> radDrag;       // one per hull geom: kRadDrag bits (radiationDragDefaults)
   std::vector<std::string> warn;   // load-time warnings
   std::vector<mjbSpectrum> spec;   // spectra as given (table not kept), seaconfig.cc
   WindParams wind;                 // wind entries, seaconfig.cc
   int capacity = 0;                // mjbuoy.sea.capacity: components reserved
   RadConfig rad;                   // mjbuoy.radiation*, radconfig.cc
 };
+
+// the linear drag terms (C_PD1, C_SD1) that the radiation default set to 0
+// for a hull of a radiating group (config.cc, docs/physics.md section 16)
+const char kRadDrag = 1, kRadSuction = 2;
+
+// a hull whose group gets no radiation after all (radattach.cc: dry,
+// too many panels, a failed solve) takes back the default linear terms of
+// bits; bits becomes 0
+void restoreDrag(HullParams* p, char* bits);
 
 // a number as messages print it (10 significant digits), and an entry as
 // MJCF writes it, <kind name="name">

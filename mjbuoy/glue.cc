@@ -299,6 +299,7 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     h.t0 = B.face.size() / 3;
     h.nt = mesh.nf();
     h.par = B.cfg.param[k];
+    h.radDrag = B.cfg.radDrag[k];
     h.area = 0;
     // all that moves rigidly with it: a hull on a massless child welded to
     // its parent still stops the parent
@@ -349,6 +350,16 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
   B.cfg.sea.waves.reserve(B.wcap);
   B.cfg.sea.order.reserve(B.wcap);  // Sea::derive rebuilds it in mjb_setSea
   mjb::windMake(&B);
+  // radiation (on by default for free hull bodies, seconds per hull:
+  // docs/mjcf.md section 11), before the backend: a group it skips takes
+  // back its linear drag terms (radattach.cc skipGroup), which the gl
+  // backend copies at setup
+  e = mjb::attachRadiation(&B);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    mjb::restoreModel(m, B.rad);
+    return nullptr;
+  }
   // gl: required; auto: gl when an EGL display with GL >= 4.3 compute is
   // there, else cpu with a notice
   B.renderer = "CPU";
@@ -359,19 +370,12 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     } else if (B.cfg.backend == "gl" && !B.hull.empty()) {
       copyError("mjbuoy: backend gl is not available: " + ge +
                     "; use backend cpu or auto (docs/mjcf.md)", error, error_sz);
+      mjb::restoreModel(m, B.rad);
       return nullptr;
     } else {
       if (!B.hull.empty()) warn.push_back("backend auto: no usable GL (" + ge + "); running on cpu");
       B.cfg.backend = "cpu";
     }
-  }
-  // radiation (opt-in, seconds per hull: docs/mjcf.md)
-  e = mjb::attachRadiation(&B);
-  if (!e.empty()) {
-    copyError(e, error, error_sz);
-    mjb::restoreModel(m, B.rad);
-    mjb::glFree(&B);
-    return nullptr;
   }
   for (const std::string& w : warn) B.warnings += "mjbuoy: warning: " + w + "\n";
   if (B.cfg.backend == "cpu") threads(&B);

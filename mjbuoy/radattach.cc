@@ -111,6 +111,18 @@ static bool namedOn(const Buoy& B, int root) {
   return false;
 }
 
+// a group on by default that gets no radiation after all (dry, too many
+// panels, a failed solve): the warning why, and its hulls take back the
+// linear drag terms the default had set to 0 for radiation (config.h,
+// restoreDrag; docs/physics.md section 16): without radiation they are
+// their only damping of slow heave
+static std::string skipGroup(Buoy* B, int root, const std::string& why) {
+  B->cfg.warn.push_back(why);
+  for (Hull& h : B->hull)
+    if (B->m->body_weldid[h.body] == root) restoreDrag(&h.par, &h.radDrag);
+  return "";
+}
+
 // whether the rigid group of root radiates (RadConfig::groupRadiates)
 static bool groupRadiates(const Buoy& B, int root) {
   std::vector<int> hb;
@@ -302,12 +314,11 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
                   rc.refine, &body, &lid, &note)) {
     if (!(rc.given && rc.on) && !namedOn(*B, root)) {
       // on by default only: the body keeps running without radiation
-      B->cfg.warn.push_back(who.substr(8) + " is off: " + note + " at " + at + " (mean sea "
-                            "level " + fmt(B->cfg.sea.level) + " m); place the body at its "
-                            "floating position in the model for added mass and radiation "
-                            "damping, or set <text name=\"mjbuoy.radiation.body." +
-                            bodyName(m, root) + "\" data=\"off\"/>");
-      return "";
+      return skipGroup(B, root, who.substr(8) + " is off: " + note + " at " + at + " (mean sea "
+                       "level " + fmt(B->cfg.sea.level) + " m); place the body at its "
+                       "floating position in the model for added mass and radiation "
+                       "damping, or set <text name=\"mjbuoy.radiation.body." +
+                       bodyName(m, root) + "\" data=\"off\"/>");
     }
     return who + ": " + note + " at " + at + " (mean sea level " + fmt(B->cfg.sea.level) +
            " m); place the body at its floating position in the model, "
@@ -320,12 +331,11 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   if (rc.panels > 0 && solveSize(body, lid, rc.lid) > rc.panels && !(rc.given && rc.on) &&
       !namedOn(*B, root)) {
     // on by default only within the cost bound (seconds at attach)
-    B->cfg.warn.push_back(who.substr(8) + " is off: " + std::to_string(np) + " wet panels, "
-                          "above the " + std::to_string(rc.panels) + " radiation solves "
-                          "by default (mjbuoy.radiation.panels); switch it on explicitly with "
-                          "<text name=\"mjbuoy.radiation\" data=\"on\"/> (minutes, cached), or "
-                          "coarsen the hull below the waterline");
-    return "";
+    return skipGroup(B, root, who.substr(8) + " is off: " + std::to_string(np) + " wet panels, "
+                     "above the " + std::to_string(rc.panels) + " radiation solves "
+                     "by default (mjbuoy.radiation.panels); switch it on explicitly with "
+                     "<text name=\"mjbuoy.radiation\" data=\"on\"/> (minutes, cached), or "
+                     "coarsen the hull below the waterline");
   }
   if (!rc.lid) {
     lid = PanelMesh();
@@ -349,10 +359,8 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   std::vector<double> head;
   for (int h = 0; rc.diffraction && h < kDiffHeadings; h++) head.push_back(2 * M_PI * h / kDiffHeadings);
   if (!cachedSolve(B, who, body, lid, omega, head, &c, &err)) {
-    if (!(rc.given && rc.on) && !namedOn(*B, root)) {
-      B->cfg.warn.push_back(who.substr(8) + " is off: panel solver: " + err);
-      return "";
-    }
+    if (!(rc.given && rc.on) && !namedOn(*B, root))
+      return skipGroup(B, root, who.substr(8) + " is off: panel solver: " + err);
     return who + ": panel solver: " + err;
   }
   // panel frame: world axes, origin (x_root, y_root, sea level); the root's
@@ -386,10 +394,8 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   if (addedMassIndefinite(c.Ainf)) {
     // an unresolved wet surface, not a fault of the user's numbers
     std::string why = unresolved(body, c);
-    if (!(rc.given && rc.on) && !namedOn(*B, root)) {
-      B->cfg.warn.push_back(who.substr(8) + " is off: " + why);
-      return "";
-    }
+    if (!(rc.given && rc.on) && !namedOn(*B, root))
+      return skipGroup(B, root, who.substr(8) + " is off: " + why);
     return who + ": " + why;
   }
   err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);

@@ -11,7 +11,7 @@
 namespace mjb {
 
 struct RadConfig {
-  bool on = false;              // mjbuoy.radiation: off (default) or on
+  bool on = true;               // mjbuoy.radiation: on (default) or off
   bool given = false;           // mjbuoy.radiation was in the model
   std::vector<int> onBody;      // mjbuoy.radiation.body.<body>: on / off overrides
   std::vector<int> offBody;

@@ -877,5 +877,58 @@ TEST(RadAttach, BodyOnASlideJointKeepsItsInitialPose) {
   EXPECT_GT(std::fabs(atT[14] - slide[14]), 0.01 * atT[14]);
 }
 
+// the drag a group gets when radiation on by default skips it at attach
+// (mjbuoy/radattach.cc skipGroup): the linear terms that stood in for
+// radiation damping come back, on both backends (the gl backend copies the
+// terms at its setup, so radiation is attached first). A 2 x 1 x 0.8 m box
+// (no mjbuoy.radiation entry, viscous resistance and slamming off), its
+// centre put at z = 0.1 m (draft 0.3 m) and sinking at 0.5 m/s in calm
+// water. Pressure drag, docs/physics.md section 4.2 eq. (4.3): only the
+// bottom (A = 2 m^2, n = -z) advances, cos_t = 1, u = 0.5 / v_ref (1 m/s);
+// the sides' cos_t = 0 and the top is dry. F_z = (C_PD1 u + C_PD2 u^2) A =
+// (100 0.5 + 400 0.25) 2 = 300 N with the linear term (the default without
+// radiation), (0 + 100) 2 = 200 N without it (section 16's default with
+// radiation). Radiated: the box of mass rho 2 x 1 x 0.3 (floats at 0.3 m).
+// Skipped: the box of 2.5 times its full displacement started dry at
+// z = 2 m (no floating equilibrium, no wet panels at qpos0: "is off")
+TEST(RadAttach, SkippedGroupGetsTheLinearDragBack) {
+  auto model = [](double mass, double z, const char* be) {
+    char x[1024];
+    std::snprintf(x, sizeof(x),
+                  "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"h\"/>"
+                  "<text name=\"mjbuoy.backend\" data=\"%s\"/>"
+                  "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
+                  "<numeric name=\"mjbuoy.hull.slamming\" data=\"0 100 2\"/>"
+                  "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 6 3\"/></custom>"
+                  "<worldbody><body name=\"box\" pos=\"0 0 %.17g\"><freejoint/>"
+                  "<geom name=\"h\" type=\"box\" size=\"1 0.5 0.4\" mass=\"%.17g\" "
+                  "contype=\"0\" conaffinity=\"0\"/></body></worldbody></mujoco>",
+                  be, z, mass);
+    return std::string(x);
+  };
+  struct Case { double mass, z, want; bool radiates; };
+  const Case cases[] = {{kRho * 2 * 1 * kBoxT, 0.4 - kBoxT, 200, true},
+                        {2.5 * kRho * 2 * 1 * 0.8, 2, 300, false}};
+  for (const char* be : {"cpu", "gl"}) {
+    for (const Case& k : cases) {
+      Scene s(model(k.mass, k.z, be));
+      ASSERT_TRUE(s.ok()) << be << " " << s.err;
+      ASSERT_STREQ(mjb_info(s.b).backend, be);
+      const std::string w = mjb_warnings(s.b);
+      EXPECT_EQ(mjb::buoyOf(s.b)->coef.size(), k.radiates ? 1u : 0u) << be << "\n" << w;
+      EXPECT_EQ(w.find("radiation of body \"box\" is off") != std::string::npos, !k.radiates)
+          << be << "\n" << w;
+      s.d->qpos[2] = 0.4 - kBoxT;
+      s.d->qvel[2] = -0.5;
+      mj_forward(s.m, s.d);
+      const mjtNum* f = mjb_wrenchPart(s.b, s.d, mjbPART_DRAG) + 6;
+      // float on gl: 1e-4 relative
+      EXPECT_NEAR(f[2], k.want, 1e-4 * k.want) << be << " radiates " << k.radiates;
+      EXPECT_NEAR(f[0], 0, 1e-6 * k.want) << be;
+      EXPECT_NEAR(f[1], 0, 1e-6 * k.want) << be;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace mjbt
