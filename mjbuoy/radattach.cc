@@ -123,6 +123,28 @@ static std::string skipGroup(Buoy* B, int root, const std::string& why) {
   return "";
 }
 
+// the steepest wave component beyond Miche's breaking limit, H / lambda =
+// 0.142 tanh(k h) (deep water 0.142; H = 2 A for Airy and Gerstner waves
+// alike), as a sentence; "" if none (docs/physics.md section 14, "Seas
+// beyond breaking")
+static std::string breakingWave(const Sea& s) {
+  double worst = 0;
+  std::string what;
+  for (size_t i = 0; i < s.waves.size(); i++) {
+    const Wave& w = s.waves[i];
+    double lim = kBreakHL * (s.depth > 0 ? std::tanh(w.k * s.depth) : 1.0);
+    double hl = 2 * w.amp / w.len;
+    if (hl <= lim || hl / lim <= worst) continue;
+    worst = hl / lim;
+    char t[256];
+    std::snprintf(t, sizeof(t), "wave component %d (amplitude %.4g m, wavelength %.4g m) is "
+                  "steeper than a sea can be: H / lambda = %.3f above Miche's breaking "
+                  "limit %.3f", int(i + 1), w.amp, w.len, hl, lim);
+    what = t;
+  }
+  return what;
+}
+
 // whether the rigid group of root radiates (RadConfig::groupRadiates)
 static bool groupRadiates(const Buoy& B, int root) {
   std::vector<int> hb;
@@ -436,6 +458,28 @@ std::string attachRadiation(Buoy* B) {
     int r = m->body_weldid[h.body];
     if (std::find(roots.begin(), roots.end(), r) == roots.end() && groupRadiates(*B, r))
       roots.push_back(r);
+  }
+  // linear radiation theory is for waves that can exist: a default group
+  // in a sea beyond breaking keeps Kerner's drag instead (an explicit on
+  // is honoured, with a warning)
+  std::string brk = breakingWave(B->cfg.sea);
+  if (!brk.empty()) {
+    std::vector<int> keep;
+    for (int r : roots) {
+      if ((rc.given && rc.on) || namedOn(*B, r)) {
+        keep.push_back(r);
+        continue;
+      }
+      skipGroup(B, r, std::string("radiation of body \"") + bodyName(m, r) + "\" is off: " +
+                          brk + ", where linear radiation theory does not hold; turn it on "
+                          "with <text name=\"mjbuoy.radiation\" data=\"on\"/> or lower the "
+                          "wave");
+    }
+    if (!keep.empty())
+      B->cfg.warn.push_back("radiation: " + brk + "; linear radiation theory does not hold "
+                            "in such a sea (docs/physics.md section 14, \"Seas beyond "
+                            "breaking\")");
+    roots.swap(keep);
   }
   if (roots.empty()) {
     if (rc.roll[0] > 0 || rc.roll[1] > 0) {

@@ -45,6 +45,11 @@ double waterplaneRadius(const PanelMesh& p);
 // and a default never makes an attach fail
 const int kDefaultPanels = 400;
 
+// Miche's (1944) deep-water breaking limit of a wave's height to length,
+// H / lambda; 0.142 tanh(k h) at depth h. A steeper component is beyond
+// linear theory: the radiation default leaves such a sea alone
+const double kBreakHL = 0.142;
+
 // for each rigid group of hull bodies with radiation on (all its hulls'
 // panels together, at the flat-water equilibrium of a free body, else at
 // the model's qpos0 (radattach.cc, poseHeave), clipped at the mean sea level):

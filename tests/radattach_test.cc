@@ -931,4 +931,52 @@ TEST(RadAttach, SkippedGroupGetsTheLinearDragBack) {
 }
 
 }  // namespace
+namespace {
+
+// the radiation default leaves a sea beyond breaking alone: Miche (1944)
+// limits a deep-water wave to H / lambda = 0.142, 0.142 tanh(k h) at depth
+// h. A 2 x 1 m box floating at its draft under one Airy component of
+// wavelength 7.854 m (k = 0.8 rad/m): amplitude 0.5 m is H / lambda =
+// 0.127 (radiates), 0.6 m is 0.153 (off by default, on when asked); at
+// depth 1 m, tanh(0.8) = 0.664 lowers the limit to 0.0943, so 0.5 m is
+// beyond it there
+TEST(RadAttach, SeaBeyondBreakingKeepsRadiationOffByDefault) {
+  auto model = [](double amp, const char* extra) {
+    char x[1400];
+    std::snprintf(x, sizeof(x),
+                  "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"h\"/>"
+                  "<numeric name=\"mjbuoy.airy.swell\" data=\"%.17g 7.853981634 0 0\"/>%s"
+                  "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 6 3\"/></custom>"
+                  "<worldbody><body name=\"box\" pos=\"0 0 %.17g\"><freejoint/>"
+                  "<geom name=\"h\" type=\"box\" size=\"1 0.5 0.4\" mass=\"%.17g\" "
+                  "contype=\"0\" conaffinity=\"0\"/></body></worldbody></mujoco>",
+                  amp, extra, 0.4 - kBoxT, kRho * 2 * 1 * kBoxT);
+    return std::string(x);
+  };
+  const std::string on = "<text name=\"mjbuoy.radiation\" data=\"on\"/>";
+  const std::string shallow = "<numeric name=\"mjbuoy.sea.depth\" data=\"1\"/>";
+  struct Case { double amp; std::string extra; bool radiates; const char* says; };
+  const Case cases[] = {
+      {0.5, "", true, nullptr},
+      {0.6, "", false, "is off: wave component 1 (amplitude 0.6 m, wavelength 7.854 m) is "
+                       "steeper than a sea can be: H / lambda = 0.153 above Miche's breaking "
+                       "limit 0.142"},
+      {0.6, on, true, "linear radiation theory does not hold"},
+      {0.5, shallow, false, "H / lambda = 0.127 above Miche's breaking limit 0.094"},
+  };
+  for (const Case& k : cases) {
+    Scene s(model(k.amp, k.extra.c_str()));
+    ASSERT_TRUE(s.ok()) << s.err;
+    const std::string w = mjb_warnings(s.b);
+    EXPECT_EQ(mjb::buoyOf(s.b)->coef.size(), k.radiates ? 1u : 0u) << k.amp << k.extra << "\n" << w;
+    if (k.says) EXPECT_NE(w.find(k.says), std::string::npos) << w;
+    else EXPECT_EQ(w.find("breaking"), std::string::npos) << w;
+    // a group left off takes Kerner's linear drag back (C_PD1 = 100: 100 N
+    // per m/s per m^2 of the 2 m^2 bottom, eq. (4.3))
+    if (!k.radiates) EXPECT_GT(mjb::buoyOf(s.b)->hull.at(0).par.drag[0], 0);
+  }
+}
+
+}  // namespace
+
 }  // namespace mjbt
