@@ -98,19 +98,19 @@ std::string caseName(const Case& c) {
 // readable GetParam() in failure messages
 void PrintTo(const Case& c, std::ostream* os) { *os << caseName(c); }
 
-// Radiation (docs/mjcf.md section 11) is on explicitly, whatever the
-// library's default, for the meshes whose panel solution costs seconds:
-// 64 to 2800 triangles (576: 408 wet panels with the lid, above the 400
-// that a default-on radiation solves; attach with a clean cache 0.9 s CPU
-// in Release, 2800: 9.2 s, measured with mjbuoy-hydro, mirror symmetry
-// used). 7744 would take minutes per clean attach (O(N^3), about 20x the
-// 2800's), and more under the sanitizers; it is the same hull, so it soaks
-// without radiation, said explicitly so that no default-size warning is
-// raised. The 2800 hull is solved on its own panels (mjbuoy.radiation.panels
-// 0: its 1792, not a copy coarsened to 400), as its bounds were set
+// Radiation (docs/mjcf.md section 11) is on explicitly for every mesh:
+// two of the three Gerstner seas are beyond breaking (A0p8_F0p8 and
+// A1p0_F0p5, H / lambda 0.204 and 0.159), where the default leaves it off
+// (docs/physics.md section 14, "Seas beyond breaking"), and the soaks are
+// for radiation's stability too. 64, 256 and 576 triangles are solved on
+// their own panels (576: 0.9 s CPU with a clean cache);
+// the 2800 hull on its own 1792 panels (mjbuoy.radiation.panels 0, 9.2 s
+// CPU clean, as its bounds were set); the 7744 hull on the copy coarsened
+// to the default 400 wet panels (its own would take minutes per clean
+// attach, O(N^3), more under the sanitizers)
 std::string radiationEntry(int tris) {
-  return std::string("<text name=\"mjbuoy.radiation\" data=\"") + (tris <= 2800 ? "on" : "off") +
-         "\"/>" + (tris == 2800 ? "<numeric name=\"mjbuoy.radiation.panels\" data=\"0\"/>" : "");
+  return std::string("<text name=\"mjbuoy.radiation\" data=\"on\"/>") +
+         (tris == 2800 ? "<numeric name=\"mjbuoy.radiation.panels\" data=\"0\"/>" : "");
 }
 
 // one Wigley boat as in models/wigley.xml (same pose and <inertial>, the
@@ -375,7 +375,16 @@ Result runBoat(const Case& c, double T, const std::string& extra = "") {
   Scene s(boatXML(c, extra));
   EXPECT_TRUE(s.ok()) << s.err;
   if (!s.ok()) return r;
-  EXPECT_STREQ(mjb_warnings(s.b), "");
+  // no warning but the 7744 hull's note that its panels are coarsened
+  std::string w = mjb_warnings(s.b);
+  const std::string coarse = "hull coarsened for the panel solver from 4424 to ";
+  size_t at = w.find(coarse);
+  if (c.tris == 7744 && at != std::string::npos) {
+    size_t a = w.rfind('\n', at), e = w.find('\n', at);
+    a = a == std::string::npos ? 0 : a + 1;
+    w.erase(a, e == std::string::npos ? std::string::npos : e + 1 - a);
+  }
+  EXPECT_EQ(w, "");
   s.m->opt.enableflags |= mjENBL_ENERGY;
   int b = s.body("wigley");
   const double lim = 75 * M_PI / 180, mass = s.m->body_subtreemass[b];
