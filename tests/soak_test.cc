@@ -367,6 +367,24 @@ TEST(SoakCriterion, IrregularSea) {
   EXPECT_EQ(grow, seeds) << "runs gaining 5 J/s that fail";
 }
 
+// the warnings of a boat case but the expected ones: the 7744 hull's note
+// that its panels are coarsened, and in the seas beyond breaking the note
+// that radiation, asked for, is outside linear theory there
+std::string unexpectedWarnings(const Case& c, std::string w) {
+  auto drop = [&w](const char* what) {
+    size_t at = w.find(what);
+    if (at == std::string::npos) return;
+    size_t a = w.rfind('\n', at), e = w.find('\n', at);
+    a = a == std::string::npos ? 0 : a + 1;
+    w.erase(a, e == std::string::npos ? std::string::npos : e + 1 - a);
+  };
+  if (c.tris == 7744) drop("hull coarsened for the panel solver from 4424 to ");
+  // H / lambda = A k / pi above Miche's 0.142 (A0p8_F0p8, A1p0_F0p5)
+  if (c.spread < 0 && c.amp * c.freq / M_PI > 0.142)
+    drop("linear radiation theory does not hold in such a sea");
+  return w;
+}
+
 // run one boat case for T simulated seconds; failures are reported as
 // non-fatal expectations (the first excursion out of bounds and their
 // count), the run stops early only when the state diverges (badStep)
@@ -375,16 +393,7 @@ Result runBoat(const Case& c, double T, const std::string& extra = "") {
   Scene s(boatXML(c, extra));
   EXPECT_TRUE(s.ok()) << s.err;
   if (!s.ok()) return r;
-  // no warning but the 7744 hull's note that its panels are coarsened
-  std::string w = mjb_warnings(s.b);
-  const std::string coarse = "hull coarsened for the panel solver from 4424 to ";
-  size_t at = w.find(coarse);
-  if (c.tris == 7744 && at != std::string::npos) {
-    size_t a = w.rfind('\n', at), e = w.find('\n', at);
-    a = a == std::string::npos ? 0 : a + 1;
-    w.erase(a, e == std::string::npos ? std::string::npos : e + 1 - a);
-  }
-  EXPECT_EQ(w, "");
+  EXPECT_EQ(unexpectedWarnings(c, mjb_warnings(s.b)), "");
   s.m->opt.enableflags |= mjENBL_ENERGY;
   int b = s.body("wigley");
   const double lim = 75 * M_PI / 180, mass = s.m->body_subtreemass[b];
