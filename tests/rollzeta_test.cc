@@ -74,8 +74,9 @@ TEST(RollZeta, TiltedAxisAboutAnOffCentrePoint) {
   // the parallel axis theorem (int y'^2 dA = L B^3 / 12 + L B gy^2, int x'^2
   // dA = B L^3 / 12 + L B gx^2, int x'y' dA = L B gx gy) and the buoyancy's
   // V (z_B - z_G) about both horizontal axes: C = rho g (cos^2 a (Iyy + Vh)
-  // + sin^2 a (Ixx + Vh) - 2 sin a cos a Ixy) (J. N. Newman, "Marine
-  // Hydrodynamics", 1977, sec. 6.16)
+  // + sin^2 a (Ixx + Vh) - 2 sin a cos a Ixy) (the restoring coefficients
+  // C44, C45, C55 of O. M. Faltinsen, "Sea Loads on Ships and Offshore
+  // Structures", 1990, ch. 2, about an axis at angle a)
   mjb::PanelMesh p = boxPanels(1);
   const double gx = 0.3, gy = -0.2, a = M_PI / 6;
   const double G[3] = {gx, gy, kKG - kT}, e[3] = {std::cos(a), std::sin(a), 0};
