@@ -149,7 +149,10 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
 // give body (a MuJoCo body id) of an attached model radiation from c, with
 // a memory of tmem seconds (0: automatic, memoryLength; < 0: none). Call
 // between steps; every mjData's radiation history restarts. "" or the
-// error. (Internal API for now: the panel solver feeds it at attach.)
+// error. Its viscous roll damping is mjbuoy.radiation.rolldamping alone:
+// without panels there is no C44 for a rollzeta share (radattach.cc adds
+// that for the groups it solves). (Internal API for now: the panel solver
+// feeds it at attach.)
 std::string setHydroCoef(mjbBuoy* b, int body, const HydroCoef& c, double tmem = 0);
 
 }  // namespace mjb
