@@ -12,9 +12,11 @@
 #include "coefxform.h"
 #include "diffract.h"
 #include "eqdraft.h"
+#include "hydrostatic.h"
 #include "panelcoarse.h"
 #include "panelmesh.h"
 #include "radcache.h"
+#include "rigid.h"
 
 namespace mjb {
 
@@ -316,6 +318,38 @@ static void coarsenGroup(Buoy* B, const std::string& who, const std::vector<floa
                         "(minutes, cached)");
 }
 
+// the rollzeta share of critical roll damping added to x (docs/physics.md
+// section 14, "Viscous roll damping"): B_1 = 2 zeta sqrt(C44 (I44 + A44)),
+// C44 the hydrostatic stiffness of the wet panels body about the body x
+// axis through the group's COM, I44 the group's inertia about that axis,
+// A44 = A_inf's roll entry (about the root's COM, body axes); dz: the
+// panel pose's heave (d is at qpos0, after mj_comPos)
+static void rollZeta(Buoy* B, const mjData* d, int root, const PanelMesh& body,
+                     const HydroCoef& c, double dz, const std::string& who, RadBody* x) {
+  const mjModel* m = B->m;
+  const RadConfig& rc = B->cfg.rad;
+  double I[6], G[3], mass, C[9];
+  if (!groupInertia(m, d, root, I, G, &mass)) return;
+  // the COM in the panel frame: world axes, origin (x_root, y_root, sea level)
+  for (int k = 0; k < 3; k++) G[k] -= d->xpos[3 * root + k];
+  G[2] += d->xpos[3 * root + 2] + dz - B->cfg.sea.level;
+  rotStiffness(body, G, c.rho * c.g, C);
+  const mjtNum* R = d->xmat + 9 * root;
+  const double e[3] = {R[0], R[3], R[6]};  // the body's x axis in the world
+  x->c44 = axisStiffness(C, e);
+  const double i44 = e[0] * e[0] * I[0] + e[1] * e[1] * I[1] + e[2] * e[2] * I[2] +
+                     2 * (e[0] * e[1] * I[3] + e[0] * e[2] * I[4] + e[1] * e[2] * I[5]);
+  const double it = i44 + c.Ainf[21];
+  if (!(x->c44 > 0) || !(it > 0)) {
+    if (rc.zetaGiven && rc.zeta > 0)
+      B->cfg.warn.push_back(who.substr(8) + ": no roll restoring at its panel pose (C44 = " +
+                            fmt(x->c44) + " N m/rad about its x axis), so mjbuoy.radiation."
+                            "rollzeta adds no roll damping; give it mjbuoy.radiation.rolldamping");
+    return;
+  }
+  x->roll[0] += 2 * rc.zeta * std::sqrt(x->c44 * it);
+}
+
 // coefficients of one group; "" or the error
 static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   const mjModel* m = B->m;
@@ -427,6 +461,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   for (RadBody& x : B->rad.rb) {
     if (x.body != root) continue;
     x.veq = groupVolume(*B, d, root, dz);
+    rollZeta(B, d, root, body, c, dz, who, &x);
     for (int hb : B->body)
       if (m->body_weldid[hb] == root) x.hb.push_back(hb);
   }
@@ -487,6 +522,11 @@ std::string attachRadiation(Buoy* B) {
                             "radiation on, and no hull body has it; turn radiation on "
                             "(mjbuoy.radiation) or remove the entry");
     }
+    if (rc.zetaGiven && rc.zeta > 0) {
+      B->cfg.warn.push_back("radiation: mjbuoy.radiation.rollzeta acts only on bodies with "
+                            "radiation on, and no hull body has it; turn radiation on "
+                            "(mjbuoy.radiation) or remove the entry");
+    }
     return "";
   }
   if (B->cfg.sea.depth > 0) {
@@ -503,6 +543,7 @@ std::string attachRadiation(Buoy* B) {
   std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m), mj_deleteData);
   if (!d) return "mjbuoy: radiation: could not allocate an mjData for the initial pose";
   mj_kinematics(m, d.get());
+  mj_comPos(m, d.get());  // cinert, for the groups' roll inertia (rollZeta)
   for (int r : roots) {
     std::string e = solveGroup(B, d.get(), r);
     if (!e.empty()) return e;

@@ -1,5 +1,5 @@
 // radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, diffraction, entry, cache, memorymodel,
-// omega, refine, panels, memory} and mjbuoy.radiation.body.<body> (schema: docs/mjcf.md)
+// omega, refine, panels, memory, rolldamping, rollzeta} and mjbuoy.radiation.body.<body> (schema: docs/mjcf.md)
 #include "radconfig.h"
 
 #include <algorithm>
@@ -129,6 +129,23 @@ static std::string parseRollDamping(const char* name, int n, const mjtNum* v, Ra
   if (e.empty()) {
     r->roll[0] = v[0];
     r->roll[1] = v[1];
+    r->rollGiven = true;
+  }
+  return e;
+}
+
+// mjbuoy.radiation.rollzeta: a fraction of critical roll damping, 0 to 2
+// (twice critical is far beyond any ship's: a typo, not a hull)
+static std::string parseRollZeta(const char* name, int n, const mjtNum* v, RadConfig* r) {
+  const char* ex = "0.05";
+  if (n != 1) {
+    return "mjbuoy: " + tag("numeric", name) + " has " + std::to_string(n) + " value(s), expected " +
+           "1 (fraction of critical roll damping), e.g. data=\"" + ex + "\"";
+  }
+  std::string e = checkRad(name, "value", v[0], 0, 2, false, "fraction of critical", ex);
+  if (e.empty()) {
+    r->zeta = v[0];
+    r->zetaGiven = true;
   }
   return e;
 }
@@ -139,6 +156,7 @@ static std::string parseNumeric(const mjModel* m, int i, RadConfig* r) {
   int n = m->numeric_size[i];
   const mjtNum* v = m->numeric_data + m->numeric_adr[i];
   if (!std::strcmp(key, "radiation.rolldamping")) return parseRollDamping(name, n, v, r);
+  if (!std::strcmp(key, "radiation.rollzeta")) return parseRollZeta(name, n, v, r);
   struct F { const char* key; int n; const char* unit; const char* ex; };
   static const F kF[] = {{"radiation.omega", 3, "rad/s, rad/s, count", "0.5 6 20"},
                          {"radiation.refine", 1, "refine level", "0"},
@@ -149,8 +167,8 @@ static std::string parseNumeric(const mjModel* m, int i, RadConfig* r) {
   if (!f) {
     return "mjbuoy: unknown entry " + tag("numeric", name) +
            "; radiation numeric entries are mjbuoy.radiation.omega, mjbuoy.radiation.refine, "
-           "mjbuoy.radiation.panels, mjbuoy.radiation.memory and mjbuoy.radiation.rolldamping (see "
-           "docs/mjcf.md)";
+           "mjbuoy.radiation.panels, mjbuoy.radiation.memory, mjbuoy.radiation.rolldamping and "
+           "mjbuoy.radiation.rollzeta (see docs/mjcf.md)";
   }
   if (n != f->n) {
     return "mjbuoy: " + tag("numeric", name) + " has " + std::to_string(n) + " value(s), expected " +
@@ -194,6 +212,9 @@ std::string parseRadConfig(const mjModel* m, RadConfig* r) {
     std::string e = parseNumeric(m, i, r);
     if (!e.empty()) return e;
   }
+  // the default fraction of critical only when the model sets no roll
+  // damping of its own: given numbers replace it
+  if (r->rollGiven && !r->zetaGiven) r->zeta = 0;
   return "";
 }
 

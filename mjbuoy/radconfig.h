@@ -10,6 +10,12 @@
 
 namespace mjb {
 
+// the default fraction of critical roll damping (mjbuoy.radiation.rollzeta):
+// viscous roll damping of ships, 5 to 10% of critical in total, is mostly
+// eddy, friction and bilge-keel damping that potential flow leaves out
+// (Himeno 1981; ITTC 7.5-02-07-04.5; docs/physics.md section 14)
+const double kRollZeta = 0.05;
+
 struct RadConfig {
   bool on = true;               // mjbuoy.radiation: on (default) or off
   bool given = false;           // mjbuoy.radiation was in the model
@@ -27,6 +33,13 @@ struct RadConfig {
   // mjbuoy.radiation.rolldamping: viscous roll damping about each radiating
   // group's body x axis, linear [N m s/rad] and quadratic [N m s^2/rad^2]
   double roll[2] = {0, 0};
+  bool rollGiven = false;       // mjbuoy.radiation.rolldamping was in the model
+  // mjbuoy.radiation.rollzeta: a further linear roll damping, this fraction
+  // of each radiating group's critical roll damping (docs/physics.md
+  // section 14, "Viscous roll damping"); kRollZeta when the model gives
+  // neither it nor rolldamping, 0 when it gives rolldamping only
+  double zeta = kRollZeta;
+  bool zetaGiven = false;       // mjbuoy.radiation.rollzeta was in the model
   // mjbuoy.radiation.entry: the water's momentum taken up as the immersion
   // factor rises (docs/physics.md section 14, "Water entry")
   bool entry = false;

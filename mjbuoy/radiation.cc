@@ -334,6 +334,7 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
   rb.body = body;
   std::copy(c.ref, c.ref + 3, rb.ref);
   std::copy(c.Ainf, c.Ainf + 36, rb.A);
+  std::copy(r->roll, r->roll + 2, rb.roll);
   for (int i = m->body_dofadr[mover] + m->body_dofnum[mover] - 1; i >= 0; i = m->dof_parentid[i]) {
     rb.dof.push_back(i);
   }

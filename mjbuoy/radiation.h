@@ -35,6 +35,14 @@ struct RadBody {
   // coefficients are not scaled (setHydroCoef, a group without hulls)
   std::vector<int> hb;
   double veq = 0;
+  // viscous roll damping about the body's x axis, linear [N m s/rad] and
+  // quadratic [N m s^2/rad^2]: Radiation::roll (the user's), plus at
+  // attach the rollzeta share of critical, 2 zeta sqrt(C44 (I44 + A44));
+  // c44: the hydrostatic roll stiffness about the group's COM [N m/rad]
+  // (<= 0: no roll restoring, no rollzeta share;
+  // radattach.cc, docs/physics.md section 14, "Viscous roll damping")
+  double roll[2] = {0, 0};
+  double c44 = 0;
 };
 
 // all bodies of one attached model
@@ -46,8 +54,9 @@ struct Radiation {
   std::vector<int> simple0;  // m->dof_simplenum before the first body was set
   bool conv = false;         // mjbuoy.radiation.memorymodel = convolution: no fit
   bool ssAsked = false;      // statespace given explicitly: a fallback is noted
-  // viscous roll damping about each body's x axis, linear [N m s/rad] and
-  // quadratic [N m s^2/rad^2] (mjbuoy.radiation.rolldamping)
+  // the user's viscous roll damping about each body's x axis, linear
+  // [N m s/rad] and quadratic [N m s^2/rad^2] (mjbuoy.radiation.rolldamping):
+  // each RadBody's roll starts from it (setRadiation)
   double roll[2] = {0, 0};
   // the water's momentum taken up as the immersion factor rises
   // (mjbuoy.radiation.entry; docs/physics.md section 14, "Water entry")
@@ -140,7 +149,10 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
 // give body (a MuJoCo body id) of an attached model radiation from c, with
 // a memory of tmem seconds (0: automatic, memoryLength; < 0: none). Call
 // between steps; every mjData's radiation history restarts. "" or the
-// error. (Internal API for now: the panel solver feeds it at attach.)
+// error. Its viscous roll damping is mjbuoy.radiation.rolldamping alone:
+// without panels there is no C44 for a rollzeta share (radattach.cc adds
+// that for the groups it solves). (Internal API for now: the panel solver
+// feeds it at attach.)
 std::string setHydroCoef(mjbBuoy* b, int body, const HydroCoef& c, double tmem = 0);
 
 }  // namespace mjb

@@ -257,7 +257,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
     // viscous roll damping about the body's x axis, on the wetted share
     // (docs/physics.md section 14, "Viscous roll damping")
     const double p = nu[3];
-    W[3] -= si * (r.roll[0] + r.roll[1] * std::fabs(p)) * p;
+    W[3] -= si * (rb.roll[0] + rb.roll[1] * std::fabs(p)) * p;
     // the memory's input is the wetted surface's velocity s nu: a dry
     // body radiates no waves (docs/physics.md, "Immersion factor")
     for (int j = 0; j < 6; j++) nu[j] *= si;

@@ -5,35 +5,47 @@
 
 namespace mjb {
 
-void rigidGroup(const mjModel* m, const mjData* d, int body, Rigid* r) {
+bool groupInertia(const mjModel* m, const mjData* d, int body, double I[6], double com[3],
+                  double* mass) {
   // MuJoCo orders bodies depth first: the weld root's subtree is the
   // contiguous run after it whose parents are at or after the root
   const int w = m->body_weldid[body];
-  double I[6] = {0, 0, 0, 0, 0, 0}, md[3] = {0, 0, 0}, mass = 0;
+  double md[3] = {0, 0, 0};
+  *mass = 0;
+  for (int j = 0; j < 6; j++) I[j] = 0;
   for (int i = w; i < m->nbody && (i == w || m->body_parentid[i] >= w); i++) {
     if (m->body_weldid[i] != w) continue;
     // cinert: inertia about subtree_com of the root (world axes), m dif, m
     const mjtNum* c = d->cinert + 10 * i;
     for (int j = 0; j < 6; j++) I[j] += c[j];
     for (int j = 0; j < 3; j++) md[j] += c[6 + j];
-    mass += c[9];
+    *mass += c[9];
   }
   const mjtNum* p = d->subtree_com + 3 * m->body_rootid[w];
-  if (!(mass > 0)) {
-    r->minv = INFINITY;
-    for (int j = 0; j < 6; j++) r->iinv[j] = 0;
-    for (int j = 0; j < 3; j++) r->com[j] = p[j];
-    return;
+  if (!(*mass > 0)) {
+    for (int j = 0; j < 3; j++) com[j] = p[j];
+    return false;
   }
   // parallel axis theorem back to the group COM c: I_c = I_p - m (|c|^2 E - c c^T)
-  double c[3] = {md[0] / mass, md[1] / mass, md[2] / mass};
-  I[0] -= mass * (c[1] * c[1] + c[2] * c[2]);
-  I[1] -= mass * (c[0] * c[0] + c[2] * c[2]);
-  I[2] -= mass * (c[0] * c[0] + c[1] * c[1]);
-  I[3] += mass * c[0] * c[1];
-  I[4] += mass * c[0] * c[2];
-  I[5] += mass * c[1] * c[2];
-  for (int j = 0; j < 3; j++) r->com[j] = p[j] + c[j];
+  const double M = *mass;
+  double c[3] = {md[0] / M, md[1] / M, md[2] / M};
+  I[0] -= M * (c[1] * c[1] + c[2] * c[2]);
+  I[1] -= M * (c[0] * c[0] + c[2] * c[2]);
+  I[2] -= M * (c[0] * c[0] + c[1] * c[1]);
+  I[3] += M * c[0] * c[1];
+  I[4] += M * c[0] * c[2];
+  I[5] += M * c[1] * c[2];
+  for (int j = 0; j < 3; j++) com[j] = p[j] + c[j];
+  return true;
+}
+
+void rigidGroup(const mjModel* m, const mjData* d, int body, Rigid* r) {
+  double I[6], mass;
+  if (!groupInertia(m, d, body, I, r->com, &mass)) {
+    r->minv = INFINITY;
+    for (int j = 0; j < 6; j++) r->iinv[j] = 0;
+    return;
+  }
   r->minv = 1 / mass;
   // symmetric 3x3 inverse by cofactors
   const double a = I[0], b = I[1], e = I[2], xy = I[3], xz = I[4], yz = I[5];

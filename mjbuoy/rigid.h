@@ -1,5 +1,6 @@
 // rigid: mass and inertia of the group of bodies a hull moves rigidly with,
-// for the slamming bound (docs/physics.md section 10)
+// for the slamming bound (docs/physics.md section 10) and the default roll
+// damping (section 14)
 #ifndef MJBUOY_RIGID_H_
 #define MJBUOY_RIGID_H_
 
@@ -13,6 +14,12 @@ struct Rigid {
                    // xx yy zz xy xz yz [1/(kg m^2)]
   double com[3];   // group COM, world frame [m]
 };
+
+// the group's mass [kg], COM (world) [m] and inertia about it (world
+// axes, xx yy zz xy xz yz) [kg m^2] from d->cinert (after mj_comPos);
+// false (I 0, com the subtree's) when it has no mass; no allocation
+bool groupInertia(const mjModel* m, const mjData* d, int body, double I[6], double com[3],
+                  double* mass);
 
 // the bodies welded to body's weld root (body_weldid), from d->cinert
 // (valid after mj_comPos, so in mjcb_passive); no allocation

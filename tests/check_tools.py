@@ -457,6 +457,19 @@ def hydro(tools, models, tmp):
             check(abs(hask / r[9] - 1) <= 0.02, "Haskind heave at omega %g: B33 %g, from X3 %g" %
                   (w, r[9], hask))
         check(n == 2, "Haskind checked at 2 frequencies (%d)" % n)
+        # the roll stiffness it prints: the 1 m cube of 500 kg floats at
+        # draft 0.5 m with its COM at the waterline, C44 = rho g V GM =
+        # rho g (B^4 / 12 + B^2 T (T / 2 - KG)) = -408.75 N m/rad (GM < 0;
+        # K. J. Rawson and E. C. Tupper, "Basic Ship Theory", ch. 4), so it
+        # gets no rollzeta share: B_1 0 (docs/physics.md section 14)
+        rl = [l for l in lines if l.startswith("# roll about")]
+        check(len(rl) == 1, "the roll stiffness and damping are printed")
+        if rl:
+            c44 = float(rl[0].split("C44 ")[1].split()[0])
+            b1 = float(rl[0].split("B_1 ")[1].split()[0])
+            want = rho * g * (1.0 / 12 + 0.5 * (0.25 - 0.5))
+            check(abs(c44 - want) <= 0.01 * abs(want), "C44 %g N m/rad = rho g V GM %g" % (c44, want))
+            check(b1 == 0, "no roll damping without roll restoring (B_1 %g)" % b1)
         check(len(x) == 6 * 36, "X at 6 frequencies x 36 headings (%d rows)" % len(x))
     # the cache (docs/mjcf.md section 11): a first run in an empty cache
     # directory solves and writes, a second reads and prints the same tables

@@ -1,7 +1,8 @@
 // mjbuoy-hydro: print the radiation coefficients mjbuoy computes at attach
 // for each hull body with radiation on (docs/mjcf.md section 11):
 // A_inf, A(omega), B(omega), the retardation function K(t) and the
-// exciting force X(omega, heading) with its Froude-Krylov part
+// exciting force X(omega, heading) with its Froude-Krylov part, and the
+// roll stiffness and viscous roll damping it applies
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -21,11 +22,18 @@
 static const char* kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
 
 // one body's tables; false on a write error
-static bool printBody(FILE* o, const mjModel* m, int body, const mjb::HydroCoef& c, double dt,
-                      double tk) {
+static bool printBody(FILE* o, const mjModel* m, int body, const mjb::HydroCoef& c,
+                      const mjb::Radiation& r, double dt, double tk) {
   std::fprintf(o, "# body \"%s\": reference point (its COM) %.6g %.6g %.6g m in body axes, "
                "rho %g kg/m^3, g %g m/s^2, deep water\n", m->names + m->name_bodyadr[body],
                c.ref[0], c.ref[1], c.ref[2], c.rho, c.g);
+  // the viscous roll damping the step applies (docs/physics.md section 14,
+  // "Viscous roll damping")
+  for (const mjb::RadBody& x : r.rb)
+    if (x.body == body)
+      std::fprintf(o, "# roll about the body x axis: hydrostatic C44 %.6g N m/rad (about the "
+                   "COM), viscous damping B_1 %.6g N m s/rad, B_2 %.6g N m s^2/rad^2 "
+                   "(rolldamping plus rollzeta of critical)\n", x.c44, x.roll[0], x.roll[1]);
   std::fprintf(o, "# A_inf (6x6, rows force/moment, columns surge..yaw) [kg, kg m, kg m^2]\n");
   for (int i = 0; i < 6; i++) {
     for (int j = 0; j < 6; j++) std::fprintf(o, "%s%.6g", j ? " " : "", c.Ainf[6 * i + j]);
@@ -150,7 +158,7 @@ int main(int argc, char** argv) {
   for (size_t i = 0; !rc && i < B->coef.size(); i++) {
     const mjb::HydroCoef& c = B->coef[i].second;
     double len = tk > 0 ? tk : mjb::memoryLength(c);
-    if (!printBody(o, m, B->coef[i].first, c, dt, len)) rc = 1;
+    if (!printBody(o, m, B->coef[i].first, c, B->rad, dt, len)) rc = 1;
     for (const mjb::DiffBody& db : B->diff.db)
       if (!rc && db.body == B->coef[i].first && !printX(o, db)) rc = 1;
   }
