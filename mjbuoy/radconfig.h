@@ -13,8 +13,10 @@ namespace mjb {
 // the default fraction of critical roll damping (mjbuoy.radiation.rollzeta):
 // viscous roll damping of ships, 5 to 10% of critical in total, is mostly
 // eddy, friction and bilge-keel damping that potential flow leaves out
-// (Himeno 1981; ITTC 7.5-02-07-04.5; docs/physics.md section 14)
-const double kRollZeta = 0.05;
+// (Himeno 1981; ITTC 7.5-02-07-04.5; docs/physics.md section 14). The
+// upper end: the eddy part is quadratic, so at the 20 to 40 deg rolls of
+// steep seas the equivalent linear damping is above its small-roll value
+const double kRollZeta = 0.10;
 
 struct RadConfig {
   bool on = true;               // mjbuoy.radiation: on (default) or off

@@ -969,11 +969,16 @@ TEST(RadAttach, SeaBeyondBreakingKeepsRadiationOffByDefault) {
     ASSERT_TRUE(s.ok()) << s.err;
     const std::string w = mjb_warnings(s.b);
     EXPECT_EQ(mjb::buoyOf(s.b)->coef.size(), k.radiates ? 1u : 0u) << k.amp << k.extra << "\n" << w;
-    if (k.says) EXPECT_NE(w.find(k.says), std::string::npos) << w;
-    else EXPECT_EQ(w.find("breaking"), std::string::npos) << w;
+    if (k.says) {
+      EXPECT_NE(w.find(k.says), std::string::npos) << w;
+    } else {
+      EXPECT_EQ(w.find("breaking"), std::string::npos) << w;
+    }
     // a group left off takes Kerner's linear drag back (C_PD1 = 100: 100 N
     // per m/s per m^2 of the 2 m^2 bottom, eq. (4.3))
-    if (!k.radiates) EXPECT_GT(mjb::buoyOf(s.b)->hull.at(0).par.drag[0], 0);
+    if (!k.radiates) {
+      EXPECT_GT(mjb::buoyOf(s.b)->hull.at(0).par.drag[0], 0);
+    }
   }
 }
 
