@@ -140,19 +140,24 @@ void diffractionStep(const Diffraction& df, const Sea& sea, const mjModel* m, co
     const DiffBody& b = df.db[ib];
     double* w = out + 6 * ib;
     const mjtNum* R = d->xmat + 9 * b.body;
-    // yaw of R R0^T: the turn about the vertical since qpos0
-    const double c0 = R[0] * b.R0[0] + R[1] * b.R0[1] + R[2] * b.R0[2];
-    const double s0 = R[3] * b.R0[0] + R[4] * b.R0[1] + R[5] * b.R0[2];
-    const double psi = std::atan2(s0, c0);
+    // Q = R R0^T: world from the table's axes, the body's turn since qpos0
+    double Q[9];
+    for (int i = 0; i < 3; i++) {
+      for (int j = 0; j < 3; j++) {
+        Q[3 * i + j] = R[3 * i] * b.R0[3 * j] + R[3 * i + 1] * b.R0[3 * j + 1] +
+                       R[3 * i + 2] * b.R0[3 * j + 2];
+      }
+    }
+    // the waves' heading in the table's axes: turned by Q's yaw
+    const double psi = std::atan2(Q[3], Q[0]);
     double F[6];
     bodyWrench(b, sea, d->xipos + 3 * b.body, psi, d->time, F);
-    const double cp = std::cos(psi), sp = std::sin(psi);
-    w[0] = cp * F[0] - sp * F[1];
-    w[1] = sp * F[0] + cp * F[1];
-    w[2] = F[2];
-    w[3] = cp * F[3] - sp * F[4];
-    w[4] = sp * F[3] + cp * F[4];
-    w[5] = F[5];
+    // the wrench turns with the body, roll and pitch too, as the radiation
+    // force does (body axes, radstep.cc): the two nearly cancel in long
+    // waves, and turning one alone leaves a mean surge force of second
+    // order against the waves (docs/physics.md section 15, "Frame")
+    mju_mulMatVec(w, Q, F, 3, 3);
+    mju_mulMatVec(w + 3, Q, F + 3, 3, 3);
     bool fin = true;
     for (int k = 0; k < 6; k++) fin = fin && std::isfinite(w[k]);
     if (!fin) {

@@ -55,8 +55,8 @@ void diffAt(const DiffBody& b, int iw, double tw, double beta, double re[6], dou
 
 // in mjcb_passive: each body's diffraction wrench [N, N m] in world axes,
 // about its COM (d->xipos), 6 per body in w: sum over components of
-// Re(a_j D(omega_j, beta_j - psi) e^{-i omega_j t}) turned by psi, the
-// body's yaw since qpos0. A non-finite wrench is left out (zero) and named
+// Re(a_j D(omega_j, beta_j - psi) e^{-i omega_j t}) turned by the body's
+// rotation since qpos0 (psi its yaw). A non-finite wrench is left out (zero) and named
 // once in notices (told: per body)
 void diffractionStep(const Diffraction& df, const Sea& sea, const mjModel* m, const mjData* d,
                      double* w, char* told, std::string* notices);
