@@ -137,7 +137,7 @@ static std::string parseRollDamping(const char* name, int n, const mjtNum* v, Ra
 // mjbuoy.radiation.rollzeta: a fraction of critical roll damping, 0 to 2
 // (twice critical is far beyond any ship's: a typo, not a hull)
 static std::string parseRollZeta(const char* name, int n, const mjtNum* v, RadConfig* r) {
-  const char* ex = "0.05";
+  const char* ex = "0.1";  // the default, kRollZeta
   if (n != 1) {
     return "mjbuoy: " + tag("numeric", name) + " has " + std::to_string(n) + " value(s), expected " +
            "1 (fraction of critical roll damping), e.g. data=\"" + ex + "\"";

@@ -286,7 +286,7 @@ TEST(RollZeta, BadEntriesAreNamed) {
     Scene s(x);
     EXPECT_FALSE(s.ok()) << bad;
     EXPECT_NE(s.err.find("mjbuoy.radiation.rollzeta"), std::string::npos) << s.err;
-    EXPECT_NE(s.err.find("e.g. data=\"0.05\""), std::string::npos) << s.err;
+    EXPECT_NE(s.err.find("e.g. data=\"0.1\""), std::string::npos) << s.err;
     if (std::string(bad).find(' ') == std::string::npos) {
       EXPECT_NE(s.err.find(">= 0 and <= 2"), std::string::npos) << s.err;
     }
