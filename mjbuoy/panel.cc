@@ -1,9 +1,10 @@
 // boundary-element solve of the radiation and diffraction problems
 // (docs/physics.md section 13): constant-strength sources on flat panels,
 // collocation at the centroids, the deep-water Green function of green.h,
-// an interior lid (phi = 0 on the waterplane inside the hull) against
-// irregular frequencies
+// a damped interior lid (dphi/dz = K (1 + i w) phi on the waterplane inside
+// the hull, w 0 at the waterline) against irregular frequencies
 #include "panel.h"
+#include "panellid.h"
 
 #include <algorithm>
 #include <atomic>
@@ -129,6 +130,7 @@ struct Problem {
   std::vector<Panel> pn;
   int nb = 0, nl = 0;
   std::vector<std::vector<QPoint>> near, self;
+  std::vector<double> lidw;  // per lid panel: its damping weight w (panellid.h)
   double gn[6];  // scratch
 };
 
@@ -502,15 +504,17 @@ bool solveOmega(const Freq& f, int w) {
   MatC WS, WD;
   waveMatrices(pb, rows, f.tab, K, !f.outer, &WS, &WD);
   int nrb = (int)WD.rows();
-  // lid rows: no vertical velocity on the lid's interior side,
-  // dphi/dz(0-) = K phi + 4 pi sigma = 0 (the free-surface condition of G
-  // plus the jump of the doubled source sheet)
+  // lid rows: the damped lid, dphi/dz(0-) = K (1 + i w) phi on the lid's
+  // interior side, w 0 at the waterline (docs/physics.md section 13); with
+  // dphi/dz(0-) = K phi + 4 pi sigma (the free-surface condition of G plus
+  // the jump of the doubled source sheet): -i w K phi + 4 pi sigma = 0
   std::vector<int> rb(rows.begin(), rows.begin() + nrb), rl(rows.begin() + nrb, rows.end());
   MatC M(nr, n);
   M.topRows(nrb) = (rk.Dd(rb, Eigen::all) + rk.Di(rb, Eigen::all)).cast<cplx>() + WD;
   if (nr > nrb)
     M.bottomRows(nr - nrb) =
         K * ((rk.Sd(rl, Eigen::all) + rk.Si(rl, Eigen::all)).cast<cplx>() + WS.bottomRows(nr - nrb));
+  for (int r = nrb; r < nr; r++) M.row(r) *= cplx(0, -pb.lidw[rows[r] - nb]);
   for (int r = 0; r < nr; r++) M(r, rows[r]) += rows[r] < nb ? -2 * kPi : 4 * kPi;
   // right-hand sides: 6 radiation modes (dphi/dn = n_j), nh diffraction
   // problems (dphi_D/dn = -dphi_0/dn)
@@ -599,6 +603,12 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
   }
   if (!buildPanels(lid, true, &pb, err)) return false;
   pb.nl = (int)pb.pn.size() - pb.nb;
+  std::vector<double> xy(2 * pb.nl);
+  for (int k = 0; k < pb.nl; k++) {
+    xy[2 * k] = pb.pn[pb.nb + k].c[0];
+    xy[2 * k + 1] = pb.pn[pb.nb + k].c[1];
+  }
+  pb.lidw = lidWeights(lid, xy);
   for (size_t w = 0; w < omega.size(); w++)
     if (!(omega[w] > 0 && std::isfinite(omega[w])) || (w && !(omega[w] > omega[w - 1]))) {
       char b[200];

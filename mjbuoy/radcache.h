@@ -13,7 +13,7 @@ namespace mjb {
 
 // bump when panel.cc or green.cc change their results: older cache files
 // then miss (their key holds the old number) and are recomputed
-const unsigned kPanelSolverVersion = 2;  // 2: tabulated wave Green function, mirror symmetry
+const unsigned kPanelSolverVersion = 3;  // 2: tabulated wave Green function, mirror symmetry; 3: damped lid
 
 // environment variable naming the cache directory ("off": no cache); the
 // MJCF entry mjbuoy.radiation.cache wins over it
