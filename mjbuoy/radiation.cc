@@ -159,6 +159,7 @@ void fitMemory(const HydroCoef& c, double dt, const std::vector<RadBody>& done, 
   rb->ss = SsModes();
   const int nk = rb->nk;
   auto same = [&](const RadBody& o, int p) {
+    if (o.K.size() != o.pair.size() * size_t(o.nk)) return -1;  // a twin: its source is in done
     for (size_t q = 0; q < o.pair.size(); q++)
       if (o.nk == nk && std::equal(o.K.begin() + q * nk, o.K.begin() + (q + 1) * nk,
                                    rb->K.begin() + p * nk))
@@ -301,6 +302,47 @@ double memoryLength(const HydroCoef& c) {
   return peak > 0 ? std::min(kMaxMemory, (last + 1) * dc) : 0;
 }
 
+// what a body's memory (K and its fit) depends on: the memory length
+// asked (0: automatic, from B), the step, the frequencies and B
+static std::vector<double> memoryKey(const HydroCoef& c, double tmem, double dt) {
+  std::vector<double> k = {tmem, dt, double(c.omega.size())};
+  k.insert(k.end(), c.omega.begin(), c.omega.end());
+  k.insert(k.end(), c.B.begin(), c.B.end());
+  return k;
+}
+
+// whether two memory keys agree: the same memory length, step and
+// frequencies, and B within 1e-9 of its largest entry. Identical hulls at
+// different places get B different in the last bits (their panel meshes
+// are built from world positions), far below what the fit resolves
+static bool sameMemory(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size() || a.size() < 3) return false;
+  const size_t nb = 3 + size_t(a[2]);
+  if (!std::equal(a.begin(), a.begin() + nb, b.begin())) return false;
+  double bmax = 0, dmax = 0;
+  for (size_t q = nb; q < a.size(); q++) {
+    bmax = std::max(bmax, std::fabs(a[q]));
+    dmax = std::max(dmax, std::fabs(a[q] - b[q]));
+  }
+  return dmax <= 1e-9 * bmax;
+}
+
+// rb's memory copied from a body set before with the same key (a fleet of
+// one hull: K and the fit within round-off of its own, without their 0.1 s
+// per body); quiet: no note is due for a fit that fell back to the
+// convolution, else such a twin is not copied, so the note names each body
+static bool copyMemory(const std::vector<RadBody>& done, bool quiet, RadBody* rb) {
+  for (const RadBody& o : done) {
+    if (!sameMemory(o.key, rb->key) || (o.nk && !quiet && o.ss.size() == 0)) continue;
+    rb->pair = o.pair;
+    rb->Kr = o.Kr;
+    rb->nk = o.nk;
+    rb->ss = o.ss;
+    return true;
+  }
+  return false;
+}
+
 std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double tmem,
                          Radiation* r) {
   char e[512];
@@ -338,12 +380,21 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
   for (int i = m->body_dofadr[mover] + m->body_dofnum[mover] - 1; i >= 0; i = m->dof_parentid[i]) {
     rb.dof.push_back(i);
   }
-  if (tmem == 0) tmem = memoryLength(c);
-  kernels(c, tmem, dt, &rb);
-  // a fallback to the exact convolution costs time, not accuracy: it is
-  // noted (a warning) only when the state-space model was asked for
-  std::vector<std::string> quiet;
-  if (rb.nk && !r->conv) fitMemory(c, dt, r->rb, name, &rb, r->ssAsked ? &r->note : &quiet);
+  rb.key = memoryKey(c, tmem, dt);
+  if (!copyMemory(r->rb, r->conv || !r->ssAsked, &rb)) {
+    if (tmem == 0) tmem = memoryLength(c);
+    kernels(c, tmem, dt, &rb);
+    // a fallback to the exact convolution costs time, not accuracy: it is
+    // noted (a warning) only when the state-space model was asked for
+    std::vector<std::string> quiet;
+    if (rb.nk && !r->conv) fitMemory(c, dt, r->rb, name, &rb, r->ssAsked ? &r->note : &quiet);
+    // the convolution runs forward over the history (radstep.cc, memory)
+    auto kr = std::make_shared<std::vector<double>>(rb.K.size());
+    for (size_t p = 0; p < rb.pair.size(); p++)
+      std::reverse_copy(rb.K.begin() + p * rb.nk, rb.K.begin() + (p + 1) * rb.nk,
+                        kr->begin() + p * rb.nk);
+    rb.Kr = std::move(kr);
+  }
   clearSimple(m, rb.dof, r);
 
   auto it = std::find_if(r->rb.begin(), r->rb.end(), [&](const RadBody& x) { return x.body == body; });

@@ -5,6 +5,7 @@
 #ifndef MJBUOY_RADIATION_H_
 #define MJBUOY_RADIATION_H_
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,12 @@ struct RadBody {
   double A[36];              // A_inf about ref, body axes, row-major
   std::vector<int> dof;      // dofs that move the body, leaf to root
   std::vector<int> pair;     // (i, j) = 6 i + j with a retardation function
-  std::vector<double> K;     // K_pair(k dt), pair-major, nk each [N/m, ...]
+  std::vector<double> K;     // K_pair(k dt), pair-major, nk each [N/m, ...];
+                             // empty for a twin (copyMemory), which has only Kr
+  // each pair's K in reverse (oldest sample's weight first), what the
+  // convolution reads; shared by bodies with the same memory (one copy of a
+  // fleet's kernels stays in cache)
+  std::shared_ptr<const std::vector<double>> Kr;
   int nk = 0;                // memory samples (0: no memory)
   SsModes ss;                // state-space memory (radfit.h); empty: the convolution
   int soff = 0;              // its first mode in RadState's ssX, ssPw
@@ -43,6 +49,9 @@ struct RadBody {
   // radattach.cc, docs/physics.md section 14, "Viscous roll damping")
   double roll[2] = {0, 0};
   double c44 = 0;
+  // what K and ss were computed from: memory length asked [s], step [s],
+  // frequencies and B; a later body with the same key copies them
+  std::vector<double> key;
 };
 
 // all bodies of one attached model
@@ -64,6 +73,13 @@ struct Radiation {
   int nmode = 0;             // state-space modes of all bodies
   std::vector<std::string> note;  // fits that fell back to the convolution (when ssAsked)
 };
+
+// rb's memory wrench f (body frame, 6) from hist, each dof's ring of nh
+// body-frame velocities with the newest at head and count samples held:
+// f = -dt sum_k w_k K(k dt) nu(t - k dt), trapezoid weights w over the
+// samples held (radstep.cc; docs/physics.md section 14)
+void radMemory(const RadBody& rb, const double* hist, int nh, int head, int count, double dt,
+               double* f);
 
 // per mjData: velocity history and the memory force of the current step
 struct RadState {

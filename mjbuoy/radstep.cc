@@ -7,6 +7,7 @@
 
 #include "radiation.h"
 #include "sea.h"
+#include "vmath.h"
 
 namespace mjb {
 
@@ -50,40 +51,35 @@ void mul6(const double* A, const double* x, double* y) {
   for (int i = 0; i < 6; i++) y[i] = dot6(A + 6 * i, x);
 }
 
-// sum_k K[k] x[i - k], k < n, in four independent sums (the adds' latency,
-// not the multiplies, bounds a single running sum)
-double dotBack(const double* K, const double* x, int i, int n) {
-  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-  int k = 0;
-  for (; k + 4 <= n; k += 4) {
-    s0 += K[k] * x[i - k];
-    s1 += K[k + 1] * x[i - k - 1];
-    s2 += K[k + 2] * x[i - k - 2];
-    s3 += K[k + 3] * x[i - k - 3];
-  }
-  for (; k < n; k++) s0 += K[k] * x[i - k];
-  return (s0 + s1) + (s2 + s3);
+// sum_k K[a + k] x[i - k], k < n, from Kr (K reversed, nk samples): a
+// forward dot product of contiguous arrays, which runs in vector lanes
+// (vmath.h); Kr[nk - a - n + m] = K[a + n - 1 - m] meets x[i - n + 1 + m]
+double dotBack(const double* Kr, int nk, int a, const double* x, int i, int n) {
+  if (n <= 0) return 0;
+  return vDot(n, Kr + nk - a - n, x + i - n + 1);
 }
 
-// memory wrench -dt sum_k w_k K(k dt) nu(t - k dt), trapezoid over the
-// samples held (the body at rest before the first). hist holds each dof's
-// ring of nh samples, the newest at head
-void memory(const RadBody& rb, const double* hist, int nh, int head, int count, double dt,
-            double* f) {
+}  // namespace
+
+// the body at rest before the first sample (radiation.h)
+void radMemory(const RadBody& rb, const double* hist, int nh, int head, int count, double dt,
+               double* f) {
   std::memset(f, 0, 6 * sizeof(double));
   const int n = std::min(count, rb.nk);
   if (n < 2) return;
   const int k1 = std::min(n - 2, head);  // k <= k1: no wrap
   for (size_t p = 0; p < rb.pair.size(); p++) {
-    const double* K = rb.K.data() + p * rb.nk;
+    const double* Kr = rb.Kr->data() + p * rb.nk;  // K[k] = Kr[nk - 1 - k]
     const int i = rb.pair[p] / 6;
     const double* h = hist + nh * (rb.pair[p] % 6);
-    double sum = 0.5 * (K[0] * h[head] + K[n - 1] * h[(head - n + 1 + nh) % nh]);
-    sum += dotBack(K + 1, h, head - 1, k1);
-    sum += dotBack(K + k1 + 1, h, head - k1 - 1 + nh, n - 2 - k1);
+    double sum = 0.5 * (Kr[rb.nk - 1] * h[head] + Kr[rb.nk - n] * h[(head - n + 1 + nh) % nh]);
+    sum += dotBack(Kr, rb.nk, 1, h, head - 1, k1);
+    sum += dotBack(Kr, rb.nk, k1 + 1, h, head - k1 - 1 + nh, n - 2 - k1);
     f[i] -= dt * sum;
   }
 }
+
+namespace {
 
 // body-axes Jacobian J (6 x n, column k for rb.dof[k]) at rb's reference
 // point p, its velocity nu = J qdot, and bias, the rate of change of nu
@@ -279,7 +275,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
       ssForce(rb.ss, st, r.dt, fm);
     } else if (rb.nk && tick != kMid) {
       for (int j = 0; j < 6; j++) hist[r.nh * j + s->head] = nu[j];
-      memory(rb, hist, r.nh, s->head, s->count, r.dt, fm);
+      radMemory(rb, hist, r.nh, s->head, s->count, r.dt, fm);
     }
     for (int j = 0; j < 6; j++) W[j] += si * fm[j];
 

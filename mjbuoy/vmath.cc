@@ -67,4 +67,22 @@ void vExp(int n, const double* x, double* y) {
   for (int i = 0; i < n; i++) y[i] = std::exp(x[i]);
 }
 
+double vDot(int n, const double* a, const double* b) {
+  switch (simdLevel()) {
+    case kSimdAvx512: return vDotAvx512(n, a, b);
+    case kSimdAvx2: return vDotAvx2(n, a, b);
+  }
+  // four running sums: one add's latency bounds a single sum
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  int i = 0;
+  for (; i + 4 <= n; i += 4) {
+    s0 += a[i] * b[i];
+    s1 += a[i + 1] * b[i + 1];
+    s2 += a[i + 2] * b[i + 2];
+    s3 += a[i + 3] * b[i + 3];
+  }
+  for (; i < n; i++) s0 += a[i] * b[i];
+  return (s0 + s1) + (s2 + s3);
+}
+
 }  // namespace mjb

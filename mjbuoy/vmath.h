@@ -24,13 +24,20 @@ const char* simdName(int level);
 void vSinCos(int n, const double* x, double* s, double* c);
 // y[i] = exp x[i] for i < n (y may alias x)
 void vExp(int n, const double* x, double* y);
+// sum a[i] b[i] for i < n: partial sums (4 scalars; 4 vectors of 4 with
+// AVX2, of 8 with AVX-512) added in a fixed order, so each level repeats
+// its bits; levels differ by round-off (the order of the sums, FMA), each
+// within n eps sum |a b| of the exact sum
+double vDot(int n, const double* a, const double* b);
 
 // per-level kernels (vmath_avx2.cc, vmath_avx512.cc: compiled for those
 // instruction sets, called only when the cpu has them)
 void vSinCosAvx2(int n, const double* x, double* s, double* c);
 void vExpAvx2(int n, const double* x, double* y);
+double vDotAvx2(int n, const double* a, const double* b);
 void vSinCosAvx512(int n, const double* x, double* s, double* c);
 void vExpAvx512(int n, const double* x, double* y);
+double vDotAvx512(int n, const double* a, const double* b);
 
 }  // namespace mjb
 

@@ -35,6 +35,8 @@ static int gthreads = -1;  // mjbuoy.threads, -1: leave it out (auto)
 static std::string gsea = "swell";  // flat, swell (one Gerstner wave) or jonswap
 static double gradiation = -1;  // --radiation: memory length [s]; < 0: off
 static std::string gradmem;     // --radiation-memory: mjbuoy.radiation.memorymodel, "": default
+static bool gwarmmem = false;   // --warm-memory: warm up until every radiation memory is full
+static bool gradoff = false;    // --radiation-off: mjbuoy.radiation off (on by default)
 
 // --radiation: every boat gets synthetic coefficients of the Wigley's
 // size (docs/physics.md section 14): A_inf on the diagonal, and B of each
@@ -88,6 +90,7 @@ static std::string scene(const std::string& meshes, int boats, int tris) {
     << seaEntries() << "<text name=\"mjbuoy.sea.pressure\" data=\"" << gpress << "\"/>";
   if (gthreads >= 0) s << "<numeric name=\"mjbuoy.threads\" data=\"" << gthreads << "\"/>";
   if (!gradmem.empty()) s << "<text name=\"mjbuoy.radiation.memorymodel\" data=\"" << gradmem << "\"/>";
+  if (gradoff) s << "<text name=\"mjbuoy.radiation\" data=\"off\"/>";
   s << "</custom><worldbody>";
   int side = std::ceil(std::sqrt(boats));
   for (int i = 0; i < boats; i++) {
@@ -195,6 +198,9 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
   // warm up; with --radiation until the memory's history is full, the
   // convolution's steady cost
   int warm = 5 + (gradiation > 0 ? int(std::ceil(gradiation / m->opt.timestep)) : 0);
+  // the memory the attach computed (radiation on by default): its history
+  // fills after nh steps, and the convolution's cost grows until then
+  if (gwarmmem) warm = std::max(warm, 5 + mjb::buoyOf(b)->rad.nh);
   for (int i = 0; i < warm; i++) mj_step(m, d);
   long ns0 = 0, ni0 = 0, ns1 = 0, ni1 = 0;
   mjb::newtonStats(b, d, &ns0, &ni0);
@@ -362,6 +368,8 @@ static int compareGrid(const std::string& base, const std::string& meshes,
             common.push_back("--radiation-memory");
             common.push_back(gradmem);
           }
+          if (gwarmmem) common.push_back("--warm-memory");
+          if (gradoff) common.push_back("--radiation-off");
           CmpCell c{be, kind.first, kind.second, nb, t};
           if (!compareCell(exe, base, common, dir, reps, &c)) {
             rc = 1;
@@ -484,6 +492,11 @@ int main(int argc, char** argv) {
                  "(mjbuoy.radiation.memorymodel): statespace (the default, a fitted "
                  "state-space model) or convolution")
       ->check(CLI::IsMember({"statespace", "convolution"}));
+  app.add_flag("--radiation-off", gradoff, "mjbuoy.radiation off: no panel solve, added mass "
+               "or memory (the boats are free, so it is on by default)");
+  app.add_flag("--warm-memory", gwarmmem, "warm up until every boat's radiation memory "
+               "history is full (its steady cost; about memory length / timestep steps, "
+               "seconds to minutes for large cells) instead of 5 steps");
   std::string baseline;
   app.add_option("--baseline", baseline, "another build's mjbuoy-bench binary: run every cell "
                  "with both, one repetition each in turn (A/B/A/B as child processes), and "
