@@ -388,7 +388,7 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
     // noted (a warning) only when the state-space model was asked for
     std::vector<std::string> quiet;
     if (rb.nk && !r->conv) fitMemory(c, dt, r->rb, name, &rb, r->ssAsked ? &r->note : &quiet);
-    // the convolution runs forward over the history (radstep.cc, memory)
+    // the convolution runs forward over the history (radstep.cc, radMemory)
     auto kr = std::make_shared<std::vector<double>>(rb.K.size());
     for (size_t p = 0; p < rb.pair.size(); p++)
       std::reverse_copy(rb.K.begin() + p * rb.nk, rb.K.begin() + (p + 1) * rb.nk,
