@@ -14,6 +14,7 @@
 #include "radcache.h"
 #include "radiation.h"
 #include "sensor.h"
+#include "trivec.h"
 #include "waveint.h"
 
 namespace mjb {
@@ -104,6 +105,10 @@ struct State {
   // 2 per triangle of the largest hull
   std::vector<int> iscr;
   size_t iper = 0;
+  // per thread: the wet pieces of one chunk of cut triangles (cpu.cc
+  // cutChunk), pper each
+  std::vector<Piece> pscr;
+  size_t pper = 0;
   // per thread: surface solves done and Newton steps they took (cpu
   // backend; mjbuoy-bench reports steps per solve)
   std::vector<long> nsolve, niter;

@@ -47,6 +47,10 @@ static size_t eStride(const Sea& sea) { return sea.depth > 0 ? 4 : 2; }
 // vertex cost more than the exp itself on a one-component sea
 enum { kExpChunk = 32 };
 
+// cut triangles the lanes take at a time (cpu.cc cutChunk): their pieces,
+// at most two each, stay in the first-level cache
+enum { kCutChunk = 32 };
+
 // per thread: 4 + kLaneTmp per wave for solve() and solveMany() (seavec.h),
 // then x, y, a0, a1, z, stretched height z' and 2 per wave (phases) for
 // every point of a hull, e^L (eStride per wave) for every vertex of a
@@ -100,6 +104,8 @@ void makeState(const Buoy& b, State* s) {
   s->scr.assign(s->per * std::max(1, b.nthreads), 0);
   s->iper = 2 * maxTris(b);
   s->iscr.assign(s->iper * std::max(1, b.nthreads), 0);
+  s->pper = 2 * kCutChunk;
+  s->pscr.assign(s->pper * std::max(1, b.nthreads), Piece{});
   s->nsolve.assign(std::max(1, b.nthreads), 0);
   s->niter.assign(std::max(1, b.nthreads), 0);
   s->vsec.assign(std::max(1, b.nthreads), 0);
@@ -342,16 +348,13 @@ static void pass1Tri(Pass1& q, int k) {
   }
 }
 
-// the wholly wet triangles wl[0, nl) in vector lanes (trivec.h); those the
-// lanes leave (a piece too coarse for the series, not finite) through
-// pass1Tri; rest: nl ints of scratch
-static void pass1Lanes(Pass1& q, const int* wl, int nl, int* rest) {
+// the lane kernels' view of hull q (trivec.h): its vertices, the wave
+// table, the pressure model, where per-triangle results go
+static TriIn triIn(const Pass1& q) {
   const Sea& sea = q.sea;
   State* s = q.s;
   const WaveTab& t = s->tab;
   TriIn in;
-  in.idx = wl;
-  in.m = nl;
   in.face = q.b.face.data();
   in.v0 = q.hl.v0;
   in.rel = s->rel.data();
@@ -385,6 +388,15 @@ static void pass1Lanes(Pass1& q, const int* wl, int nl, int* rest) {
   in.c = s->tri.c.data();
   in.nrm = s->tri.n.data();
   in.u = s->tri.u.data();
+  return in;
+}
+
+// the wholly wet triangles wl[0, nl) in vector lanes (trivec.h); those the
+// lanes leave (a piece too coarse for the series, not finite) through
+// pass1Tri; rest: nl ints of scratch
+static void pass1Lanes(Pass1& q, TriIn& in, const int* wl, int nl, int* rest) {
+  in.idx = wl;
+  in.m = nl;
   in.rest = rest;
   if (simdLevel() == kSimdAvx512) {
     triLanesAvx512(&in);
@@ -399,6 +411,113 @@ static void pass1Lanes(Pass1& q, const int* wl, int nl, int* rest) {
   q.lo = std::min(q.lo, in.lo);
   q.hi = std::max(q.hi, in.hi);
   for (int i = 0; i < in.nrest; i++) pass1Tri(q, rest[i]);
+}
+
+// the wet pieces of cut triangle k into pc (trivec.h Piece): its wet
+// polygon (wetTriangle's clip) fanned from its first wet hull vertex, as
+// wetWaves; returns how many (0: no wet area, the triangle is degenerate;
+// -1: a height not finite, for pass1Tri); ext: the polygon's extent along
+// the flow [m]
+static int cutPieces(const Pass1& q, int k, Piece* pc, double ext[2]) {
+  const State* s = q.s;
+  const int* fc = q.b.face.data() + 3 * k;
+  double p[3][3], h[3], c[3];
+  for (int e = 0; e < 3; e++) {
+    h[e] = s->h[fc[e]];
+    if (!std::isfinite(h[e])) return -1;
+    std::memcpy(p[e], s->rel.data() + 3 * fc[e], 3 * sizeof(double));
+  }
+  double e1[3], e2[3];
+  for (int j = 0; j < 3; j++) {
+    e1[j] = p[1][j] - p[0][j];
+    e2[j] = p[2][j] - p[0][j];
+  }
+  cross(e1, e2, c);
+  const double len = std::sqrt(dot(c, c));
+  if (!(len > 0)) return 0;
+  Wet wt;
+  clipWet(p, h, &wt);
+  int s0 = 0;
+  while (s0 < wt.nq && wt.qt[s0] != 0) s0++;
+  if (s0 == wt.nq) return -1;
+  const bool waves = !q.sea.waves.empty();
+  ext[0] = INFINITY;
+  ext[1] = -INFINITY;
+  for (int i = 0; i < wt.nq; i++) {
+    const double e = dot(wt.q[i], q.dir);
+    ext[0] = std::min(ext[0], e);
+    ext[1] = std::max(ext[1], e);
+  }
+  for (int m = 1; m + 1 < wt.nq; m++) {
+    Piece& g = pc[m - 1];
+    const int ix[3] = {s0, (s0 + m) % wt.nq, (s0 + m + 1) % wt.nq};
+    for (int a = 0; a < 3; a++) {
+      const int i = ix[a], va = fc[wt.qa[i]], vb = fc[wt.qb[i]];
+      const double u = wt.qt[i];
+      std::memcpy(g.q[a], wt.q[i], 3 * sizeof(double));
+      // a cut point lies on the surface: depth and z' 0; labels linear
+      // along the edge
+      g.d[a] = u == 0 ? -h[wt.qa[i]] : 0;
+      g.zs[a] = u == 0 && waves ? q.hs.ZS[va - q.hl.v0] : 0;
+      for (int j = 0; j < 2; j++) {
+        g.lab[a][j] = s->lab[2 * va + j] + u * (s->lab[2 * vb + j] - s->lab[2 * va + j]);
+      }
+      g.n[a] = c[a] / len;
+    }
+    g.ev = fc[wt.qa[s0]] - q.hl.v0;
+  }
+  return wt.nq - 2;
+}
+
+// the cut triangles cl[0, nc) in vector lanes, piece by piece (trivec.h),
+// then each triangle's pieces summed; a triangle with a piece the lanes
+// leave goes through pass1Tri whole; pc: 2 nc pieces of scratch
+static void cutChunk(Pass1& q, const TriIn& in, const int* cl, int nc, Piece* pc) {
+  State* s = q.s;
+  int first[kCutChunk], cnt[kCutChunk], np = 0;
+  double ext[kCutChunk][2];
+  for (int i = 0; i < nc; i++) {
+    first[i] = np;
+    cnt[i] = cutPieces(q, cl[i], pc + np, ext[i]);
+    np += std::max(cnt[i], 0);
+  }
+  if (np > 0) {
+    if (simdLevel() == kSimdAvx512) {
+      pieceLanesAvx512(&in, pc, np);
+    } else {
+      pieceLanesAvx2(&in, pc, np);
+    }
+  }
+  for (int i = 0; i < nc; i++) {
+    const int k = cl[i];
+    bool ok = cnt[i] >= 0;
+    for (int m = 0; m < cnt[i]; m++) ok = ok && pc[first[i] + m].ok;
+    if (!ok) {
+      pass1Tri(q, k);
+      continue;
+    }
+    double A = 0, rA[3] = {0, 0, 0}, V[3] = {0, 0, 0};
+    for (int m = 0; m < cnt[i]; m++) {
+      const Piece& g = pc[first[i] + m];
+      A += g.A;
+      for (int j = 0; j < 3; j++) {
+        rA[j] += g.rA[j];
+        V[j] += g.V[j];
+        q.wp[j] += g.f[j];
+        q.wp[3 + j] += g.t[j];
+      }
+    }
+    s->tri.area[k] = A > 0 ? A : 0;
+    if (!(A > 0)) continue;
+    for (int j = 0; j < 3; j++) {
+      s->tri.c[3 * k + j] = rA[j] / A;
+      s->tri.n[3 * k + j] = pc[first[i]].n[j];
+      s->tri.u[3 * k + j] = (j < 2 ? q.sea.current[j] : 0) + V[j] / A;
+    }
+    q.wet += A;
+    q.lo = std::min(q.lo, ext[i][0]);
+    q.hi = std::max(q.hi, ext[i][1]);
+  }
 }
 
 // whether pass 2 can run in lanes: every exponent it raises to is 0.5, 1
@@ -607,26 +726,42 @@ static double hullFlow(const HullCall& c, const double vel[6], double dir[3]) {
 }
 
 // pass 1 over the hull's triangles: a triangle with no vertex below the
-// surface has no wet part; with a vector level the wholly wet ones go
-// through the lanes (trivec.h), the cut ones through pass1Tri; wl: 2 nt
-// ints of scratch
-static void pass1Hull(Pass1& q, int* wl) {
+// surface has no wet part; with a vector level the wholly wet ones and the
+// wet pieces of the cut ones go through the lanes (trivec.h), else
+// pass1Tri; wl: 2 nt ints of scratch, pc: kCutChunk pieces
+static void pass1Hull(Pass1& q, int* wl, Piece* pc) {
   const Hull& hl = q.hl;
   State* s = q.s;
-  const bool lanes = simdLevel() != kSimdScalar;
-  int nl = 0;
+  if (simdLevel() == kSimdScalar) {
+    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+      const int* fc = q.b.face.data() + 3 * k;
+      if (s->h[fc[0]] >= 0 && s->h[fc[1]] >= 0 && s->h[fc[2]] >= 0) {
+        s->tri.area[k] = 0;
+      } else {
+        pass1Tri(q, k);
+      }
+    }
+    return;
+  }
+  TriIn in = triIn(q);
+  int nl = 0, cl[kCutChunk], nc = 0;
   for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
     const int* fc = q.b.face.data() + 3 * k;
     const double h0 = s->h[fc[0]], h1 = s->h[fc[1]], h2 = s->h[fc[2]];
     if (h0 >= 0 && h1 >= 0 && h2 >= 0) {
       s->tri.area[k] = 0;
-    } else if (lanes && h0 <= 0 && h1 <= 0 && h2 <= 0) {
+    } else if (h0 <= 0 && h1 <= 0 && h2 <= 0) {
       wl[nl++] = k;
     } else {
-      pass1Tri(q, k);
+      cl[nc++] = k;
+      if (nc == kCutChunk) {
+        cutChunk(q, in, cl, nc, pc);
+        nc = 0;
+      }
     }
   }
-  if (nl > 0) pass1Lanes(q, wl, nl, wl + hl.nt);
+  if (nc > 0) cutChunk(q, in, cl, nc, pc);
+  if (nl > 0) pass1Lanes(q, in, wl, nl, wl + hl.nt);
 }
 
 // Kerner's per-triangle form factor's mean position: 1+k_i = (1+k)(1 +
@@ -729,7 +864,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   // wave theory (wavepress.h), which flat water reduces to the same
   Pass1 q{b, sea, s, hs, hl, c.com, dir, w[mjbPART_PRESSURE], 0, INFINITY, -INFINITY};
   int* wl = s->iscr.data() + s->iper * slot;
-  pass1Hull(q, wl);
+  pass1Hull(q, wl, s->pscr.data() + s->pper * slot);
 
   // viscous resistance: ITTC 1957 C_F at the hull's Reynolds number over
   // the wetted length, the wet extent along the flow

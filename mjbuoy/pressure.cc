@@ -5,6 +5,32 @@
 
 namespace mjb {
 
+void clipWet(const double p[3][3], const double h[3], Wet* w) {
+  // clip to h <= 0, walking the edges in the parent's order so the wet
+  // polygon keeps its winding (Sutherland-Hodgman); at most 4 vertices
+  double (*q)[3] = w->q;
+  int& nq = w->nq;
+  nq = 0;
+  for (int i = 0; i < 3; i++) {
+    int k = (i + 1) % 3;
+    if (h[i] <= 0) {
+      for (int j = 0; j < 3; j++) q[nq][j] = p[i][j];
+      w->qa[nq] = w->qb[nq] = i;
+      w->qt[nq++] = 0;
+    }
+    if ((h[i] < 0 && h[k] > 0) || (h[i] > 0 && h[k] < 0)) {
+      // cut from the wet end so a shared edge gives the same point in both
+      // triangles; t in (0, 1) since the signs differ strictly
+      int a = h[i] < 0 ? i : k, b = h[i] < 0 ? k : i;
+      double t = h[a] / (h[a] - h[b]);
+      for (int j = 0; j < 3; j++) q[nq][j] = p[a][j] + t * (p[b][j] - p[a][j]);
+      w->qa[nq] = a;
+      w->qb[nq] = b;
+      w->qt[nq++] = t;
+    }
+  }
+}
+
 void wetTriangle(const double p[3][3], const double h[3], Wet* w) {
   *w = Wet{};
   double e1[3], e2[3], c[3];
@@ -41,30 +67,10 @@ void wetTriangle(const double p[3][3], const double h[3], Wet* w) {
     return;
   }
 
-  // clip to h <= 0, walking the edges in the parent's order so the wet
-  // polygon keeps its winding (Sutherland-Hodgman); at most 4 vertices
+  clipWet(p, h, w);
   double (*q)[3] = w->q, d[4];
-  int& nq = w->nq;
-  for (int i = 0; i < 3; i++) {
-    int k = (i + 1) % 3;
-    if (h[i] <= 0) {
-      for (int j = 0; j < 3; j++) q[nq][j] = p[i][j];
-      w->qa[nq] = w->qb[nq] = i;
-      w->qt[nq] = 0;
-      d[nq++] = -h[i];
-    }
-    if ((h[i] < 0 && h[k] > 0) || (h[i] > 0 && h[k] < 0)) {
-      // cut from the wet end so a shared edge gives the same point in both
-      // triangles; t in (0, 1) since the signs differ strictly
-      int a = h[i] < 0 ? i : k, b = h[i] < 0 ? k : i;
-      double t = h[a] / (h[a] - h[b]);
-      for (int j = 0; j < 3; j++) q[nq][j] = p[a][j] + t * (p[b][j] - p[a][j]);
-      w->qa[nq] = a;
-      w->qb[nq] = b;
-      w->qt[nq] = t;
-      d[nq++] = 0;
-    }
-  }
+  const int nq = w->nq;
+  for (int i = 0; i < nq; i++) d[i] = w->qt[i] == 0 ? -h[w->qa[i]] : 0;
 
   // fan over the wet polygon; each piece is coplanar with the parent, so
   // its area is (cross . n) / 2 and the integrals of linear d are

@@ -37,6 +37,11 @@ struct Wet {
 // centre of pressure: drA / dA.
 void wetTriangle(const double p[3][3], const double h[3], Wet* w);
 
+// wetTriangle's clip alone: w's polygon (q, nq, qa, qb, qt) of a triangle
+// with a vertex above and one below the surface; area, integrals and n
+// are left as they were
+void clipWet(const double p[3][3], const double h[3], Wet* w);
+
 }  // namespace mjb
 
 #endif  // MJBUOY_PRESSURE_H_

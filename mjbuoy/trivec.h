@@ -1,7 +1,8 @@
-// trivec: the triangle stage's wholly wet triangles (no cut: hydrostatic
+// trivec: the triangle stage in lanes: wholly wet triangles (hydrostatic
 // integrals, the closed-form wave series of waveint.h, centroid, normal,
-// water velocity and the flow extent) over lanes of 4 (AVX2 + FMA) or 8
-// (AVX-512F) triangles; chosen at run time by vmath.h's level. cpu.cc's
+// water velocity and the flow extent) and the wet pieces of triangles the
+// surface cuts (the same integrals per piece), over lanes of 4 (AVX2 +
+// FMA) or 8 (AVX-512F); chosen at run time by vmath.h's level. cpu.cc's
 // per-triangle loop (wetTriangle, wetWaves) stays the reference
 // (tests/trivec_test.cc). Plain data only: no inline code to share.
 #ifndef MJBUOY_TRIVEC_H_
@@ -38,6 +39,24 @@ struct TriIn {
   double f[3], t[3], wet, lo, hi;
 };
 
+// a wet piece of a triangle the surface cuts (cpu.cc cutChunk): the wet
+// polygon fanned from one of its wet hull vertices, corner 0, where e^L is
+// known (1 piece for a wet triangle, 2 for a wet quadrilateral)
+struct Piece {
+  double q[3][3];    // corners relative to the COM [m]
+  double d[3];       // depth below the surface, Kerner's (0 at a cut point) [m]
+  double zs[3];      // stretched height (0 at a cut point) [m]
+  double lab[3][2];  // Gerstner labels [m]
+  double n[3];       // the parent triangle's unit normal
+  int ev;            // hull vertex of corner 0 (its e^L: TriIn::E)
+  // written by the lanes: wet area [m^2] and its first moment [m^3],
+  // pressure force [N] and torque about the COM [N m], the integral of the
+  // wave velocity [m^3/s]; ok 0: too coarse for the series or not finite
+  // (the parent triangle goes to the scalar path)
+  double A, rA[3], f[3], t[3], V[3];
+  int ok;
+};
+
 // one hull's wet triangles for pass 2 (hydro.h's viscous, drag and
 // slamming forces at each wet centroid); the exponents of drag, suction
 // and slamming must each be 0.5, 1 or 2 (cpu.cc checks; others: scalar)
@@ -66,6 +85,9 @@ struct FlowIn {
 // called only when the cpu has them)
 void triLanesAvx2(TriIn* in);
 void triLanesAvx512(TriIn* in);
+// pieces pc[0, np) with in's wave table, E, es, nw, linear, rg, level, comz
+void pieceLanesAvx2(const TriIn* in, Piece* pc, int np);
+void pieceLanesAvx512(const TriIn* in, Piece* pc, int np);
 void flowLanesAvx2(FlowIn* in);
 void flowLanesAvx512(FlowIn* in);
 

@@ -13,5 +13,6 @@ struct Ops4 {
 }  // namespace
 
 void triLanesAvx2(TriIn* in) { triLanes<4, Ops4>(in); }
+void pieceLanesAvx2(const TriIn* in, Piece* pc, int np) { pieceLanes<4, Ops4>(in, pc, np); }
 void flowLanesAvx2(FlowIn* in) { flowLanes<4, Ops4>(in); }
 }  // namespace mjb

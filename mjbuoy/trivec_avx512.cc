@@ -14,5 +14,6 @@ struct Ops8 {
 }  // namespace
 
 void triLanesAvx512(TriIn* in) { triLanes<8, Ops8>(in); }
+void pieceLanesAvx512(const TriIn* in, Piece* pc, int np) { pieceLanes<8, Ops8>(in, pc, np); }
 void flowLanesAvx512(FlowIn* in) { flowLanes<8, Ops8>(in); }
 }  // namespace mjb

@@ -134,6 +134,79 @@ static void familyLanes(const TriIn& in, int f, const double* const e0[W],
   }
 }
 
+// the pressure and wave integrals of W lanes' pieces (corners p relative
+// to the COM, Kerner's depths d, stretched heights zs, labels lb, e^L at
+// corner 0, area A): P = integral p dA [N], Pr = integral p r dA [N m], Vw
+// = integral (u - current) dA [m^3/s]; good cleared in lanes too coarse
+// for the series (the scalar path subdivides them)
+template <int W, class M>
+static void laneIntegrals(const TriIn* in, const typename TLanes<W>::V p[3][3],
+                          typename TLanes<W>::V d[3], const typename TLanes<W>::V zs[3],
+                          const typename TLanes<W>::V lb[3][2], const double* const e0[W],
+                          typename TLanes<W>::V A, typename TLanes<W>::I* good,
+                          typename TLanes<W>::V* P, typename TLanes<W>::V Pr[3],
+                          typename TLanes<W>::V Vw[3]) {
+  typedef typename TLanes<W>::V V;
+  // depth below the level (linear) or the surface (Kerner), linear over it
+  if (in->linear) {
+    for (int c = 0; c < 3; c++) d[c] = in->level - (p[c][2] + in->comz);
+  }
+  const V sd = d[0] + d[1] + d[2];
+  *P = in->rg * A * sd / 3;
+  for (int j = 0; j < 3; j++) {
+    const V sr = p[0][j] + p[1][j] + p[2][j];
+    Pr[j] = in->rg * A / 12 * (d[0] * p[0][j] + d[1] * p[1][j] + d[2] * p[2][j] + sd * sr);
+    Vw[j] = V{};
+  }
+  if (in->n == 0) return;
+  V dz[2], dp[2][2], dl[2][2], r2 = V{};
+  for (int c = 0; c < 2; c++) {
+    dz[c] = zs[c + 1] - zs[0];
+    V hp = V{}, hl = V{};
+    for (int j = 0; j < 2; j++) {
+      dp[c][j] = p[c + 1][j] - p[0][j];
+      dl[c][j] = lb[c + 1][j] - lb[0][j];
+      hp += dp[c][j] * dp[c][j];
+      hl += dl[c][j] * dl[c][j];
+    }
+    const V q = dz[c] * dz[c] + (hp > hl ? hp : hl);
+    r2 = q > r2 ? q : r2;
+  }
+  const V rho = M::sqrt(r2);
+  *good &= in->k[in->n - 1] * rho <= kRMax;
+  // lanes left to the scalar path: no series (zero differences)
+  for (int c = 0; c < 2; c++) {
+    dz[c] = *good ? dz[c] : V{};
+    for (int j = 0; j < 2; j++) {
+      dp[c][j] = *good ? dp[c][j] : V{};
+      dl[c][j] = *good ? dl[c][j] : V{};
+    }
+  }
+  const double rmax = TLanes<W>::hmax(*good ? rho : V{});
+  V zmax = zs[0], zmin = zs[0];
+  for (int c = 1; c < 3; c++) {
+    zmax = zs[c] > zmax ? zs[c] : zmax;
+    zmin = zs[c] < zmin ? zs[c] : zmin;
+  }
+  V acc[7] = {};
+  for (int f = 0; f < (in->finite ? 2 : 1); f++) {
+    const V zx = f == 0 ? -zmax : zmin + 2 * in->depth;
+    if (in->linear) {
+      familyLanes<W, true>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+    } else {
+      familyLanes<W, false>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+    }
+  }
+  const V a2 = 2 * A;
+  if (in->linear) {
+    *P += in->rg * a2 * acc[0];
+    for (int j = 0; j < 3; j++) {
+      Pr[j] += in->rg * a2 * (acc[1] * p[0][j] + acc[2] * p[1][j] + acc[3] * p[2][j]);
+    }
+  }
+  for (int j = 0; j < 3; j++) Vw[j] = a2 * acc[4 + j];
+}
+
 // triangles [p0, p0 + nl) of in.idx as W lanes (the last repeated in the
 // lanes past nl, whose results are dropped); sums into f, t, wet, lo, hi
 template <int W, class M>
@@ -175,64 +248,9 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
     sr[j] = p[0][j] + p[1][j] + p[2][j];
   }
   const V A = 0.5 * (cr[0] * n[0] + cr[1] * n[1] + cr[2] * n[2]);
-  // depth below the level (linear) or the surface (Kerner), linear over it
-  if (in->linear) {
-    for (int c = 0; c < 3; c++) d[c] = in->level - (p[c][2] + in->comz);
-  }
-  const V sd = d[0] + d[1] + d[2];
-  V P = in->rg * A * sd / 3, Pr[3], Vw[3] = {V{}, V{}, V{}};
-  for (int j = 0; j < 3; j++) {
-    Pr[j] = in->rg * A / 12 * (d[0] * p[0][j] + d[1] * p[1][j] + d[2] * p[2][j] + sd * sr[j]);
-  }
   I good = ok;
-  if (in->n > 0) {
-    V dz[2], dp[2][2], dl[2][2], r2 = V{};
-    for (int c = 0; c < 2; c++) {
-      dz[c] = zs[c + 1] - zs[0];
-      V hp = V{}, hl = V{};
-      for (int j = 0; j < 2; j++) {
-        dp[c][j] = p[c + 1][j] - p[0][j];
-        dl[c][j] = lb[c + 1][j] - lb[0][j];
-        hp += dp[c][j] * dp[c][j];
-        hl += dl[c][j] * dl[c][j];
-      }
-      const V q = dz[c] * dz[c] + (hp > hl ? hp : hl);
-      r2 = q > r2 ? q : r2;
-    }
-    const V rho = M::sqrt(r2);
-    good &= in->k[in->n - 1] * rho <= kRMax;
-    // lanes left to the scalar path: no series (zero differences)
-    for (int c = 0; c < 2; c++) {
-      dz[c] = good ? dz[c] : V{};
-      for (int j = 0; j < 2; j++) {
-        dp[c][j] = good ? dp[c][j] : V{};
-        dl[c][j] = good ? dl[c][j] : V{};
-      }
-    }
-    const double rmax = TLanes<W>::hmax(good ? rho : V{});
-    V zmax = zs[0], zmin = zs[0];
-    for (int c = 1; c < 3; c++) {
-      zmax = zs[c] > zmax ? zs[c] : zmax;
-      zmin = zs[c] < zmin ? zs[c] : zmin;
-    }
-    V acc[7] = {};
-    for (int f = 0; f < (in->finite ? 2 : 1); f++) {
-      const V zx = f == 0 ? -zmax : zmin + 2 * in->depth;
-      if (in->linear) {
-        familyLanes<W, true>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
-      } else {
-        familyLanes<W, false>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
-      }
-    }
-    const V a2 = 2 * A;
-    if (in->linear) {
-      P += in->rg * a2 * acc[0];
-      for (int j = 0; j < 3; j++) {
-        Pr[j] += in->rg * a2 * (acc[1] * p[0][j] + acc[2] * p[1][j] + acc[3] * p[2][j]);
-      }
-    }
-    for (int j = 0; j < 3; j++) Vw[j] = a2 * acc[4 + j];
-  }
+  V P, Pr[3], Vw[3];
+  laneIntegrals<W, M>(in, p, d, zs, lb, e0, A, &good, &P, Pr, Vw);
   // per triangle done, and the sums
   const V inv = ok ? 1 / A : V{};
   const V u[3] = {in->cur[0] + Vw[0] * inv, in->cur[1] + Vw[1] * inv, 0 + Vw[2] * inv};
@@ -265,6 +283,64 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
     *lo = (use & (e < *lo)) ? e : *lo;
     *hi = (use & (e > *hi)) ? e : *hi;
   }
+}
+
+// pieces [p0, p0 + nl) of pc as W lanes (the last repeated past nl): each
+// piece's integrals written back to it (trivec.h Piece)
+template <int W, class M>
+static void pieceChunk(const TriIn* in, Piece* pc, int p0, int nl) {
+  typedef typename TLanes<W>::V V;
+  typedef typename TLanes<W>::I I;
+  V p[3][3], d[3], zs[3], lb[3][2], n[3];
+  const double* e0[W];
+  for (int l = 0; l < W; l++) {
+    const Piece& g = pc[p0 + (l < nl ? l : nl - 1)];
+    for (int c = 0; c < 3; c++) {
+      for (int j = 0; j < 3; j++) p[c][j][l] = g.q[c][j];
+      d[c][l] = g.d[c];
+      zs[c][l] = g.zs[c];
+      lb[c][0][l] = g.lab[c][0];
+      lb[c][1][l] = g.lab[c][1];
+      n[c][l] = g.n[c];
+    }
+    e0[l] = in->E + in->es * in->nw * g.ev;
+  }
+  // wetTriangle's fan: the piece is coplanar with its parent, so its area
+  // is (cross . n) / 2 with the parent's normal
+  V e1[3], e2[3], cr[3];
+  for (int j = 0; j < 3; j++) {
+    e1[j] = p[1][j] - p[0][j];
+    e2[j] = p[2][j] - p[0][j];
+  }
+  cr[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  cr[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  cr[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  const V A0 = 0.5 * (cr[0] * n[0] + cr[1] * n[1] + cr[2] * n[2]);
+  // not finite: the parent goes to the scalar path, which reports it; a
+  // piece of no area (a cut at a corner) adds nothing (wetWaves)
+  I good = (A0 - A0) == 0;
+  const I has = A0 > 0;
+  const V A = has ? A0 : V{};
+  V P, Pr[3], Vw[3];
+  laneIntegrals<W, M>(in, p, d, zs, lb, e0, A, &good, &P, Pr, Vw);
+  const V z = V{};
+  for (int l = 0; l < nl; l++) {
+    Piece& g = pc[p0 + l];
+    g.ok = good[l] != 0;
+    g.A = A[l];
+    for (int j = 0; j < 3; j++) {
+      const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+      g.rA[j] = (has ? A * (p[0][j] + p[1][j] + p[2][j]) / 3 : z)[l];
+      g.f[j] = (has ? -P * n[j] : z)[l];
+      g.t[j] = (has ? -(Pr[j1] * n[j2] - Pr[j2] * n[j1]) : z)[l];
+      g.V[j] = (has ? Vw[j] : z)[l];
+    }
+  }
+}
+
+template <int W, class M>
+static void pieceLanes(const TriIn* in, Piece* pc, int np) {
+  for (int p = 0; p < np; p += W) pieceChunk<W, M>(in, pc, p, np - p < W ? np - p : W);
 }
 
 template <int W, class M>

@@ -1,5 +1,5 @@
-// the triangle stage's wholly wet triangles in lanes (AVX2, AVX-512;
-// trivec.h) against the scalar reference (cpu.cc's per-triangle loop) and
+// the triangle stage's wholly wet triangles and cut triangles' wet pieces
+// in lanes (AVX2, AVX-512; trivec.h) against the scalar reference (cpu.cc's per-triangle loop) and
 // against Archimedes, on every instruction set this cpu has
 #include <cmath>
 #include <cstdio>
@@ -50,6 +50,28 @@ TEST(TriVec, SubmergedBoxFeelsArchimedesOnEveryPath) {
   mjb::simdSet(prev);
 }
 
+// the same box with its centre on flat water: the plane through the centre
+// of a box (centrally symmetric) halves it, so Archimedes gives rho g V / 2
+// upward whatever the orientation; its wetted triangles are all cut or
+// wholly wet, the cut ones in pieces on the vector paths (trivec.h Piece)
+TEST(TriVec, HalfSunkBoxFeelsHalfItsVolumeOnEveryPath) {
+  Scene sc(submergedBox(0));
+  ASSERT_TRUE(sc.ok()) << sc.err;
+  const int prev = mjb::simdLevel();
+  std::vector<int> lv = vectorLevels("trivec");
+  lv.insert(lv.begin(), mjb::kSimdScalar);
+  const double F = kRho * kG * 0.5;
+  for (int level : lv) {
+    mjb::simdSet(level);
+    mj_forward(sc.m, sc.d);
+    const mjtNum* p = mjb_wrenchPart(sc.b, sc.d, mjbPART_PRESSURE) + 6;
+    EXPECT_NEAR(p[0], 0, 1e-12 * F) << mjb::simdName(level);
+    EXPECT_NEAR(p[1], 0, 1e-12 * F) << mjb::simdName(level);
+    EXPECT_NEAR(p[2], F, 1e-12 * F) << mjb::simdName(level);
+  }
+  mjb::simdSet(prev);
+}
+
 // a Wigley hull (576 triangles) heeled and pitched, and a box, on sea s
 // with pressure model pm, threads th
 std::string scene(const std::string& sea, const char* pm, int th) {
@@ -78,9 +100,10 @@ std::vector<double> parts(Scene& s) {
   return out;
 }
 
-// The lanes do the scalar path's arithmetic for a wholly wet triangle
-// (same formulas, same components summed) and differ by rounding only: FMA
-// contraction, the order of the sums over triangles, and series terms past
+// The lanes do the scalar path's arithmetic for a wholly wet triangle and
+// for each piece of a cut one (same formulas, same components summed) and
+// differ by rounding only: FMA contraction, the order of the sums over
+// triangles and pieces, and series terms past
 // the scalar's count (each below 2^-54 of the first, waveint.cc). A
 // series about corner 0 loses at most e^kRMax = e^4 of relative precision
 // (waveker.h), so a triangle's integrals differ by about 64 e^4 eps, 1e-12,
