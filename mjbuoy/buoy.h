@@ -66,12 +66,16 @@ struct Buoy {
 const Buoy* buoyOf(const mjbBuoy* b);
 
 // wet triangle data of one call, and the slamming history
+// (area per triangle of the model; the rest per thread, 3 per triangle of
+// the largest hull, reused hull after hull so it stays in cache: cpu.cc
+// TriScr)
 struct TriState {
   std::vector<double> area;    // wet area [m^2]
   std::vector<double> c;       // wet centroid relative to the body COM, 3 each [m]
   std::vector<double> n;       // outward unit normal, 3 each
   std::vector<double> v;       // flow-relative centroid velocity, 3 each [m/s]
   std::vector<double> u;       // water velocity, mean over the wet part, 3 each [m/s]
+  size_t per = 0;              // doubles of c, n, v, u per thread
 };
 
 // per-mjData state; sized at creation, never resized while stepping

@@ -77,10 +77,10 @@ void makeState(const Buoy& b, State* s) {
   s->notices.clear();
   s->notices.reserve(4096);
   s->tri.area.assign(nt, 0);
-  s->tri.c.assign(3 * nt, 0);
-  s->tri.n.assign(3 * nt, 0);
-  s->tri.v.assign(3 * nt, 0);
-  s->tri.u.assign(3 * nt, 0);
+  s->tri.per = 3 * maxTris(b);
+  for (auto* a : {&s->tri.c, &s->tri.n, &s->tri.v, &s->tri.u}) {
+    a->assign(s->tri.per * std::max(1, b.nthreads), 0);
+  }
   s->curA.assign(nt, 0);
   s->prevA.assign(nt, 0);
   s->curV.assign(3 * nt, 0);
@@ -281,6 +281,20 @@ static void guessWeights(const State& s, int ih, double t, double L[3]) {
   }
 }
 
+// one hull's per-triangle results in the thread's scratch (TriState):
+// triangle k's at 3 (k - t0)
+struct TriScr {
+  double *c, *n, *u, *v;
+  int t0;
+  double* at(double* a, int k) const { return a + 3 * (k - t0); }
+};
+
+static TriScr triScr(State* s, int slot, int t0) {
+  const size_t o = s->tri.per * slot;
+  return {s->tri.c.data() + o, s->tri.n.data() + o, s->tri.u.data() + o, s->tri.v.data() + o,
+          t0};
+}
+
 // pass 1's data for one hull (hullWrench): what the triangles read and the
 // sums they add to (pressure wrench wp, wet area, extent along the flow)
 struct Pass1 {
@@ -291,6 +305,7 @@ struct Pass1 {
   const Hull& hl;
   const double* com;
   const double* dir;
+  TriScr ts;
   double* wp;
   double wet, lo, hi;
 };
@@ -321,7 +336,7 @@ static void pass1Tri(Pass1& q, int k) {
   double mo[3], P = rg * wt.dA, Pr[3] = {rg * wt.drA[0], rg * wt.drA[1], rg * wt.drA[2]};
   // the water's mean wave velocity over the wet part, and with linear
   // pressure the dynamic part, both in closed form (waveint.h)
-  double* uq = &s->tri.u[3 * k];
+  double* uq = q.ts.at(q.ts.u, k);
   for (int j = 0; j < 3; j++) uq[j] = j < 2 ? sea.current[j] : 0;
   if (nw > 0) {
     double Pd, Prd[3], V[3];
@@ -337,8 +352,8 @@ static void pass1Tri(Pass1& q, int k) {
   for (int j = 0; j < 3; j++) {
     wp[j] -= P * n[j];
     wp[3 + j] -= mo[j];
-    s->tri.c[3 * k + j] = wt.rA[j] / wt.area;
-    s->tri.n[3 * k + j] = n[j];
+    q.ts.at(q.ts.c, k)[j] = wt.rA[j] / wt.area;
+    q.ts.at(q.ts.n, k)[j] = n[j];
   }
   q.wet += wt.area;
   for (int i = 0; i < wt.nq; i++) {
@@ -385,9 +400,10 @@ static TriIn triIn(const Pass1& q) {
   in.cur[1] = sea.current[1];
   for (int j = 0; j < 3; j++) in.dir[j] = q.dir[j];
   in.area = s->tri.area.data();
-  in.c = s->tri.c.data();
-  in.nrm = s->tri.n.data();
-  in.u = s->tri.u.data();
+  in.c = q.ts.c;
+  in.nrm = q.ts.n;
+  in.u = q.ts.u;
+  in.t0 = q.ts.t0;
   return in;
 }
 
@@ -510,9 +526,9 @@ static void cutChunk(Pass1& q, const TriIn& in, const int* cl, int nc, Piece* pc
     s->tri.area[k] = A > 0 ? A : 0;
     if (!(A > 0)) continue;
     for (int j = 0; j < 3; j++) {
-      s->tri.c[3 * k + j] = rA[j] / A;
-      s->tri.n[3 * k + j] = pc[first[i]].n[j];
-      s->tri.u[3 * k + j] = (j < 2 ? q.sea.current[j] : 0) + V[j] / A;
+      q.ts.at(q.ts.c, k)[j] = rA[j] / A;
+      q.ts.at(q.ts.n, k)[j] = pc[first[i]].n[j];
+      q.ts.at(q.ts.u, k)[j] = (j < 2 ? q.sea.current[j] : 0) + V[j] / A;
     }
     q.wet += A;
     q.lo = std::min(q.lo, ext[i][0]);
@@ -534,19 +550,21 @@ struct Flow2 {
 };
 
 // pass 2 for the wet triangles wl[0, nf) in vector lanes (trivec.h)
-static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const double vel[6],
-                       const double* com, const Rigid& rig, const double dir[3],
-                       const Flow2& f2, const int* wl, int nf, double* const w[]) {
+static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const TriScr& ts,
+                       const double vel[6], const double* com, const Rigid& rig,
+                       const double dir[3], const Flow2& f2, const int* wl, int nf,
+                       double* const w[]) {
   const HullParams& par = hl.par;
   const Sea& sea = b.cfg.sea;
   FlowIn in;
   in.idx = wl;
   in.m = nf;
   in.area = s->tri.area.data();
-  in.c = s->tri.c.data();
-  in.nrm = s->tri.n.data();
-  in.u = s->tri.u.data();
-  in.v = s->tri.v.data();
+  in.c = ts.c;
+  in.nrm = ts.n;
+  in.u = ts.u;
+  in.v = ts.v;
+  in.t0 = ts.t0;
   in.tarea = b.tarea.data();
   in.prevA = s->prevA.data();
   in.prevV = s->prevV.data();
@@ -589,10 +607,7 @@ static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const double vel
 // whole hull above the highest crest the waves can make: all dry, which
 // gives exactly what the passes give then (no force, no history)
 static void dryHull(const Hull& hl, int ih, bool first, State* s) {
-  for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-    s->tri.area[k] = 0;
-    for (int j = 0; j < 3; j++) s->tri.v[3 * k + j] = 0;
-  }
+  std::memset(&s->tri.area[hl.t0], 0, hl.nt * sizeof(double));
   if (!first) return;
   std::memset(&s->curA[hl.t0], 0, hl.nt * sizeof(double));
   std::memset(&s->curV[3 * hl.t0], 0, 3 * hl.nt * sizeof(double));
@@ -614,6 +629,7 @@ struct HullCall {
   State* s;
   int slot;
   double *sc, *tmp;
+  TriScr ts;
 };
 
 // the vertex stage's scratch layout in sc (scratchSize)
@@ -767,12 +783,12 @@ static void pass1Hull(Pass1& q, int* wl, Piece* pc) {
 // Kerner's per-triangle form factor's mean position: 1+k_i = (1+k)(1 +
 // sbar - s_i), s in [0, 1] from rear to front along dir, whose
 // area-weighted mean is the hull's 1+k; wet area, extent [lo, lo + len]
-static double formMean(const Hull& hl, const State* s, const double dir[3], double wet,
-                       double lo, double len) {
+static double formMean(const Hull& hl, const State* s, const TriScr& ts, const double dir[3],
+                       double wet, double lo, double len) {
   double sbar = 0;
   if (!(wet > 0 && len > 0)) return sbar;
   for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-    if (s->tri.area[k] > 0) sbar += s->tri.area[k] * (dot(&s->tri.c[3 * k], dir) - lo) / len;
+    if (s->tri.area[k] > 0) sbar += s->tri.area[k] * (dot(ts.at(ts.c, k), dir) - lo) / len;
   }
   return sbar / wet;
 }
@@ -783,11 +799,12 @@ static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
                      const double dir[3], const Flow2& f2, int k, double* const w[]) {
   const HullParams& par = c.hl.par;
   State* s = c.s;
-  double* v = &s->tri.v[3 * k];
+  const TriScr& ts = c.ts;
+  double* v = ts.at(ts.v, k);
   double A = s->tri.area[k];
-  const double* cc = &s->tri.c[3 * k];
-  const double* n = &s->tri.n[3 * k];
-  const double* uwk = &s->tri.u[3 * k];
+  const double* cc = ts.at(ts.c, k);
+  const double* n = ts.at(ts.n, k);
+  const double* uwk = ts.at(ts.u, k);
   double wc[3];
   cross(vel, cc, wc);
   for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uwk[j];
@@ -832,11 +849,11 @@ static void pass2Hull(const HullCall& c, const double vel[6], const Rigid& rig,
         pass2Tri(c, vel, rig, dir, f2, k, w);
       }
     } else {
-      double* v = &s->tri.v[3 * k];
+      double* v = c.ts.at(c.ts.v, k);
       v[0] = v[1] = v[2] = 0;
     }
   }
-  if (nf > 0) pass2Lanes(c.b, hl, s, vel, c.com, rig, dir, f2, wl, nf, w);
+  if (nf > 0) pass2Lanes(c.b, hl, s, c.ts, vel, c.com, rig, dir, f2, wl, nf, w);
 }
 
 // forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
@@ -846,7 +863,8 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   const Hull& hl = b.hull[ih];
   const Sea& sea = b.cfg.sea;
   HullCall c{b, hl, ih, d->xpos + 3 * hl.body, d->xmat + 9 * hl.body, d->xipos + 3 * hl.body,
-             {0, 0, 0}, first, s, slot, s->scr.data() + s->per * slot, nullptr};
+             {0, 0, 0}, first, s, slot, s->scr.data() + s->per * slot, nullptr,
+             triScr(s, slot, hl.t0)};
   c.tmp = c.sc + 2 * sea.waves.size();
   if (c.x[2] - hl.rad > s->crest + 1e-6 * (1 + std::fabs(c.x[2]) + hl.rad)) {
     dryHull(hl, ih, first, s);
@@ -862,7 +880,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   // pass 1: cut, pressure force and torque: Kerner's rho g (eta - z), linear
   // in the cut's depth, exactly (-rho g dA n, -rho g drA x n); or linear
   // wave theory (wavepress.h), which flat water reduces to the same
-  Pass1 q{b, sea, s, hs, hl, c.com, dir, w[mjbPART_PRESSURE], 0, INFINITY, -INFINITY};
+  Pass1 q{b, sea, s, hs, hl, c.com, dir, c.ts, w[mjbPART_PRESSURE], 0, INFINITY, -INFINITY};
   int* wl = s->iscr.data() + s->iper * slot;
   pass1Hull(q, wl, s->pscr.data() + s->pper * slot);
 
@@ -870,16 +888,14 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   // the wetted length, the wet extent along the flow
   const double len = q.hi > q.lo ? q.hi - q.lo : 0;
   const double cf = ittc57(speed * len / sea.nu);
-  const double sbar = formMean(hl, s, dir, q.wet, q.lo, len);
+  const double sbar = formMean(hl, s, c.ts, dir, q.wet, q.lo, len);
   Flow2 f2{q.lo, len, sbar, cf, s->hasPrev ? d->time - s->tprev : 0};
   pass2Hull(c, vel, rig, dir, f2, wl, w);
 
   // slamming history: the last call at this step's time
   if (first) {
-    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-      s->curA[k] = s->tri.area[k];
-      for (int j = 0; j < 3; j++) s->curV[3 * k + j] = s->tri.v[3 * k + j];
-    }
+    std::memcpy(&s->curA[hl.t0], &s->tri.area[hl.t0], hl.nt * sizeof(double));
+    std::memcpy(&s->curV[3 * hl.t0], c.ts.v, 3 * hl.nt * sizeof(double));
   }
   // simple damping (Cruz 2023), scaled by the wet fraction r_s = S_wet / S
   const double rs = q.wet / hl.area;

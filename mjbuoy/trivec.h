@@ -27,9 +27,11 @@ struct TriIn {
   const double *wp[2], *wux[2], *wuy[2], *wz[2];
   int linear;  // linear pressure (dynamic part), else Kerner's rho g (eta - z)
   double rg, level, comz, cur[2], dir[3];
-  // written per triangle done: wet area, centroid (relative to the COM),
-  // unit normal, mean water velocity [m/s]
+  // written per triangle done: wet area (global index), centroid
+  // (relative to the COM), unit normal, mean water velocity [m/s] (the
+  // hull's scratch: triangle k at 3 (k - t0))
   double *area, *c, *nrm, *u;
+  int t0;
   // triangles left to the scalar path (a piece too coarse for the series,
   // or not finite): their indices, and how many
   int* rest;
@@ -63,8 +65,10 @@ struct Piece {
 struct FlowIn {
   const int* idx;  // global triangle indices, wet area > 0
   int m;
-  const double *area, *c, *nrm, *u;  // pass 1's, per triangle
-  double* v;                         // written: flow-relative velocity [m/s]
+  const double* area;                // pass 1's wet area, per triangle
+  const double *c, *nrm, *u;         // pass 1's, triangle k at 3 (k - t0)
+  double* v;                         // written: flow-relative velocity [m/s], as c
+  int t0;                            // the hull's first triangle
   const double* tarea;               // the triangles' whole areas [m^2]
   const double *prevA, *prevV;       // slamming history (prev step)
   double vel[6];                     // body velocity [angular; linear] at the COM

@@ -263,9 +263,10 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
     }
     in->area[k] = A[l];
     for (int j = 0; j < 3; j++) {
-      in->c[3 * k + j] = sr[j][l] / 3;
-      in->nrm[3 * k + j] = n[j][l];
-      in->u[3 * k + j] = u[j][l];
+      const int kl = 3 * (k - in->t0) + j;
+      in->c[kl] = sr[j][l] / 3;
+      in->nrm[kl] = n[j][l];
+      in->u[kl] = u[j][l];
     }
   }
   I use = good;
@@ -396,9 +397,10 @@ static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
     g1[1][l] = in->tarea[k];
     g1[2][l] = in->prevA[k];
     for (int j = 0; j < 3; j++) {
-      g3[0][j][l] = in->c[3 * k + j];
-      g3[1][j][l] = in->nrm[3 * k + j];
-      g3[2][j][l] = in->u[3 * k + j];
+      const int kl = 3 * (k - in->t0) + j;
+      g3[0][j][l] = in->c[kl];
+      g3[1][j][l] = in->nrm[kl];
+      g3[2][j][l] = in->u[kl];
       g3[3][j][l] = in->prevV[3 * k + j];
     }
   }
@@ -419,7 +421,7 @@ static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
                    w[0] * c[1] - w[1] * c[0]};
   for (int j = 0; j < 3; j++) v[j] = w[3 + j] + wc[j] - v[j];
   for (int l = 0; l < nl; l++) {
-    for (int j = 0; j < 3; j++) in->v[3 * tk[l] + j] = v[j][l];
+    for (int j = 0; j < 3; j++) in->v[3 * (tk[l] - in->t0) + j] = v[j][l];
   }
   const V z = V{}, one = V{} + 1, nanv = V{} + __builtin_nan("");
   const V v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
