@@ -14,7 +14,6 @@
 #include "radcache.h"
 #include "radiation.h"
 #include "sensor.h"
-#include "trivec.h"
 #include "waveint.h"
 
 namespace mjb {
@@ -106,13 +105,9 @@ struct State {
   std::vector<double> scr;
   size_t per = 0, mi = 0;
   // per thread: triangle indices for the lane kernels (cpu.cc, trivec.h),
-  // 2 per triangle of the largest hull
+  // 4 per triangle of the largest hull
   std::vector<int> iscr;
   size_t iper = 0;
-  // per thread: the wet pieces of one chunk of cut triangles (cpu.cc
-  // cutChunk), pper each
-  std::vector<Piece> pscr;
-  size_t pper = 0;
   // per thread: surface solves done and Newton steps they took (cpu
   // backend; mjbuoy-bench reports steps per solve)
   std::vector<long> nsolve, niter;

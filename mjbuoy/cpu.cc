@@ -47,10 +47,6 @@ static size_t eStride(const Sea& sea) { return sea.depth > 0 ? 4 : 2; }
 // vertex cost more than the exp itself on a one-component sea
 enum { kExpChunk = 32 };
 
-// cut triangles the lanes take at a time (cpu.cc cutChunk): their pieces,
-// at most two each, stay in the first-level cache
-enum { kCutChunk = 32 };
-
 // per thread: 4 + kLaneTmp per wave for solve() and solveMany() (seavec.h),
 // then x, y, a0, a1, z, stretched height z' and 2 per wave (phases) for
 // every point of a hull, e^L (eStride per wave) for every vertex of a
@@ -102,10 +98,8 @@ void makeState(const Buoy& b, State* s) {
   s->mi = maxItems(b);
   s->per = scratchSize(b);
   s->scr.assign(s->per * std::max(1, b.nthreads), 0);
-  s->iper = 2 * maxTris(b);
+  s->iper = 4 * maxTris(b);
   s->iscr.assign(s->iper * std::max(1, b.nthreads), 0);
-  s->pper = 2 * kCutChunk;
-  s->pscr.assign(s->pper * std::max(1, b.nthreads), Piece{});
   s->nsolve.assign(std::max(1, b.nthreads), 0);
   s->niter.assign(std::max(1, b.nthreads), 0);
   s->vsec.assign(std::max(1, b.nthreads), 0);
@@ -296,7 +290,8 @@ static TriScr triScr(State* s, int slot, int t0) {
 }
 
 // pass 1's data for one hull (hullWrench): what the triangles read and the
-// sums they add to (pressure wrench wp, wet area, extent along the flow)
+// sums they add to (pressure wrench wp, wet area, its first moment along
+// the flow wdir, the extent along the flow)
 struct Pass1 {
   const Buoy& b;
   const Sea& sea;
@@ -307,7 +302,7 @@ struct Pass1 {
   const double* dir;
   TriScr ts;
   double* wp;
-  double wet, lo, hi;
+  double wet, wdir, lo, hi;
 };
 
 // cut, pressure force and torque of triangle k, the water's mean wave
@@ -356,6 +351,7 @@ static void pass1Tri(Pass1& q, int k) {
     q.ts.at(q.ts.n, k)[j] = n[j];
   }
   q.wet += wt.area;
+  q.wdir += dot(wt.rA, q.dir);
   for (int i = 0; i < wt.nq; i++) {
     double e = dot(wt.q[i], q.dir);
     q.lo = std::min(q.lo, e);
@@ -407,133 +403,27 @@ static TriIn triIn(const Pass1& q) {
   return in;
 }
 
-// the wholly wet triangles wl[0, nl) in vector lanes (trivec.h); those the
-// lanes leave (a piece too coarse for the series, not finite) through
-// pass1Tri; rest: nl ints of scratch
-static void pass1Lanes(Pass1& q, TriIn& in, const int* wl, int nl, int* rest) {
+// the triangles wl[0, nl) of one kind (trivec.h triLanes) in vector
+// lanes; those the lanes leave (a piece too coarse for the series, not
+// finite) through pass1Tri; rest: nl ints of scratch
+static void pass1Lanes(Pass1& q, TriIn& in, int kind, const int* wl, int nl, int* rest) {
   in.idx = wl;
   in.m = nl;
   in.rest = rest;
   if (simdLevel() == kSimdAvx512) {
-    triLanesAvx512(&in);
+    triLanesAvx512(&in, kind);
   } else {
-    triLanesAvx2(&in);
+    triLanesAvx2(&in, kind);
   }
   for (int j = 0; j < 3; j++) {
     q.wp[j] += in.f[j];
     q.wp[3 + j] += in.t[j];
   }
   q.wet += in.wet;
+  q.wdir += in.wdir;
   q.lo = std::min(q.lo, in.lo);
   q.hi = std::max(q.hi, in.hi);
   for (int i = 0; i < in.nrest; i++) pass1Tri(q, rest[i]);
-}
-
-// the wet pieces of cut triangle k into pc (trivec.h Piece): its wet
-// polygon (wetTriangle's clip) fanned from its first wet hull vertex, as
-// wetWaves; returns how many (0: no wet area, the triangle is degenerate;
-// -1: a height not finite, for pass1Tri); ext: the polygon's extent along
-// the flow [m]
-static int cutPieces(const Pass1& q, int k, Piece* pc, double ext[2]) {
-  const State* s = q.s;
-  const int* fc = q.b.face.data() + 3 * k;
-  double p[3][3], h[3], c[3];
-  for (int e = 0; e < 3; e++) {
-    h[e] = s->h[fc[e]];
-    if (!std::isfinite(h[e])) return -1;
-    std::memcpy(p[e], s->rel.data() + 3 * fc[e], 3 * sizeof(double));
-  }
-  double e1[3], e2[3];
-  for (int j = 0; j < 3; j++) {
-    e1[j] = p[1][j] - p[0][j];
-    e2[j] = p[2][j] - p[0][j];
-  }
-  cross(e1, e2, c);
-  const double len = std::sqrt(dot(c, c));
-  if (!(len > 0)) return 0;
-  Wet wt;
-  clipWet(p, h, &wt);
-  int s0 = 0;
-  while (s0 < wt.nq && wt.qt[s0] != 0) s0++;
-  if (s0 == wt.nq) return -1;
-  const bool waves = !q.sea.waves.empty();
-  ext[0] = INFINITY;
-  ext[1] = -INFINITY;
-  for (int i = 0; i < wt.nq; i++) {
-    const double e = dot(wt.q[i], q.dir);
-    ext[0] = std::min(ext[0], e);
-    ext[1] = std::max(ext[1], e);
-  }
-  for (int m = 1; m + 1 < wt.nq; m++) {
-    Piece& g = pc[m - 1];
-    const int ix[3] = {s0, (s0 + m) % wt.nq, (s0 + m + 1) % wt.nq};
-    for (int a = 0; a < 3; a++) {
-      const int i = ix[a], va = fc[wt.qa[i]], vb = fc[wt.qb[i]];
-      const double u = wt.qt[i];
-      std::memcpy(g.q[a], wt.q[i], 3 * sizeof(double));
-      // a cut point lies on the surface: depth and z' 0; labels linear
-      // along the edge
-      g.d[a] = u == 0 ? -h[wt.qa[i]] : 0;
-      g.zs[a] = u == 0 && waves ? q.hs.ZS[va - q.hl.v0] : 0;
-      for (int j = 0; j < 2; j++) {
-        g.lab[a][j] = s->lab[2 * va + j] + u * (s->lab[2 * vb + j] - s->lab[2 * va + j]);
-      }
-      g.n[a] = c[a] / len;
-    }
-    g.ev = fc[wt.qa[s0]] - q.hl.v0;
-  }
-  return wt.nq - 2;
-}
-
-// the cut triangles cl[0, nc) in vector lanes, piece by piece (trivec.h),
-// then each triangle's pieces summed; a triangle with a piece the lanes
-// leave goes through pass1Tri whole; pc: 2 nc pieces of scratch
-static void cutChunk(Pass1& q, const TriIn& in, const int* cl, int nc, Piece* pc) {
-  State* s = q.s;
-  int first[kCutChunk], cnt[kCutChunk], np = 0;
-  double ext[kCutChunk][2];
-  for (int i = 0; i < nc; i++) {
-    first[i] = np;
-    cnt[i] = cutPieces(q, cl[i], pc + np, ext[i]);
-    np += std::max(cnt[i], 0);
-  }
-  if (np > 0) {
-    if (simdLevel() == kSimdAvx512) {
-      pieceLanesAvx512(&in, pc, np);
-    } else {
-      pieceLanesAvx2(&in, pc, np);
-    }
-  }
-  for (int i = 0; i < nc; i++) {
-    const int k = cl[i];
-    bool ok = cnt[i] >= 0;
-    for (int m = 0; m < cnt[i]; m++) ok = ok && pc[first[i] + m].ok;
-    if (!ok) {
-      pass1Tri(q, k);
-      continue;
-    }
-    double A = 0, rA[3] = {0, 0, 0}, V[3] = {0, 0, 0};
-    for (int m = 0; m < cnt[i]; m++) {
-      const Piece& g = pc[first[i] + m];
-      A += g.A;
-      for (int j = 0; j < 3; j++) {
-        rA[j] += g.rA[j];
-        V[j] += g.V[j];
-        q.wp[j] += g.f[j];
-        q.wp[3 + j] += g.t[j];
-      }
-    }
-    s->tri.area[k] = A > 0 ? A : 0;
-    if (!(A > 0)) continue;
-    for (int j = 0; j < 3; j++) {
-      q.ts.at(q.ts.c, k)[j] = rA[j] / A;
-      q.ts.at(q.ts.n, k)[j] = pc[first[i]].n[j];
-      q.ts.at(q.ts.u, k)[j] = (j < 2 ? q.sea.current[j] : 0) + V[j] / A;
-    }
-    q.wet += A;
-    q.lo = std::min(q.lo, ext[i][0]);
-    q.hi = std::max(q.hi, ext[i][1]);
-  }
 }
 
 // whether pass 2 can run in lanes: every exponent it raises to is 0.5, 1
@@ -743,9 +633,9 @@ static double hullFlow(const HullCall& c, const double vel[6], double dir[3]) {
 
 // pass 1 over the hull's triangles: a triangle with no vertex below the
 // surface has no wet part; with a vector level the wholly wet ones and the
-// wet pieces of the cut ones go through the lanes (trivec.h), else
-// pass1Tri; wl: 2 nt ints of scratch, pc: kCutChunk pieces
-static void pass1Hull(Pass1& q, int* wl, Piece* pc) {
+// cut ones go through the lanes (trivec.h) by kind, else pass1Tri; wl: 4
+// nt ints of scratch
+static void pass1Hull(Pass1& q, int* wl) {
   const Hull& hl = q.hl;
   State* s = q.s;
   if (simdLevel() == kSimdScalar) {
@@ -759,38 +649,43 @@ static void pass1Hull(Pass1& q, int* wl, Piece* pc) {
     }
     return;
   }
-  TriIn in = triIn(q);
-  int nl = 0, cl[kCutChunk], nc = 0;
+  // dry triangles keep the zero area; the others are written below
+  std::memset(&s->tri.area[hl.t0], 0, hl.nt * sizeof(double));
+  // lists by kind (trivec.h: 0 wholly wet, 1 one corner below, 2 one
+  // above), nt ints each; the rest of the lanes after them
+  int* kl[3] = {wl, wl + hl.nt, wl + 2 * hl.nt};
+  int nk[3] = {0, 0, 0};
   for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+    // sorted without branches (which side of the surface is unpredictable
+    // along the mesh); a height not finite is none of these (pass1Tri)
     const int* fc = q.b.face.data() + 3 * k;
     const double h0 = s->h[fc[0]], h1 = s->h[fc[1]], h2 = s->h[fc[2]];
-    if (h0 >= 0 && h1 >= 0 && h2 >= 0) {
-      s->tri.area[k] = 0;
-    } else if (h0 <= 0 && h1 <= 0 && h2 <= 0) {
-      wl[nl++] = k;
-    } else {
-      cl[nc++] = k;
-      if (nc == kCutChunk) {
-        cutChunk(q, in, cl, nc, pc);
-        nc = 0;
-      }
-    }
+    const bool dry = (h0 >= 0) & (h1 >= 0) & (h2 >= 0);
+    const int up = (h0 > 0) + (h1 > 0) + (h2 > 0), down = (h0 <= 0) + (h1 <= 0) + (h2 <= 0);
+    const bool wet = down == 3, one = !dry & (down == 1) & (up == 2),
+               two = !dry & (down == 2) & (up == 1);
+    kl[0][nk[0]] = k;
+    nk[0] += wet;
+    kl[1][nk[1]] = k;
+    nk[1] += one;
+    kl[2][nk[2]] = k;
+    nk[2] += two;
+    if (!dry & !wet & !one & !two) pass1Tri(q, k);
   }
-  if (nc > 0) cutChunk(q, in, cl, nc, pc);
-  if (nl > 0) pass1Lanes(q, in, wl, nl, wl + hl.nt);
+  TriIn in = triIn(q);
+  for (int kind = 0; kind < 3; kind++) {
+    if (nk[kind] > 0) pass1Lanes(q, in, kind, kl[kind], nk[kind], wl + 3 * hl.nt);
+  }
 }
 
 // Kerner's per-triangle form factor's mean position: 1+k_i = (1+k)(1 +
 // sbar - s_i), s in [0, 1] from rear to front along dir, whose
-// area-weighted mean is the hull's 1+k; wet area, extent [lo, lo + len]
-static double formMean(const Hull& hl, const State* s, const TriScr& ts, const double dir[3],
-                       double wet, double lo, double len) {
-  double sbar = 0;
-  if (!(wet > 0 && len > 0)) return sbar;
-  for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-    if (s->tri.area[k] > 0) sbar += s->tri.area[k] * (dot(ts.at(ts.c, k), dir) - lo) / len;
-  }
-  return sbar / wet;
+// area-weighted mean is the hull's 1+k: sbar = sum A_i (c_i . dir - lo) /
+// (len wet), from pass 1's sums wet = sum A_i and wdir = sum A_i c_i . dir
+static double formMean(const Pass1& q) {
+  const double len = q.hi > q.lo ? q.hi - q.lo : 0;
+  if (!(q.wet > 0 && len > 0)) return 0;
+  return (q.wdir - q.lo * q.wet) / (len * q.wet);
 }
 
 // pass 2's scalar reference for wet triangle k: viscous, drag and slamming
@@ -841,19 +736,23 @@ static void pass2Hull(const HullCall& c, const double vel[6], const Rigid& rig,
   State* s = c.s;
   const bool lanes = simdLevel() != kSimdScalar && flowExponents(hl.par, s->hasPrev);
   int nf = 0;
+  if (lanes) {  // the lanes write v of the wet triangles
+    std::memset(c.ts.v, 0, 3 * hl.nt * sizeof(double));
+    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+      wl[nf] = k;
+      nf += s->tri.area[k] > 0;
+    }
+    if (nf > 0) pass2Lanes(c.b, hl, s, c.ts, vel, c.com, rig, dir, f2, wl, nf, w);
+    return;
+  }
   for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
     if (s->tri.area[k] > 0) {
-      if (lanes) {
-        wl[nf++] = k;
-      } else {
-        pass2Tri(c, vel, rig, dir, f2, k, w);
-      }
+      pass2Tri(c, vel, rig, dir, f2, k, w);
     } else {
       double* v = c.ts.at(c.ts.v, k);
       v[0] = v[1] = v[2] = 0;
     }
   }
-  if (nf > 0) pass2Lanes(c.b, hl, s, c.ts, vel, c.com, rig, dir, f2, wl, nf, w);
 }
 
 // forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
@@ -880,15 +779,15 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   // pass 1: cut, pressure force and torque: Kerner's rho g (eta - z), linear
   // in the cut's depth, exactly (-rho g dA n, -rho g drA x n); or linear
   // wave theory (wavepress.h), which flat water reduces to the same
-  Pass1 q{b, sea, s, hs, hl, c.com, dir, c.ts, w[mjbPART_PRESSURE], 0, INFINITY, -INFINITY};
+  Pass1 q{b, sea, s, hs, hl, c.com, dir, c.ts, w[mjbPART_PRESSURE], 0, 0, INFINITY, -INFINITY};
   int* wl = s->iscr.data() + s->iper * slot;
-  pass1Hull(q, wl, s->pscr.data() + s->pper * slot);
+  pass1Hull(q, wl);
 
   // viscous resistance: ITTC 1957 C_F at the hull's Reynolds number over
   // the wetted length, the wet extent along the flow
   const double len = q.hi > q.lo ? q.hi - q.lo : 0;
   const double cf = ittc57(speed * len / sea.nu);
-  const double sbar = formMean(hl, s, c.ts, dir, q.wet, q.lo, len);
+  const double sbar = formMean(q);
   Flow2 f2{q.lo, len, sbar, cf, s->hasPrev ? d->time - s->tprev : 0};
   pass2Hull(c, vel, rig, dir, f2, wl, w);
 

@@ -10,7 +10,7 @@
 
 namespace mjb {
 
-// one hull's wholly wet triangles for the lane kernels
+// one hull's wholly wet or cut triangles for the lane kernels
 struct TriIn {
   const int* idx;  // global triangle indices
   int m;           // how many
@@ -33,30 +33,13 @@ struct TriIn {
   double *area, *c, *nrm, *u;
   int t0;
   // triangles left to the scalar path (a piece too coarse for the series,
-  // or not finite): their indices, and how many
+  // or not finite): their indices, and how many (at most m)
   int* rest;
   int nrest;
   // sums over the triangles done: pressure force [N] and torque [N m]
-  // (to add), wet area [m^2]; extent of their corners along dir [m]
-  double f[3], t[3], wet, lo, hi;
-};
-
-// a wet piece of a triangle the surface cuts (cpu.cc cutChunk): the wet
-// polygon fanned from one of its wet hull vertices, corner 0, where e^L is
-// known (1 piece for a wet triangle, 2 for a wet quadrilateral)
-struct Piece {
-  double q[3][3];    // corners relative to the COM [m]
-  double d[3];       // depth below the surface, Kerner's (0 at a cut point) [m]
-  double zs[3];      // stretched height (0 at a cut point) [m]
-  double lab[3][2];  // Gerstner labels [m]
-  double n[3];       // the parent triangle's unit normal
-  int ev;            // hull vertex of corner 0 (its e^L: TriIn::E)
-  // written by the lanes: wet area [m^2] and its first moment [m^3],
-  // pressure force [N] and torque about the COM [N m], the integral of the
-  // wave velocity [m^3/s]; ok 0: too coarse for the series or not finite
-  // (the parent triangle goes to the scalar path)
-  double A, rA[3], f[3], t[3], V[3];
-  int ok;
+  // (to add), wet area [m^2], wet area times centroid along dir [m^3];
+  // extent of their corners along dir [m]
+  double f[3], t[3], wet, wdir, lo, hi;
 };
 
 // one hull's wet triangles for pass 2 (hydro.h's viscous, drag and
@@ -87,11 +70,10 @@ struct FlowIn {
 
 // (trivec_avx2.cc, trivec_avx512.cc: compiled for those instruction sets,
 // called only when the cpu has them)
-void triLanesAvx2(TriIn* in);
-void triLanesAvx512(TriIn* in);
-// pieces pc[0, np) with in's wave table, E, es, nw, linear, rg, level, comz
-void pieceLanesAvx2(const TriIn* in, Piece* pc, int np);
-void pieceLanesAvx512(const TriIn* in, Piece* pc, int np);
+// in.idx's triangles: kind 0 wholly wet; 1 cut, one corner below the
+// surface (h <= 0) and two above (h > 0); 2 cut, one above and two below
+void triLanesAvx2(TriIn* in, int kind);
+void triLanesAvx512(TriIn* in, int kind);
 void flowLanesAvx2(FlowIn* in);
 void flowLanesAvx512(FlowIn* in);
 

@@ -1,4 +1,4 @@
-// the wholly wet triangles over 4 lanes, AVX2 + FMA (compiled with -mavx2
+// the triangle stage over 4 lanes, AVX2 + FMA (compiled with -mavx2
 // -mfma; called only when the cpu has them, vmath.cc)
 #include <immintrin.h>
 
@@ -12,7 +12,10 @@ struct Ops4 {
 };
 }  // namespace
 
-void triLanesAvx2(TriIn* in) { triLanes<4, Ops4>(in); }
-void pieceLanesAvx2(const TriIn* in, Piece* pc, int np) { pieceLanes<4, Ops4>(in, pc, np); }
+void triLanesAvx2(TriIn* in, int kind) {
+  if (kind == 0) triLanes<4, Ops4, 0>(in);
+  if (kind == 1) triLanes<4, Ops4, 1>(in);
+  if (kind == 2) triLanes<4, Ops4, 2>(in);
+}
 void flowLanesAvx2(FlowIn* in) { flowLanes<4, Ops4>(in); }
 }  // namespace mjb

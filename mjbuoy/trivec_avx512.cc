@@ -1,4 +1,4 @@
-// the wholly wet triangles over 8 lanes, AVX-512F (compiled with -mavx512f
+// the triangle stage over 8 lanes, AVX-512F (compiled with -mavx512f
 // -mfma; called only when the cpu has them, vmath.cc)
 #include <immintrin.h>
 
@@ -13,7 +13,10 @@ struct Ops8 {
 };
 }  // namespace
 
-void triLanesAvx512(TriIn* in) { triLanes<8, Ops8>(in); }
-void pieceLanesAvx512(const TriIn* in, Piece* pc, int np) { pieceLanes<8, Ops8>(in, pc, np); }
+void triLanesAvx512(TriIn* in, int kind) {
+  if (kind == 0) triLanes<8, Ops8, 0>(in);
+  if (kind == 1) triLanes<8, Ops8, 1>(in);
+  if (kind == 2) triLanes<8, Ops8, 2>(in);
+}
 void flowLanesAvx512(FlowIn* in) { flowLanes<8, Ops8>(in); }
 }  // namespace mjb

@@ -212,7 +212,8 @@ static void laneIntegrals(const TriIn* in, const typename TLanes<W>::V p[3][3],
 template <int W, class M>
 static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
                      typename TLanes<W>::V* Tq, typename TLanes<W>::V* wet,
-                     typename TLanes<W>::V* lo, typename TLanes<W>::V* hi) {
+                     typename TLanes<W>::V* wdir, typename TLanes<W>::V* lo,
+                     typename TLanes<W>::V* hi) {
   typedef typename TLanes<W>::V V;
   typedef typename TLanes<W>::I I;
   V p[3][3], d[3], zs[3], lb[3][2];
@@ -279,6 +280,8 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   Tq[1] -= use ? Pr[2] * n[0] - Pr[0] * n[2] : zero;
   Tq[2] -= use ? Pr[0] * n[1] - Pr[1] * n[0] : zero;
   *wet += use ? A : zero;
+  const V sdir = sr[0] * in->dir[0] + sr[1] * in->dir[1] + sr[2] * in->dir[2];
+  *wdir += use ? A * sdir / 3 : zero;
   for (int c = 0; c < 3; c++) {
     const V e = p[c][0] * in->dir[0] + p[c][1] * in->dir[1] + p[c][2] * in->dir[2];
     *lo = (use & (e < *lo)) ? e : *lo;
@@ -286,29 +289,94 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   }
 }
 
-// pieces [p0, p0 + nl) of pc as W lanes (the last repeated past nl): each
-// piece's integrals written back to it (trivec.h Piece)
+// one wet piece of W lanes' cut triangles, corners q with Kerner's depths
+// d, stretched heights zs, labels lb and e^L at corner 0; its area with
+// the parent's normal n (wetTriangle's fan: the piece is coplanar), and
+// its integrals added to the lanes' sums: area A, first moment rA, force
+// F, torque Tq about the COM, wave velocity integral Vw (a piece of no
+// area, a cut at a corner, adds nothing, as in wetWaves)
 template <int W, class M>
-static void pieceChunk(const TriIn* in, Piece* pc, int p0, int nl) {
+static void cutPiece(const TriIn* in, const typename TLanes<W>::V q[3][3],
+                     typename TLanes<W>::V d[3], const typename TLanes<W>::V zs[3],
+                     const typename TLanes<W>::V lb[3][2], const double* const e0[W],
+                     const typename TLanes<W>::V n[3], typename TLanes<W>::I* good,
+                     typename TLanes<W>::V* A, typename TLanes<W>::V rA[3],
+                     typename TLanes<W>::V F[3], typename TLanes<W>::V Tq[3],
+                     typename TLanes<W>::V Vw[3]) {
   typedef typename TLanes<W>::V V;
   typedef typename TLanes<W>::I I;
-  V p[3][3], d[3], zs[3], lb[3][2], n[3];
-  const double* e0[W];
-  for (int l = 0; l < W; l++) {
-    const Piece& g = pc[p0 + (l < nl ? l : nl - 1)];
-    for (int c = 0; c < 3; c++) {
-      for (int j = 0; j < 3; j++) p[c][j][l] = g.q[c][j];
-      d[c][l] = g.d[c];
-      zs[c][l] = g.zs[c];
-      lb[c][0][l] = g.lab[c][0];
-      lb[c][1][l] = g.lab[c][1];
-      n[c][l] = g.n[c];
-    }
-    e0[l] = in->E + in->es * in->nw * g.ev;
+  V e1[3], e2[3];
+  for (int j = 0; j < 3; j++) {
+    e1[j] = q[1][j] - q[0][j];
+    e2[j] = q[2][j] - q[0][j];
   }
-  // wetTriangle's fan: the piece is coplanar with its parent, so its area
-  // is (cross . n) / 2 with the parent's normal
-  V e1[3], e2[3], cr[3];
+  const V a = 0.5 * ((e1[1] * e2[2] - e1[2] * e2[1]) * n[0] +
+                     (e1[2] * e2[0] - e1[0] * e2[2]) * n[1] +
+                     (e1[0] * e2[1] - e1[1] * e2[0]) * n[2]);
+  const I has = a > 0;
+  const V z = V{}, ap = has ? a : z;
+  V P, Pr[3], vw[3];
+  laneIntegrals<W, M>(in, q, d, zs, lb, e0, ap, good, &P, Pr, vw);
+  *A += ap;
+  for (int j = 0; j < 3; j++) {
+    const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+    rA[j] += ap * (q[0][j] + q[1][j] + q[2][j]) / 3;
+    F[j] -= has ? P * n[j] : z;
+    Tq[j] -= has ? Pr[j1] * n[j2] - Pr[j2] * n[j1] : z;
+    Vw[j] += has ? vw[j] : z;
+  }
+}
+
+// a point on each lane's edge from wet corner w to dry corner e, where
+// the surface cuts it: t = h_w / (h_w - h_e) from the wet end (wetTriangle's
+// rule, so a shared edge gives both triangles the same point); position
+// x and label l
+template <int W>
+static void cutPoint(const typename TLanes<W>::V pw[3], const typename TLanes<W>::V pe[3],
+                     const typename TLanes<W>::V lw[2], const typename TLanes<W>::V le[2],
+                     typename TLanes<W>::V hw, typename TLanes<W>::V he,
+                     typename TLanes<W>::V x[3], typename TLanes<W>::V l[2]) {
+  const typename TLanes<W>::V t = hw / (hw - he);
+  for (int j = 0; j < 3; j++) x[j] = pw[j] + t * (pe[j] - pw[j]);
+  for (int j = 0; j < 2; j++) l[j] = lw[j] + t * (le[j] - lw[j]);
+}
+
+// cut triangles [p0, p0 + nl) of in.idx as W lanes (the last repeated
+// past nl), each turned so its odd corner o (the one alone on its side of
+// the surface) comes first, winding kept: o, a, b. TWO false: o alone
+// below, one wet piece (o, cut oa, cut ob); TWO true: o alone above, a wet
+// quadrilateral a, b, cut bo, cut ao in two pieces fanned from a. Sums
+// into f, t, wet, wdir, lo, hi as triChunk
+template <int W, class M, bool TWO>
+static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
+                     typename TLanes<W>::V* Tq, typename TLanes<W>::V* wet,
+                     typename TLanes<W>::V* wdir, typename TLanes<W>::V* lo,
+                     typename TLanes<W>::V* hi) {
+  typedef typename TLanes<W>::V V;
+  typedef typename TLanes<W>::I I;
+  V p[3][3], h[3], zs[3], lb[3][2];
+  I fromB = I{};  // lanes whose quadrilateral is fanned from b
+  const double* e0[W];
+  int tk[W];
+  for (int l = 0; l < W; l++) {
+    const int k = in->idx[p0 + (l < nl ? l : nl - 1)];
+    const int* fc = in->face + 3 * k;
+    tk[l] = k;
+    const double h0 = in->h[fc[0]], h1 = in->h[fc[1]];
+    const int r = TWO ? (h0 > 0 ? 0 : h1 > 0 ? 1 : 2) : (h0 <= 0 ? 0 : h1 <= 0 ? 1 : 2);
+    fromB[l] = TWO && r == 1 ? -1 : 0;
+    for (int c = 0; c < 3; c++) {
+      const int g = fc[(r + c) % 3];
+      for (int j = 0; j < 3; j++) p[c][j][l] = in->rel[3 * g + j];
+      h[c][l] = in->h[g];
+      zs[c][l] = in->zs[g - in->v0];  // read at the wet corners only
+      lb[c][0][l] = in->lab[2 * g];
+      lb[c][1][l] = in->lab[2 * g + 1];
+      if (c == (!TWO ? 0 : r == 1 ? 2 : 1)) e0[l] = in->E + in->es * in->nw * (g - in->v0);
+    }
+  }
+  // the parent's normal (wetTriangle)
+  V e1[3], e2[3], cr[3], n[3];
   for (int j = 0; j < 3; j++) {
     e1[j] = p[1][j] - p[0][j];
     e2[j] = p[2][j] - p[0][j];
@@ -316,47 +384,117 @@ static void pieceChunk(const TriIn* in, Piece* pc, int p0, int nl) {
   cr[0] = e1[1] * e2[2] - e1[2] * e2[1];
   cr[1] = e1[2] * e2[0] - e1[0] * e2[2];
   cr[2] = e1[0] * e2[1] - e1[1] * e2[0];
-  const V A0 = 0.5 * (cr[0] * n[0] + cr[1] * n[1] + cr[2] * n[2]);
-  // not finite: the parent goes to the scalar path, which reports it; a
-  // piece of no area (a cut at a corner) adds nothing (wetWaves)
-  I good = (A0 - A0) == 0;
-  const I has = A0 > 0;
-  const V A = has ? A0 : V{};
-  V P, Pr[3], Vw[3];
-  laneIntegrals<W, M>(in, p, d, zs, lb, e0, A, &good, &P, Pr, Vw);
+  const V len = M::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+  const I ok = len > 0;
+  const V il = ok ? 1 / len : V{};
+  for (int j = 0; j < 3; j++) n[j] = cr[j] * il;
+  const V hs = h[0] + h[1] + h[2];
+  I good = ok & ((hs - hs) == 0);
+  V A = V{}, rA[3] = {}, Fl[3] = {}, Tl[3] = {}, Vw[3] = {}, x[4][3];
   const V z = V{};
-  for (int l = 0; l < nl; l++) {
-    Piece& g = pc[p0 + l];
-    g.ok = good[l] != 0;
-    g.A = A[l];
+  if (!TWO) {
+    V l1[2], l2[2];
+    cutPoint<W>(p[0], p[1], lb[0], lb[1], h[0], h[1], x[1], l1);
+    cutPoint<W>(p[0], p[2], lb[0], lb[2], h[0], h[2], x[2], l2);
+    for (int j = 0; j < 3; j++) x[0][j] = x[3][j] = p[0][j];
+    const V q[3][3] = {{p[0][0], p[0][1], p[0][2]}, {x[1][0], x[1][1], x[1][2]},
+                       {x[2][0], x[2][1], x[2][2]}};
+    V d[3] = {-h[0], z, z};
+    const V zq[3] = {zs[0], z, z}, lq[3][2] = {{lb[0][0], lb[0][1]}, {l1[0], l1[1]},
+                                               {l2[0], l2[1]}};
+    cutPiece<W, M>(in, q, d, zq, lq, e0, n, &good, &A, rA, Fl, Tl, Vw);
+  } else {
+    // the quadrilateral a, b, cut bo, cut ao fanned as wetWaves fans it:
+    // from the first wet corner in the parent's order, b when o is the
+    // parent's corner 1, else a (the cut points' labels and z' are linear
+    // along the edges only, so the diagonal changes the integrals beyond
+    // round-off)
+    V la[2], lbo[2];
+    cutPoint<W>(p[1], p[0], lb[1], lb[0], h[1], h[0], x[3], la);   // on edge a-o
+    cutPoint<W>(p[2], p[0], lb[2], lb[0], h[2], h[0], x[2], lbo);  // on edge b-o
     for (int j = 0; j < 3; j++) {
-      const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-      g.rA[j] = (has ? A * (p[0][j] + p[1][j] + p[2][j]) / 3 : z)[l];
-      g.f[j] = (has ? -P * n[j] : z)[l];
-      g.t[j] = (has ? -(Pr[j1] * n[j2] - Pr[j2] * n[j1]) : z)[l];
-      g.V[j] = (has ? Vw[j] : z)[l];
+      x[0][j] = p[1][j];
+      x[1][j] = p[2][j];
     }
+    // corners a, b, cut bo, cut ao: position, depth, z', label
+    V cq[4][3], cd[4], cz[4] = {zs[1], zs[2], z, z}, cl[4][2];
+    for (int c = 0; c < 4; c++) {
+      for (int j = 0; j < 3; j++) cq[c][j] = x[c][j];
+      cd[c] = c == 0 ? -h[1] : c == 1 ? -h[2] : z;
+    }
+    for (int j = 0; j < 2; j++) {
+      cl[0][j] = lb[1][j];
+      cl[1][j] = lb[2][j];
+      cl[2][j] = lbo[j];
+      cl[3][j] = la[j];
+    }
+    // pieces (a, b, cut bo), (a, cut bo, cut ao), or from b (b, cut bo,
+    // cut ao), (b, cut ao, a): corner indices into the four
+    const int fa[2][3] = {{0, 1, 2}, {0, 2, 3}}, fbv[2][3] = {{1, 2, 3}, {1, 3, 0}};
+    for (int m = 0; m < 2; m++) {
+      V q[3][3], d[3], zq[3], lq[3][2];
+      for (int c = 0; c < 3; c++) {
+        const int i = fa[m][c], k = fbv[m][c];
+        for (int j = 0; j < 3; j++) q[c][j] = fromB ? cq[k][j] : cq[i][j];
+        d[c] = fromB ? cd[k] : cd[i];
+        zq[c] = fromB ? cz[k] : cz[i];
+        for (int j = 0; j < 2; j++) lq[c][j] = fromB ? cl[k][j] : cl[i][j];
+      }
+      cutPiece<W, M>(in, q, d, zq, lq, e0, n, &good, &A, rA, Fl, Tl, Vw);
+    }
+  }
+  // per triangle done (wet area, centroid, normal, mean water velocity)
+  const I has = A > 0;
+  const V inv = has ? 1 / A : z;
+  for (int l = 0; l < nl; l++) {
+    const int k = tk[l];
+    if (!good[l]) {
+      if (ok[l] || len[l] != len[l] || hs[l] != hs[l]) in->rest[in->nrest++] = k;
+      continue;  // else degenerate: no wet part, area 0 (wetTriangle)
+    }
+    if (!has[l]) continue;
+    in->area[k] = A[l];
+    for (int j = 0; j < 3; j++) {
+      const int kl = 3 * (k - in->t0) + j;
+      in->c[kl] = rA[j][l] * inv[l];
+      in->nrm[kl] = n[j][l];
+      in->u[kl] = (j < 2 ? in->cur[j] : 0) + Vw[j][l] * inv[l];
+    }
+  }
+  I use = good & has;
+  for (int l = nl; l < W; l++) use[l] = 0;
+  for (int j = 0; j < 3; j++) {
+    F[j] += use ? Fl[j] : z;
+    Tq[j] += use ? Tl[j] : z;
+  }
+  *wet += use ? A : z;
+  *wdir += use ? rA[0] * in->dir[0] + rA[1] * in->dir[1] + rA[2] * in->dir[2] : z;
+  for (int c = 0; c < (TWO ? 4 : 3); c++) {
+    const V e = x[c][0] * in->dir[0] + x[c][1] * in->dir[1] + x[c][2] * in->dir[2];
+    *lo = (use & (e < *lo)) ? e : *lo;
+    *hi = (use & (e > *hi)) ? e : *hi;
   }
 }
 
-template <int W, class M>
-static void pieceLanes(const TriIn* in, Piece* pc, int np) {
-  for (int p = 0; p < np; p += W) pieceChunk<W, M>(in, pc, p, np - p < W ? np - p : W);
-}
-
-template <int W, class M>
+// in.idx's triangles in chunks of W: KIND 0 wholly wet (triChunk), 1 cut
+// with one corner below, 2 cut with one corner above (cutChunk)
+template <int W, class M, int KIND>
 static void triLanes(TriIn* in) {
   typedef typename TLanes<W>::V V;
-  V F[3] = {}, Tq[3] = {}, wet = V{}, lo = V{} + __builtin_inf(), hi = -lo;
+  V F[3] = {}, Tq[3] = {}, wet = V{}, wdir = V{}, lo = V{} + __builtin_inf(), hi = -lo;
   in->nrest = 0;
   for (int p = 0; p < in->m; p += W) {
-    triChunk<W, M>(in, p, in->m - p < W ? in->m - p : W, F, Tq, &wet, &lo, &hi);
+    const int nl = in->m - p < W ? in->m - p : W;
+    if (KIND == 0) triChunk<W, M>(in, p, nl, F, Tq, &wet, &wdir, &lo, &hi);
+    if (KIND == 1) cutChunk<W, M, false>(in, p, nl, F, Tq, &wet, &wdir, &lo, &hi);
+    if (KIND == 2) cutChunk<W, M, true>(in, p, nl, F, Tq, &wet, &wdir, &lo, &hi);
   }
   for (int j = 0; j < 3; j++) {
     in->f[j] = TLanes<W>::hsum(F[j]);
     in->t[j] = TLanes<W>::hsum(Tq[j]);
   }
   in->wet = TLanes<W>::hsum(wet);
+  in->wdir = TLanes<W>::hsum(wdir);
   in->lo = -TLanes<W>::hmax(-lo);
   in->hi = TLanes<W>::hmax(hi);
 }
