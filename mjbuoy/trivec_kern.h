@@ -1,16 +1,18 @@
-// trivec_kern: trivec.h's wholly wet triangles for W triangles at once (GCC
-// vector extensions), included by one file per instruction set. Everything
-// here is static: no inline function compiled for AVX can be shared with
-// the scalar path. Includes nothing but trivec.h and waveker.h.
+// trivec_kern: trivec.h's wholly wet and cut triangles for W triangles at
+// once (GCC vector extensions), included by one file per instruction set.
+// Everything here is static: no inline function compiled for AVX can be
+// shared with the scalar path. Includes nothing but trivec.h and waveker.h.
 //
-// Each lane does what cpu.cc's scalar loop does for a triangle with every
-// vertex at or below the surface: wetTriangle's uncut branch, the linear
-// hydrostatic part (wavepress.cc hydrostaticLevel) or Kerner's, and
-// waveint.cc's series about vertex 0 for every component whose exponent on
-// the piece reaches above -40 (the same set the scalar path sums). A lane
-// whose piece is too coarse for the series (k rho > kRMax for the largest
+// Each lane does what cpu.cc's scalar loop does for one triangle: for a
+// wholly wet one wetTriangle's uncut branch, for a cut one its clip and
+// fan (cutChunk: the same cut points and the same fan corner); for each
+// piece the linear hydrostatic part (wavepress.cc hydrostaticLevel) or
+// Kerner's, and waveint.cc's series about corner 0 for every component
+// whose exponent on the piece reaches above -40 (the same set the scalar
+// path sums). A triangle
+// with a piece too coarse for the series (k rho > kRMax for the largest
 // k: the scalar path subdivides) or not finite goes back to the scalar
-// path. Only the rounding differs: FMA contraction, the order of sums,
+// path whole. Only the rounding differs: FMA contraction, the order of sums,
 // the series' count of terms (cut at 2^-kSeriesBitsV of the first instead
 // of the scalar's 2^-54, waveker.h), and T_2 by the sum rule T_0 + T_1 +
 // T_2 = S (serieskern.h).
