@@ -209,6 +209,27 @@ static void laneIntegrals(const TriIn* in, const typename TLanes<W>::V p[3][3],
   for (int j = 0; j < 3; j++) Vw[j] = a2 * acc[4 + j];
 }
 
+// the lanes' triangles p: cross product cr of their edges from corner 0,
+// unit normal n (0 where degenerate); returns |cr| (wetTriangle)
+template <int W, class M>
+static typename TLanes<W>::V laneNormal(const typename TLanes<W>::V p[3][3],
+                                        typename TLanes<W>::V cr[3],
+                                        typename TLanes<W>::V n[3]) {
+  typedef typename TLanes<W>::V V;
+  V e1[3], e2[3];
+  for (int j = 0; j < 3; j++) {
+    e1[j] = p[1][j] - p[0][j];
+    e2[j] = p[2][j] - p[0][j];
+  }
+  cr[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  cr[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  cr[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  const V len = M::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+  const V il = len > 0 ? 1 / len : V{};
+  for (int j = 0; j < 3; j++) n[j] = cr[j] * il;
+  return len;
+}
+
 // triangles [p0, p0 + nl) of in.idx as W lanes (the last repeated in the
 // lanes past nl, whose results are dropped); sums into f, t, wet, lo, hi
 template <int W, class M>
@@ -235,21 +256,10 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
     }
   }
   // wetTriangle's uncut branch: normal, area, centroid
-  V e1[3], e2[3], cr[3], sr[3], n[3];
-  for (int j = 0; j < 3; j++) {
-    e1[j] = p[1][j] - p[0][j];
-    e2[j] = p[2][j] - p[0][j];
-  }
-  cr[0] = e1[1] * e2[2] - e1[2] * e2[1];
-  cr[1] = e1[2] * e2[0] - e1[0] * e2[2];
-  cr[2] = e1[0] * e2[1] - e1[1] * e2[0];
-  const V len = M::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+  V cr[3], sr[3], n[3];
+  const V len = laneNormal<W, M>(p, cr, n);
   const I ok = len > 0;
-  const V il = ok ? 1 / len : V{};
-  for (int j = 0; j < 3; j++) {
-    n[j] = cr[j] * il;
-    sr[j] = p[0][j] + p[1][j] + p[2][j];
-  }
+  for (int j = 0; j < 3; j++) sr[j] = p[0][j] + p[1][j] + p[2][j];
   const V A = 0.5 * (cr[0] * n[0] + cr[1] * n[1] + cr[2] * n[2]);
   I good = ok;
   V P, Pr[3], Vw[3];
@@ -378,18 +388,9 @@ static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
     }
   }
   // the parent's normal (wetTriangle)
-  V e1[3], e2[3], cr[3], n[3];
-  for (int j = 0; j < 3; j++) {
-    e1[j] = p[1][j] - p[0][j];
-    e2[j] = p[2][j] - p[0][j];
-  }
-  cr[0] = e1[1] * e2[2] - e1[2] * e2[1];
-  cr[1] = e1[2] * e2[0] - e1[0] * e2[2];
-  cr[2] = e1[0] * e2[1] - e1[1] * e2[0];
-  const V len = M::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+  V cr[3], n[3];
+  const V len = laneNormal<W, M>(p, cr, n);
   const I ok = len > 0;
-  const V il = ok ? 1 / len : V{};
-  for (int j = 0; j < 3; j++) n[j] = cr[j] * il;
   const V hs = h[0] + h[1] + h[2];
   I good = ok & ((hs - hs) == 0);
   V A = V{}, rA[3] = {}, Fl[3] = {}, Tl[3] = {}, Vw[3] = {}, x[4][3];
