@@ -97,7 +97,7 @@ struct State {
   // were taken [s]
   std::vector<double> offOld, hoffOld, offOld2, hoffOld2;
   std::vector<char> hv, hvNew, hvOld, hvOld2;
-  double tgOff = 0, tgOld = 0, tgOld2 = 0;
+  double tgOff = 0, tgOld = 0, tgOld2 = 0;  // (the gl backend's too: offbuf)
   std::vector<WaveNow> wn;     // wave constants of this call
   WaveTab tab;                 // the same by wave number, for waveint.h
   // per thread: Newton and structure-of-arrays scratch (cpu.cc
@@ -130,6 +130,11 @@ struct State {
   bool hasPrev = false;
   unsigned slambuf[2] = {0, 0};  // gl backend: history buffers, [slamcur] = this step's
   int slamcur = 0;
+  // gl backend: the label offsets' ring (shaders/pipeline.h B_OFF), the
+  // slot this step's first call writes, and how many steps before it the
+  // ring holds (0 to 2; their times tgOff, tgOld)
+  unsigned offbuf = 0;
+  int offslot = 0, offn = 0;
   // stamp of the mjData this state last served (glue.cc, docs/robustness.md):
   // its buffer and its fwdVelocity count (the stage mjcb_passive runs in)
   // at the last callback; with tcur above. A count or time below these, or
@@ -151,6 +156,13 @@ struct State {
 // stage (records nothing)
 enum { kSameStep = 0, kNewStep, kRestart, kMidStep };
 int stepClock(const mjModel* m, const mjData* d, State* s);
+
+// the weights L of the last n (0 to 3) steps' label offsets, taken at times
+// tk[0] > tk[1] > tk[2] [s], in the label guess at time t [s] (cpu.cc): the
+// Lagrange polynomial through them evaluated at t, so a smooth offset is
+// off by O(dt^n); the last offset alone (or nothing, n = 0) when the times
+// are not increasing or t is more than two steps past tk[0]
+void guessWeights(double t, const double tk[3], int n, double L[3]);
 
 // allocate s for b
 void makeState(const Buoy& b, State* s);

@@ -248,24 +248,12 @@ static void wetWaves(const Sea& sea, const WaveTab& t, size_t nw, const Wet& wt,
   }
 }
 
-// the weights L of off, offOld, offOld2 in hull ih's label guesses at time
-// t: the Lagrange polynomial through the last three steps' offsets
-// (times tgOff, tgOld, tgOld2) evaluated at t, when all three were solved;
-// through the last two, or the last alone, when fewer were. The offset
-// moves smoothly with the sea and the hull, so the quadratic guess is off
-// by O(dt^3) (nanometres at dt = 2 ms) where the last step's label was off
-// by O(dt) (millimetres), and Newton, converging quadratically, reaches its
-// tolerance in one step instead of two; the tolerance is unchanged, so the
-// labels differ only within it. Beyond two steps ahead (a jump in time) the
-// polynomial is not trusted: the last offset alone
-static void guessWeights(const State& s, int ih, double t, double L[3]) {
-  const double t0 = s.tgOff, t1 = s.tgOld, t2 = s.tgOld2;
-  L[0] = s.hv[ih] ? 1 : 0;
+void guessWeights(double t, const double tk[3], int n, double L[3]) {
+  const double t0 = tk[0], t1 = tk[1], t2 = tk[2];
+  L[0] = n >= 1 ? 1 : 0;
   L[1] = L[2] = 0;
-  if (!s.hv[ih] || !s.hvOld[ih] || !(t0 > t1) || !(t - t0 <= 2 * (t0 - t1)) || !(t >= t0)) {
-    return;
-  }
-  if (s.hvOld2[ih] && t1 > t2) {
+  if (n < 2 || !(t0 > t1) || !(t - t0 <= 2 * (t0 - t1)) || !(t >= t0)) return;
+  if (n >= 3 && t1 > t2) {
     L[0] = (t - t1) * (t - t2) / ((t0 - t1) * (t0 - t2));
     L[1] = (t - t0) * (t - t2) / ((t1 - t0) * (t1 - t2));
     L[2] = (t - t0) * (t - t1) / ((t2 - t0) * (t2 - t1));
@@ -273,6 +261,20 @@ static void guessWeights(const State& s, int ih, double t, double L[3]) {
     L[0] = (t - t1) / (t0 - t1);
     L[1] = (t - t0) / (t1 - t0);
   }
+}
+
+// the weights L of off, offOld, offOld2 in hull ih's label guesses at time
+// t (guessWeights): through the last three steps' offsets (times tgOff,
+// tgOld, tgOld2) when all three were solved, the last two, or the last
+// alone when fewer were. The offset moves smoothly with the sea and the
+// hull, so the quadratic guess is off by O(dt^3) (nanometres at dt = 2 ms)
+// where the last step's label was off by O(dt) (millimetres), and Newton,
+// converging quadratically, reaches its tolerance in one step instead of
+// two; the tolerance is unchanged, so the labels differ only within it
+static void hullGuess(const State& s, int ih, double t, double L[3]) {
+  const int n = !s.hv[ih] ? 0 : !s.hvOld[ih] ? 1 : !s.hvOld2[ih] ? 2 : 3;
+  const double tk[3] = {s.tgOff, s.tgOld, s.tgOld2};
+  guessWeights(t, tk, n, L);
 }
 
 // one hull's per-triangle results in the thread's scratch (TriState):
@@ -576,8 +578,11 @@ static void vertexHeights(const HullCall& c, const HullScr& hs) {
     s->lab[2 * i] = hs.A0[q];
     s->lab[2 * i + 1] = hs.A1[q];
     if (c.first) {
-      s->offNew[2 * i] = hs.A0[q] - hs.X[q];
-      s->offNew[2 * i + 1] = hs.A1[q] - hs.Y[q];
+      // (a label not finite, which the height reports, guesses nothing)
+      const double o0 = hs.A0[q] - hs.X[q], o1 = hs.A1[q] - hs.Y[q];
+      const bool ok = std::isfinite(o0) && std::isfinite(o1);
+      s->offNew[2 * i] = ok ? o0 : 0;
+      s->offNew[2 * i + 1] = ok ? o1 : 0;
     }
     s->h[i] = s->rel[3 * i + 2] + zc - hs.Z[q];
     if (nw > 0 && s->h[i] <= 0) {
@@ -621,8 +626,10 @@ static double hullFlow(const HullCall& c, const double vel[6], double dir[3]) {
   double hz = sea.solve(s->wn.data(), com[0], com[1], a, c.sc, c.tmp, &nit);
   s->niter[c.slot] += nit;
   if (c.first) {
-    s->hoffNew[2 * ih] = a[0] - com[0];
-    s->hoffNew[2 * ih + 1] = a[1] - com[1];
+    const double o0 = a[0] - com[0], o1 = a[1] - com[1];
+    const bool ok = std::isfinite(o0) && std::isfinite(o1);
+    s->hoffNew[2 * ih] = ok ? o0 : 0;
+    s->hoffNew[2 * ih + 1] = ok ? o1 : 0;
   }
   sea.velocitySC(s->wn.data(), c.sc, com[2] - sea.level, hz - sea.level, uw);
   for (int j = 0; j < 3; j++) vr[j] = vel[3 + j] - uw[j];
@@ -770,7 +777,7 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
     return;
   }
   if (first) s->hvNew[ih] = 1;
-  guessWeights(*s, ih, d->time, c.L);
+  hullGuess(*s, ih, d->time, c.L);
   const HullScr hs = hullScr(sea, c.sc, s->mi, hl.nv);
   vertexStage(c, hs);
   double dir[3];

@@ -63,6 +63,7 @@ struct GlBackend {
   int vlocal = BUOY_VERT_LOCAL, local = BUOY_LOCAL, per = BUOY_PER, blocal = BUOY_BODY_LOCAL;
   GLint uHasprev[kNVar], uFirst[kNVar], uSlamdt[kNVar];  // per-step uniforms of the
                                 // tprog, looked up in glMake
+  GLint uvFirst[kNVar], uvGw[kNVar], uvOff[kNVar][3];  // and of the vprog (labelGuess)
   std::vector<GBody> body;      // per step, one per hull body (staging without persist)
   std::vector<float> phase;     // per step, nslot x nwave
   std::vector<float> out;       // readback, nslot x 10 x 4
@@ -389,6 +390,15 @@ bool glMake(Buoy* b, std::string* err) {
     g->uFirst[i] = loc(g, g->tprog[i], "first");
     g->uSlamdt[i] = loc(g, g->tprog[i], "slamdt");
   }
+  for (int i = 0; i < kNVar; i++) {
+    GLuint p = g->vprog[i];
+    if (!p) continue;
+    g->uvFirst[i] = loc(g, p, "first");
+    g->uvGw[i] = loc(g, p, "gw");
+    g->uvOff[i][0] = loc(g, p, "offNew");
+    g->uvOff[i][1] = loc(g, p, "offLast");
+    g->uvOff[i][2] = loc(g, p, "offOld");
+  }
   timerInit(&g->timer, &gl);
   for (int i = 0; i < kNStage; i++) g->tstage[i] = timerStage(&g->timer, kStage[i]);
   b->gl = g;
@@ -435,7 +445,23 @@ void glFreeState(Buoy* b, State* s) {
   if (!b->gl || !s->slambuf[0]) return;
   GlCurrent cur(&b->gl->ctx);
   b->gl->ctx.gl.DeleteBuffers(2, s->slambuf);
-  s->slambuf[0] = s->slambuf[1] = 0;
+  b->gl->ctx.gl.DeleteBuffers(1, &s->offbuf);
+  s->slambuf[0] = s->slambuf[1] = s->offbuf = 0;
+}
+
+// s's per-data buffers, zeroed: the slamming history (n bytes each) and
+// the label offsets' ring
+static void makeStateBuffers(GlBackend* g, State* s, GLsizeiptr n, bool zero) {
+  const GladGLContext& gl = g->ctx.gl;
+  const GLsizeiptr no = GLsizeiptr(3 * 2 * sizeof(float)) * std::max(g->nvert, 1);
+  std::vector<char> z(zero ? std::max(n, no) : 0, 0);
+  gl.GenBuffers(2, s->slambuf);
+  gl.GenBuffers(1, &s->offbuf);
+  for (GLuint x : {s->slambuf[0], s->slambuf[1], s->offbuf}) {
+    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, x);
+    gl.BufferData(GL_SHADER_STORAGE_BUFFER, x == s->offbuf ? no : n, zero ? z.data() : nullptr,
+                  GL_DYNAMIC_COPY);
+  }
 }
 
 bool glCopyState(Buoy* b, State* dst, const State* src) {
@@ -446,17 +472,12 @@ bool glCopyState(Buoy* b, State* dst, const State* src) {
   if (!cur.ok()) return false;
   const GladGLContext& gl = g->ctx.gl;
   GLsizeiptr n = GLsizeiptr(4 * sizeof(float)) * std::max(g->ntri, 1);
-  if (!dst->slambuf[0]) {
-    gl.GenBuffers(2, dst->slambuf);
-    for (GLuint x : dst->slambuf) {
-      gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, x);
-      gl.BufferData(GL_SHADER_STORAGE_BUFFER, n, nullptr, GL_DYNAMIC_COPY);
-    }
-  }
-  for (int i = 0; i < 2; i++) {
-    gl.BindBuffer(GL_COPY_READ_BUFFER, src->slambuf[i]);
-    gl.BindBuffer(GL_COPY_WRITE_BUFFER, dst->slambuf[i]);
-    gl.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, n);
+  GLsizeiptr no = GLsizeiptr(3 * 2 * sizeof(float)) * std::max(g->nvert, 1);
+  if (!dst->slambuf[0]) makeStateBuffers(g, dst, n, false);
+  for (int i = 0; i < 3; i++) {
+    gl.BindBuffer(GL_COPY_READ_BUFFER, i < 2 ? src->slambuf[i] : src->offbuf);
+    gl.BindBuffer(GL_COPY_WRITE_BUFFER, i < 2 ? dst->slambuf[i] : dst->offbuf);
+    gl.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, i < 2 ? n : no);
   }
   gl.Finish();
   return true;
@@ -536,6 +557,35 @@ static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   }
 }
 
+// the label search's guesses (as cpu.cc's, docs/physics.md "Cost"): each
+// vertex's label offset from the last two steps, extrapolated in time to
+// t [s] (guessWeights); a new step moves the ring on (this step's slot
+// takes the oldest's), a restart starts cold so a rerun repeats its bits.
+// Only the step's first call writes its slot, so an RK4 stage guesses from
+// the same steps as the step's first call
+static void labelGuess(GlBackend* g, State* s, int clock, double t) {
+  if (clock == kNewStep) {
+    s->offslot = (s->offslot + 2) % 3;
+    s->offn = std::min(s->offn + 1, 2);
+    s->tgOld = s->tgOff;
+    s->tgOff = s->tprev;
+  }
+  if (clock == kRestart) s->offn = 0;
+  const double tk[3] = {s->tgOff, s->tgOld, 0};
+  double L[3];
+  guessWeights(t, tk, s->offn, L);
+  const GladGLContext& gl = g->ctx.gl;
+  for (int i = 0; i < kNVar; i++) {
+    GLuint p = g->vprog[i];
+    if (!p) continue;
+    gl.ProgramUniform1i(p, g->uvFirst[i], clock != kMidStep);
+    gl.ProgramUniform2f(p, g->uvGw[i], float(L[0]), float(L[1]));
+    for (int j = 0; j < 3; j++) {
+      gl.ProgramUniform1i(p, g->uvOff[i][j], g->nvert * ((s->offslot + j) % 3));
+    }
+  }
+}
+
 void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   GlBackend* g = b->gl;
   std::lock_guard<std::mutex> lk(g->mu);
@@ -543,17 +593,11 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   const GladGLContext& gl = g->ctx.gl;
   if (!cur.ok()) return;
 
-  // per-data slamming history, created on the first call for d
-  if (!s->slambuf[0]) {
-    gl.GenBuffers(2, s->slambuf);
-    std::vector<float> zero(4 * std::max(g->ntri, 1), 0.0f);
-    for (GLuint x : s->slambuf) {
-      gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, x);
-      gl.BufferData(GL_SHADER_STORAGE_BUFFER, zero.size() * 4, zero.data(), GL_DYNAMIC_COPY);
-    }
-  }
+  // per-data slamming history and label offsets, created on the first call for d
+  if (!s->slambuf[0]) makeStateBuffers(g, s, GLsizeiptr(4 * sizeof(float)) * std::max(g->ntri, 1), true);
   int clock = stepClock(m, d, s);
   if (clock == kNewStep) s->slamcur ^= 1;
+  labelGuess(g, s, clock, d->time);
   std::memset(s->bad.data(), 0, s->bad.size());
   bodies(b, m, d, s);
 
@@ -570,6 +614,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   gl.BindImageTexture(0, g->tex[4], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_OFF, s->offbuf);
   for (int i = 0; i < kNVar; i++) {
     GLuint p = g->tprog[i];
     if (!p) continue;
@@ -620,7 +665,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     g->reach = 1.25 * reach;
     uploadWaves(g, b->cfg.sea);
   }
-  for (int i = 0; i < 15; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
+  for (int i = 0; i <= B_OFF; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
   gl.BindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   for (int i = kNTex - 1; i >= 0; i--) {
     gl.ActiveTexture(GL_TEXTURE0 + i);

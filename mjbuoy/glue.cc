@@ -455,10 +455,12 @@ int mjb_copyData(mjbBuoy* b, mjData* dst, const mjData* src) {
     return 1;
   }
   State* t = state(b, dst, true);
-  unsigned keep[2] = {t->slambuf[0], t->slambuf[1]};
+  // dst's own GL buffers (glCopyState copies into them)
+  unsigned keep[3] = {t->slambuf[0], t->slambuf[1], t->offbuf};
   *t = *s;
   t->slambuf[0] = keep[0];
   t->slambuf[1] = keep[1];
+  t->offbuf = keep[2];
   t->notices.reserve(s->notices.capacity());
   t->buf = dst->buffer;  // dst's counters and time are src's after mj_copyData
   return mjb::glCopyState(&b->b, t, s) ? 1 : 0;

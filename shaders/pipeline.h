@@ -54,6 +54,10 @@ namespace glsl {
 #define B_EXP 14     // vec4[]       (image unit 0, not an SSBO binding) vertex x component
                      //              pair: every vertex's e^(i theta) of two components a
                      //              texel (sea.glsl expTexel)
+#define B_OFF 15     // vec2[]       per mjData: vertex label minus position (rel. COM) at
+                     //              three steps, a ring of three slots of nvert each: this
+                     //              step's (written on its first call), the last, the one
+                     //              before (verts.comp; gl.cc labelGuess)
 
 struct GVert {
   float x;

@@ -19,6 +19,13 @@ layout(std430, binding = B_LAB) writeonly buffer Labs { vec2 lab[]; };
 layout(binding = 0, rgba32f) uniform writeonly imageBuffer iExp;
 
 uniform int nvchunk;
+// the label search's guess (gl.cc labelGuess): the position plus the
+// weights gw of the last two steps' offsets in B_OFF at element offsets
+// offLast, offOld; this step's first call stores its own at offNew
+layout(std430, binding = B_OFF) buffer Offs { vec2 off[]; };
+uniform vec2 gw;
+uniform int offNew, offLast, offOld;
+uniform int first;
 
 // e^(i theta) of component w at body b's point x of label a (xy), and its
 // height amp cos(theta) (z)
@@ -43,7 +50,10 @@ void main() {
 #ifdef WI_AIRY
       vec2 a = r.xy;  // no Gerstner component: the label is the position (gl.cc)
 #else
-      vec2 a = seaLabel(b, r.xy, r.xy);
+      vec2 a = seaLabel(b, r.xy, r.xy + gw.x * off[offLast + i] + gw.y * off[offOld + i]);
+      // (a label not finite, which the heights report, guesses nothing)
+      vec2 da = a - r.xy;
+      if (first != 0) off[offNew + i] = all(lessThan(abs(da), vec2(3e38))) ? da : vec2(0.0);
 #endif
       // the surface height above the still level, sum amp cos(theta) in
       // component order, and each component's e^(i theta), at dry

@@ -1,7 +1,7 @@
-// the cpu backend's surface search starts from labels extrapolated from the
-// last three steps: forces stay those of a cold solve within the solver's
-// tolerance, Newton needs about one step per solve, and runs, resets,
-// copies and thread counts repeat the bits
+// the surface search starts from labels extrapolated from the last steps
+// (three on the cpu backend, two on gl): forces stay those of a cold solve
+// within the solver's tolerance, Newton needs about one step per solve
+// (cpu), and runs, resets, copies and thread counts repeat the bits
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -17,10 +17,12 @@ namespace {
 // two Wigley hulls (576 triangles) and a box barge on a steep two-component
 // Gerstner sea: sum Q k A = 0.8 (2 pi / 10) 0.4 + 0.6 (2 pi / 6) 0.15 =
 // 0.30 (folding at 1), so every hull meets crests and troughs
-std::string steep(int threads) {
+std::string steep(int threads, const char* backend = "cpu", const char* integ = "Euler") {
   std::ostringstream s;
-  s << "<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" MJB_MODELS
-    << "/meshes/wigley_576.obj\"/></asset><custom><text name=\"mjbuoy.hulls\" data=\"h*\"/>"
+  s << "<mujoco><option timestep=\"0.002\" integrator=\"" << integ << "\"/><asset>"
+    << "<mesh name=\"w\" file=\"" MJB_MODELS "/meshes/wigley_576.obj\"/></asset><custom>"
+    << "<text name=\"mjbuoy.hulls\" data=\"h*\"/>"
+    << "<text name=\"mjbuoy.backend\" data=\"" << backend << "\"/>"
     << "<numeric name=\"mjbuoy.wave.a\" data=\"0.4 10 20 0 0.8\"/>"
     << "<numeric name=\"mjbuoy.wave.b\" data=\"0.15 6 -50 40 0.6\"/>"
     << "<numeric name=\"mjbuoy.threads\" data=\"" << threads << "\"/></custom><worldbody>";
@@ -129,6 +131,78 @@ TEST(Guess, RunsResetsCopiesAndThreadsRepeatTheBits) {
   first.insert(first.end(), rest.begin(), rest.end());
   EXPECT_EQ(first, ref);
   mjb_unbindData(one.b, c);
+  mj_deleteData(c);
+}
+
+TEST(Guess, GlRunsResetsAndCopiesRepeatTheBits) {
+  // gl keeps its guesses' history per mjData in a GL buffer: a reset starts
+  // it cold, mjb_copyData copies it, and RK4's stages read the step's
+  // guesses without writing them, so each of these repeats the bits
+  for (const char* integ : {"Euler", "RK4"}) {
+    Scene g(steep(1, "gl", integ));
+    ASSERT_TRUE(g.ok()) << g.err;
+    ASSERT_STREQ(mjb_info(g.b).backend, "gl");
+    const std::vector<double> ref = run(g.m, g.d, g.b, 120);
+    mj_resetData(g.m, g.d);
+    EXPECT_EQ(run(g.m, g.d, g.b, 120), ref) << integ;
+    mj_resetData(g.m, g.d);
+    std::vector<double> first = run(g.m, g.d, g.b, 60);
+    mjData* c = mj_makeData(g.m);
+    mj_copyData(c, g.m, g.d);
+    ASSERT_EQ(mjb_copyData(g.b, c, g.d), 1);
+    std::vector<double> rest = run(g.m, g.d, g.b, 60);
+    EXPECT_EQ(run(g.m, c, g.b, 60), rest) << integ;
+    first.insert(first.end(), rest.begin(), rest.end());
+    EXPECT_EQ(first, ref) << integ;
+    mjb_unbindData(g.b, c);
+    mj_deleteData(c);
+  }
+}
+
+TEST(Guess, GlForcesAreThoseOfAColdSolve) {
+  // as ForcesAreThoseOfAColdSolve on gl, in float: every 10 steps a copy
+  // without history (labels start at the positions) against the run's
+  // guessed ones. Both stop once a Newton step is below 0.1 mm (after it
+  // the error is ~ K st^2 = 0.18 (1e-4)^2 = 2e-9 m), so what is left is
+  // float's resolution of a label a few metres from the COM, 3 m 2^-24 =
+  // 2e-7 m, which moves a vertex height by up to that times (1 + sum k A)
+  // and the pressure force by about rho g S_wet dh, relative dh / draft =
+  // 2e-7 / 0.1 m = 2e-6 per vertex, less summed over the hull: 2e-5 of
+  // each family's size leaves a factor of ten
+  Scene s(steep(1, "gl"));
+  ASSERT_TRUE(s.ok()) << s.err;
+  ASSERT_STREQ(mjb_info(s.b).backend, "gl");
+  mjData* c = mj_makeData(s.m);
+  double worst = 0, largest = 0;
+  for (int k = 0; k < 300; k++) {
+    const bool check = k % 10 == 9;
+    if (check) {
+      mj_copyData(c, s.m, s.d);
+      mjb_unbindData(s.b, c);
+      mj_forward(s.m, c);
+    }
+    mj_step(s.m, s.d);
+    if (!check) continue;
+    for (int p : {mjbPART_PRESSURE, mjbPART_VISCOUS, mjbPART_DRAG, mjbPART_DAMPING}) {
+      const mjtNum* w = mjb_wrenchPart(s.b, s.d, p);
+      const mjtNum* wc = mjb_wrenchPart(s.b, c, p);
+      for (int bd = 1; bd < s.m->nbody; bd++) {
+        double n = 0, e = 0;
+        for (int j = 0; j < 6; j++) {
+          n += wc[6 * bd + j] * wc[6 * bd + j];
+          e += (w[6 * bd + j] - wc[6 * bd + j]) * (w[6 * bd + j] - wc[6 * bd + j]);
+        }
+        n = std::sqrt(n);
+        e = std::sqrt(e);
+        EXPECT_LE(e, 2e-5 * n + 1e-6) << "step " << k << " family " << p << " body " << bd;
+        if (n > 0) worst = std::fmax(worst, e / n);
+        if (p == mjbPART_PRESSURE) largest = std::fmax(largest, n);
+      }
+    }
+  }
+  ASSERT_GT(largest, 1000) << "the hulls must float for the comparison to show anything";
+  std::printf("gl: worst relative difference from a cold solve %.3g\n", worst);
+  mjb_unbindData(s.b, c);
   mj_deleteData(c);
 }
 
