@@ -11,6 +11,7 @@
 #include "pressure.h"
 #include "rigid.h"
 #include "seavec.h"
+#include "trisort.h"
 #include "trivec.h"
 #include "vmath.h"
 #include "waveint.h"
@@ -658,30 +659,19 @@ static void pass1Hull(Pass1& q, int* wl) {
   }
   // dry triangles keep the zero area; the others are written below
   std::memset(&s->tri.area[hl.t0], 0, hl.nt * sizeof(double));
-  // lists by kind (trivec.h: 0 wholly wet, 1 one corner below, 2 one
-  // above), nt ints each; the rest of the lanes after them
-  int* kl[3] = {wl, wl + hl.nt, wl + 2 * hl.nt};
-  int nk[3] = {0, 0, 0};
-  for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-    // sorted without branches (which side of the surface is unpredictable
-    // along the mesh); a height not finite is none of these (pass1Tri)
-    const int* fc = q.b.face.data() + 3 * k;
-    const double h0 = s->h[fc[0]], h1 = s->h[fc[1]], h2 = s->h[fc[2]];
-    const bool dry = (h0 >= 0) & (h1 >= 0) & (h2 >= 0);
-    const int up = (h0 > 0) + (h1 > 0) + (h2 > 0), down = (h0 <= 0) + (h1 <= 0) + (h2 <= 0);
-    const bool wet = down == 3, one = !dry & (down == 1) & (up == 2),
-               two = !dry & (down == 2) & (up == 1);
-    kl[0][nk[0]] = k;
-    nk[0] += wet;
-    kl[1][nk[1]] = k;
-    nk[1] += one;
-    kl[2][nk[2]] = k;
-    nk[2] += two;
-    if (!dry & !wet & !one & !two) pass1Tri(q, k);
+  // lists by kind (trisort.h), nt ints each; the lanes' rest after them
+  TriSort ks{q.b.face.data(), s->h.data(), hl.t0, hl.nt,
+             {wl, wl + hl.nt, wl + 2 * hl.nt, wl + 3 * hl.nt}, {0, 0, 0, 0}};
+  if (simdLevel() == kSimdAvx512) {
+    sortKindsAvx512(&ks);
+  } else {
+    sortKindsAvx2(&ks);
   }
+  // a height not finite: the scalar path, which reports it
+  for (int i = 0; i < ks.n[kKindOther]; i++) pass1Tri(q, ks.list[kKindOther][i]);
   TriIn in = triIn(q);
   for (int kind = 0; kind < 3; kind++) {
-    if (nk[kind] > 0) pass1Lanes(q, in, kind, kl[kind], nk[kind], wl + 3 * hl.nt);
+    if (ks.n[kind] > 0) pass1Lanes(q, in, kind, ks.list[kind], ks.n[kind], wl + 3 * hl.nt);
   }
 }
 

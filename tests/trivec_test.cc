@@ -3,6 +3,8 @@
 // against Archimedes, on every instruction set this cpu has
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -11,6 +13,7 @@
 
 #include "simdlevels.h"
 #include "testutil.h"
+#include "trisort.h"
 #include "vmath.h"
 
 namespace mjbt {
@@ -170,6 +173,63 @@ TEST(TriVec, LanesMatchTheScalarTriangles) {
     }
   }
   mjb::simdSet(prev);
+}
+
+// wholly wet, one corner below, one above, other
+const int kNKindTest = 4;
+
+TEST(TriVec, SortsByKindAsTheScalarRule) {
+  // 3000 triangles on 500 vertices whose heights are drawn from values that
+  // sit on every edge of the rule: 0, -0, the smallest subnormals, +-inf,
+  // NaN and ordinary ones (and 343 triangles with every pattern of seven
+  // of them over their corners), and a range [t0, t0 + nt) that ends off the
+  // lane groups (16 and 8). The kinds, written out from their definitions
+  // (docs/physics.md "Cost": dry if no corner is below, h >= 0 at all
+  // three; wholly wet if all three are h <= 0 and it is not dry; cut with
+  // one corner at or below and two above, or two at or below and one
+  // above; a height not finite and none of these: the scalar path), must
+  // come out in ascending order on every vector level
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double pick[] = {0.0, -0.0, 4.9e-324, -4.9e-324, inf, -inf, nan, 0.3, -0.3, 1e300, -2.5};
+  std::mt19937 rng(7);
+  std::vector<double> h(500);
+  // mostly ordinary heights, every special value often enough
+  for (double& x : h) x = rng() % 3 ? std::ldexp(double(rng() % 2001) - 1000.0, -9) : pick[rng() % 11];
+  std::vector<int> face(3 * 3000);
+  for (int& f : face) f = rng() % 500;
+  const int t0 = 37, nt = 2913;
+  // and every pattern of seven values over three corners: 343 triangles
+  const double seven[] = {0.0, -0.0, 0.3, -0.3, nan, inf, -inf};
+  for (int i = 0; i < 7; i++) h[i] = seven[i];
+  for (int p = 0; p < 343; p++) {
+    face[3 * (t0 + p)] = p % 7, face[3 * (t0 + p) + 1] = p / 7 % 7, face[3 * (t0 + p) + 2] = p / 49;
+  }
+  std::vector<int> want[kNKindTest];
+  for (int k = t0; k < t0 + nt; k++) {
+    double a = h[face[3 * k]], b = h[face[3 * k + 1]], c = h[face[3 * k + 2]];
+    int le = (a <= 0) + (b <= 0) + (c <= 0), gt = (a > 0) + (b > 0) + (c > 0);
+    bool dry = a >= 0 && b >= 0 && c >= 0;
+    if (dry) continue;
+    int kind = le == 3 ? 0 : le == 1 && gt == 2 ? 1 : le == 2 && gt == 1 ? 2 : 3;
+    want[kind].push_back(k);
+  }
+  for (int c = 0; c < kNKindTest; c++) EXPECT_GT(want[c].size(), 20u) << "kind " << c;
+  for (int level : vectorLevels("trisort")) {
+    std::vector<int> got[mjb::kNKind];
+    for (auto& g : got) g.assign(nt, -1);
+    mjb::TriSort in{face.data(), h.data(), t0, nt,
+                    {got[0].data(), got[1].data(), got[2].data(), got[3].data()}, {0, 0, 0, 0}};
+    if (level == mjb::kSimdAvx512) {
+      mjb::sortKindsAvx512(&in);
+    } else {
+      mjb::sortKindsAvx2(&in);
+    }
+    for (int c = 0; c < mjb::kNKind; c++) {
+      got[c].resize(in.n[c]);
+      EXPECT_EQ(got[c], want[c]) << mjb::simdName(level) << ", kind " << c;
+    }
+  }
 }
 
 }  // namespace
