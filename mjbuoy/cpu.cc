@@ -549,6 +549,19 @@ static void placeVertices(const HullCall& c, const HullScr& hs) {
   State* s = c.s;
   const mjtNum *x = c.x, *R = c.R, *com = c.com;
   const double* L = c.L;
+  if (simdLevel() != kSimdScalar) {  // in lanes (seavec.h)
+    PlaceIn in{c.b.vert.data() + 3 * hl.v0, hl.nv, {}, {}, {}, {L[0], L[1], L[2]},
+               {&s->off[2 * hl.v0], &s->offOld[2 * hl.v0], &s->offOld2[2 * hl.v0]},
+               s->rel.data() + 3 * hl.v0, hs.X, hs.Y, hs.A0, hs.A1};
+    for (int j = 0; j < 9; j++) in.R[j] = R[j];
+    for (int j = 0; j < 3; j++) in.t[j] = x[j] - com[j], in.com[j] = com[j];
+    if (simdLevel() == kSimdAvx512) {
+      placeLanesAvx512(in);
+    } else {
+      placeLanesAvx2(in);
+    }
+    return;
+  }
   for (int q = 0; q < hl.nv; q++) {
     const int i = hl.v0 + q;
     const double* p = c.b.vert.data() + 3 * i;

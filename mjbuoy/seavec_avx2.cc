@@ -3,6 +3,7 @@
 #include <immintrin.h>
 
 #include "seavec_kern.h"
+#include "placekern.h"
 
 // glibc libmvec, 4 doubles per call (x86_64 vector ABI, ISA "d" = AVX2)
 extern "C" __m256d _ZGVdN4v_sin(__m256d);
@@ -18,4 +19,5 @@ struct Mvec4 {
 }  // namespace
 
 long solveLanesAvx2(const LaneIn& in) { return solveLanes<4, Mvec4>(in); }
+void placeLanesAvx2(const PlaceIn& in) { placeLanes<4>(in); }
 }  // namespace mjb

@@ -3,6 +3,7 @@
 #include <immintrin.h>
 
 #include "seavec_kern.h"
+#include "placekern.h"
 
 // glibc libmvec, 8 doubles per call (x86_64 vector ABI, ISA "e" = AVX-512)
 extern "C" __m512d _ZGVeN8v_sin(__m512d);
@@ -18,4 +19,5 @@ struct Mvec8 {
 }  // namespace
 
 long solveLanesAvx512(const LaneIn& in) { return solveLanes<8, Mvec8>(in); }
+void placeLanesAvx512(const PlaceIn& in) { placeLanes<8>(in); }
 }  // namespace mjb
