@@ -87,15 +87,19 @@ struct State {
   // label minus position of each vertex, 2 each [m], the guess of the label
   // search: off is read, from the first call of the previous step (zero
   // after a restart) so every call of a step sees the same guess and gives
-  // the same bits; offNew is written by the first call of this step
-  std::vector<double> off, offNew;
+  // the same bits; offNew is written by the first call of this step. In
+  // float: a guess needs no more (its 1e-8 m resolution of an offset of
+  // a metre is far below what one Newton step corrects), and the vertex
+  // stage streams them every step
+  std::vector<float> off, offNew;
   std::vector<double> hoff, hoffNew;  // the same for each hull's COM [m]
   // the two steps before off's (offOld, then offOld2; hoffOld, hoffOld2),
   // so the guess extrapolates the last three steps' offsets in time
   // (cpu.cc guessWeights); per hull whether offNew, off, offOld, offOld2
   // hold a solve (1) or are cold (0), and the times off, offOld, offOld2
   // were taken [s]
-  std::vector<double> offOld, hoffOld, offOld2, hoffOld2;
+  std::vector<float> offOld, offOld2;
+  std::vector<double> hoffOld, hoffOld2;
   std::vector<char> hv, hvNew, hvOld, hvOld2;
   double tgOff = 0, tgOld = 0, tgOld2 = 0;  // (the gl backend's too: offbuf)
   std::vector<WaveNow> wn;     // wave constants of this call

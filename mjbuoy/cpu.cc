@@ -505,7 +505,7 @@ static void dryHull(const Hull& hl, int ih, bool first, State* s) {
   std::memset(&s->curA[hl.t0], 0, hl.nt * sizeof(double));
   std::memset(&s->curV[3 * hl.t0], 0, 3 * hl.nt * sizeof(double));
   // the next step's guesses: cold, as after a restart
-  std::memset(&s->offNew[2 * hl.v0], 0, 2 * hl.nv * sizeof(double));
+  std::memset(&s->offNew[2 * hl.v0], 0, 2 * hl.nv * sizeof(float));
   s->hoffNew[2 * ih] = s->hoffNew[2 * ih + 1] = 0;
   s->hvNew[ih] = 0;
 }
@@ -549,20 +549,16 @@ static void placeVertices(const HullCall& c, const HullScr& hs) {
   State* s = c.s;
   const mjtNum *x = c.x, *R = c.R, *com = c.com;
   const double* L = c.L;
-  if (simdLevel() != kSimdScalar) {  // in lanes (seavec.h)
+  int q0 = 0;  // whole chunks in lanes (seavec.h), the rest here
+  if (simdLevel() != kSimdScalar) {
     PlaceIn in{c.b.vert.data() + 3 * hl.v0, hl.nv, {}, {}, {}, {L[0], L[1], L[2]},
                {&s->off[2 * hl.v0], &s->offOld[2 * hl.v0], &s->offOld2[2 * hl.v0]},
                s->rel.data() + 3 * hl.v0, hs.X, hs.Y, hs.A0, hs.A1};
     for (int j = 0; j < 9; j++) in.R[j] = R[j];
     for (int j = 0; j < 3; j++) in.t[j] = x[j] - com[j], in.com[j] = com[j];
-    if (simdLevel() == kSimdAvx512) {
-      placeLanesAvx512(in);
-    } else {
-      placeLanesAvx2(in);
-    }
-    return;
+    q0 = simdLevel() == kSimdAvx512 ? placeLanesAvx512(in) : placeLanesAvx2(in);
   }
-  for (int q = 0; q < hl.nv; q++) {
+  for (int q = q0; q < hl.nv; q++) {
     const int i = hl.v0 + q;
     const double* p = c.b.vert.data() + 3 * i;
     double* r = s->rel.data() + 3 * i;
@@ -571,7 +567,7 @@ static void placeVertices(const HullCall& c, const HullScr& hs) {
     }
     hs.X[q] = r[0] + com[0];
     hs.Y[q] = r[1] + com[1];
-    const double *o = &s->off[2 * i], *o1 = &s->offOld[2 * i], *o2 = &s->offOld2[2 * i];
+    const float *o = &s->off[2 * i], *o1 = &s->offOld[2 * i], *o2 = &s->offOld2[2 * i];
     hs.A0[q] = hs.X[q] + (L[0] * o[0] + L[1] * o1[0] + L[2] * o2[0]);
     hs.A1[q] = hs.Y[q] + (L[0] * o[1] + L[1] * o1[1] + L[2] * o2[1]);
   }
@@ -595,8 +591,8 @@ static void vertexHeights(const HullCall& c, const HullScr& hs) {
       // (a label not finite, which the height reports, guesses nothing)
       const double o0 = hs.A0[q] - hs.X[q], o1 = hs.A1[q] - hs.Y[q];
       const bool ok = std::isfinite(o0) && std::isfinite(o1);
-      s->offNew[2 * i] = ok ? o0 : 0;
-      s->offNew[2 * i + 1] = ok ? o1 : 0;
+      s->offNew[2 * i] = ok ? float(o0) : 0;
+      s->offNew[2 * i + 1] = ok ? float(o1) : 0;
     }
     s->h[i] = s->rel[3 * i + 2] + zc - hs.Z[q];
     if (nw > 0 && s->h[i] <= 0) {
@@ -836,7 +832,7 @@ static void hullRange(const Job& j, int h0, int h1, int slot) {
       s->bad[bd] = 1;
       if (j.first) {  // the next step's guesses: cold
         const Hull& hl = b.hull[ih];
-        std::memset(&s->offNew[2 * hl.v0], 0, 2 * hl.nv * sizeof(double));
+        std::memset(&s->offNew[2 * hl.v0], 0, 2 * hl.nv * sizeof(float));
         s->hoffNew[2 * ih] = s->hoffNew[2 * ih + 1] = 0;
         s->hvNew[ih] = 0;
       }
@@ -891,8 +887,10 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   }
   if (clock == kRestart) {
     // label guesses start cold so a rerun repeats the first bit for bit
-    for (std::vector<double>* v : {&s->off, &s->offNew, &s->offOld, &s->offOld2, &s->hoff,
-                                   &s->hoffNew, &s->hoffOld, &s->hoffOld2}) {
+    for (std::vector<float>* v : {&s->off, &s->offNew, &s->offOld, &s->offOld2}) {
+      std::fill(v->begin(), v->end(), 0.0f);
+    }
+    for (std::vector<double>* v : {&s->hoff, &s->hoffNew, &s->hoffOld, &s->hoffOld2}) {
       std::fill(v->begin(), v->end(), 0.0);
     }
     for (std::vector<char>* v : {&s->hv, &s->hvNew, &s->hvOld, &s->hvOld2}) {

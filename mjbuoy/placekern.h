@@ -11,9 +11,9 @@
 namespace mjb {
 namespace {
 
-// component j of the W vectors of n doubles each stored one after another
-// from p (n = 2 or 3): two two-source shuffles (the lanes' elements n l + j
-// lie in the n loads of W)
+// component j of the W vectors of N doubles each stored one after another
+// from p (N = 2 or 3): two two-source shuffles (the lanes' elements N l + j
+// lie in the N loads of W)
 template <int W, int N>
 static inline typename Lanes<W>::V unzip(const double* p, int j) {
   typedef typename Lanes<W>::V V;
@@ -27,6 +27,30 @@ static inline typename Lanes<W>::V unzip(const double* p, int j) {
     m2[l] = e < 2 * W ? l : W + e - 2 * W;
   }
   return __builtin_shuffle(__builtin_shuffle(a, b, m1), c, m2);
+}
+
+// the W pairs of floats from p split into their first and second members,
+// as doubles
+template <int W>
+struct FLanes {
+  typedef float F __attribute__((vector_size(4 * 2 * W)));  // 2 W floats
+  typedef int J __attribute__((vector_size(4 * 2 * W)));    // their shuffle
+  typedef float H __attribute__((vector_size(4 * W)));      // half of them
+};
+template <int W>
+static inline void unzipPairs(const float* p, typename Lanes<W>::V* a, typename Lanes<W>::V* b) {
+  typedef typename FLanes<W>::F F;
+  typedef typename FLanes<W>::J J;
+  typedef typename FLanes<W>::H H;
+  F f;
+  __builtin_memcpy(&f, p, sizeof f);
+  J m;
+  for (int l = 0; l < W; l++) m[l] = 2 * l, m[W + l] = 2 * l + 1;
+  const F s = __builtin_shuffle(f, m);
+  H h[2];
+  __builtin_memcpy(h, &s, sizeof s);
+  *a = __builtin_convertvector(h[0], typename Lanes<W>::V);
+  *b = __builtin_convertvector(h[1], typename Lanes<W>::V);
 }
 
 // the W 3-vectors (x[l], y[l], z[l]) stored one after another from p
@@ -62,35 +86,22 @@ static inline void placeChunk(const PlaceIn& in, int q) {
   V g[2] = {V{}, V{}};
   for (int s = 0; s < 3; s++) {
     if (in.L[s] == 0) continue;  // (a cold or short history: fewer loads)
-    const double* o = in.o[s] + 2 * q;
-    g[0] += in.L[s] * unzip<W, 2>(o, 0);
-    g[1] += in.L[s] * unzip<W, 2>(o, 1);
+    V ox, oy;
+    unzipPairs<W>(in.o[s] + 2 * q, &ox, &oy);
+    g[0] += in.L[s] * ox;
+    g[1] += in.L[s] * oy;
   }
   Lanes<W>::st(in.A0 + q, X + g[0]);
   Lanes<W>::st(in.A1 + q, Y + g[1]);
 }
 
+// the whole chunks of W vertices; returns how many vertices were placed
+// (cpu.cc's scalar loop does the rest)
 template <int W>
-static void placeLanes(const PlaceIn& in) {
+static int placeLanes(const PlaceIn& in) {
   int q = 0;
   for (; q + W <= in.m; q += W) placeChunk<W>(in, q);
-  for (; q < in.m; q++) {
-    const double* p = in.p + 3 * q;
-    double* r = in.rel + 3 * q;
-    for (int j = 0; j < 3; j++) {
-      r[j] = in.R[3 * j] * p[0] + in.R[3 * j + 1] * p[1] + in.R[3 * j + 2] * p[2] + in.t[j];
-    }
-    in.X[q] = r[0] + in.com[0];
-    in.Y[q] = r[1] + in.com[1];
-    double g[2] = {0, 0};
-    for (int s = 0; s < 3; s++) {
-      if (in.L[s] == 0) continue;
-      g[0] += in.L[s] * in.o[s][2 * q];
-      g[1] += in.L[s] * in.o[s][2 * q + 1];
-    }
-    in.A0[q] = in.X[q] + g[0];
-    in.A1[q] = in.Y[q] + g[1];
-  }
+  return q;
 }
 
 }  // namespace

@@ -37,16 +37,17 @@ long solveLanesAvx512(const LaneIn& in);
 // major) and shifted by t = body origin - COM [m] into rel (3 each,
 // relative to the COM); X, Y = rel + com (world); the label search's
 // guesses A0, A1 = X, Y + sum_s L[s] o[s] (the last steps' offsets, 2
-// each; an o[s] whose weight is 0 is not read)
+// each, float: buoy.h State::off; an o[s] whose weight is 0 is not read)
 struct PlaceIn {
   const double* p;
   int m;
   double R[9], t[3], com[3], L[3];
-  const double* o[3];
+  const float* o[3];
   double *rel, *X, *Y, *A0, *A1;
 };
-void placeLanesAvx2(const PlaceIn& in);
-void placeLanesAvx512(const PlaceIn& in);
+// placed in whole chunks of lanes: returns how many (the rest: cpu.cc)
+int placeLanesAvx2(const PlaceIn& in);
+int placeLanesAvx512(const PlaceIn& in);
 
 }  // namespace mjb
 

@@ -19,5 +19,5 @@ struct Mvec4 {
 }  // namespace
 
 long solveLanesAvx2(const LaneIn& in) { return solveLanes<4, Mvec4>(in); }
-void placeLanesAvx2(const PlaceIn& in) { placeLanes<4>(in); }
+int placeLanesAvx2(const PlaceIn& in) { return placeLanes<4>(in); }
 }  // namespace mjb

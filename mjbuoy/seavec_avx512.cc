@@ -19,5 +19,5 @@ struct Mvec8 {
 }  // namespace
 
 long solveLanesAvx512(const LaneIn& in) { return solveLanes<8, Mvec8>(in); }
-void placeLanesAvx512(const PlaceIn& in) { placeLanes<8>(in); }
+int placeLanesAvx512(const PlaceIn& in) { return placeLanes<8>(in); }
 }  // namespace mjb
