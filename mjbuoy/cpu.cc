@@ -279,7 +279,8 @@ static void hullGuess(const State& s, int ih, double t, double L[3]) {
 }
 
 // one hull's per-triangle results in the thread's scratch (TriState):
-// triangle k's at 3 (k - t0)
+// triangle k's at 3 (k - t0); v is the slamming history curV itself on a
+// step's first call (hullWrench)
 struct TriScr {
   double *c, *n, *u, *v;
   int t0;
@@ -695,7 +696,7 @@ static double formMean(const Pass1& q) {
 }
 
 // pass 2's scalar reference for wet triangle k: viscous, drag and slamming
-// at its centroid with its relative velocity v (stored in tri.v)
+// at its centroid with its relative velocity v (stored at ts.v)
 static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
                      const double dir[3], const Flow2& f2, int k, double* const w[]) {
   const HullParams& par = c.hl.par;
@@ -795,13 +796,11 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
   const double cf = ittc57(speed * len / sea.nu);
   const double sbar = formMean(q);
   Flow2 f2{q.lo, len, sbar, cf, s->hasPrev ? d->time - s->tprev : 0};
+  // slamming history: the last call at this step's time; pass 2 writes
+  // the velocities there itself (no copy of 24 bytes a triangle)
+  if (first) c.ts.v = &s->curV[3 * hl.t0];
   pass2Hull(c, vel, rig, dir, f2, wl, w);
-
-  // slamming history: the last call at this step's time
-  if (first) {
-    std::memcpy(&s->curA[hl.t0], &s->tri.area[hl.t0], hl.nt * sizeof(double));
-    std::memcpy(&s->curV[3 * hl.t0], c.ts.v, 3 * hl.nt * sizeof(double));
-  }
+  if (first) std::memcpy(&s->curA[hl.t0], &s->tri.area[hl.t0], hl.nt * sizeof(double));
   // simple damping (Cruz 2023), scaled by the wet fraction r_s = S_wet / S
   const double rs = q.wet / hl.area;
   for (int j = 0; j < 3; j++) {
