@@ -20,6 +20,7 @@
 #define MJBUOY_TRIVEC_KERN_H_
 
 #include "trivec.h"
+#include "zipkern.h"
 #include "serieskern.h"
 #include "waveker.h"
 
@@ -520,17 +521,16 @@ static inline void addLanes(V* w, const V g[3], const V c[3], I use) {
   }
 }
 
-// pass 2 for the wet triangles [p0, p0 + nl) of in.idx as W lanes:
-// hydro.cc's viscousForce, dragForce and slamForce (the same tests, the
-// same NaN for a non-finite input), rigid.cc's effMass
-template <int W, class M>
-static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
-                      typename TLanes<W>::V* wd, typename TLanes<W>::V* ws) {
-  typedef typename TLanes<W>::V V;
-  typedef typename TLanes<W>::I I;
-  // gathered into plain rows, then loaded (GCC 12 warns of lane stores)
+// the lanes' pass-1 results and slamming history gathered triangle by
+// triangle (the last repeated past nl): into plain rows, then loaded
+// (GCC 12 warns of lane stores)
+template <int W>
+static inline void flowGather(const FlowIn* in, int p0, int nl, int* tk,
+                              typename TLanes<W>::V* A, typename TLanes<W>::V* S,
+                              typename TLanes<W>::V* Ap, typename TLanes<W>::V c[3],
+                              typename TLanes<W>::V n[3], typename TLanes<W>::V u[3],
+                              typename TLanes<W>::V vp[3]) {
   double g1[3][W], g3[4][3][W];
-  int tk[W];
   for (int l = 0; l < W; l++) {
     const int k = in->idx[p0 + (l < nl ? l : nl - 1)];
     tk[l] = k;
@@ -545,25 +545,29 @@ static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
       g3[3][j][l] = in->prevV[3 * k + j];
     }
   }
-  V A, S, Ap, c[3], n[3], v[3], vp[3];
-  __builtin_memcpy(&A, g1[0], sizeof A);
-  __builtin_memcpy(&S, g1[1], sizeof S);
-  __builtin_memcpy(&Ap, g1[2], sizeof Ap);
+  __builtin_memcpy(A, g1[0], sizeof *A);
+  __builtin_memcpy(S, g1[1], sizeof *A);
+  __builtin_memcpy(Ap, g1[2], sizeof *A);
   for (int j = 0; j < 3; j++) {
-    __builtin_memcpy(&c[j], g3[0][j], sizeof A);
-    __builtin_memcpy(&n[j], g3[1][j], sizeof A);
-    __builtin_memcpy(&v[j], g3[2][j], sizeof A);
-    __builtin_memcpy(&vp[j], g3[3][j], sizeof A);
+    __builtin_memcpy(&c[j], g3[0][j], sizeof *A);
+    __builtin_memcpy(&n[j], g3[1][j], sizeof *A);
+    __builtin_memcpy(&u[j], g3[2][j], sizeof *A);
+    __builtin_memcpy(&vp[j], g3[3][j], sizeof *A);
   }
-  I use = A == A;
-  for (int l = 0; l < W; l++) use[l] = l < nl ? -1 : 0;
-  const double* w = in->vel;
-  const V wc[3] = {w[1] * c[2] - w[2] * c[1], w[2] * c[0] - w[0] * c[2],
-                   w[0] * c[1] - w[1] * c[0]};
-  for (int j = 0; j < 3; j++) v[j] = w[3 + j] + wc[j] - v[j];
-  for (int l = 0; l < nl; l++) {
-    for (int j = 0; j < 3; j++) in->v[3 * (tk[l] - in->t0) + j] = v[j][l];
-  }
+}
+
+// the lanes' viscous, drag and slamming forces (flowChunk) from area A,
+// whole area S, previous area Ap, centroid c, normal n, flow-relative
+// velocity v and the previous one vp, summed in the lanes of use
+template <int W, class M>
+static inline void flowForces(const FlowIn* in, typename TLanes<W>::V A, typename TLanes<W>::V S,
+                              typename TLanes<W>::V Ap, const typename TLanes<W>::V c[3],
+                              const typename TLanes<W>::V n[3], const typename TLanes<W>::V v[3],
+                              const typename TLanes<W>::V vp[3], typename TLanes<W>::I use,
+                              typename TLanes<W>::V* wv, typename TLanes<W>::V* wd,
+                              typename TLanes<W>::V* ws) {
+  typedef typename TLanes<W>::V V;
+  typedef typename TLanes<W>::I I;
   const V z = V{}, one = V{} + 1, nanv = V{} + __builtin_nan("");
   const V v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
   const V vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
@@ -618,6 +622,49 @@ static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
     for (int j = 0; j < 3; j++) g[j] = fin ? (hit ? s * v[j] : z) : nanv;
     addLanes(ws, g, c, use);
   }
+}
+
+// pass 2 for the wet triangles [p0, p0 + nl) of in.idx as W lanes:
+// hydro.cc's viscousForce, dragForce and slamForce (the same tests, the
+// same NaN for a non-finite input), rigid.cc's effMass
+template <int W, class M>
+static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
+                      typename TLanes<W>::V* wd, typename TLanes<W>::V* ws) {
+  typedef typename TLanes<W>::V V;
+  typedef typename TLanes<W>::I I;
+  const int k0 = in->idx[p0];
+  // W triangles in a row (most of a hull's wet ones): loaded whole
+  const bool run = nl == W && in->idx[p0 + W - 1] - k0 == W - 1;
+  V A, S, Ap, c[3], n[3], v[3], vp[3];
+  int tk[W];
+  if (run) {
+    A = zload<V>(in->area + k0);
+    S = zload<V>(in->tarea + k0);
+    Ap = zload<V>(in->prevA + k0);
+    const int o = 3 * (k0 - in->t0);
+    for (int j = 0; j < 3; j++) {
+      c[j] = unzip<V, I, W, 3>(in->c + o, j);
+      n[j] = unzip<V, I, W, 3>(in->nrm + o, j);
+      v[j] = unzip<V, I, W, 3>(in->u + o, j);
+      vp[j] = unzip<V, I, W, 3>(in->prevV + 3 * k0, j);
+    }
+  } else {
+    flowGather<W>(in, p0, nl, tk, &A, &S, &Ap, c, n, v, vp);
+  }
+  I use = A == A;
+  for (int l = 0; l < W; l++) use[l] = l < nl ? -1 : 0;
+  const double* w = in->vel;
+  const V wc[3] = {w[1] * c[2] - w[2] * c[1], w[2] * c[0] - w[0] * c[2],
+                   w[0] * c[1] - w[1] * c[0]};
+  for (int j = 0; j < 3; j++) v[j] = w[3 + j] + wc[j] - v[j];
+  if (run) {
+    zip3<V, I, W>(in->v + 3 * (k0 - in->t0), v[0], v[1], v[2]);
+  } else {
+    for (int l = 0; l < nl; l++) {
+      for (int j = 0; j < 3; j++) in->v[3 * (tk[l] - in->t0) + j] = v[j][l];
+    }
+  }
+  flowForces<W, M>(in, A, S, Ap, c, n, v, vp, use, wv, wd, ws);
 }
 
 template <int W, class M>
