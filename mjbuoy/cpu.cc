@@ -574,17 +574,19 @@ static void placeVertices(const HullCall& c, const HullScr& hs) {
   }
 }
 
-// after the label search: labels, the next step's guesses, heights above
-// the surface, and at wet vertices (h <= 0, a wet piece's corner 0) the
-// stretched height and e^L, kExpChunk vertices per vertexWaves call
-static void vertexHeights(const HullCall& c, const HullScr& hs) {
+// after the label search: labels, the next step's guesses and heights
+// above the surface, whole chunks in lanes (seavec.h), the rest here
+static void vertexOut(const HullCall& c, const HullScr& hs) {
   const Hull& hl = c.hl;
-  const Sea& sea = c.b.cfg.sea;
   State* s = c.s;
-  const size_t nw = sea.waves.size();
   const double zc = c.com[2];
-  int wq[kExpChunk], nq = 0;
-  for (int q = 0; q < hl.nv; q++) {
+  int q0 = 0;
+  if (simdLevel() != kSimdScalar) {
+    HeightIn in{hl.nv, s->rel.data() + 3 * hl.v0, zc, hs.X, hs.Y, hs.A0, hs.A1, hs.Z, c.first,
+                s->lab.data() + 2 * hl.v0, s->offNew.data() + 2 * hl.v0, s->h.data() + hl.v0};
+    q0 = simdLevel() == kSimdAvx512 ? heightLanesAvx512(in) : heightLanesAvx2(in);
+  }
+  for (int q = q0; q < hl.nv; q++) {
     const int i = hl.v0 + q;
     s->lab[2 * i] = hs.A0[q];
     s->lab[2 * i + 1] = hs.A1[q];
@@ -596,13 +598,27 @@ static void vertexHeights(const HullCall& c, const HullScr& hs) {
       s->offNew[2 * i + 1] = ok ? float(o1) : 0;
     }
     s->h[i] = s->rel[3 * i + 2] + zc - hs.Z[q];
-    if (nw > 0 && s->h[i] <= 0) {
-      hs.ZS[q] = stretch(sea.depth, s->rel[3 * i + 2] + zc - sea.level, hs.Z[q] - sea.level);
-      wq[nq++] = q;
-      if (nq == kExpChunk) {
-        vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg);
-        nq = 0;
-      }
+  }
+}
+
+// at wet vertices (h <= 0, a wet piece's corner 0) the stretched height
+// and e^L, kExpChunk vertices per vertexWaves call
+static void wetVertices(const HullCall& c, const HullScr& hs) {
+  const Hull& hl = c.hl;
+  const Sea& sea = c.b.cfg.sea;
+  State* s = c.s;
+  const size_t nw = sea.waves.size();
+  if (nw == 0) return;
+  const double zc = c.com[2];
+  int wq[kExpChunk], nq = 0;
+  for (int q = 0; q < hl.nv; q++) {
+    const int i = hl.v0 + q;
+    if (!(s->h[i] <= 0)) continue;
+    hs.ZS[q] = stretch(sea.depth, s->rel[3 * i + 2] + zc - sea.level, hs.Z[q] - sea.level);
+    wq[nq++] = q;
+    if (nq == kExpChunk) {
+      vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg);
+      nq = 0;
     }
   }
   if (nq > 0) vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg);
@@ -617,7 +633,8 @@ static void vertexStage(const HullCall& c, const HullScr& hs) {
   s->niter[c.slot] += c.b.cfg.sea.solveMany(s->wn.data(), c.hl.nv, hs.X, hs.Y, hs.A0, hs.A1,
                                             hs.Z, hs.SC, c.tmp);
   s->nsolve[c.slot] += c.hl.nv + 1;  // and the COM's (hullFlow)
-  vertexHeights(c, hs);
+  vertexOut(c, hs);
+  wetVertices(c, hs);
   s->vsec[c.slot] += std::chrono::duration<double>(std::chrono::steady_clock::now() - tv0).count();
 }
 

@@ -63,6 +63,45 @@ static inline void placeChunk(const PlaceIn& in, int q) {
   Lanes<W>::st(in.A1 + q, Y + g[1]);
 }
 
+// the W pairs (a[l], b[l]) stored one after another from p as floats
+template <int W>
+static inline void zipPairs(float* p, typename Lanes<W>::V a, typename Lanes<W>::V b) {
+  typedef typename FLanes<W>::F F;
+  typedef typename FLanes<W>::J J;
+  typedef typename FLanes<W>::H H;
+  const H h[2] = {__builtin_convertvector(a, H), __builtin_convertvector(b, H)};
+  F f;
+  __builtin_memcpy(&f, h, sizeof f);
+  J m;
+  for (int l = 0; l < 2 * W; l++) m[l] = l % 2 == 0 ? l / 2 : W + l / 2;
+  f = __builtin_shuffle(f, m);
+  __builtin_memcpy(p, &f, sizeof f);
+}
+
+// vertices [q, q + W) of in (cpu.cc vertexOut)
+template <int W>
+static inline void heightChunk(const HeightIn& in, int q) {
+  typedef typename Lanes<W>::V V;
+  typedef typename Lanes<W>::I I;
+  const V a0 = Lanes<W>::ld(in.A0 + q), a1 = Lanes<W>::ld(in.A1 + q);
+  zip2<V, I, W>(in.lab + 2 * q, a0, a1);
+  if (in.first) {
+    // (a label not finite, which the height reports, guesses nothing)
+    const V o0 = a0 - Lanes<W>::ld(in.X + q), o1 = a1 - Lanes<W>::ld(in.Y + q);
+    const I ok = ((o0 - o0) == 0) & ((o1 - o1) == 0);
+    zipPairs<W>(in.offNew + 2 * q, ok ? o0 : V{}, ok ? o1 : V{});
+  }
+  const V rz = unzip<V, I, W, 3>(in.rel + 3 * q, 2);
+  Lanes<W>::st(in.h + q, rz + in.zc - Lanes<W>::ld(in.Z + q));
+}
+
+template <int W>
+static int heightLanes(const HeightIn& in) {
+  int q = 0;
+  for (; q + W <= in.m; q += W) heightChunk<W>(in, q);
+  return q;
+}
+
 // the whole chunks of W vertices; returns how many vertices were placed
 // (cpu.cc's scalar loop does the rest)
 template <int W>

@@ -49,6 +49,25 @@ struct PlaceIn {
 int placeLanesAvx2(const PlaceIn& in);
 int placeLanesAvx512(const PlaceIn& in);
 
+// after the label search (cpu.cc vertexOut, in lanes: placekern.h): per
+// vertex of a hull its label (A0, A1) into lab (2 each), on a step's
+// first call the offset label - (X, Y) into offNew (2 floats each; 0 if
+// not finite), and the height above the surface h = rel z + zc - Z [m]
+// (rel 3 each, relative to the COM, zc the COM's height)
+struct HeightIn {
+  int m;
+  const double* rel;
+  double zc;
+  const double *X, *Y, *A0, *A1, *Z;
+  int first;
+  double* lab;
+  float* offNew;
+  double* h;
+};
+// done in whole chunks of lanes: returns how many (the rest: cpu.cc)
+int heightLanesAvx2(const HeightIn& in);
+int heightLanesAvx512(const HeightIn& in);
+
 }  // namespace mjb
 
 #endif  // MJBUOY_SEAVEC_H_

@@ -46,6 +46,20 @@ static inline void zip3(double* p, V x, V y, V z) {
   }
 }
 
+// the W pairs (x[l], y[l]) stored one after another from p
+template <class V, class I, int W>
+static inline void zip2(double* p, V x, V y) {
+  for (int q = 0; q < 2; q++) {
+    I m;
+    for (int l = 0; l < W; l++) {
+      const int e = q * W + l;
+      m[l] = e % 2 == 0 ? e / 2 : W + e / 2;
+    }
+    const V o = __builtin_shuffle(x, y, m);
+    __builtin_memcpy(p + q * W, &o, sizeof o);
+  }
+}
+
 }  // namespace
 }  // namespace mjb
 
