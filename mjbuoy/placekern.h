@@ -17,21 +17,17 @@ namespace {
 template <int W>
 struct FLanes {
   typedef float F __attribute__((vector_size(4 * 2 * W)));  // 2 W floats
-  typedef int J __attribute__((vector_size(4 * 2 * W)));    // their shuffle
   typedef float H __attribute__((vector_size(4 * W)));      // half of them
 };
 template <int W>
 static inline void unzipPairs(const float* p, typename Lanes<W>::V* a, typename Lanes<W>::V* b) {
   typedef typename FLanes<W>::F F;
-  typedef typename FLanes<W>::J J;
   typedef typename FLanes<W>::H H;
   F f;
   __builtin_memcpy(&f, p, sizeof f);
-  J m;
-  for (int l = 0; l < W; l++) m[l] = 2 * l, m[W + l] = 2 * l + 1;
-  const F s = __builtin_shuffle(f, m);
+  f = splitPairs<F, W>(f, std::make_integer_sequence<int, 2 * W>());
   H h[2];
-  __builtin_memcpy(h, &s, sizeof s);
+  __builtin_memcpy(h, &f, sizeof f);
   *a = __builtin_convertvector(h[0], typename Lanes<W>::V);
   *b = __builtin_convertvector(h[1], typename Lanes<W>::V);
 }
@@ -41,13 +37,14 @@ template <int W>
 static inline void placeChunk(const PlaceIn& in, int q) {
   typedef typename Lanes<W>::V V;
   const double* p = in.p + 3 * q;
-  typedef typename Lanes<W>::I I;
-  const V px = unzip<V, I, W, 3>(p, 0), py = unzip<V, I, W, 3>(p, 1), pz = unzip<V, I, W, 3>(p, 2);
+  V pb[3];
+  unzip3<V, W>(p, pb);
+  const V px = pb[0], py = pb[1], pz = pb[2];
   V r[3];
   for (int j = 0; j < 3; j++) {
     r[j] = in.R[3 * j] * px + in.R[3 * j + 1] * py + in.R[3 * j + 2] * pz + in.t[j];
   }
-  zip3<V, I, W>(in.rel + 3 * q, r[0], r[1], r[2]);
+  zip3<V, W>(in.rel + 3 * q, r[0], r[1], r[2]);
   const V X = r[0] + in.com[0], Y = r[1] + in.com[1];
   Lanes<W>::st(in.X + q, X);
   Lanes<W>::st(in.Y + q, Y);
@@ -67,14 +64,11 @@ static inline void placeChunk(const PlaceIn& in, int q) {
 template <int W>
 static inline void zipPairs(float* p, typename Lanes<W>::V a, typename Lanes<W>::V b) {
   typedef typename FLanes<W>::F F;
-  typedef typename FLanes<W>::J J;
   typedef typename FLanes<W>::H H;
   const H h[2] = {__builtin_convertvector(a, H), __builtin_convertvector(b, H)};
   F f;
   __builtin_memcpy(&f, h, sizeof f);
-  J m;
-  for (int l = 0; l < 2 * W; l++) m[l] = l % 2 == 0 ? l / 2 : W + l / 2;
-  f = __builtin_shuffle(f, m);
+  f = mergePairs<F, W>(f, std::make_integer_sequence<int, 2 * W>());
   __builtin_memcpy(p, &f, sizeof f);
 }
 
@@ -84,14 +78,14 @@ static inline void heightChunk(const HeightIn& in, int q) {
   typedef typename Lanes<W>::V V;
   typedef typename Lanes<W>::I I;
   const V a0 = Lanes<W>::ld(in.A0 + q), a1 = Lanes<W>::ld(in.A1 + q);
-  zip2<V, I, W>(in.lab + 2 * q, a0, a1);
+  zip2<V, W>(in.lab + 2 * q, a0, a1);
   if (in.first) {
     // (a label not finite, which the height reports, guesses nothing)
     const V o0 = a0 - Lanes<W>::ld(in.X + q), o1 = a1 - Lanes<W>::ld(in.Y + q);
     const I ok = ((o0 - o0) == 0) & ((o1 - o1) == 0);
     zipPairs<W>(in.offNew + 2 * q, ok ? o0 : V{}, ok ? o1 : V{});
   }
-  const V rz = unzip<V, I, W, 3>(in.rel + 3 * q, 2);
+  const V rz = unzip<V, W, 3, 2>(in.rel + 3 * q);
   Lanes<W>::st(in.h + q, rz + in.zc - Lanes<W>::ld(in.Z + q));
 }
 

@@ -5,7 +5,9 @@
 // lies past it is overwritten by the next store or never read)
 // GCC 12 takes the headers' undefined pass-through operands (gathers,
 // shifts, extracts) for uninitialised variables: a false warning
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <immintrin.h>
 
 #include <array>

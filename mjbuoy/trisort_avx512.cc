@@ -2,7 +2,9 @@
 // called only when the cpu has it, vmath.cc)
 // GCC 12 takes the headers' undefined pass-through operands (gathers,
 // shifts, extracts) for uninitialised variables: a false warning
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <immintrin.h>
 
 #include "trisort.h"

@@ -642,12 +642,10 @@ static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
     S = zload<V>(in->tarea + k0);
     Ap = zload<V>(in->prevA + k0);
     const int o = 3 * (k0 - in->t0);
-    for (int j = 0; j < 3; j++) {
-      c[j] = unzip<V, I, W, 3>(in->c + o, j);
-      n[j] = unzip<V, I, W, 3>(in->nrm + o, j);
-      v[j] = unzip<V, I, W, 3>(in->u + o, j);
-      vp[j] = unzip<V, I, W, 3>(in->prevV + 3 * k0, j);
-    }
+    unzip3<V, W>(in->c + o, c);
+    unzip3<V, W>(in->nrm + o, n);
+    unzip3<V, W>(in->u + o, v);
+    unzip3<V, W>(in->prevV + 3 * k0, vp);
   } else {
     flowGather<W>(in, p0, nl, tk, &A, &S, &Ap, c, n, v, vp);
   }
@@ -658,7 +656,7 @@ static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
                    w[0] * c[1] - w[1] * c[0]};
   for (int j = 0; j < 3; j++) v[j] = w[3 + j] + wc[j] - v[j];
   if (run) {
-    zip3<V, I, W>(in->v + 3 * (k0 - in->t0), v[0], v[1], v[2]);
+    zip3<V, W>(in->v + 3 * (k0 - in->t0), v[0], v[1], v[2]);
   } else {
     for (int l = 0; l < nl; l++) {
       for (int j = 0; j < 3; j++) in->v[3 * (tk[l] - in->t0) + j] = v[j][l];

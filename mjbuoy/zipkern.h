@@ -1,10 +1,13 @@
 // zipkern: W lanes from and to arrays of small vectors stored one after
-// another (3 doubles a vertex or triangle, 2 floats an offset), by
-// two-source shuffles instead of a load or store per lane (GCC vector
-// extensions; V of W doubles, I its integer lanes). Included by the lane
+// another (3 doubles a vertex or triangle, 2 a label), by two-source
+// shuffles instead of a load or store per lane (vector extensions; V of W
+// doubles). __builtin_shufflevector with constant lane indices from index
+// packs, which GCC (12 on) and clang both take. Included by the lane
 // kernels (placekern.h, trivec_kern.h); everything here is static.
 #ifndef MJBUOY_ZIPKERN_H_
 #define MJBUOY_ZIPKERN_H_
+
+#include <utility>
 
 namespace mjb {
 namespace {
@@ -16,48 +19,95 @@ static inline V zload(const double* p) {
   return v;
 }
 
-// component j of the W vectors of N doubles each stored one after another
-// from p (N = 2 or 3): the lanes' elements N l + j lie in N loads of W
-template <class V, class I, int W, int N>
-static inline V unzip(const double* p, int j) {
+// lane l of component J of W vectors of N doubles: element N l + J of the
+// loads a|b (first shuffle; 0 past them), then lane l kept or the element
+// taken from the third load c (second shuffle)
+template <int W, int N, int J>
+struct UnzipIdx {
+  static constexpr int e(int l) { return N * l + J; }
+  static constexpr int first(int l) { return e(l) < 2 * W ? e(l) : 0; }
+  static constexpr int second(int l) { return e(l) < 2 * W ? l : W + e(l) - 2 * W; }
+};
+template <class V, int W, int N, int J, int... L>
+static inline V unzipSeq(V a, V b, V c, std::integer_sequence<int, L...>) {
+  const V t = __builtin_shufflevector(a, b, UnzipIdx<W, N, J>::first(L)...);
+  return __builtin_shufflevector(t, c, UnzipIdx<W, N, J>::second(L)...);
+}
+
+// component J of the W vectors of N doubles each (N = 2 or 3) stored one
+// after another from p
+template <class V, int W, int N, int J>
+static inline V unzip(const double* p) {
   const V a = zload<V>(p), b = zload<V>(p + W);
   const V c = N == 3 ? zload<V>(p + 2 * W) : a;
-  I m1, m2;
-  for (int l = 0; l < W; l++) {
-    const int e = N * l + j;
-    m1[l] = e < 2 * W ? e : 0;
-    m2[l] = e < 2 * W ? l : W + e - 2 * W;
-  }
-  return __builtin_shuffle(__builtin_shuffle(a, b, m1), c, m2);
+  return unzipSeq<V, W, N, J>(a, b, c, std::make_integer_sequence<int, W>());
+}
+
+// all three components of W 3-vectors stored one after another from p
+template <class V, int W>
+static inline void unzip3(const double* p, V o[3]) {
+  o[0] = unzip<V, W, 3, 0>(p);
+  o[1] = unzip<V, W, 3, 1>(p);
+  o[2] = unzip<V, W, 3, 2>(p);
+}
+
+// block Q (W doubles) of W 3-vectors (x, y, z) stored one after another:
+// element Q W + l is component c of vector v, from x|y, then z
+template <int W, int Q>
+struct Zip3Idx {
+  static constexpr int v(int l) { return (Q * W + l) / 3; }
+  static constexpr int c(int l) { return (Q * W + l) % 3; }
+  static constexpr int first(int l) { return c(l) == 0 ? v(l) : c(l) == 1 ? W + v(l) : 0; }
+  static constexpr int second(int l) { return c(l) == 2 ? W + v(l) : l; }
+};
+template <class V, int W, int Q, int... L>
+static inline V zip3Block(V x, V y, V z, std::integer_sequence<int, L...>) {
+  const V t = __builtin_shufflevector(x, y, Zip3Idx<W, Q>::first(L)...);
+  return __builtin_shufflevector(t, z, Zip3Idx<W, Q>::second(L)...);
 }
 
 // the W 3-vectors (x[l], y[l], z[l]) stored one after another from p
-template <class V, class I, int W>
+template <class V, int W>
 static inline void zip3(double* p, V x, V y, V z) {
-  for (int q = 0; q < 3; q++) {
-    I m1, m2;
-    for (int l = 0; l < W; l++) {
-      const int e = q * W + l, v = e / 3, c = e % 3;
-      m1[l] = c == 0 ? v : c == 1 ? W + v : 0;
-      m2[l] = c == 2 ? W + v : l;
-    }
-    const V o = __builtin_shuffle(__builtin_shuffle(x, y, m1), z, m2);
-    __builtin_memcpy(p + q * W, &o, sizeof o);
-  }
+  const auto s = std::make_integer_sequence<int, W>();
+  const V o[3] = {zip3Block<V, W, 0>(x, y, z, s), zip3Block<V, W, 1>(x, y, z, s),
+                  zip3Block<V, W, 2>(x, y, z, s)};
+  __builtin_memcpy(p, o, sizeof o);
+}
+
+// block Q of W pairs (x, y) stored one after another: element Q W + l
+template <int W, int Q>
+struct Zip2Idx {
+  static constexpr int e(int l) { return Q * W + l; }
+  static constexpr int at(int l) { return e(l) % 2 == 0 ? e(l) / 2 : W + e(l) / 2; }
+};
+template <class V, int W, int Q, int... L>
+static inline V zip2Block(V x, V y, std::integer_sequence<int, L...>) {
+  return __builtin_shufflevector(x, y, Zip2Idx<W, Q>::at(L)...);
 }
 
 // the W pairs (x[l], y[l]) stored one after another from p
-template <class V, class I, int W>
+template <class V, int W>
 static inline void zip2(double* p, V x, V y) {
-  for (int q = 0; q < 2; q++) {
-    I m;
-    for (int l = 0; l < W; l++) {
-      const int e = q * W + l;
-      m[l] = e % 2 == 0 ? e / 2 : W + e / 2;
-    }
-    const V o = __builtin_shuffle(x, y, m);
-    __builtin_memcpy(p + q * W, &o, sizeof o);
-  }
+  const auto s = std::make_integer_sequence<int, W>();
+  const V o[2] = {zip2Block<V, W, 0>(x, y, s), zip2Block<V, W, 1>(x, y, s)};
+  __builtin_memcpy(p, o, sizeof o);
+}
+
+// 2 W lanes: the first members of W pairs, then the second members
+// (split), and back (merge)
+template <int W>
+struct PairIdx {
+  static constexpr int split(int l) { return l < W ? 2 * l : 2 * (l - W) + 1; }
+  static constexpr int merge(int l) { return l % 2 == 0 ? l / 2 : W + l / 2; }
+};
+template <class F, int W, int... L>
+static inline F splitPairs(F f, std::integer_sequence<int, L...>) {
+  return __builtin_shufflevector(f, f, PairIdx<W>::split(L)...);
+}
+template <class F, int W, int... L>
+static inline F mergePairs(F f, std::integer_sequence<int, L...>) {
+  return __builtin_shufflevector(f, f, PairIdx<W>::merge(L)...);
 }
 
 }  // namespace
