@@ -47,9 +47,12 @@ struct Buoy {
   std::string renderer;
   GlBackend* gl = nullptr;     // gl backend, when it runs
   // cpu backend threads: chunk c is hulls [split[c], split[c + 1]); the
-  // pool has nthreads - 1 workers (none when the scene is small)
+  // pool has nthreads - 1 workers (none when the scene is small);
+  // splitHulls: too few hulls to balance, so each hull's chunks
+  // (hullChunks) are shared among the threads instead
   int nthreads = 1;
   std::vector<int> split;
+  bool splitHulls = false;
   Pool* pool = nullptr;
   size_t wcap = 0;             // wave components reserved (cpu scratch, gl buffers)
   Wind wind;                   // wind.cc
@@ -63,6 +66,15 @@ struct Buoy {
 
 // the static data of an attached model (glue.cc; tools only)
 const Buoy* buoyOf(const mjbBuoy* b);
+
+// one chunk of a hull's sums (cpu.cc hullChunks): pass 1's pressure
+// wrench [N, N m], wet area [m^2], its first moment along the flow [m^3]
+// and the wet extent along it [m]; pass 2's viscous, drag and slamming
+// wrenches
+struct ChunkSum {
+  double wp[6], wet, wdir, lo, hi;
+  double wv[6], wd[6], ws[6];
+};
 
 // wet triangle data of one call, and the slamming history
 // (area per triangle of the model; the rest per thread, 3 per triangle of
@@ -112,6 +124,9 @@ struct State {
   // 4 per triangle of the largest hull
   std::vector<int> iscr;
   size_t iper = 0;
+  // per thread: the chunk sums of the hull it owns, cper each
+  std::vector<ChunkSum> csum;
+  size_t cper = 0;
   // per thread: surface solves done and Newton steps they took (cpu
   // backend; mjbuoy-bench reports steps per solve)
   std::vector<long> nsolve, niter;
@@ -170,6 +185,10 @@ void guessWeights(double t, const double tk[3], int n, double L[3]);
 
 // allocate s for b
 void makeState(const Buoy& b, State* s);
+
+// the chunks the cpu backend cuts a hull of nt triangles into (cpu.cc):
+// fixed by nt alone, so results keep their bits for any thread count
+int hullChunks(int nt);
 
 // the cpu backend's surface solves for d so far and the Newton steps they
 // took (glue.cc; tools only): false if d has no state

@@ -101,6 +101,8 @@ void makeState(const Buoy& b, State* s) {
   s->scr.assign(s->per * std::max(1, b.nthreads), 0);
   s->iper = 4 * maxTris(b);
   s->iscr.assign(s->iper * std::max(1, b.nthreads), 0);
+  s->cper = hullChunks(int(maxTris(b)));
+  s->csum.assign(s->cper * std::max(1, b.nthreads), ChunkSum{});
   s->nsolve.assign(std::max(1, b.nthreads), 0);
   s->niter.assign(std::max(1, b.nthreads), 0);
   s->vsec.assign(std::max(1, b.nthreads), 0);
@@ -542,24 +544,25 @@ static HullScr hullScr(const Sea& sea, double* sc, size_t mi, int nv) {
   return hs;
 }
 
-// vertices: body frame -> relative to COM (rel), world x, y and the label
-// search's start: the vertex's label offset of the last steps (zero after
-// a restart), which moves by mm per step
-static void placeVertices(const HullCall& c, const HullScr& hs) {
+// vertices [q0, q1) of the hull: body frame -> relative to COM (rel),
+// world x, y and the label search's start: the vertex's label offset of
+// the last steps (zero after a restart), which moves by mm per step
+static void placeVertices(const HullCall& c, const HullScr& hs, int q0, int q1) {
   const Hull& hl = c.hl;
   State* s = c.s;
   const mjtNum *x = c.x, *R = c.R, *com = c.com;
   const double* L = c.L;
-  int q0 = 0;  // whole chunks in lanes (seavec.h), the rest here
+  const int v = hl.v0 + q0;
+  int qs = q0;  // whole chunks in lanes (seavec.h), the rest here
   if (simdLevel() != kSimdScalar) {
-    PlaceIn in{c.b.vert.data() + 3 * hl.v0, hl.nv, {}, {}, {}, {L[0], L[1], L[2]},
-               {&s->off[2 * hl.v0], &s->offOld[2 * hl.v0], &s->offOld2[2 * hl.v0]},
-               s->rel.data() + 3 * hl.v0, hs.X, hs.Y, hs.A0, hs.A1};
+    PlaceIn in{c.b.vert.data() + 3 * v, q1 - q0, {}, {}, {}, {L[0], L[1], L[2]},
+               {&s->off[2 * v], &s->offOld[2 * v], &s->offOld2[2 * v]},
+               s->rel.data() + 3 * v, hs.X + q0, hs.Y + q0, hs.A0 + q0, hs.A1 + q0};
     for (int j = 0; j < 9; j++) in.R[j] = R[j];
     for (int j = 0; j < 3; j++) in.t[j] = x[j] - com[j], in.com[j] = com[j];
-    q0 = simdLevel() == kSimdAvx512 ? placeLanesAvx512(in) : placeLanesAvx2(in);
+    qs += simdLevel() == kSimdAvx512 ? placeLanesAvx512(in) : placeLanesAvx2(in);
   }
-  for (int q = q0; q < hl.nv; q++) {
+  for (int q = qs; q < q1; q++) {
     const int i = hl.v0 + q;
     const double* p = c.b.vert.data() + 3 * i;
     double* r = s->rel.data() + 3 * i;
@@ -574,19 +577,22 @@ static void placeVertices(const HullCall& c, const HullScr& hs) {
   }
 }
 
-// after the label search: labels, the next step's guesses and heights
-// above the surface, whole chunks in lanes (seavec.h), the rest here
-static void vertexOut(const HullCall& c, const HullScr& hs) {
+// after the label search, vertices [q0, q1): labels, the next step's
+// guesses and heights above the surface, whole chunks in lanes
+// (seavec.h), the rest here
+static void vertexOut(const HullCall& c, const HullScr& hs, int q0, int q1) {
   const Hull& hl = c.hl;
   State* s = c.s;
   const double zc = c.com[2];
-  int q0 = 0;
+  const int v = hl.v0 + q0;
+  int qs = q0;
   if (simdLevel() != kSimdScalar) {
-    HeightIn in{hl.nv, s->rel.data() + 3 * hl.v0, zc, hs.X, hs.Y, hs.A0, hs.A1, hs.Z, c.first,
-                s->lab.data() + 2 * hl.v0, s->offNew.data() + 2 * hl.v0, s->h.data() + hl.v0};
-    q0 = simdLevel() == kSimdAvx512 ? heightLanesAvx512(in) : heightLanesAvx2(in);
+    HeightIn in{q1 - q0, s->rel.data() + 3 * v, zc, hs.X + q0, hs.Y + q0, hs.A0 + q0,
+                hs.A1 + q0, hs.Z + q0, c.first, s->lab.data() + 2 * v, s->offNew.data() + 2 * v,
+                s->h.data() + v};
+    qs += simdLevel() == kSimdAvx512 ? heightLanesAvx512(in) : heightLanesAvx2(in);
   }
-  for (int q = q0; q < hl.nv; q++) {
+  for (int q = qs; q < q1; q++) {
     const int i = hl.v0 + q;
     s->lab[2 * i] = hs.A0[q];
     s->lab[2 * i + 1] = hs.A1[q];
@@ -601,9 +607,9 @@ static void vertexOut(const HullCall& c, const HullScr& hs) {
   }
 }
 
-// at wet vertices (h <= 0, a wet piece's corner 0) the stretched height
-// and e^L, kExpChunk vertices per vertexWaves call
-static void wetVertices(const HullCall& c, const HullScr& hs) {
+// at the wet vertices of [q0, q1) (h <= 0, a wet piece's corner 0) the
+// stretched height and e^L, kExpChunk vertices per vertexWaves call
+static void wetVertices(const HullCall& c, const HullScr& hs, int q0, int q1) {
   const Hull& hl = c.hl;
   const Sea& sea = c.b.cfg.sea;
   State* s = c.s;
@@ -611,7 +617,7 @@ static void wetVertices(const HullCall& c, const HullScr& hs) {
   if (nw == 0) return;
   const double zc = c.com[2];
   int wq[kExpChunk], nq = 0;
-  for (int q = 0; q < hl.nv; q++) {
+  for (int q = q0; q < q1; q++) {
     const int i = hl.v0 + q;
     if (!(s->h[i] <= 0)) continue;
     hs.ZS[q] = stretch(sea.depth, s->rel[3 * i + 2] + zc - sea.level, hs.Z[q] - sea.level);
@@ -624,17 +630,21 @@ static void wetVertices(const HullCall& c, const HullScr& hs) {
   if (nq > 0) vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg);
 }
 
-// the vertex stage, timed into vsec: positions, the label search for all
-// vertices at once (structure of arrays), heights and e^L
-static void vertexStage(const HullCall& c, const HullScr& hs) {
+// the vertex stage of vertices [q0, q1), timed into vsec: positions, the
+// label search for all at once (structure of arrays), heights and e^L.
+// The hull's scratch hs is shared by the threads of a split hull; tmp and
+// hs.arg are the running thread's
+static void vertexStage(const HullCall& c, const HullScr& hs, int q0, int q1) {
   const auto tv0 = std::chrono::steady_clock::now();
   State* s = c.s;
-  placeVertices(c, hs);
-  s->niter[c.slot] += c.b.cfg.sea.solveMany(s->wn.data(), c.hl.nv, hs.X, hs.Y, hs.A0, hs.A1,
-                                            hs.Z, hs.SC, c.tmp);
-  s->nsolve[c.slot] += c.hl.nv + 1;  // and the COM's (hullFlow)
-  vertexOut(c, hs);
-  wetVertices(c, hs);
+  const size_t nw = c.b.cfg.sea.waves.size();
+  placeVertices(c, hs, q0, q1);
+  s->niter[c.slot] += c.b.cfg.sea.solveMany(s->wn.data(), q1 - q0, hs.X + q0, hs.Y + q0,
+                                            hs.A0 + q0, hs.A1 + q0, hs.Z + q0,
+                                            hs.SC + 2 * nw * q0, c.tmp);
+  s->nsolve[c.slot] += q1 - q0;
+  vertexOut(c, hs, q0, q1);
+  wetVertices(c, hs, q0, q1);
   s->vsec[c.slot] += std::chrono::duration<double>(std::chrono::steady_clock::now() - tv0).count();
 }
 
@@ -653,6 +663,7 @@ static double hullFlow(const HullCall& c, const double vel[6], double dir[3]) {
   int nit = 0;
   double hz = sea.solve(s->wn.data(), com[0], com[1], a, c.sc, c.tmp, &nit);
   s->niter[c.slot] += nit;
+  s->nsolve[c.slot]++;
   if (c.first) {
     const double o0 = a[0] - com[0], o1 = a[1] - com[1];
     const bool ok = std::isfinite(o0) && std::isfinite(o1);
@@ -666,15 +677,15 @@ static double hullFlow(const HullCall& c, const double vel[6], double dir[3]) {
   return speed;
 }
 
-// pass 1 over the hull's triangles: a triangle with no vertex below the
-// surface has no wet part; with a vector level the wholly wet ones and the
-// cut ones go through the lanes (trivec.h) by kind, else pass1Tri; wl: 4
-// nt ints of scratch
-static void pass1Hull(Pass1& q, int* wl) {
-  const Hull& hl = q.hl;
+// pass 1 over the hull's triangles [k0, k1): a triangle with no vertex
+// below the surface has no wet part; with a vector level the wholly wet
+// ones and the cut ones go through the lanes (trivec.h) by kind, else
+// pass1Tri; wl: 4 (k1 - k0) ints of scratch
+static void pass1Chunk(Pass1& q, int k0, int k1, int* wl) {
   State* s = q.s;
+  const int nt = k1 - k0;
   if (simdLevel() == kSimdScalar) {
-    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+    for (int k = k0; k < k1; k++) {
       const int* fc = q.b.face.data() + 3 * k;
       if (s->h[fc[0]] >= 0 && s->h[fc[1]] >= 0 && s->h[fc[2]] >= 0) {
         s->tri.area[k] = 0;
@@ -685,10 +696,10 @@ static void pass1Hull(Pass1& q, int* wl) {
     return;
   }
   // dry triangles keep the zero area; the others are written below
-  std::memset(&s->tri.area[hl.t0], 0, hl.nt * sizeof(double));
+  std::memset(&s->tri.area[k0], 0, nt * sizeof(double));
   // lists by kind (trisort.h), nt ints each; the lanes' rest after them
-  TriSort ks{q.b.face.data(), s->h.data(), hl.t0, hl.nt,
-             {wl, wl + hl.nt, wl + 2 * hl.nt, wl + 3 * hl.nt}, {0, 0, 0, 0}};
+  TriSort ks{q.b.face.data(), s->h.data(), k0, nt, {wl, wl + nt, wl + 2 * nt, wl + 3 * nt},
+             {0, 0, 0, 0}};
   if (simdLevel() == kSimdAvx512) {
     sortKindsAvx512(&ks);
   } else {
@@ -698,7 +709,7 @@ static void pass1Hull(Pass1& q, int* wl) {
   for (int i = 0; i < ks.n[kKindOther]; i++) pass1Tri(q, ks.list[kKindOther][i]);
   TriIn in = triIn(q);
   for (int kind = 0; kind < 3; kind++) {
-    if (ks.n[kind] > 0) pass1Lanes(q, in, kind, ks.list[kind], ks.n[kind], wl + 3 * hl.nt);
+    if (ks.n[kind] > 0) pass1Lanes(q, in, kind, ks.list[kind], ks.n[kind], wl + 3 * nt);
   }
 }
 
@@ -706,10 +717,11 @@ static void pass1Hull(Pass1& q, int* wl) {
 // sbar - s_i), s in [0, 1] from rear to front along dir, whose
 // area-weighted mean is the hull's 1+k: sbar = sum A_i (c_i . dir - lo) /
 // (len wet), from pass 1's sums wet = sum A_i and wdir = sum A_i c_i . dir
-static double formMean(const Pass1& q) {
-  const double len = q.hi > q.lo ? q.hi - q.lo : 0;
-  if (!(q.wet > 0 && len > 0)) return 0;
-  return (q.wdir - q.lo * q.wet) / (len * q.wet);
+// and the extent [lo, hi] along dir
+static double formMean(double wet, double wdir, double lo, double hi) {
+  const double len = hi > lo ? hi - lo : 0;
+  if (!(wet > 0 && len > 0)) return 0;
+  return (wdir - lo * wet) / (len * wet);
 }
 
 // pass 2's scalar reference for wet triangle k: viscous, drag and slamming
@@ -750,26 +762,27 @@ static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
   add(w[mjbPART_SLAM], g, cc);
 }
 
-// pass 2: hydrodynamic forces at each wet centroid, with the water's
-// velocity averaged over the wet part (pass 1; docs/physics.md, "Cost");
-// with a vector level in lanes (trivec.h) when the exponents allow; dry
-// triangles get v = 0; wl: nt ints of scratch
-static void pass2Hull(const HullCall& c, const double vel[6], const Rigid& rig,
-                      const double dir[3], const Flow2& f2, int* wl, double* const w[]) {
+// pass 2 over triangles [k0, k1): hydrodynamic forces at each wet
+// centroid, with the water's velocity averaged over the wet part (pass 1;
+// docs/physics.md, "Cost"); with a vector level in lanes (trivec.h) when
+// the exponents allow; dry triangles get v = 0; wl: k1 - k0 ints of scratch
+static void pass2Chunk(const HullCall& c, const double vel[6], const Rigid& rig,
+                       const double dir[3], const Flow2& f2, int k0, int k1, int* wl,
+                       double* const w[]) {
   const Hull& hl = c.hl;
   State* s = c.s;
   const bool lanes = simdLevel() != kSimdScalar && flowExponents(hl.par, s->hasPrev);
   int nf = 0;
   if (lanes) {  // the lanes write v of the wet triangles
-    std::memset(c.ts.v, 0, 3 * hl.nt * sizeof(double));
-    for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+    std::memset(c.ts.at(c.ts.v, k0), 0, 3 * (k1 - k0) * sizeof(double));
+    for (int k = k0; k < k1; k++) {
       wl[nf] = k;
       nf += s->tri.area[k] > 0;
     }
     if (nf > 0) pass2Lanes(c.b, hl, s, c.ts, vel, c.com, rig, dir, f2, wl, nf, w);
     return;
   }
-  for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
+  for (int k = k0; k < k1; k++) {
     if (s->tri.area[k] > 0) {
       pass2Tri(c, vel, rig, dir, f2, k, w);
     } else {
@@ -779,54 +792,201 @@ static void pass2Hull(const HullCall& c, const double vel[6], const Rigid& rig,
   }
 }
 
-// forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
-// is the body's wrench of force family p; slot picks the thread's scratch
-static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6],
-                       const Rigid& rig, bool first, State* s, int slot, double* const w[]) {
+// a hull's vertices and triangles go in nc chunks of about kChunkTris
+// triangles each, fixed by the hull alone: passes 1 and 2 sum per chunk
+// and the chunks' sums are added in their order whoever ran them, so the
+// results keep their bits for any thread count, and a lone hull can use
+// every thread (hullSplit). Chunk starts are multiples of 16, so the
+// vector kernels' lanes fall as they would over the whole range
+enum { kChunkTris = 2048, kChunkAlign = 16 };
+
+int hullChunks(int nt) { return std::max(1, (nt + kChunkTris - 1) / kChunkTris); }
+
+// start of chunk i of n items in nc chunks (n for i = nc)
+static int chunkAt(int n, int nc, int i) {
+  return i >= nc ? n : int(long(n) * i / nc) & ~(kChunkAlign - 1);
+}
+
+// one hull's call, shared by the chunks of its stages: the owner's call
+// and scratch, the body's motion, the flow (hullFlow), pass 1's results
+// pass 2 reads, and the chunks' sums (the owner's)
+struct HullRun {
+  HullCall c;
+  HullScr hs;
+  const double* vel;
+  const Rigid* rig;
+  double dir[3], speed, wet;
+  Flow2 f2;
+  int nc;
+  ChunkSum* cs;
+};
+
+static HullCall hullCall(const Buoy& b, int ih, const mjData* d, bool first, State* s,
+                         int slot) {
   const Hull& hl = b.hull[ih];
-  const Sea& sea = b.cfg.sea;
   HullCall c{b, hl, ih, d->xpos + 3 * hl.body, d->xmat + 9 * hl.body, d->xipos + 3 * hl.body,
              {0, 0, 0}, first, s, slot, s->scr.data() + s->per * slot, nullptr,
              triScr(s, slot, hl.t0)};
-  c.tmp = c.sc + 2 * sea.waves.size();
+  c.tmp = c.sc + 2 * b.cfg.sea.waves.size();
+  return c;
+}
+
+// the running thread's view of r: its own Newton and exp scratch (tmp,
+// hs->arg) over the hull's shared scratch
+static HullCall chunkCall(const HullRun& r, int slot, HullScr* hs) {
+  HullCall c = r.c;
+  State* s = c.s;
+  c.slot = slot;
+  c.sc = s->scr.data() + s->per * slot;
+  c.tmp = c.sc + 2 * c.b.cfg.sea.waves.size();
+  *hs = r.hs;
+  hs->arg = c.sc + (r.hs.arg - r.c.sc);
+  return c;
+}
+
+// stage 1, chunk i: the vertex stage
+static void vertexPart(const HullRun& r, int i, int slot) {
+  HullScr hs;
+  const HullCall c = chunkCall(r, slot, &hs);
+  const int nv = c.hl.nv;
+  vertexStage(c, hs, chunkAt(nv, r.nc, i), chunkAt(nv, r.nc, i + 1));
+}
+
+// stage 2, chunk i: pass 1 into the chunk's sums
+static void pass1Part(const HullRun& r, int i, int slot) {
+  HullScr hs;
+  const HullCall c = chunkCall(r, slot, &hs);
+  const Hull& hl = c.hl;
+  ChunkSum& cs = r.cs[i];
+  for (int j = 0; j < 6; j++) cs.wp[j] = 0;
+  Pass1 q{c.b, c.b.cfg.sea, c.s, hs, hl, c.com, r.dir, c.ts, cs.wp, 0, 0, INFINITY, -INFINITY};
+  int* wl = c.s->iscr.data() + c.s->iper * slot;
+  pass1Chunk(q, hl.t0 + chunkAt(hl.nt, r.nc, i), hl.t0 + chunkAt(hl.nt, r.nc, i + 1), wl);
+  cs.wet = q.wet;
+  cs.wdir = q.wdir;
+  cs.lo = q.lo;
+  cs.hi = q.hi;
+}
+
+// stage 3, chunk i: pass 2 into the chunk's sums; on a step's first call
+// the wet areas into the slamming history
+static void pass2Part(const HullRun& r, int i, int slot) {
+  HullScr hs;
+  const HullCall c = chunkCall(r, slot, &hs);
+  const Hull& hl = c.hl;
+  ChunkSum& cs = r.cs[i];
+  for (int j = 0; j < 6; j++) cs.wv[j] = cs.wd[j] = cs.ws[j] = 0;
+  double* w[mjbNPART] = {};
+  w[mjbPART_VISCOUS] = cs.wv;
+  w[mjbPART_DRAG] = cs.wd;
+  w[mjbPART_SLAM] = cs.ws;
+  const int k0 = hl.t0 + chunkAt(hl.nt, r.nc, i), k1 = hl.t0 + chunkAt(hl.nt, r.nc, i + 1);
+  int* wl = c.s->iscr.data() + c.s->iper * slot;
+  pass2Chunk(c, r.vel, *r.rig, r.dir, r.f2, k0, k1, wl, w);
+  double* area = c.s->tri.area.data();
+  if (c.first) std::memcpy(&c.s->curA[k0], area + k0, (k1 - k0) * sizeof(double));
+}
+
+// before the stages: false when the whole hull is above the highest crest
+// (dryHull); else the guesses' weights, the scratch layout and the flow
+static bool hullStart(HullRun* r, const mjData* d) {
+  const HullCall& c = r->c;
+  const Hull& hl = c.hl;
+  State* s = c.s;
   if (c.x[2] - hl.rad > s->crest + 1e-6 * (1 + std::fabs(c.x[2]) + hl.rad)) {
-    dryHull(hl, ih, first, s);
-    return;
+    dryHull(hl, c.ih, c.first, s);
+    return false;
   }
-  if (first) s->hvNew[ih] = 1;
-  hullGuess(*s, ih, d->time, c.L);
-  const HullScr hs = hullScr(sea, c.sc, s->mi, hl.nv);
-  vertexStage(c, hs);
-  double dir[3];
-  const double speed = hullFlow(c, vel, dir);
+  if (c.first) s->hvNew[c.ih] = 1;
+  hullGuess(*s, c.ih, d->time, r->c.L);
+  r->hs = hullScr(c.b.cfg.sea, c.sc, s->mi, hl.nv);
+  r->speed = hullFlow(c, r->vel, r->dir);
+  r->nc = hullChunks(hl.nt);
+  r->cs = s->csum.data() + s->cper * c.slot;
+  return true;
+}
 
-  // pass 1: cut, pressure force and torque: Kerner's rho g (eta - z), linear
-  // in the cut's depth, exactly (-rho g dA n, -rho g drA x n); or linear
-  // wave theory (wavepress.h), which flat water reduces to the same
-  Pass1 q{b, sea, s, hs, hl, c.com, dir, c.ts, w[mjbPART_PRESSURE], 0, 0, INFINITY, -INFINITY};
-  int* wl = s->iscr.data() + s->iper * slot;
-  pass1Hull(q, wl);
-
-  // viscous resistance: ITTC 1957 C_F at the hull's Reynolds number over
-  // the wetted length, the wet extent along the flow
-  const double len = q.hi > q.lo ? q.hi - q.lo : 0;
-  const double cf = ittc57(speed * len / sea.nu);
-  const double sbar = formMean(q);
-  Flow2 f2{q.lo, len, sbar, cf, s->hasPrev ? d->time - s->tprev : 0};
+// between passes 1 and 2: the chunks' pressure wrenches added in order
+// into w, and what pass 2 reads: the wet extent along the flow, ITTC
+// 1957's C_F at the hull's Reynolds number over that wetted length, the
+// form factor's mean position (formMean), the slamming dt
+static void hullMid(HullRun* r, const mjData* d, double* const w[]) {
+  State* s = r->c.s;
+  double wet = 0, wdir = 0, lo = INFINITY, hi = -INFINITY;
+  for (int i = 0; i < r->nc; i++) {
+    const ChunkSum& cs = r->cs[i];
+    for (int j = 0; j < 6; j++) w[mjbPART_PRESSURE][j] += cs.wp[j];
+    wet += cs.wet;
+    wdir += cs.wdir;
+    lo = std::min(lo, cs.lo);
+    hi = std::max(hi, cs.hi);
+  }
+  const double len = hi > lo ? hi - lo : 0;
+  const double cf = ittc57(r->speed * len / r->c.b.cfg.sea.nu);
+  r->wet = wet;
+  r->f2 = Flow2{lo, len, formMean(wet, wdir, lo, hi), cf, s->hasPrev ? d->time - s->tprev : 0};
   // slamming history: the last call at this step's time; pass 2 writes
   // the velocities there itself (no copy of 24 bytes a triangle)
-  if (first) c.ts.v = &s->curV[3 * hl.t0];
-  pass2Hull(c, vel, rig, dir, f2, wl, w);
-  if (first) std::memcpy(&s->curA[hl.t0], &s->tri.area[hl.t0], hl.nt * sizeof(double));
-  // simple damping (Cruz 2023), scaled by the wet fraction r_s = S_wet / S
-  const double rs = q.wet / hl.area;
+  if (r->c.first) r->c.ts.v = &s->curV[3 * r->c.hl.t0];
+}
+
+// after pass 2: the chunks' wrenches added in order, and the simple
+// damping (Cruz 2023), scaled by the wet fraction r_s = S_wet / S
+static void hullEnd(const HullRun& r, double* const w[]) {
+  for (int i = 0; i < r.nc; i++) {
+    for (int j = 0; j < 6; j++) {
+      w[mjbPART_VISCOUS][j] += r.cs[i].wv[j];
+      w[mjbPART_DRAG][j] += r.cs[i].wd[j];
+      w[mjbPART_SLAM][j] += r.cs[i].ws[j];
+    }
+  }
+  const HullParams& par = r.c.hl.par;
+  const double rs = r.wet / r.c.hl.area;
   for (int j = 0; j < 3; j++) {
-    w[mjbPART_DAMPING][j] -= hl.par.damp[0] * rs * vel[3 + j];
-    w[mjbPART_DAMPING][3 + j] -= hl.par.damp[1] * rs * vel[j];
+    w[mjbPART_DAMPING][j] -= par.damp[0] * rs * r.vel[3 + j];
+    w[mjbPART_DAMPING][3 + j] -= par.damp[1] * rs * r.vel[j];
   }
 }
 
-// hulls [h0, h1), which own whole bodies, with scratch slot i
+// one stage of a hull over its chunks, on the pool's threads when it has
+// more than one chunk and the pool is free, else here
+struct StageJob {
+  const HullRun* r;
+  void (*part)(const HullRun&, int, int);
+};
+
+static void runStage(void* arg, int i, int slot) {
+  const StageJob& j = *static_cast<const StageJob*>(arg);
+  j.part(*j.r, i, slot);
+}
+
+static void stage(Pool* pool, const HullRun& r, void (*part)(const HullRun&, int, int)) {
+  StageJob j{&r, part};
+  if (r.nc > 1 && pool && poolRun(pool, runStage, &j, r.nc)) return;
+  for (int i = 0; i < r.nc; i++) part(r, i, r.c.slot);
+}
+
+// forces on one hull: pressure (exact), then Kerner's hydrodynamics; w[p]
+// is the body's wrench of force family p; slot picks the owner's scratch.
+// pool: run each stage's chunks on its threads (a hull split among them),
+// or null: all here
+static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6],
+                       const Rigid& rig, bool first, State* s, int slot, double* const w[],
+                       Pool* pool) {
+  HullRun r{hullCall(b, ih, d, first, s, slot), {}, vel, &rig, {0, 0, 0}, 0, 0, {}, 0, nullptr};
+  if (!hullStart(&r, d)) return;
+  stage(pool, r, vertexPart);
+  // pass 1: cut, pressure force and torque: Kerner's rho g (eta - z), linear
+  // in the cut's depth, exactly (-rho g dA n, -rho g drA x n); or linear
+  // wave theory (wavepress.h), which flat water reduces to the same
+  stage(pool, r, pass1Part);
+  hullMid(&r, d, w);
+  stage(pool, r, pass2Part);
+  hullEnd(r, w);
+}
+
+// hulls [h0, h1), which own whole bodies, with scratch slot i; pool: each
+// hull split among its threads (cpuWrench)
 struct Job {
   const Buoy* b;
   const mjModel* m;
@@ -835,7 +995,7 @@ struct Job {
   bool first;
 };
 
-static void hullRange(const Job& j, int h0, int h1, int slot) {
+static void hullRange(const Job& j, int h0, int h1, int slot, Pool* pool) {
   const Buoy& b = *j.b;
   State* s = j.s;
   const int nb6 = 6 * j.m->nbody;
@@ -858,13 +1018,13 @@ static void hullRange(const Job& j, int h0, int h1, int slot) {
     for (int p = 0; p < mjbNPART; p++) w[p] = s->part.data() + p * nb6 + 6 * bd;
     Rigid rig;
     rigidGroup(j.m, j.d, bd, &rig);
-    hullWrench(b, ih, j.d, vel, rig, j.first, s, slot, w);
+    hullWrench(b, ih, j.d, vel, rig, j.first, s, slot, w, pool);
   }
 }
 
 static void runChunk(void* arg, int c, int slot) {
   const Job& j = *static_cast<const Job*>(arg);
-  hullRange(j, j.b->split[c], j.b->split[c + 1], slot);
+  hullRange(j, j.b->split[c], j.b->split[c + 1], slot, nullptr);
 }
 
 void noteBad(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
@@ -920,12 +1080,16 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   if (!sea.waves.empty()) s->tab.fill(sea, s->wn.data());
   s->crest = sea.level;
   for (const Wave& wv : sea.waves) s->crest += std::fabs(wv.amp);
-  // large scenes: chunks of hulls shared among the pool's threads; a chunk
-  // owns whole bodies and each thread its own scratch, so the result does
-  // not depend on who runs what. Another mjData holding the pool: serial.
+  // many hulls: chunks of hulls shared among the pool's threads; a chunk
+  // owns whole bodies and each thread its own scratch. Fewer hulls than
+  // the pool balances (glue.cc threads): one hull after the other, each
+  // split among the threads. Either way the result does not depend on who
+  // runs what. Another mjData holding the pool: serial
   Job job{&b, m, d, s, clock != kMidStep};
-  if (!b.pool || !poolRun(b.pool, runChunk, &job, int(b.split.size()) - 1)) {
-    hullRange(job, 0, b.hull.size(), 0);
+  if (b.pool && b.splitHulls) {
+    hullRange(job, 0, b.hull.size(), 0, b.pool);
+  } else if (!b.pool || !poolRun(b.pool, runChunk, &job, int(b.split.size()) - 1)) {
+    hullRange(job, 0, b.hull.size(), 0, nullptr);
   }
   finishWrench(b, m, d, s);
 }

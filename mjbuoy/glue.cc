@@ -224,10 +224,13 @@ void sensorcb(const mjModel* m, mjData* d, int stage) {
 }
 
 // cpu threads: mjbuoy.threads, or with 0 (auto) every core (up to
-// kMaxAuto) once the scene has kParMin triangles: below that the ~20 us of
-// waking a worker and joining it is not repaid (docs/mjcf.md). The hulls
-// are cut at body boundaries into kChunks chunks per thread of about equal
-// triangle counts, claimed dynamically so a busy core does not stall a step.
+// kMaxAuto) once the scene has kParMin triangles: below that the few us of
+// handing chunks to a worker are not repaid (docs/mjcf.md); never more
+// than the hulls' chunks (mjb::hullChunks). The hulls are cut at body
+// boundaries into kChunks chunks per thread of about equal triangle
+// counts, claimed dynamically so a busy core does not stall a step; with
+// fewer bodies than 2 per thread that cannot balance, and each hull is
+// split among the threads instead (cpu.cc hullWrench)
 const int kParMin = 2000, kMaxAuto = 8, kChunks = 4;
 
 void threads(Buoy* B) {
@@ -236,7 +239,10 @@ void threads(Buoy* B) {
     n = int(B->face.size() / 3) >= kParMin ? int(std::thread::hardware_concurrency()) : 1;
     n = std::max(1, std::min(n, kMaxAuto));
   }
-  n = std::min(n, int(B->body.size()));
+  int parts = 0;
+  for (const mjb::Hull& h : B->hull) parts += mjb::hullChunks(h.nt);
+  n = std::max(1, std::min(n, parts));
+  B->splitHulls = int(B->body.size()) < 2 * n;
   int nc = std::min(n > 1 ? kChunks * n : 1, int(B->body.size()));
   B->split.assign(1, 0);
   long total = B->face.size() / 3, acc = 0;
@@ -252,6 +258,7 @@ void threads(Buoy* B) {
   if (!B->pool) {
     B->nthreads = 1;
     B->split = {0, int(B->hull.size())};
+    B->splitHulls = false;
   }
 }
 
