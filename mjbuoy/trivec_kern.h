@@ -265,22 +265,33 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   I good = ok;
   V P, Pr[3], Vw[3];
   laneIntegrals<W, M>(in, p, d, zs, lb, e0, A, &good, &P, Pr, Vw);
-  // per triangle done, and the sums
+  // per triangle done, and the sums; the centroid divided in lanes (the
+  // same bits as one division a lane), W good triangles in a row stored
+  // whole (most of a hull's wholly wet ones)
   const V inv = ok ? 1 / A : V{};
   const V u[3] = {in->cur[0] + Vw[0] * inv, in->cur[1] + Vw[1] * inv, 0 + Vw[2] * inv};
-  for (int l = 0; l < nl; l++) {
-    const int k = tk[l];
-    if (!good[l]) {
-      if (ok[l] || len[l] != len[l]) in->rest[in->nrest++] = k;
-      else in->area[k] = 0;  // degenerate: no wet part (wetTriangle)
-      continue;
-    }
-    in->area[k] = A[l];
-    for (int j = 0; j < 3; j++) {
-      const int kl = 3 * (k - in->t0) + j;
-      in->c[kl] = sr[j][l] / 3;
-      in->nrm[kl] = n[j][l];
-      in->u[kl] = u[j][l];
+  const V cen[3] = {sr[0] / 3, sr[1] / 3, sr[2] / 3};
+  if (nl == W && tk[W - 1] - tk[0] == W - 1 && TLanes<W>::all(good)) {
+    const int o = 3 * (tk[0] - in->t0);
+    __builtin_memcpy(in->area + tk[0], &A, sizeof A);
+    zip3<V, W>(in->c + o, cen[0], cen[1], cen[2]);
+    zip3<V, W>(in->nrm + o, n[0], n[1], n[2]);
+    zip3<V, W>(in->u + o, u[0], u[1], u[2]);
+  } else {
+    for (int l = 0; l < nl; l++) {
+      const int k = tk[l];
+      if (!good[l]) {
+        if (ok[l] || len[l] != len[l]) in->rest[in->nrest++] = k;
+        else in->area[k] = 0;  // degenerate: no wet part (wetTriangle)
+        continue;
+      }
+      in->area[k] = A[l];
+      for (int j = 0; j < 3; j++) {
+        const int kl = 3 * (k - in->t0) + j;
+        in->c[kl] = cen[j][l];
+        in->nrm[kl] = n[j][l];
+        in->u[kl] = u[j][l];
+      }
     }
   }
   I use = good;
