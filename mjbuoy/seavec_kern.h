@@ -16,6 +16,7 @@
 
 #include "seavec.h"
 #include "sincoskern.h"
+#include "zipkern.h"
 
 namespace mjb {
 namespace {
@@ -179,12 +180,20 @@ static long solveChunk(const LaneIn& in, int p0, int nl) {
   double* cur = in.tmp;
   double* nxt = in.tmp + 2 * ng * W;
   V x, y, a0, a1;
-  for (int l = 0; l < W; l++) {
-    const int q = p0 + (l < nl ? l : nl - 1);
-    x[l] = in.x[q];
-    y[l] = in.y[q];
-    a0[l] = in.a0[q];
-    a1[l] = in.a1[q];
+  const bool whole = nl == W;  // loaded and stored whole
+  if (whole) {
+    x = L::ld(in.x + p0);
+    y = L::ld(in.y + p0);
+    a0 = L::ld(in.a0 + p0);
+    a1 = L::ld(in.a1 + p0);
+  } else {
+    for (int l = 0; l < W; l++) {
+      const int q = p0 + (l < nl ? l : nl - 1);
+      x[l] = in.x[q];
+      y[l] = in.y[q];
+      a0[l] = in.a0[q];
+      a1[l] = in.a1[q];
+    }
   }
   I it = I{};
   if (ng == 0) {
@@ -203,15 +212,21 @@ static long solveChunk(const LaneIn& in, int p0, int nl) {
   V z = V{} + in.level;
   for (int i = 0; i < ng; i++) z += w[i].amp * L::ld(cur + (2 * i + 1) * W);
   long nit = 0;
-  for (int l = 0; l < nl; l++) {
-    const int q = p0 + l;
-    in.a0[q] = a0[l];
-    in.a1[q] = a1[l];
-    nit += it[l];
-    double* sc = in.sc + 2 * n * q;
-    for (int i = 0; i < ng; i++) {
-      sc[2 * i] = cur[2 * i * W + l];
-      sc[2 * i + 1] = cur[(2 * i + 1) * W + l];
+  for (int l = 0; l < nl; l++) nit += it[l];
+  if (whole && n == 1 && ng == 1) {  // one Gerstner component: phases zipped
+    L::st(in.a0 + p0, a0);
+    L::st(in.a1 + p0, a1);
+    zip2<V, W>(in.sc + 2 * p0, L::ld(cur), L::ld(cur + W));
+  } else {
+    for (int l = 0; l < nl; l++) {
+      const int q = p0 + l;
+      in.a0[q] = a0[l];
+      in.a1[q] = a1[l];
+      double* sc = in.sc + 2 * n * q;
+      for (int i = 0; i < ng; i++) {
+        sc[2 * i] = cur[2 * i * W + l];
+        sc[2 * i + 1] = cur[(2 * i + 1) * W + l];
+      }
     }
   }
   // Airy components: a direct sum at the physical point
@@ -225,7 +240,11 @@ static long solveChunk(const LaneIn& in, int p0, int nl) {
       in.sc[2 * n * (p0 + l) + 2 * i + 1] = c[l];
     }
   }
-  for (int l = 0; l < nl; l++) in.z[p0 + l] = z[l];
+  if (whole) {
+    L::st(in.z + p0, z);
+  } else {
+    for (int l = 0; l < nl; l++) in.z[p0 + l] = z[l];
+  }
   return nit;
 }
 
