@@ -78,7 +78,7 @@ struct ChunkSum {
 
 // wet triangle data of one call, and the slamming history
 // (area per triangle of the model; the rest per thread, 3 per triangle of
-// the largest hull, reused hull after hull so it stays in cache: cpu.cc
+// the largest hull, reused hull after hull so it stays in cache: cpuhull.h
 // TriScr)
 struct TriState {
   std::vector<double> area;    // wet area [m^2]
@@ -107,7 +107,7 @@ struct State {
   std::vector<double> hoff, hoffNew;  // the same for each hull's COM [m]
   // the two steps before off's (offOld, then offOld2; hoffOld, hoffOld2),
   // so the guess extrapolates the last three steps' offsets in time
-  // (cpu.cc guessWeights); per hull whether offNew, off, offOld, offOld2
+  // (cpustate.cc guessWeights); per hull whether offNew, off, offOld, offOld2
   // hold a solve (1) or are cold (0), and the times off, offOld, offOld2
   // were taken [s]
   std::vector<float> offOld, offOld2;
@@ -116,11 +116,11 @@ struct State {
   double tgOff = 0, tgOld = 0, tgOld2 = 0;  // (the gl backend's too: offbuf)
   std::vector<WaveNow> wn;     // wave constants of this call
   WaveTab tab;                 // the same by wave number, for waveint.h
-  // per thread: Newton and structure-of-arrays scratch (cpu.cc
+  // per thread: Newton and structure-of-arrays scratch (cpustate.cc
   // scratchSize), per doubles each
   std::vector<double> scr;
   size_t per = 0, mi = 0;
-  // per thread: triangle indices for the lane kernels (cpu.cc, trivec.h),
+  // per thread: triangle indices for the lane kernels (cpupass.cc, trivec.h),
   // 4 per triangle of the largest hull
   std::vector<int> iscr;
   size_t iper = 0;
@@ -167,7 +167,7 @@ struct State {
   std::vector<char> dtold;
 };
 
-// slamming clock (cpu.cc): kSameStep for another call at the current step's
+// slamming clock (cpustate.cc): kSameStep for another call at the current step's
 // time (it records the history again: the last evaluation at a time wins),
 // kNewStep when time has moved on by a step since (the caller moves the
 // current history to the previous), kRestart after mj_resetData or time
@@ -177,7 +177,7 @@ enum { kSameStep = 0, kNewStep, kRestart, kMidStep };
 int stepClock(const mjModel* m, const mjData* d, State* s);
 
 // the weights L of the last n (0 to 3) steps' label offsets, taken at times
-// tk[0] > tk[1] > tk[2] [s], in the label guess at time t [s] (cpu.cc): the
+// tk[0] > tk[1] > tk[2] [s], in the label guess at time t [s] (cpustate.cc): the
 // Lagrange polynomial through them evaluated at t, so a smooth offset is
 // off by O(dt^n); the last offset alone (or nothing, n = 0) when the times
 // are not increasing or t is more than two steps past tk[0]

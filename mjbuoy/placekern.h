@@ -1,8 +1,8 @@
 // placekern: the vertex stage's placement in lanes (seavec.h PlaceIn),
 // included by seavec_avx2.cc and seavec_avx512.cc after seavec_kern.h
 // (Lanes). Body-frame vertices in, positions relative to the COM (3 each,
-// as cpu.cc stores them) and the label search's points and guesses out;
-// cpu.cc's placeVertices is the scalar path. Everything here is static.
+// as cpuvert.cc stores them) and the label search's points and guesses out;
+// cpuvert.cc's placeVertices is the scalar path. Everything here is static.
 #ifndef MJBUOY_PLACEKERN_H_
 #define MJBUOY_PLACEKERN_H_
 
@@ -32,7 +32,7 @@ static inline void unzipPairs(const float* p, typename Lanes<W>::V* a, typename 
   *b = __builtin_convertvector(h[1], typename Lanes<W>::V);
 }
 
-// vertices [q, q + W) of in (cpu.cc placeVertices)
+// vertices [q, q + W) of in (cpuvert.cc placeVertices)
 template <int W>
 static inline void placeChunk(const PlaceIn& in, int q) {
   typedef typename Lanes<W>::V V;
@@ -72,7 +72,7 @@ static inline void zipPairs(float* p, typename Lanes<W>::V a, typename Lanes<W>:
   __builtin_memcpy(p, &f, sizeof f);
 }
 
-// vertices [q, q + W) of in (cpu.cc vertexOut)
+// vertices [q, q + W) of in (cpuvert.cc vertexOut)
 template <int W>
 static inline void heightChunk(const HeightIn& in, int q) {
   typedef typename Lanes<W>::V V;
@@ -97,7 +97,7 @@ static int heightLanes(const HeightIn& in) {
 }
 
 // the whole chunks of W vertices; returns how many vertices were placed
-// (cpu.cc's scalar loop does the rest)
+// (cpuvert.cc's scalar loop does the rest)
 template <int W>
 static int placeLanes(const PlaceIn& in) {
   int q = 0;

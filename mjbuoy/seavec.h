@@ -32,7 +32,7 @@ struct LaneIn {
 long solveLanesAvx2(const LaneIn& in);
 long solveLanesAvx512(const LaneIn& in);
 
-// one hull's vertices placed (cpu.cc placeVertices, in lanes: placekern.h):
+// one hull's vertices placed (cpuvert.cc placeVertices, in lanes: placekern.h):
 // m body-frame vertices p (3 each) turned by the body's rotation R (row
 // major) and shifted by t = body origin - COM [m] into rel (3 each,
 // relative to the COM); X, Y = rel + com (world); the label search's
@@ -45,11 +45,11 @@ struct PlaceIn {
   const float* o[3];
   double *rel, *X, *Y, *A0, *A1;
 };
-// placed in whole chunks of lanes: returns how many (the rest: cpu.cc)
+// placed in whole chunks of lanes: returns how many (the rest: cpuvert.cc)
 int placeLanesAvx2(const PlaceIn& in);
 int placeLanesAvx512(const PlaceIn& in);
 
-// after the label search (cpu.cc vertexOut, in lanes: placekern.h): per
+// after the label search (cpuvert.cc vertexOut, in lanes: placekern.h): per
 // vertex of a hull its label (A0, A1) into lab (2 each), on a step's
 // first call the offset label - (X, Y) into offNew (2 floats each; 0 if
 // not finite), and the height above the surface h = rel z + zc - Z [m]
@@ -64,7 +64,7 @@ struct HeightIn {
   float* offNew;
   double* h;
 };
-// done in whole chunks of lanes: returns how many (the rest: cpu.cc)
+// done in whole chunks of lanes: returns how many (the rest: cpuvert.cc)
 int heightLanesAvx2(const HeightIn& in);
 int heightLanesAvx512(const HeightIn& in);
 

@@ -2,7 +2,7 @@
 // integrals, the closed-form wave series of waveint.h, centroid, normal,
 // water velocity and the flow extent) and the wet pieces of triangles the
 // surface cuts (the same integrals per piece), over lanes of 4 (AVX2 +
-// FMA) or 8 (AVX-512F); chosen at run time by vmath.h's level. cpu.cc's
+// FMA) or 8 (AVX-512F); chosen at run time by vmath.h's level. cpupass.cc's
 // per-triangle loop (wetTriangle, wetWaves) stays the reference
 // (tests/trivec_test.cc). Plain data only: no inline code to share.
 #ifndef MJBUOY_TRIVEC_H_
@@ -44,7 +44,7 @@ struct TriIn {
 
 // one hull's wet triangles for pass 2 (hydro.h's viscous, drag and
 // slamming forces at each wet centroid); the exponents of drag, suction
-// and slamming must each be 0.5, 1 or 2 (cpu.cc checks; others: scalar)
+// and slamming must each be 0.5, 1 or 2 (cpupass.cc checks; others: scalar)
 struct FlowIn {
   const int* idx;  // global triangle indices, wet area > 0
   int m;

@@ -3,7 +3,7 @@
 // Everything here is static: no inline function compiled for AVX can be
 // shared with the scalar path. Includes nothing but trivec.h and waveker.h.
 //
-// Each lane does what cpu.cc's scalar loop does for one triangle: for a
+// Each lane does what cpupass.cc's scalar loop does for one triangle: for a
 // wholly wet one wetTriangle's uncut branch, for a cut one its clip and
 // fan (cutChunk: the same cut points and the same fan corner); for each
 // piece the linear hydrostatic part (wavepress.cc hydrostaticLevel) or
@@ -520,7 +520,7 @@ static inline V powLanes(V x, double p) {
   return p == 0.5 ? M::sqrt(x) : p == 1 ? x : x * x;
 }
 
-// w[0..2] += g, w[3..5] += c x g (cpu.cc add), in the lanes of use
+// w[0..2] += g, w[3..5] += c x g (cpuhull.h add), in the lanes of use
 template <class V, class I>
 static inline void addLanes(V* w, const V g[3], const V c[3], I use) {
   const V z = V{};

@@ -1,5 +1,5 @@
 // the triangle stage's wholly wet triangles and cut triangles' wet pieces
-// in lanes (AVX2, AVX-512; trivec.h) against the scalar reference (cpu.cc's per-triangle loop) and
+// in lanes (AVX2, AVX-512; trivec.h) against the scalar reference (cpupass.cc's per-triangle loop) and
 // against Archimedes, on every instruction set this cpu has
 #include <cmath>
 #include <cstdio>

@@ -1,0 +1,149 @@
+// cpuhull: the cpu backend's per-hull data and stages shared by its
+// files: cpustate.cc (scratch, step clock, label guesses), cpuvert.cc
+// (the vertex stage), cpupass.cc (passes 1 and 2 over triangles) and
+// cpu.cc (chunks, threads, the wrench). Internal to mjbuoy
+#ifndef MJBUOY_CPUHULL_H_
+#define MJBUOY_CPUHULL_H_
+
+#include <cmath>
+#include <cstddef>
+
+#include "buoy.h"
+#include "rigid.h"
+
+namespace mjb {
+
+inline bool finite(const mjtNum* x, int n) {
+  for (int i = 0; i < n; i++) if (!std::isfinite(x[i])) return false;
+  return true;
+}
+
+inline double dot(const double* a, const double* b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+inline void cross(const double* a, const double* b, double* c) {
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// add force f at c (relative to the COM) to the wrench w
+inline void add(double* w, const double* f, const double* c) {
+  double t[3];
+  cross(c, f, t);
+  for (int j = 0; j < 3; j++) {
+    w[j] += f[j];
+    w[3 + j] += t[j];
+  }
+}
+
+// doubles per wave of e^L at a vertex: real and imaginary part of one
+// exponent, two at finite depth (waveint.h; depth does not change after attach)
+inline size_t eStride(const Sea& sea) { return sea.depth > 0 ? 4 : 2; }
+
+// wet vertices whose e^L one vExp call computes (vertexWaves): a call per
+// vertex cost more than the exp itself on a one-component sea
+enum { kExpChunk = 32 };
+
+// per-hull structure-of-arrays scratch of hullWrench (scratchSize): label
+// search points, then per vertex the stretched height, phases and e^L
+struct HullScr {
+  double *X, *Y, *A0, *A1, *Z, *ZS, *SC, *E, *arg;
+};
+
+// one hull's per-triangle results in the thread's scratch (TriState):
+// triangle k's at 3 (k - t0); v is the slamming history curV itself on a
+// step's first call (hullWrench)
+struct TriScr {
+  double *c, *n, *u, *v;
+  int t0;
+  double* at(double* a, int k) const { return a + 3 * (k - t0); }
+};
+
+// pass 1's data for one hull (hullWrench): what the triangles read and the
+// sums they add to (pressure wrench wp, wet area, its first moment along
+// the flow wdir, the extent along the flow)
+struct Pass1 {
+  const Buoy& b;
+  const Sea& sea;
+  State* s;
+  const HullScr& hs;
+  const Hull& hl;
+  const double* com;
+  const double* dir;
+  TriScr ts;
+  double* wp;
+  double wet, wdir, lo, hi;
+};
+
+// pass 1's results pass 2 reads: the wet extent along the flow and its
+// length, the mean position along it, ITTC's C_F, the slamming dt
+struct Flow2 {
+  double lo, len, sbar, cf, dt;
+};
+
+// hullWrench's per-call data: the body's pose, the thread's scratch and the
+// label guesses' weights L (guessWeights)
+struct HullCall {
+  const Buoy& b;
+  const Hull& hl;
+  int ih;
+  const mjtNum *x, *R, *com;
+  double L[3];
+  bool first;
+  State* s;
+  int slot;
+  double *sc, *tmp;
+  TriScr ts;
+};
+
+// the weights L of off, offOld, offOld2 in hull ih's label guesses at time
+// t (guessWeights): through the last three steps' offsets (times tgOff,
+// tgOld, tgOld2) when all three were solved, the last two, or the last
+// alone when fewer were. The offset moves smoothly with the sea and the
+// hull, so the quadratic guess is off by O(dt^3) (nanometres at dt = 2 ms)
+// where the last step's label was off by O(dt) (millimetres), and Newton,
+// converging quadratically, reaches its tolerance in one step instead of
+// two; the tolerance is unchanged, so the labels differ only within it
+void hullGuess(const State& s, int ih, double t, double L[3]);
+
+// the vertex stage's scratch layout in sc (scratchSize)
+HullScr hullScr(const Sea& sea, double* sc, size_t mi, int nv);
+
+// the vertex stage of vertices [q0, q1), timed into vsec: positions, the
+// label search for all at once (structure of arrays), heights and e^L.
+// The hull's scratch hs is shared by the threads of a split hull; tmp and
+// hs.arg are the running thread's
+void vertexStage(const HullCall& c, const HullScr& hs, int q0, int q1);
+
+// the hull's flow: its COM velocity relative to the water there, its speed
+// (returned) and direction dir (body x when at rest)
+double hullFlow(const HullCall& c, const double vel[6], double dir[3]);
+
+// the per-triangle scratch of thread slot for a hull whose first triangle is t0
+TriScr triScr(State* s, int slot, int t0);
+
+// pass 1 over the hull's triangles [k0, k1): a triangle with no vertex
+// below the surface has no wet part; with a vector level the wholly wet
+// ones and the cut ones go through the lanes (trivec.h) by kind, else
+// pass1Tri; wl: 4 (k1 - k0) ints of scratch
+void pass1Chunk(Pass1& q, int k0, int k1, int* wl);
+
+// Kerner's per-triangle form factor's mean position: 1+k_i = (1+k)(1 +
+// sbar - s_i), s in [0, 1] from rear to front along dir, whose
+// area-weighted mean is the hull's 1+k: sbar = sum A_i (c_i . dir - lo) /
+// (len wet), from pass 1's sums wet = sum A_i and wdir = sum A_i c_i . dir
+// and the extent [lo, hi] along dir
+double formMean(double wet, double wdir, double lo, double hi);
+
+// pass 2 over triangles [k0, k1): hydrodynamic forces at each wet
+// centroid, with the water's velocity averaged over the wet part (pass 1;
+// docs/physics.md, "Cost"); with a vector level in lanes (trivec.h) when
+// the exponents allow; dry triangles get v = 0; wl: k1 - k0 ints of scratch
+void pass2Chunk(const HullCall& c, const double vel[6], const Rigid& rig, const double dir[3],
+                const Flow2& f2, int k0, int k1, int* wl, double* const w[]);
+
+}  // namespace mjb
+
+#endif  // MJBUOY_CPUHULL_H_
