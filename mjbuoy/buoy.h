@@ -93,9 +93,7 @@ struct TriState {
 struct State {
   std::vector<double> wrench;  // nbody x 6: force, torque about xipos (world)
   std::vector<double> part;    // mjbNPART x nbody x 6: wrench by force family
-  std::vector<double> rel;     // vertex positions relative to their body COM [m]
   std::vector<double> h;       // vertex heights above the surface [m]
-  std::vector<double> lab;     // vertex surface particle labels, 2 each [m]
   // label minus position of each vertex, 2 each [m], the guess of the label
   // search: off is read, from the first call of the previous step (zero
   // after a restart) so every call of a step sees the same guess and gives

@@ -47,9 +47,13 @@ inline size_t eStride(const Sea& sea) { return sea.depth > 0 ? 4 : 2; }
 enum { kExpChunk = 32 };
 
 // per-hull structure-of-arrays scratch of hullWrench (scratchSize): label
-// search points, then per vertex the stretched height, phases and e^L
+// search points, then per vertex the stretched height, phases and e^L,
+// the position relative to the COM (rel, 3 each) and the label (lab, 2
+// each), all by the vertex's index in its hull. In the thread's scratch,
+// not the State's: a hull's vertex data stays in cache between the vertex
+// stage and the passes and is never written back to memory
 struct HullScr {
-  double *X, *Y, *A0, *A1, *Z, *ZS, *SC, *E, *arg;
+  double *X, *Y, *A0, *A1, *Z, *ZS, *SC, *E, *rel, *lab, *arg;
 };
 
 // one hull's per-triangle results in the thread's scratch (TriState):

@@ -21,8 +21,8 @@ namespace mjb {
 // fc the triangle's global vertex indices, v0 the hull's first; Pr only
 // with moments
 static void wetWaves(const Sea& sea, const WaveTab& t, size_t nw, const Wet& wt, const int* fc,
-                     int v0, const double* lab, const HullScr& hs, bool moments, double* Pd,
-                     double Pr[3], double V[3]) {
+                     int v0, const HullScr& hs, bool moments, double* Pd, double Pr[3],
+                     double V[3]) {
   *Pd = 0;
   for (int j = 0; j < 3; j++) Pr[j] = V[j] = 0;
   double zq[4], lq[4][2];
@@ -33,7 +33,8 @@ static void wetWaves(const Sea& sea, const WaveTab& t, size_t nw, const Wet& wt,
     if (u == 0 && s0 < 0) s0 = i;
     // a cut point lies on the surface: z' = 0; labels linear along the edge
     zq[i] = u == 0 ? hs.ZS[a - v0] : 0;
-    for (int j = 0; j < 2; j++) lq[i][j] = lab[2 * a + j] + u * (lab[2 * b + j] - lab[2 * a + j]);
+    const double *la = hs.lab + 2 * (a - v0), *lb = hs.lab + 2 * (b - v0);
+    for (int j = 0; j < 2; j++) lq[i][j] = la[j] + u * (lb[j] - la[j]);
   }
   if (s0 < 0) return;  // no hull vertex is wet: cannot happen for nq > 0
   const int v = fc[wt.qa[s0]] - v0;
@@ -78,7 +79,9 @@ static void pass1Tri(Pass1& q, int k) {
   double* wp = q.wp;
   const int* fc = b.face.data() + 3 * k;
   double p[3][3], h[3] = {s->h[fc[0]], s->h[fc[1]], s->h[fc[2]]};
-  for (int e = 0; e < 3; e++) std::memcpy(p[e], s->rel.data() + 3 * fc[e], 3 * sizeof(double));
+  for (int e = 0; e < 3; e++) {
+    std::memcpy(p[e], q.hs.rel + 3 * (fc[e] - q.hl.v0), 3 * sizeof(double));
+  }
   Wet wt;
   wetTriangle(p, h, &wt);
   if (!std::isfinite(wt.area) || !std::isfinite(wt.dA)) {
@@ -96,7 +99,7 @@ static void pass1Tri(Pass1& q, int k) {
   for (int j = 0; j < 3; j++) uq[j] = j < 2 ? sea.current[j] : 0;
   if (nw > 0) {
     double Pd, Prd[3], V[3];
-    wetWaves(sea, s->tab, nw, wt, fc, q.hl.v0, s->lab.data(), q.hs, linear, &Pd, Prd, V);
+    wetWaves(sea, s->tab, nw, wt, fc, q.hl.v0, q.hs, linear, &Pd, Prd, V);
     for (int j = 0; j < 3; j++) uq[j] += V[j] / wt.area;
     if (linear) {
       hydrostaticLevel(sea, wt, q.com, &P, Pr);
@@ -129,9 +132,9 @@ static TriIn triIn(const Pass1& q) {
   TriIn in;
   in.face = q.b.face.data();
   in.v0 = q.hl.v0;
-  in.rel = s->rel.data();
+  in.rel = q.hs.rel;
   in.h = s->h.data();
-  in.lab = s->lab.data();
+  in.lab = q.hs.lab;
   in.zs = q.hs.ZS;
   in.E = q.hs.E;
   in.nw = int(sea.waves.size());

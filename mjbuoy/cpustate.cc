@@ -31,21 +31,20 @@ static size_t maxVerts(const Buoy& b) {
 
 // per thread: 4 + kLaneTmp per wave for solve() and solveMany() (seavec.h),
 // then x, y, a0, a1, z, stretched height z' and 2 per wave (phases) for
-// every point of a hull, e^L (eStride per wave) for every vertex of a
-// hull, and 2 per wave per vertex of a chunk of exp arguments
+// every point of a hull, e^L (eStride per wave), the position relative
+// to the COM (3) and label (2) for every vertex of a hull, and 2 per wave
+// per vertex of a chunk of exp arguments
 static size_t scratchSize(const Buoy& b) {
   size_t nw = std::max(b.wcap, b.cfg.sea.waves.size());
   return (4 + kLaneTmp + 2 * kExpChunk) * nw + (6 + 2 * nw) * maxItems(b) +
-         eStride(b.cfg.sea) * nw * maxVerts(b);
+         (eStride(b.cfg.sea) * nw + 5) * maxVerts(b);
 }
 
 void makeState(const Buoy& b, State* s) {
   size_t nt = b.face.size() / 3;
   s->wrench.assign(6 * b.m->nbody, 0);
   s->part.assign(mjbNPART * 6 * b.m->nbody, 0);
-  s->rel.assign(b.vert.size(), 0);
   s->h.assign(b.vert.size() / 3, 0);
-  s->lab.assign(2 * (b.vert.size() / 3), 0);
   s->bad.assign(b.m->nbody, 0);
   s->told.assign(b.m->nbody, 0);
   s->badPart.assign(b.m->nbody * mjbNPART, 0);

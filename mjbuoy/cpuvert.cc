@@ -61,7 +61,9 @@ HullScr hullScr(const Sea& sea, double* sc, size_t mi, int nv) {
   hs.ZS = hs.Z + mi;
   hs.SC = hs.ZS + mi;
   hs.E = hs.SC + 2 * nw * mi;
-  hs.arg = hs.E + eStride(sea) * nw * nv;
+  hs.rel = hs.E + eStride(sea) * nw * nv;
+  hs.lab = hs.rel + 3 * nv;
+  hs.arg = hs.lab + 2 * nv;
   return hs;
 }
 
@@ -78,7 +80,7 @@ static void placeVertices(const HullCall& c, const HullScr& hs, int q0, int q1) 
   if (simdLevel() != kSimdScalar) {
     PlaceIn in{c.b.vert.data() + 3 * v, q1 - q0, {}, {}, {}, {L[0], L[1], L[2]},
                {&s->off[2 * v], &s->offOld[2 * v], &s->offOld2[2 * v]},
-               s->rel.data() + 3 * v, hs.X + q0, hs.Y + q0, hs.A0 + q0, hs.A1 + q0};
+               hs.rel + 3 * q0, hs.X + q0, hs.Y + q0, hs.A0 + q0, hs.A1 + q0};
     for (int j = 0; j < 9; j++) in.R[j] = R[j];
     for (int j = 0; j < 3; j++) in.t[j] = x[j] - com[j], in.com[j] = com[j];
     qs += simdLevel() == kSimdAvx512 ? placeLanesAvx512(in) : placeLanesAvx2(in);
@@ -86,7 +88,7 @@ static void placeVertices(const HullCall& c, const HullScr& hs, int q0, int q1) 
   for (int q = qs; q < q1; q++) {
     const int i = hl.v0 + q;
     const double* p = c.b.vert.data() + 3 * i;
-    double* r = s->rel.data() + 3 * i;
+    double* r = hs.rel + 3 * q;
     for (int j = 0; j < 3; j++) {
       r[j] = R[3 * j] * p[0] + R[3 * j + 1] * p[1] + R[3 * j + 2] * p[2] + x[j] - com[j];
     }
@@ -108,15 +110,15 @@ static void vertexOut(const HullCall& c, const HullScr& hs, int q0, int q1) {
   const int v = hl.v0 + q0;
   int qs = q0;
   if (simdLevel() != kSimdScalar) {
-    HeightIn in{q1 - q0, s->rel.data() + 3 * v, zc, hs.X + q0, hs.Y + q0, hs.A0 + q0,
-                hs.A1 + q0, hs.Z + q0, c.first, s->lab.data() + 2 * v, s->offNew.data() + 2 * v,
+    HeightIn in{q1 - q0, hs.rel + 3 * q0, zc, hs.X + q0, hs.Y + q0, hs.A0 + q0,
+                hs.A1 + q0, hs.Z + q0, c.first, hs.lab + 2 * q0, s->offNew.data() + 2 * v,
                 s->h.data() + v};
     qs += simdLevel() == kSimdAvx512 ? heightLanesAvx512(in) : heightLanesAvx2(in);
   }
   for (int q = qs; q < q1; q++) {
     const int i = hl.v0 + q;
-    s->lab[2 * i] = hs.A0[q];
-    s->lab[2 * i + 1] = hs.A1[q];
+    hs.lab[2 * q] = hs.A0[q];
+    hs.lab[2 * q + 1] = hs.A1[q];
     if (c.first) {
       // (a label not finite, which the height reports, guesses nothing)
       const double o0 = hs.A0[q] - hs.X[q], o1 = hs.A1[q] - hs.Y[q];
@@ -124,7 +126,7 @@ static void vertexOut(const HullCall& c, const HullScr& hs, int q0, int q1) {
       s->offNew[2 * i] = ok ? float(o0) : 0;
       s->offNew[2 * i + 1] = ok ? float(o1) : 0;
     }
-    s->h[i] = s->rel[3 * i + 2] + zc - hs.Z[q];
+    s->h[i] = hs.rel[3 * q + 2] + zc - hs.Z[q];
   }
 }
 
@@ -141,7 +143,7 @@ static void wetVertices(const HullCall& c, const HullScr& hs, int q0, int q1) {
   for (int q = q0; q < q1; q++) {
     const int i = hl.v0 + q;
     if (!(s->h[i] <= 0)) continue;
-    hs.ZS[q] = stretch(sea.depth, s->rel[3 * i + 2] + zc - sea.level, hs.Z[q] - sea.level);
+    hs.ZS[q] = stretch(sea.depth, hs.rel[3 * q + 2] + zc - sea.level, hs.Z[q] - sea.level);
     wq[nq++] = q;
     if (nq == kExpChunk) {
       vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg);

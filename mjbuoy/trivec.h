@@ -16,8 +16,9 @@ struct TriIn {
   int m;           // how many
   const int* face; // 3 global vertex indices per triangle
   int v0;          // the hull's first vertex
-  const double *rel, *h, *lab;  // per global vertex: position relative to the COM,
-                                // height above the surface, Gerstner label [m]
+  const double* h;     // per global vertex: height above the surface [m]
+  const double *rel, *lab;  // per hull vertex: position relative to the COM,
+                            // Gerstner label [m]
   const double *zs, *E;  // per hull vertex: stretched height [m], e^L (es nw a vertex)
   int nw, es;
   // the call's wave table (WaveTab, sorted order): n components

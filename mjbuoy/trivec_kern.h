@@ -248,11 +248,11 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
     tk[l] = k;
     for (int c = 0; c < 3; c++) {
       const int g = in->face[3 * k + c];
-      for (int j = 0; j < 3; j++) p[c][j][l] = in->rel[3 * g + j];
+      for (int j = 0; j < 3; j++) p[c][j][l] = in->rel[3 * (g - in->v0) + j];
       d[c][l] = -in->h[g];
       zs[c][l] = in->zs[g - in->v0];
-      lb[c][0][l] = in->lab[2 * g];
-      lb[c][1][l] = in->lab[2 * g + 1];
+      lb[c][0][l] = in->lab[2 * (g - in->v0)];
+      lb[c][1][l] = in->lab[2 * (g - in->v0) + 1];
       if (c == 0) e0[l] = in->E + in->es * in->nw * (g - in->v0);
     }
   }
@@ -391,11 +391,11 @@ static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
     fromB[l] = TWO && r == 1 ? -1 : 0;
     for (int c = 0; c < 3; c++) {
       const int g = fc[(r + c) % 3];
-      for (int j = 0; j < 3; j++) p[c][j][l] = in->rel[3 * g + j];
+      for (int j = 0; j < 3; j++) p[c][j][l] = in->rel[3 * (g - in->v0) + j];
       h[c][l] = in->h[g];
       zs[c][l] = in->zs[g - in->v0];  // read at the wet corners only
-      lb[c][0][l] = in->lab[2 * g];
-      lb[c][1][l] = in->lab[2 * g + 1];
+      lb[c][0][l] = in->lab[2 * (g - in->v0)];
+      lb[c][1][l] = in->lab[2 * (g - in->v0) + 1];
       if (c == (!TWO ? 0 : r == 1 ? 2 : 1)) e0[l] = in->E + in->es * in->nw * (g - in->v0);
     }
   }
