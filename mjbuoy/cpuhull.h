@@ -48,12 +48,14 @@ enum { kExpChunk = 32 };
 
 // per-hull structure-of-arrays scratch of hullWrench (scratchSize): label
 // search points, then per vertex the stretched height, phases and e^L,
-// the position relative to the COM (rel, 3 each) and the label (lab, 2
-// each), all by the vertex's index in its hull. In the thread's scratch,
-// not the State's: a hull's vertex data stays in cache between the vertex
-// stage and the passes and is never written back to memory
+// the position relative to the COM (rel, 3 each), the label (lab, 2
+// each) and all of these with the height in one record (rec, zipkern.h
+// kRec each, 64-byte aligned, for the triangle kernels), by the vertex's
+// index in its hull. In the thread's scratch, not the State's: a hull's
+// vertex data stays in cache between the vertex stage and the passes and
+// is never written back to memory
 struct HullScr {
-  double *X, *Y, *A0, *A1, *Z, *ZS, *SC, *E, *rel, *lab, *arg;
+  double *X, *Y, *A0, *A1, *Z, *ZS, *SC, *E, *rel, *lab, *rec, *arg;
 };
 
 // one hull's per-triangle results in the thread's scratch (TriState):

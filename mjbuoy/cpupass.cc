@@ -135,6 +135,7 @@ static TriIn triIn(const Pass1& q) {
   in.rel = q.hs.rel;
   in.h = s->h.data();
   in.lab = q.hs.lab;
+  in.rec = q.hs.rec;
   in.zs = q.hs.ZS;
   in.E = q.hs.E;
   in.nw = int(sea.waves.size());

@@ -5,6 +5,7 @@
 
 #include "cpuhull.h"
 #include "seavec.h"
+#include "zipkern.h"
 
 namespace mjb {
 
@@ -32,12 +33,13 @@ static size_t maxVerts(const Buoy& b) {
 // per thread: 4 + kLaneTmp per wave for solve() and solveMany() (seavec.h),
 // then x, y, a0, a1, z, stretched height z' and 2 per wave (phases) for
 // every point of a hull, e^L (eStride per wave), the position relative
-// to the COM (3) and label (2) for every vertex of a hull, and 2 per wave
-// per vertex of a chunk of exp arguments
+// to the COM (3), label (2) and record (kRec, aligned to 8 doubles) for
+// every vertex of a hull, and 2 per wave per vertex of a chunk of exp
+// arguments
 static size_t scratchSize(const Buoy& b) {
   size_t nw = std::max(b.wcap, b.cfg.sea.waves.size());
   return (4 + kLaneTmp + 2 * kExpChunk) * nw + (6 + 2 * nw) * maxItems(b) +
-         (eStride(b.cfg.sea) * nw + 5) * maxVerts(b);
+         (eStride(b.cfg.sea) * nw + 5 + kRec) * maxVerts(b) + kRec;
 }
 
 void makeState(const Buoy& b, State* s) {

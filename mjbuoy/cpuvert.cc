@@ -2,11 +2,13 @@
 // e^L at wet vertices) and the flow at a hull's COM
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 #include "cpuhull.h"
 #include "seavec.h"
 #include "vmath.h"
+#include "zipkern.h"
 
 namespace mjb {
 
@@ -63,7 +65,10 @@ HullScr hullScr(const Sea& sea, double* sc, size_t mi, int nv) {
   hs.E = hs.SC + 2 * nw * mi;
   hs.rel = hs.E + eStride(sea) * nw * nv;
   hs.lab = hs.rel + 3 * nv;
-  hs.arg = hs.lab + 2 * nv;
+  // (64-byte lines: a record is one load)
+  const uintptr_t r = reinterpret_cast<uintptr_t>(hs.lab + 2 * nv);
+  hs.rec = reinterpret_cast<double*>((r + 63) & ~uintptr_t(63));
+  hs.arg = hs.rec + kRec * nv;
   return hs;
 }
 
@@ -153,6 +158,24 @@ static void wetVertices(const HullCall& c, const HullScr& hs, int q0, int q1) {
   if (nq > 0) vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg);
 }
 
+// the records of vertices [q0, q1) (HullScr rec), whole chunks in lanes
+// (seavec.h), the rest here
+static void packVertices(const HullCall& c, const HullScr& hs, int q0, int q1) {
+  const double* h = c.s->h.data() + c.hl.v0;
+  int qs = q0;
+  if (simdLevel() != kSimdScalar) {
+    PackIn in{q1 - q0, hs.rel + 3 * q0, h + q0, hs.ZS + q0, hs.A0 + q0, hs.A1 + q0,
+              hs.rec + kRec * q0};
+    qs += simdLevel() == kSimdAvx512 ? packLanesAvx512(in) : packLanesAvx2(in);
+  }
+  for (int q = qs; q < q1; q++) {
+    double* r = hs.rec + kRec * q;
+    const double f[kRec] = {hs.rel[3 * q], hs.rel[3 * q + 1], hs.rel[3 * q + 2], h[q],
+                            hs.ZS[q],      hs.A0[q],          hs.A1[q],          0};
+    std::memcpy(r, f, sizeof f);
+  }
+}
+
 // the vertex stage of vertices [q0, q1), timed into vsec: positions, the
 // label search for all at once (structure of arrays), heights and e^L.
 // The hull's scratch hs is shared by the threads of a split hull; tmp and
@@ -168,6 +191,7 @@ void vertexStage(const HullCall& c, const HullScr& hs, int q0, int q1) {
   s->nsolve[c.slot] += q1 - q0;
   vertexOut(c, hs, q0, q1);
   wetVertices(c, hs, q0, q1);
+  packVertices(c, hs, q0, q1);
   s->vsec[c.slot] += std::chrono::duration<double>(std::chrono::steady_clock::now() - tv0).count();
 }
 

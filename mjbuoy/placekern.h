@@ -96,6 +96,27 @@ static int heightLanes(const HeightIn& in) {
   return q;
 }
 
+// vertices [q, q + W) of in: their records (cpuvert.cc packVertices)
+template <int W>
+static inline void packChunk(const PackIn& in, int q) {
+  typedef typename Lanes<W>::V V;
+  V f[kRec];
+  unzip3<V, W>(in.rel + 3 * q, f);
+  f[3] = Lanes<W>::ld(in.h + q);
+  f[4] = Lanes<W>::ld(in.zs + q);
+  f[5] = Lanes<W>::ld(in.A0 + q);
+  f[6] = Lanes<W>::ld(in.A1 + q);
+  f[7] = V{};
+  storeRecords<V, W>(in.rec + kRec * q, f);
+}
+
+template <int W>
+static int packLanes(const PackIn& in) {
+  int q = 0;
+  for (; q + W <= in.m; q += W) packChunk<W>(in, q);
+  return q;
+}
+
 // the whole chunks of W vertices; returns how many vertices were placed
 // (cpuvert.cc's scalar loop does the rest)
 template <int W>

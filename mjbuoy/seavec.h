@@ -68,6 +68,19 @@ struct HeightIn {
 int heightLanesAvx2(const HeightIn& in);
 int heightLanesAvx512(const HeightIn& in);
 
+// the vertex stage's last step (cpuvert.cc packVertices, in lanes:
+// placekern.h): m vertices' records for the triangle kernels (zipkern.h
+// kRec doubles each, from rec): position relative to the COM (rel, 3
+// each), height above the surface h, stretched height zs, label A0, A1
+struct PackIn {
+  int m;
+  const double *rel, *h, *zs, *A0, *A1;
+  double* rec;
+};
+// done in whole chunks of lanes: returns how many (the rest: cpuvert.cc)
+int packLanesAvx2(const PackIn& in);
+int packLanesAvx512(const PackIn& in);
+
 }  // namespace mjb
 
 #endif  // MJBUOY_SEAVEC_H_

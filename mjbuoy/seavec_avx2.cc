@@ -21,4 +21,5 @@ struct Mvec4 {
 long solveLanesAvx2(const LaneIn& in) { return solveLanes<4, Mvec4>(in); }
 int placeLanesAvx2(const PlaceIn& in) { return placeLanes<4>(in); }
 int heightLanesAvx2(const HeightIn& in) { return heightLanes<4>(in); }
+int packLanesAvx2(const PackIn& in) { return packLanes<4>(in); }
 }  // namespace mjb

@@ -21,4 +21,5 @@ struct Mvec8 {
 long solveLanesAvx512(const LaneIn& in) { return solveLanes<8, Mvec8>(in); }
 int placeLanesAvx512(const PlaceIn& in) { return placeLanes<8>(in); }
 int heightLanesAvx512(const HeightIn& in) { return heightLanes<8>(in); }
+int packLanesAvx512(const PackIn& in) { return packLanes<8>(in); }
 }  // namespace mjb

@@ -19,6 +19,7 @@ struct TriIn {
   const double* h;     // per global vertex: height above the surface [m]
   const double *rel, *lab;  // per hull vertex: position relative to the COM,
                             // Gerstner label [m]
+  const double* rec;  // per hull vertex: all of it in one record (zipkern.h kRec)
   const double *zs, *E;  // per hull vertex: stretched height [m], e^L (es nw a vertex)
   int nw, es;
   // the call's wave table (WaveTab, sorted order): n components

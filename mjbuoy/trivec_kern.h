@@ -242,19 +242,21 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   typedef typename TLanes<W>::I I;
   V p[3][3], d[3], zs[3], lb[3][2];
   const double* e0[W];
-  int tk[W];
+  int tk[W], gv[3][W];
   for (int l = 0; l < W; l++) {
     const int k = in->idx[p0 + (l < nl ? l : nl - 1)];
     tk[l] = k;
-    for (int c = 0; c < 3; c++) {
-      const int g = in->face[3 * k + c];
-      for (int j = 0; j < 3; j++) p[c][j][l] = in->rel[3 * (g - in->v0) + j];
-      d[c][l] = -in->h[g];
-      zs[c][l] = in->zs[g - in->v0];
-      lb[c][0][l] = in->lab[2 * (g - in->v0)];
-      lb[c][1][l] = in->lab[2 * (g - in->v0) + 1];
-      if (c == 0) e0[l] = in->E + in->es * in->nw * (g - in->v0);
-    }
+    for (int c = 0; c < 3; c++) gv[c][l] = in->face[3 * k + c] - in->v0;
+    e0[l] = in->E + in->es * in->nw * gv[0][l];
+  }
+  for (int c = 0; c < 3; c++) {
+    V f[kRec];
+    loadRecords<V, W>(in->rec, gv[c], f);
+    for (int j = 0; j < 3; j++) p[c][j] = f[j];
+    d[c] = -f[3];
+    zs[c] = f[4];
+    lb[c][0] = f[5];
+    lb[c][1] = f[6];
   }
   // wetTriangle's uncut branch: normal, area, centroid
   V cr[3], sr[3], n[3];
@@ -382,6 +384,7 @@ static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   I fromB = I{};  // lanes whose quadrilateral is fanned from b
   const double* e0[W];
   int tk[W];
+  int gv[3][W];
   for (int l = 0; l < W; l++) {
     const int k = in->idx[p0 + (l < nl ? l : nl - 1)];
     const int* fc = in->face + 3 * k;
@@ -389,15 +392,17 @@ static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
     const double h0 = in->h[fc[0]], h1 = in->h[fc[1]];
     const int r = TWO ? (h0 > 0 ? 0 : h1 > 0 ? 1 : 2) : (h0 <= 0 ? 0 : h1 <= 0 ? 1 : 2);
     fromB[l] = TWO && r == 1 ? -1 : 0;
-    for (int c = 0; c < 3; c++) {
-      const int g = fc[(r + c) % 3];
-      for (int j = 0; j < 3; j++) p[c][j][l] = in->rel[3 * (g - in->v0) + j];
-      h[c][l] = in->h[g];
-      zs[c][l] = in->zs[g - in->v0];  // read at the wet corners only
-      lb[c][0][l] = in->lab[2 * (g - in->v0)];
-      lb[c][1][l] = in->lab[2 * (g - in->v0) + 1];
-      if (c == (!TWO ? 0 : r == 1 ? 2 : 1)) e0[l] = in->E + in->es * in->nw * (g - in->v0);
-    }
+    for (int c = 0; c < 3; c++) gv[c][l] = fc[(r + c) % 3] - in->v0;
+    e0[l] = in->E + in->es * in->nw * gv[!TWO ? 0 : r == 1 ? 2 : 1][l];
+  }
+  for (int c = 0; c < 3; c++) {
+    V f[kRec];
+    loadRecords<V, W>(in->rec, gv[c], f);
+    for (int j = 0; j < 3; j++) p[c][j] = f[j];
+    h[c] = f[3];
+    zs[c] = f[4];  // read at the wet corners only
+    lb[c][0] = f[5];
+    lb[c][1] = f[6];
   }
   // the parent's normal (wetTriangle)
   V cr[3], n[3];

@@ -110,6 +110,63 @@ static inline F mergePairs(F f, std::integer_sequence<int, L...>) {
   return __builtin_shufflevector(f, f, PairIdx<W>::merge(L)...);
 }
 
+// one butterfly stage of a W x W transpose (W vectors of W doubles, the
+// rows): rows i and i + B (i / B even) exchange blocks of B lanes, so
+// after the stages B = 1, 2, .. W / 2 row i holds column i
+template <int W, int B>
+struct TransIdx {
+  static constexpr int lo(int l) { return (l / B) % 2 == 0 ? l : W + l - B; }
+  static constexpr int hi(int l) { return (l / B) % 2 == 0 ? l + B : W + l; }
+};
+template <class V, int W, int B, int... L>
+static inline void transStage(V r[W], std::integer_sequence<int, L...>) {
+  for (int i = 0; i < W; i++) {
+    if ((i / B) % 2) continue;
+    const V a = r[i], b = r[i + B];
+    r[i] = __builtin_shufflevector(a, b, TransIdx<W, B>::lo(L)...);
+    r[i + B] = __builtin_shufflevector(a, b, TransIdx<W, B>::hi(L)...);
+  }
+}
+
+// r[i][l] becomes r[l][i] (W = 4 or 8)
+template <class V, int W>
+static inline void transpose(V r[W]) {
+  const auto s = std::make_integer_sequence<int, W>();
+  transStage<V, W, 1>(r, s);
+  transStage<V, W, 2>(r, s);
+  if (W == 8) transStage<V, W, W == 8 ? 4 : 2>(r, s);
+}
+
+// a vertex record (kRec doubles: position relative to the COM, height
+// above the surface, stretched height, label, one unused), written by the
+// vertex stage (placekern.h packLanes) and read by the triangle kernels
+// (trivec_kern.h), a load and a transpose per corner instead of a lane
+// insert per value
+enum { kRec = 8 };
+
+// the records of W vertices g[l] (rec: kRec doubles each) as kRec vectors
+// of W lanes: out[f][l] = rec[kRec g[l] + f]
+template <class V, int W>
+static inline void loadRecords(const double* rec, const int* g, V out[kRec]) {
+  for (int h = 0; h < kRec / W; h++) {
+    V r[W];
+    for (int l = 0; l < W; l++) r[l] = zload<V>(rec + kRec * g[l] + W * h);
+    transpose<V, W>(r);
+    for (int i = 0; i < W; i++) out[W * h + i] = r[i];
+  }
+}
+
+// the inverse: W consecutive records from rec, field f from in[f]
+template <class V, int W>
+static inline void storeRecords(double* rec, const V in[kRec]) {
+  for (int h = 0; h < kRec / W; h++) {
+    V r[W];
+    for (int i = 0; i < W; i++) r[i] = in[W * h + i];
+    transpose<V, W>(r);
+    for (int l = 0; l < W; l++) __builtin_memcpy(rec + kRec * l + W * h, &r[l], sizeof(V));
+  }
+}
+
 }  // namespace
 }  // namespace mjb
 
