@@ -84,18 +84,6 @@ std::string lone(int threads) {
   return s.str();
 }
 
-// qpos and every body's wrench, step after step
-std::vector<double> wrenches(const mjModel* m, mjData* d, mjbBuoy* b, int steps) {
-  std::vector<double> out;
-  for (int i = 0; i < steps; i++) {
-    mj_step(m, d);
-    out.insert(out.end(), d->qpos, d->qpos + m->nq);
-    const mjtNum* w = mjb_wrench(b, d);
-    out.insert(out.end(), w, w + 6 * m->nbody);
-  }
-  return out;
-}
-
 TEST(Cpu, AHullSplitAmongThreadsGivesTheBitsOfOneThread) {
   // the chunks' sums are added in their order whoever ran them, so 1, 2 and
   // 3 threads agree exactly; so do users stepping several mjData at once
@@ -106,9 +94,9 @@ TEST(Cpu, AHullSplitAmongThreadsGivesTheBitsOfOneThread) {
   ASSERT_FALSE(mjb::buoyOf(one.b)->splitHulls);
   ASSERT_TRUE(mjb::buoyOf(two.b)->splitHulls && mjb::buoyOf(three.b)->splitHulls);
   ASSERT_EQ(mjb::buoyOf(three.b)->nthreads, 3);
-  const std::vector<double> ref = wrenches(one.m, one.d, one.b, 200);
-  EXPECT_EQ(wrenches(two.m, two.d, two.b, 200), ref);
-  EXPECT_EQ(wrenches(three.m, three.d, three.b, 200), ref);
+  const std::vector<double> ref = stepRecord(one.m, one.d, one.b, 200);
+  EXPECT_EQ(stepRecord(two.m, two.d, two.b, 200), ref);
+  EXPECT_EQ(stepRecord(three.m, three.d, three.b, 200), ref);
   double fz = 0;  // the hull floats: the comparison covers wet chunks
   for (size_t i = 0; i < ref.size(); i += 7 + 12) fz = std::fmax(fz, ref[i + 7 + 6 + 2]);
   EXPECT_GT(fz, 1000);
@@ -117,7 +105,7 @@ TEST(Cpu, AHullSplitAmongThreadsGivesTheBitsOfOneThread) {
   for (int i = 0; i < 3; i++) d[i] = mj_makeData(two.m);
   std::vector<std::thread> th;
   for (int i = 0; i < 3; i++) {
-    th.emplace_back([&, i] { out[i] = wrenches(two.m, d[i], two.b, 200); });
+    th.emplace_back([&, i] { out[i] = stepRecord(two.m, d[i], two.b, 200); });
   }
   for (auto& t : th) t.join();
   for (int i = 0; i < 3; i++) {

@@ -38,18 +38,6 @@ std::string steep(int threads, const char* backend = "cpu", const char* integ = 
   return s.str();
 }
 
-// qpos and the wrench of every step
-std::vector<double> run(const mjModel* m, mjData* d, mjbBuoy* b, int steps) {
-  std::vector<double> out;
-  for (int i = 0; i < steps; i++) {
-    mj_step(m, d);
-    out.insert(out.end(), d->qpos, d->qpos + m->nq);
-    const mjtNum* w = mjb_wrench(b, d);
-    out.insert(out.end(), w, w + 6 * m->nbody);
-  }
-  return out;
-}
-
 // steps s 300 times; every 10th step first copies the state into an
 // mjData without mjbuoy's history (its surface search starts cold) and
 // checks that the families without history (pressure, viscous, drag,
@@ -130,21 +118,21 @@ TEST(Guess, ForcesAreThoseOfAColdSolve) {
 TEST(Guess, RunsResetsCopiesAndThreadsRepeatTheBits) {
   Scene one(steep(1)), two(steep(2));
   ASSERT_TRUE(one.ok() && two.ok()) << one.err << two.err;
-  const std::vector<double> ref = run(one.m, one.d, one.b, 200);
+  const std::vector<double> ref = stepRecord(one.m, one.d, one.b, 200);
   // mj_resetData: the history restarts cold, the run repeats
   mj_resetData(one.m, one.d);
-  EXPECT_EQ(run(one.m, one.d, one.b, 200), ref);
+  EXPECT_EQ(stepRecord(one.m, one.d, one.b, 200), ref);
   // two threads (the hulls split into chunks) give one thread's bits
-  EXPECT_EQ(run(two.m, two.d, two.b, 200), ref);
+  EXPECT_EQ(stepRecord(two.m, two.d, two.b, 200), ref);
   // mj_copyData + mjb_copyData halfway: the copy's continuation is the
   // original's, its guesses' history included
   mj_resetData(one.m, one.d);
-  std::vector<double> first = run(one.m, one.d, one.b, 100);
+  std::vector<double> first = stepRecord(one.m, one.d, one.b, 100);
   mjData* c = mj_makeData(one.m);
   mj_copyData(c, one.m, one.d);
   ASSERT_EQ(mjb_copyData(one.b, c, one.d), 1);
-  std::vector<double> rest = run(one.m, one.d, one.b, 100);
-  EXPECT_EQ(run(one.m, c, one.b, 100), rest);
+  std::vector<double> rest = stepRecord(one.m, one.d, one.b, 100);
+  EXPECT_EQ(stepRecord(one.m, c, one.b, 100), rest);
   first.insert(first.end(), rest.begin(), rest.end());
   EXPECT_EQ(first, ref);
   mjb_unbindData(one.b, c);
@@ -159,16 +147,16 @@ TEST(Guess, GlRunsResetsAndCopiesRepeatTheBits) {
     Scene g(steep(1, "gl", integ));
     ASSERT_TRUE(g.ok()) << g.err;
     ASSERT_STREQ(mjb_info(g.b).backend, "gl");
-    const std::vector<double> ref = run(g.m, g.d, g.b, 120);
+    const std::vector<double> ref = stepRecord(g.m, g.d, g.b, 120);
     mj_resetData(g.m, g.d);
-    EXPECT_EQ(run(g.m, g.d, g.b, 120), ref) << integ;
+    EXPECT_EQ(stepRecord(g.m, g.d, g.b, 120), ref) << integ;
     mj_resetData(g.m, g.d);
-    std::vector<double> first = run(g.m, g.d, g.b, 60);
+    std::vector<double> first = stepRecord(g.m, g.d, g.b, 60);
     mjData* c = mj_makeData(g.m);
     mj_copyData(c, g.m, g.d);
     ASSERT_EQ(mjb_copyData(g.b, c, g.d), 1);
-    std::vector<double> rest = run(g.m, g.d, g.b, 60);
-    EXPECT_EQ(run(g.m, c, g.b, 60), rest) << integ;
+    std::vector<double> rest = stepRecord(g.m, g.d, g.b, 60);
+    EXPECT_EQ(stepRecord(g.m, c, g.b, 60), rest) << integ;
     first.insert(first.end(), rest.begin(), rest.end());
     EXPECT_EQ(first, ref) << integ;
     mjb_unbindData(g.b, c);

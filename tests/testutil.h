@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <mujoco/mujoco.h>
@@ -85,6 +86,19 @@ struct Scene {
            d->warning[mjWARN_BADQACC].number;
   }
 };
+
+// qpos and every body's mjbuoy wrench after each of `steps` steps, in one
+// vector (runs compared bit for bit)
+inline std::vector<double> stepRecord(const mjModel* m, mjData* d, mjbBuoy* b, int steps) {
+  std::vector<double> out;
+  for (int i = 0; i < steps; i++) {
+    mj_step(m, d);
+    out.insert(out.end(), d->qpos, d->qpos + m->nq);
+    const mjtNum* w = mjb_wrench(b, d);
+    out.insert(out.end(), w, w + 6 * m->nbody);
+  }
+  return out;
+}
 
 // steps from d->time to sim time T [s]. Loops count steps rather than run
 // `while (d->time < T)`: MuJoCo resets a diverging simulation to time 0 and
