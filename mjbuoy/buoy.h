@@ -84,9 +84,8 @@ struct TriState {
   std::vector<double> area;    // wet area [m^2]
   std::vector<double> c;       // wet centroid relative to the body COM, 3 each [m]
   std::vector<double> n;       // outward unit normal, 3 each
-  std::vector<double> v;       // flow-relative centroid velocity, 3 each [m/s]
   std::vector<double> u;       // water velocity, mean over the wet part, 3 each [m/s]
-  size_t per = 0;              // doubles of c, n, v, u per thread
+  size_t per = 0;              // doubles of c, n, u per thread
 };
 
 // per-mjData state; sized at creation, never resized while stepping
@@ -139,9 +138,11 @@ struct State {
   std::vector<char> badPart, toldPart;
   std::string notices;         // capacity reserved up front
   TriState tri;                // this call
-  // slamming history: wet area and velocity per triangle at the last call
-  // at the current step's time (cur) and at the previous step's (prev)
-  std::vector<double> curA, curV, prevA, prevV;
+  // slamming history: each triangle's swept-volume rate Q = A v [m^3/s],
+  // 3 each, at the last call at the current step's time (cur) and at the
+  // previous step's (prev). In float (hydro.h sweptRate): Gamma needs no
+  // more, and it is the one per-triangle array streamed every step
+  std::vector<float> curQ, prevQ;
   long key = -1;               // mjTIMER_STEP count at the last call (-1: none yet)
   double tcur = 0, tprev = 0;  // times of those steps [s]
   bool hasPrev = false;

@@ -16,8 +16,7 @@ namespace mjb {
 static void dryHull(const Hull& hl, int ih, bool first, State* s) {
   std::memset(&s->tri.area[hl.t0], 0, hl.nt * sizeof(double));
   if (!first) return;
-  std::memset(&s->curA[hl.t0], 0, hl.nt * sizeof(double));
-  std::memset(&s->curV[3 * hl.t0], 0, 3 * hl.nt * sizeof(double));
+  std::memset(&s->curQ[3 * hl.t0], 0, 3 * hl.nt * sizeof(float));
   // the next step's guesses: cold, as after a restart
   std::memset(&s->offNew[2 * hl.v0], 0, 2 * hl.nv * sizeof(float));
   s->hoffNew[2 * ih] = s->hoffNew[2 * ih + 1] = 0;
@@ -100,8 +99,8 @@ static void pass1Part(const HullRun& r, int i, int slot) {
   cs.hi = q.hi;
 }
 
-// stage 3, chunk i: pass 2 into the chunk's sums; on a step's first call
-// the wet areas into the slamming history
+// stage 3, chunk i: pass 2 into the chunk's sums (and, on a step's first
+// call, the slamming history)
 static void pass2Part(const HullRun& r, int i, int slot) {
   HullScr hs;
   const HullCall c = chunkCall(r, slot, &hs);
@@ -115,8 +114,6 @@ static void pass2Part(const HullRun& r, int i, int slot) {
   const int k0 = hl.t0 + chunkAt(hl.nt, r.nc, i), k1 = hl.t0 + chunkAt(hl.nt, r.nc, i + 1);
   int* wl = c.s->iscr.data() + c.s->iper * slot;
   pass2Chunk(c, r.vel, *r.rig, r.dir, r.f2, k0, k1, wl, w);
-  double* area = c.s->tri.area.data();
-  if (c.first) std::memcpy(&c.s->curA[k0], area + k0, (k1 - k0) * sizeof(double));
 }
 
 // before the stages: false when the whole hull is above the highest crest
@@ -157,9 +154,6 @@ static void hullMid(HullRun* r, const mjData* d, double* const w[]) {
   const double cf = ittc57(r->speed * len / r->c.b.cfg.sea.nu);
   r->wet = wet;
   r->f2 = Flow2{lo, len, formMean(wet, wdir, lo, hi), cf, s->hasPrev ? d->time - s->tprev : 0};
-  // slamming history: the last call at this step's time; pass 2 writes
-  // the velocities there itself (no copy of 24 bytes a triangle)
-  if (r->c.first) r->c.ts.v = &s->curV[3 * r->c.hl.t0];
 }
 
 // after pass 2: the chunks' wrenches added in order, and the simple
@@ -277,8 +271,7 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   std::memset(s->bad.data(), 0, s->bad.size());
   int clock = stepClock(m, d, s);
   if (clock == kNewStep) {
-    std::swap(s->prevA, s->curA);
-    std::swap(s->prevV, s->curV);
+    std::swap(s->prevQ, s->curQ);
     // guesses: the last step's become the older, this one's the last
     std::swap(s->offOld2, s->offOld);
     std::swap(s->offOld, s->off);

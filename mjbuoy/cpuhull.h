@@ -58,11 +58,10 @@ struct HullScr {
   double *X, *Y, *A0, *A1, *Z, *ZS, *SC, *E, *rel, *lab, *rec, *arg;
 };
 
-// one hull's per-triangle results in the thread's scratch (TriState):
-// triangle k's at 3 (k - t0); v is the slamming history curV itself on a
-// step's first call (hullWrench)
+// one hull's per-triangle results of pass 1 in the thread's scratch
+// (TriState): triangle k's at 3 (k - t0)
 struct TriScr {
-  double *c, *n, *u, *v;
+  double *c, *n, *u;
   int t0;
   double* at(double* a, int k) const { return a + 3 * (k - t0); }
 };
@@ -146,7 +145,9 @@ double formMean(double wet, double wdir, double lo, double hi);
 // pass 2 over triangles [k0, k1): hydrodynamic forces at each wet
 // centroid, with the water's velocity averaged over the wet part (pass 1;
 // docs/physics.md, "Cost"); with a vector level in lanes (trivec.h) when
-// the exponents allow; dry triangles get v = 0; wl: k1 - k0 ints of scratch
+// the exponents allow; on a step's first call each triangle's
+// swept-volume rate into the slamming history (0 when dry); wl: k1 - k0
+// ints of scratch
 void pass2Chunk(const HullCall& c, const double vel[6], const Rigid& rig, const double dir[3],
                 const Flow2& f2, int k0, int k1, int* wl, double* const w[]);
 

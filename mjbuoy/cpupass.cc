@@ -63,8 +63,7 @@ static void wetWaves(const Sea& sea, const WaveTab& t, size_t nw, const Wet& wt,
 
 TriScr triScr(State* s, int slot, int t0) {
   const size_t o = s->tri.per * slot;
-  return {s->tri.c.data() + o, s->tri.n.data() + o, s->tri.u.data() + o, s->tri.v.data() + o,
-          t0};
+  return {s->tri.c.data() + o, s->tri.n.data() + o, s->tri.u.data() + o, t0};
 }
 
 // cut, pressure force and torque of triangle k, the water's mean wave
@@ -199,7 +198,7 @@ static bool flowExponents(const HullParams& par, bool slam) {
 }
 
 // pass 2 for the wet triangles wl[0, nf) in vector lanes (trivec.h)
-static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const TriScr& ts,
+static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const TriScr& ts, bool first,
                        const double vel[6], const double* com, const Rigid& rig,
                        const double dir[3], const Flow2& f2, const int* wl, int nf,
                        double* const w[]) {
@@ -212,11 +211,10 @@ static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const TriScr& ts
   in.c = ts.c;
   in.nrm = ts.n;
   in.u = ts.u;
-  in.v = ts.v;
   in.t0 = ts.t0;
   in.tarea = b.tarea.data();
-  in.prevA = s->prevA.data();
-  in.prevV = s->prevV.data();
+  in.q = first ? s->curQ.data() : nullptr;
+  in.prevQ = s->prevQ.data();
   for (int j = 0; j < 6; j++) in.vel[j] = vel[j];
   for (int j = 0; j < 3; j++) {
     in.com[j] = com[j];
@@ -301,20 +299,24 @@ double formMean(double wet, double wdir, double lo, double hi) {
 }
 
 // pass 2's scalar reference for wet triangle k: viscous, drag and slamming
-// at its centroid with its relative velocity v (stored at ts.v)
+// at its centroid with its relative velocity v; on a step's first call its
+// swept-volume rate into the slamming history
 static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
                      const double dir[3], const Flow2& f2, int k, double* const w[]) {
   const HullParams& par = c.hl.par;
   State* s = c.s;
   const TriScr& ts = c.ts;
-  double* v = ts.at(ts.v, k);
   double A = s->tri.area[k];
   const double* cc = ts.at(ts.c, k);
   const double* n = ts.at(ts.n, k);
   const double* uwk = ts.at(ts.u, k);
-  double wc[3];
+  double wc[3], v[3];
   cross(vel, cc, wc);
   for (int j = 0; j < 3; j++) v[j] = vel[3 + j] + wc[j] - uwk[j];
+  float qf[3];
+  sweptRate(A, v, qf);
+  if (c.first) std::memcpy(&s->curQ[3 * k], qf, sizeof qf);
+  const double q[3] = {qf[0], qf[1], qf[2]};
   double g[3];
   if (par.viscous > 0) {
     double sk = f2.len > 0 ? (dot(cc, dir) - f2.lo) / f2.len : f2.sbar;
@@ -333,15 +335,19 @@ static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
     for (int j = 0; j < 3; j++) pw[j] = cc[j] + c.com[j];
     meff = effMass(rig, pw, u);
   }
+  const float* qpf = &s->prevQ[3 * k];
+  const double qp[3] = {qpf[0], qpf[1], qpf[2]};
   slamForce(par.slam[0], par.slam[1], par.slam[2], c.hl.share * meff, c.hl.area, c.b.tarea[k],
-            A, v, s->prevA[k], &s->prevV[3 * k], n, f2.dt, g);
+            A, v, q, qp, n, f2.dt, g);
   add(w[mjbPART_SLAM], g, cc);
 }
 
 // pass 2 over triangles [k0, k1): hydrodynamic forces at each wet
 // centroid, with the water's velocity averaged over the wet part (pass 1;
 // docs/physics.md, "Cost"); with a vector level in lanes (trivec.h) when
-// the exponents allow; dry triangles get v = 0; wl: k1 - k0 ints of scratch
+// the exponents allow; on a step's first call each triangle's
+// swept-volume rate into the slamming history (0 when dry); wl: k1 - k0
+// ints of scratch
 void pass2Chunk(const HullCall& c, const double vel[6], const Rigid& rig,
                        const double dir[3], const Flow2& f2, int k0, int k1, int* wl,
                        double* const w[]) {
@@ -349,22 +355,18 @@ void pass2Chunk(const HullCall& c, const double vel[6], const Rigid& rig,
   State* s = c.s;
   const bool lanes = simdLevel() != kSimdScalar && flowExponents(hl.par, s->hasPrev);
   int nf = 0;
-  if (lanes) {  // the lanes write v of the wet triangles
-    std::memset(c.ts.at(c.ts.v, k0), 0, 3 * (k1 - k0) * sizeof(double));
+  // dry triangles' history is zero; wet ones' are written below
+  if (c.first) std::memset(&s->curQ[3 * k0], 0, 3 * (k1 - k0) * sizeof(float));
+  if (lanes) {
     for (int k = k0; k < k1; k++) {
       wl[nf] = k;
       nf += s->tri.area[k] > 0;
     }
-    if (nf > 0) pass2Lanes(c.b, hl, s, c.ts, vel, c.com, rig, dir, f2, wl, nf, w);
+    if (nf > 0) pass2Lanes(c.b, hl, s, c.ts, c.first, vel, c.com, rig, dir, f2, wl, nf, w);
     return;
   }
   for (int k = k0; k < k1; k++) {
-    if (s->tri.area[k] > 0) {
-      pass2Tri(c, vel, rig, dir, f2, k, w);
-    } else {
-      double* v = c.ts.at(c.ts.v, k);
-      v[0] = v[1] = v[2] = 0;
-    }
+    if (s->tri.area[k] > 0) pass2Tri(c, vel, rig, dir, f2, k, w);
   }
 }
 

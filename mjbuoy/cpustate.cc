@@ -57,13 +57,11 @@ void makeState(const Buoy& b, State* s) {
   s->notices.reserve(4096);
   s->tri.area.assign(nt, 0);
   s->tri.per = 3 * maxTris(b);
-  for (auto* a : {&s->tri.c, &s->tri.n, &s->tri.v, &s->tri.u}) {
+  for (auto* a : {&s->tri.c, &s->tri.n, &s->tri.u}) {
     a->assign(s->tri.per * std::max(1, b.nthreads), 0);
   }
-  s->curA.assign(nt, 0);
-  s->prevA.assign(nt, 0);
-  s->curV.assign(3 * nt, 0);
-  s->prevV.assign(3 * nt, 0);
+  s->curQ.assign(3 * nt, 0);
+  s->prevQ.assign(3 * nt, 0);
   s->off.assign(b.vert.size() / 3 * 2, 0);
   s->offNew.assign(b.vert.size() / 3 * 2, 0);
   s->hoff.assign(2 * b.hull.size(), 0);

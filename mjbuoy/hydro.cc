@@ -62,7 +62,7 @@ void dragForce(const double drag[3], const double suction[3], double vr, double 
 }
 
 void slamForce(double gain, double gmax, double p, double mass, double shull, double S,
-               double A, const double v[3], double Aprev, const double vprev[3],
+               double A, const double v[3], const double q[3], const double qprev[3],
                const double n[3], double dt, double f[3]) {
   f[0] = f[1] = f[2] = 0;
   double sp = std::sqrt(dot(v, v));
@@ -72,7 +72,7 @@ void slamForce(double gain, double gmax, double p, double mass, double shull, do
   double c = dot(v, n) / sp;
   if (!(c > 0)) return;
   double dq[3];
-  for (int j = 0; j < 3; j++) dq[j] = A * v[j] - Aprev * vprev[j];
+  for (int j = 0; j < 3; j++) dq[j] = q[j] - qprev[j];
   double gamma = std::sqrt(dot(dq, dq)) / (S * dt);
   double r = std::fmin(gamma / gmax, 1.0);
   double s = -gain * powp(r, p) * c * mass * 2 * A / shull / dt;

@@ -6,6 +6,9 @@
 #ifndef MJBUOY_HYDRO_H_
 #define MJBUOY_HYDRO_H_
 
+#include <cfloat>
+#include <cmath>
+
 namespace mjb {
 
 // Reynolds numbers below this are clamped: the ITTC line has a pole at
@@ -40,10 +43,23 @@ void dragForce(const double drag[3], const double suction[3], double vr, double 
 // advancing faces is at most S_hull / 2) the impulses are a convex
 // combination of point stops, so they never reverse a point's motion nor
 // raise the kinetic energy.
-// gain scales the result (1: Kerner's model, 0: off).
+// gain scales the result (1: Kerner's model, 0: off). q and qprev are Q
+// now and at the previous step [m^3/s] as the history keeps them
+// (sweptRate, in float: docs/physics.md 4.4).
 void slamForce(double gain, double gmax, double p, double mass, double shull, double S,
-               double A, const double v[3], double Aprev, const double vprev[3],
+               double A, const double v[3], const double q[3], const double qprev[3],
                const double n[3], double dt, double f[3]);
+
+// the swept-volume rate Q = A v [m^3/s] of wet area A [m^2] moving at v
+// [m/s], in float as the slamming history keeps it (docs/physics.md 4.4);
+// beyond float's range +-inf, as the lanes' conversion gives (a cast
+// would be undefined there)
+inline void sweptRate(double A, const double v[3], float q[3]) {
+  for (int j = 0; j < 3; j++) {
+    const double x = A * v[j];
+    q[j] = std::fabs(x) <= FLT_MAX ? float(x) : x > 0 ? INFINITY : x < 0 ? -INFINITY : NAN;
+  }
+}
 
 }  // namespace mjb
 

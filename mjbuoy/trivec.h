@@ -52,10 +52,13 @@ struct FlowIn {
   int m;
   const double* area;                // pass 1's wet area, per triangle
   const double *c, *nrm, *u;         // pass 1's, triangle k at 3 (k - t0)
-  double* v;                         // written: flow-relative velocity [m/s], as c
   int t0;                            // the hull's first triangle
   const double* tarea;               // the triangles' whole areas [m^2]
-  const double *prevA, *prevV;       // slamming history (prev step)
+  // slamming history, swept-volume rates Q = A v, 3 per triangle [m^3/s]
+  // (hydro.h sweptRate): q written on a step's first call (else null),
+  // prevQ the previous step's
+  float* q;
+  const float* prevQ;
   double vel[6];                     // body velocity [angular; linear] at the COM
   double com[3];                     // body COM, world [m]
   // viscous: on, rho cf, viscous gain, extent and mean position along dir

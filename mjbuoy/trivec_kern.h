@@ -31,6 +31,7 @@ template <int W>
 struct TLanes {
   typedef double V __attribute__((vector_size(8 * W)));
   typedef long I __attribute__((vector_size(8 * W)));  // what comparisons give
+  typedef float F __attribute__((vector_size(4 * W)));  // the slamming history
   template <class U>
   static double hmax(U v) {
     double r = v[0];
@@ -543,43 +544,41 @@ static inline void addLanes(V* w, const V g[3], const V c[3], I use) {
 template <int W>
 static inline void flowGather(const FlowIn* in, int p0, int nl, int* tk,
                               typename TLanes<W>::V* A, typename TLanes<W>::V* S,
-                              typename TLanes<W>::V* Ap, typename TLanes<W>::V c[3],
-                              typename TLanes<W>::V n[3], typename TLanes<W>::V u[3],
-                              typename TLanes<W>::V vp[3]) {
-  double g1[3][W], g3[4][3][W];
+                              typename TLanes<W>::V c[3], typename TLanes<W>::V n[3],
+                              typename TLanes<W>::V u[3], typename TLanes<W>::V qp[3]) {
+  double g1[2][W], g3[4][3][W];
   for (int l = 0; l < W; l++) {
     const int k = in->idx[p0 + (l < nl ? l : nl - 1)];
     tk[l] = k;
     g1[0][l] = in->area[k];
     g1[1][l] = in->tarea[k];
-    g1[2][l] = in->prevA[k];
     for (int j = 0; j < 3; j++) {
       const int kl = 3 * (k - in->t0) + j;
       g3[0][j][l] = in->c[kl];
       g3[1][j][l] = in->nrm[kl];
       g3[2][j][l] = in->u[kl];
-      g3[3][j][l] = in->prevV[3 * k + j];
+      g3[3][j][l] = in->prevQ[3 * k + j];
     }
   }
   __builtin_memcpy(A, g1[0], sizeof *A);
   __builtin_memcpy(S, g1[1], sizeof *A);
-  __builtin_memcpy(Ap, g1[2], sizeof *A);
   for (int j = 0; j < 3; j++) {
     __builtin_memcpy(&c[j], g3[0][j], sizeof *A);
     __builtin_memcpy(&n[j], g3[1][j], sizeof *A);
     __builtin_memcpy(&u[j], g3[2][j], sizeof *A);
-    __builtin_memcpy(&vp[j], g3[3][j], sizeof *A);
+    __builtin_memcpy(&qp[j], g3[3][j], sizeof *A);
   }
 }
 
 // the lanes' viscous, drag and slamming forces (flowChunk) from area A,
-// whole area S, previous area Ap, centroid c, normal n, flow-relative
-// velocity v and the previous one vp, summed in the lanes of use
+// whole area S, centroid c, normal n, flow-relative velocity v and the
+// swept-volume rate q = A v as stored and the previous step's qp, summed
+// in the lanes of use
 template <int W, class M>
 static inline void flowForces(const FlowIn* in, typename TLanes<W>::V A, typename TLanes<W>::V S,
-                              typename TLanes<W>::V Ap, const typename TLanes<W>::V c[3],
-                              const typename TLanes<W>::V n[3], const typename TLanes<W>::V v[3],
-                              const typename TLanes<W>::V vp[3], typename TLanes<W>::I use,
+                              const typename TLanes<W>::V c[3], const typename TLanes<W>::V n[3],
+                              const typename TLanes<W>::V v[3], const typename TLanes<W>::V q[3],
+                              const typename TLanes<W>::V qp[3], typename TLanes<W>::I use,
                               typename TLanes<W>::V* wv, typename TLanes<W>::V* wd,
                               typename TLanes<W>::V* ws) {
   typedef typename TLanes<W>::V V;
@@ -629,7 +628,7 @@ static inline void flowForces(const FlowIn* in, typename TLanes<W>::V A, typenam
     const V meff = on ? 1 / (in->minv + e0 * Je0 + e1 * Je1 + e2 * Je2) : z;
     const V mass = in->share * meff;
     V dq[3];
-    for (int j = 0; j < 3; j++) dq[j] = A * v[j] - Ap * vp[j];
+    for (int j = 0; j < 3; j++) dq[j] = q[j] - qp[j];
     const V gam = M::sqrt(dq[0] * dq[0] + dq[1] * dq[1] + dq[2] * dq[2]) / (S * in->dt);
     const V rg = gam / in->gmax;
     const V r = rg < 1 ? rg : one;  // fmin(NaN, 1) is 1 too
@@ -642,28 +641,31 @@ static inline void flowForces(const FlowIn* in, typename TLanes<W>::V A, typenam
 
 // pass 2 for the wet triangles [p0, p0 + nl) of in.idx as W lanes:
 // hydro.cc's viscousForce, dragForce and slamForce (the same tests, the
-// same NaN for a non-finite input), rigid.cc's effMass
+// same NaN for a non-finite input), rigid.cc's effMass; on a step's first
+// call the swept-volume rates into the history
 template <int W, class M>
 static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
                       typename TLanes<W>::V* wd, typename TLanes<W>::V* ws) {
   typedef typename TLanes<W>::V V;
   typedef typename TLanes<W>::I I;
+  typedef typename TLanes<W>::F F;
   const int k0 = in->idx[p0];
   // W triangles in a row (most of a hull's wet ones): loaded whole
   const bool run = nl == W && in->idx[p0 + W - 1] - k0 == W - 1;
-  V A, S, Ap, c[3], n[3], v[3], vp[3];
+  V A, S, c[3], n[3], v[3], qp[3];
   int tk[W];
   if (run) {
     A = zload<V>(in->area + k0);
     S = zload<V>(in->tarea + k0);
-    Ap = zload<V>(in->prevA + k0);
     const int o = 3 * (k0 - in->t0);
     unzip3<V, W>(in->c + o, c);
     unzip3<V, W>(in->nrm + o, n);
     unzip3<V, W>(in->u + o, v);
-    unzip3<V, W>(in->prevV + 3 * k0, vp);
+    F qf[3];
+    unzip3<F, W>(in->prevQ + 3 * k0, qf);
+    for (int j = 0; j < 3; j++) qp[j] = __builtin_convertvector(qf[j], V);
   } else {
-    flowGather<W>(in, p0, nl, tk, &A, &S, &Ap, c, n, v, vp);
+    flowGather<W>(in, p0, nl, tk, &A, &S, c, n, v, qp);
   }
   I use = A == A;
   for (int l = 0; l < W; l++) use[l] = l < nl ? -1 : 0;
@@ -671,14 +673,21 @@ static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
   const V wc[3] = {w[1] * c[2] - w[2] * c[1], w[2] * c[0] - w[0] * c[2],
                    w[0] * c[1] - w[1] * c[0]};
   for (int j = 0; j < 3; j++) v[j] = w[3 + j] + wc[j] - v[j];
-  if (run) {
-    zip3<V, W>(in->v + 3 * (k0 - in->t0), v[0], v[1], v[2]);
-  } else {
+  // Q = A v rounded to float (hydro.h sweptRate), as the history keeps it
+  F qf[3];
+  V q[3];
+  for (int j = 0; j < 3; j++) {
+    qf[j] = __builtin_convertvector(A * v[j], F);
+    q[j] = __builtin_convertvector(qf[j], V);
+  }
+  if (in->q && run) {
+    zip3<F, W>(in->q + 3 * k0, qf[0], qf[1], qf[2]);
+  } else if (in->q) {
     for (int l = 0; l < nl; l++) {
-      for (int j = 0; j < 3; j++) in->v[3 * (tk[l] - in->t0) + j] = v[j][l];
+      for (int j = 0; j < 3; j++) in->q[3 * tk[l] + j] = qf[j][l];
     }
   }
-  flowForces<W, M>(in, A, S, Ap, c, n, v, vp, use, wv, wd, ws);
+  flowForces<W, M>(in, A, S, c, n, v, q, qp, use, wv, wd, ws);
 }
 
 template <int W, class M>

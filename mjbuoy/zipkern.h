@@ -12,8 +12,8 @@
 namespace mjb {
 namespace {
 
-template <class V>
-static inline V zload(const double* p) {
+template <class V, class T>
+static inline V zload(const T* p) {
   V v;
   __builtin_memcpy(&v, p, sizeof v);
   return v;
@@ -34,18 +34,18 @@ static inline V unzipSeq(V a, V b, V c, std::integer_sequence<int, L...>) {
   return __builtin_shufflevector(t, c, UnzipIdx<W, N, J>::second(L)...);
 }
 
-// component J of the W vectors of N doubles each (N = 2 or 3) stored one
-// after another from p
-template <class V, int W, int N, int J>
-static inline V unzip(const double* p) {
+// component J of the W vectors of N elements each (N = 2 or 3) stored one
+// after another from p (doubles, or floats with V of W floats)
+template <class V, int W, int N, int J, class T>
+static inline V unzip(const T* p) {
   const V a = zload<V>(p), b = zload<V>(p + W);
   const V c = N == 3 ? zload<V>(p + 2 * W) : a;
   return unzipSeq<V, W, N, J>(a, b, c, std::make_integer_sequence<int, W>());
 }
 
 // all three components of W 3-vectors stored one after another from p
-template <class V, int W>
-static inline void unzip3(const double* p, V o[3]) {
+template <class V, int W, class T>
+static inline void unzip3(const T* p, V o[3]) {
   o[0] = unzip<V, W, 3, 0>(p);
   o[1] = unzip<V, W, 3, 1>(p);
   o[2] = unzip<V, W, 3, 2>(p);
@@ -67,8 +67,8 @@ static inline V zip3Block(V x, V y, V z, std::integer_sequence<int, L...>) {
 }
 
 // the W 3-vectors (x[l], y[l], z[l]) stored one after another from p
-template <class V, int W>
-static inline void zip3(double* p, V x, V y, V z) {
+template <class V, int W, class T>
+static inline void zip3(T* p, V x, V y, V z) {
   const auto s = std::make_integer_sequence<int, W>();
   const V o[3] = {zip3Block<V, W, 0>(x, y, z, s), zip3Block<V, W, 1>(x, y, z, s),
                   zip3Block<V, W, 2>(x, y, z, s)};

@@ -155,7 +155,11 @@ void kernels(FuzzedDataProvider& in) {
   double shull = std::max(area, val(in, 1e-3, 1e4));
   double aprev = val(in, 0, area);
   if (A > 0) {
-    mjb::slamForce(gain, gmax, pw, mass, shull, area, A, v, aprev, vprev, w.n, dt, f);
+    float qf[3], qpf[3];
+    mjb::sweptRate(A, v, qf);
+    mjb::sweptRate(aprev, vprev, qpf);
+    const double q[3] = {qf[0], qf[1], qf[2]}, qp[3] = {qpf[0], qpf[1], qpf[2]};
+    mjb::slamForce(gain, gmax, pw, mass, shull, area, A, v, q, qp, w.n, dt, f);
     REQUIRE(finite(f, 3));
     REQUIRE(dot(f, v) <= kTiny);  // opposes the motion: never reverses it
     REQUIRE(norm(f) <= gain * mass * 2 * A / shull / dt * sp * (1 + 1e-9));
