@@ -76,16 +76,14 @@ struct ChunkSum {
   double wv[6], wd[6], ws[6];
 };
 
-// wet triangle data of one call, and the slamming history
-// (area per triangle of the model; the rest per thread, 3 per triangle of
-// the largest hull, reused hull after hull so it stays in cache: cpuhull.h
-// TriScr)
+// wet triangle data of one call, per thread for the largest hull, reused
+// hull after hull so it stays in cache (cpuhull.h TriScr)
 struct TriState {
-  std::vector<double> area;    // wet area [m^2]
+  std::vector<double> area;    // wet area [m^2], 1 each
   std::vector<double> c;       // wet centroid relative to the body COM, 3 each [m]
   std::vector<double> n;       // outward unit normal, 3 each
   std::vector<double> u;       // water velocity, mean over the wet part, 3 each [m/s]
-  size_t per = 0;              // doubles of c, n, u per thread
+  size_t per = 0;              // triangles per thread
 };
 
 // per-mjData state; sized at creation, never resized while stepping
@@ -138,6 +136,9 @@ struct State {
   std::vector<char> badPart, toldPart;
   std::string notices;         // capacity reserved up front
   TriState tri;                // this call
+  // per hull: its wet area at the last call [m^2] (wetted_area sensors;
+  // NaN when its body's state was not finite)
+  std::vector<double> hwet;
   // slamming history: each triangle's swept-volume rate Q = A v [m^3/s],
   // 3 each, at the last call at the current step's time (cur) and at the
   // previous step's (prev). In float (hydro.h sweptRate): Gamma needs no

@@ -14,7 +14,7 @@ namespace mjb {
 // whole hull above the highest crest the waves can make: all dry, which
 // gives exactly what the passes give then (no force, no history)
 static void dryHull(const Hull& hl, int ih, bool first, State* s) {
-  std::memset(&s->tri.area[hl.t0], 0, hl.nt * sizeof(double));
+  s->hwet[ih] = 0;
   if (!first) return;
   std::memset(&s->curQ[3 * hl.t0], 0, 3 * hl.nt * sizeof(float));
   // the next step's guesses: cold, as after a restart
@@ -153,6 +153,7 @@ static void hullMid(HullRun* r, const mjData* d, double* const w[]) {
   const double len = hi > lo ? hi - lo : 0;
   const double cf = ittc57(r->speed * len / r->c.b.cfg.sea.nu);
   r->wet = wet;
+  s->hwet[r->c.ih] = wet;
   r->f2 = Flow2{lo, len, formMean(wet, wdir, lo, hi), cf, s->hasPrev ? d->time - s->tprev : 0};
 }
 
@@ -232,6 +233,7 @@ static void hullRange(const Job& j, int h0, int h1, int slot, Pool* pool) {
     if (!finite(j.d->xpos + 3 * bd, 3) || !finite(j.d->xmat + 9 * bd, 9) ||
         !finite(j.d->xipos + 3 * bd, 3) || !finite(vel, 6)) {
       s->bad[bd] = 1;
+      s->hwet[ih] = NAN;
       if (j.first) {  // the next step's guesses: cold
         const Hull& hl = b.hull[ih];
         std::memset(&s->offNew[2 * hl.v0], 0, 2 * hl.nv * sizeof(float));

@@ -59,11 +59,12 @@ struct HullScr {
 };
 
 // one hull's per-triangle results of pass 1 in the thread's scratch
-// (TriState): triangle k's at 3 (k - t0)
+// (TriState): triangle k's wet area at a[k - t0], the rest at 3 (k - t0)
 struct TriScr {
-  double *c, *n, *u;
+  double *a, *c, *n, *u;
   int t0;
-  double* at(double* a, int k) const { return a + 3 * (k - t0); }
+  double& area(int k) const { return a[k - t0]; }
+  double* at(double* x, int k) const { return x + 3 * (k - t0); }
 };
 
 // pass 1's data for one hull (hullWrench): what the triangles read and the

@@ -62,8 +62,9 @@ static void wetWaves(const Sea& sea, const WaveTab& t, size_t nw, const Wet& wt,
 }
 
 TriScr triScr(State* s, int slot, int t0) {
-  const size_t o = s->tri.per * slot;
-  return {s->tri.c.data() + o, s->tri.n.data() + o, s->tri.u.data() + o, t0};
+  const size_t o = 3 * s->tri.per * slot;
+  return {s->tri.area.data() + s->tri.per * slot, s->tri.c.data() + o, s->tri.n.data() + o,
+          s->tri.u.data() + o, t0};
 }
 
 // cut, pressure force and torque of triangle k, the water's mean wave
@@ -85,10 +86,10 @@ static void pass1Tri(Pass1& q, int k) {
   wetTriangle(p, h, &wt);
   if (!std::isfinite(wt.area) || !std::isfinite(wt.dA)) {
     wp[0] += NAN;  // reported by finishWrench, never a silent zero
-    s->tri.area[k] = 0;
+    q.ts.area(k) = 0;
     return;
   }
-  s->tri.area[k] = wt.area > 0 ? wt.area : 0;
+  q.ts.area(k) = wt.area > 0 ? wt.area : 0;
   if (!(wt.area > 0)) return;
   const double* n = wt.n;
   double mo[3], P = rg * wt.dA, Pr[3] = {rg * wt.drA[0], rg * wt.drA[1], rg * wt.drA[2]};
@@ -159,7 +160,7 @@ static TriIn triIn(const Pass1& q) {
   in.cur[0] = sea.current[0];
   in.cur[1] = sea.current[1];
   for (int j = 0; j < 3; j++) in.dir[j] = q.dir[j];
-  in.area = s->tri.area.data();
+  in.area = q.ts.a;
   in.c = q.ts.c;
   in.nrm = q.ts.n;
   in.u = q.ts.u;
@@ -207,7 +208,7 @@ static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const TriScr& ts
   FlowIn in;
   in.idx = wl;
   in.m = nf;
-  in.area = s->tri.area.data();
+  in.area = ts.a;
   in.c = ts.c;
   in.nrm = ts.n;
   in.u = ts.u;
@@ -262,7 +263,7 @@ void pass1Chunk(Pass1& q, int k0, int k1, int* wl) {
     for (int k = k0; k < k1; k++) {
       const int* fc = q.b.face.data() + 3 * k;
       if (s->h[fc[0]] >= 0 && s->h[fc[1]] >= 0 && s->h[fc[2]] >= 0) {
-        s->tri.area[k] = 0;
+        q.ts.area(k) = 0;
       } else {
         pass1Tri(q, k);
       }
@@ -270,7 +271,7 @@ void pass1Chunk(Pass1& q, int k0, int k1, int* wl) {
     return;
   }
   // dry triangles keep the zero area; the others are written below
-  std::memset(&s->tri.area[k0], 0, nt * sizeof(double));
+  std::memset(&q.ts.area(k0), 0, nt * sizeof(double));
   // lists by kind (trisort.h), nt ints each; the lanes' rest after them
   TriSort ks{q.b.face.data(), s->h.data(), k0, nt, {wl, wl + nt, wl + 2 * nt, wl + 3 * nt},
              {0, 0, 0, 0}};
@@ -306,7 +307,7 @@ static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
   const HullParams& par = c.hl.par;
   State* s = c.s;
   const TriScr& ts = c.ts;
-  double A = s->tri.area[k];
+  double A = ts.area(k);
   const double* cc = ts.at(ts.c, k);
   const double* n = ts.at(ts.n, k);
   const double* uwk = ts.at(ts.u, k);
@@ -360,13 +361,13 @@ void pass2Chunk(const HullCall& c, const double vel[6], const Rigid& rig,
   if (lanes) {
     for (int k = k0; k < k1; k++) {
       wl[nf] = k;
-      nf += s->tri.area[k] > 0;
+      nf += c.ts.area(k) > 0;
     }
     if (nf > 0) pass2Lanes(c.b, hl, s, c.ts, c.first, vel, c.com, rig, dir, f2, wl, nf, w);
     return;
   }
   for (int k = k0; k < k1; k++) {
-    if (s->tri.area[k] > 0) pass2Tri(c, vel, rig, dir, f2, k, w);
+    if (c.ts.area(k) > 0) pass2Tri(c, vel, rig, dir, f2, k, w);
   }
 }
 

@@ -55,11 +55,11 @@ void makeState(const Buoy& b, State* s) {
   s->dtold.assign(b.diff.db.size(), 0);
   s->notices.clear();
   s->notices.reserve(4096);
-  s->tri.area.assign(nt, 0);
-  s->tri.per = 3 * maxTris(b);
-  for (auto* a : {&s->tri.c, &s->tri.n, &s->tri.u}) {
-    a->assign(s->tri.per * std::max(1, b.nthreads), 0);
-  }
+  s->tri.per = maxTris(b);
+  const size_t nth = std::max(1, b.nthreads);
+  s->tri.area.assign(s->tri.per * nth, 0);
+  for (auto* a : {&s->tri.c, &s->tri.n, &s->tri.u}) a->assign(3 * s->tri.per * nth, 0);
+  s->hwet.assign(b.hull.size(), 0);
   s->curQ.assign(3 * nt, 0);
   s->prevQ.assign(3 * nt, 0);
   s->off.assign(b.vert.size() / 3 * 2, 0);

@@ -172,10 +172,7 @@ void fillSensors(const Buoy& b, const mjModel* m, mjData* d, const State* s, int
       case kSensArea:
         if (s) {
           double a = 0;
-          for (int h = q.h0; h < q.h1; h++) {
-            const Hull& hl = b.hull[h];
-            for (int k = hl.t0; k < hl.t0 + hl.nt; k++) a += s->tri.area[k];
-          }
+          for (int h = q.h0; h < q.h1; h++) a += s->hwet[h];
           out[0] = a;
         }
         break;

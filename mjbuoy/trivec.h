@@ -29,9 +29,9 @@ struct TriIn {
   const double *wp[2], *wux[2], *wuy[2], *wz[2];
   int linear;  // linear pressure (dynamic part), else Kerner's rho g (eta - z)
   double rg, level, comz, cur[2], dir[3];
-  // written per triangle done: wet area (global index), centroid
-  // (relative to the COM), unit normal, mean water velocity [m/s] (the
-  // hull's scratch: triangle k at 3 (k - t0))
+  // written per triangle done, in the hull's scratch: wet area [m^2] at
+  // k - t0, centroid (relative to the COM) [m], unit normal, mean water
+  // velocity [m/s] at 3 (k - t0)
   double *area, *c, *nrm, *u;
   int t0;
   // triangles left to the scalar path (a piece too coarse for the series,
@@ -50,7 +50,7 @@ struct TriIn {
 struct FlowIn {
   const int* idx;  // global triangle indices, wet area > 0
   int m;
-  const double* area;                // pass 1's wet area, per triangle
+  const double* area;                // pass 1's wet area, triangle k at k - t0
   const double *c, *nrm, *u;         // pass 1's, triangle k at 3 (k - t0)
   int t0;                            // the hull's first triangle
   const double* tarea;               // the triangles' whole areas [m^2]

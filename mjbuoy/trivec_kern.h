@@ -276,7 +276,7 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   const V cen[3] = {sr[0] / 3, sr[1] / 3, sr[2] / 3};
   if (nl == W && tk[W - 1] - tk[0] == W - 1 && TLanes<W>::all(good)) {
     const int o = 3 * (tk[0] - in->t0);
-    __builtin_memcpy(in->area + tk[0], &A, sizeof A);
+    __builtin_memcpy(in->area + tk[0] - in->t0, &A, sizeof A);
     zip3<V, W>(in->c + o, cen[0], cen[1], cen[2]);
     zip3<V, W>(in->nrm + o, n[0], n[1], n[2]);
     zip3<V, W>(in->u + o, u[0], u[1], u[2]);
@@ -285,10 +285,10 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
       const int k = tk[l];
       if (!good[l]) {
         if (ok[l] || len[l] != len[l]) in->rest[in->nrest++] = k;
-        else in->area[k] = 0;  // degenerate: no wet part (wetTriangle)
+        else in->area[k - in->t0] = 0;  // degenerate: no wet part (wetTriangle)
         continue;
       }
-      in->area[k] = A[l];
+      in->area[k - in->t0] = A[l];
       for (int j = 0; j < 3; j++) {
         const int kl = 3 * (k - in->t0) + j;
         in->c[kl] = cen[j][l];
@@ -474,7 +474,7 @@ static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
       continue;  // else degenerate: no wet part, area 0 (wetTriangle)
     }
     if (!has[l]) continue;
-    in->area[k] = A[l];
+    in->area[k - in->t0] = A[l];
     for (int j = 0; j < 3; j++) {
       const int kl = 3 * (k - in->t0) + j;
       in->c[kl] = rA[j][l] * inv[l];
@@ -550,7 +550,7 @@ static inline void flowGather(const FlowIn* in, int p0, int nl, int* tk,
   for (int l = 0; l < W; l++) {
     const int k = in->idx[p0 + (l < nl ? l : nl - 1)];
     tk[l] = k;
-    g1[0][l] = in->area[k];
+    g1[0][l] = in->area[k - in->t0];
     g1[1][l] = in->tarea[k];
     for (int j = 0; j < 3; j++) {
       const int kl = 3 * (k - in->t0) + j;
@@ -655,7 +655,7 @@ static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
   V A, S, c[3], n[3], v[3], qp[3];
   int tk[W];
   if (run) {
-    A = zload<V>(in->area + k0);
+    A = zload<V>(in->area + k0 - in->t0);
     S = zload<V>(in->tarea + k0);
     const int o = 3 * (k0 - in->t0);
     unzip3<V, W>(in->c + o, c);
