@@ -590,22 +590,25 @@ static inline void flowForces(const FlowIn* in, typename TLanes<W>::V A, typenam
   const I on = sp > 0;
   // a non-finite |v|^2 or area: NaN forces (reported), never zero
   const I fin = ((v2 - v2) == 0) & ((A - A) == 0);
+  // one division for 1/|v| and none by a constant (a product with its
+  // reciprocal): rounding apart from hydro.cc, whose divisions these are
+  const V is = 1 / (on ? sp : one);
   V g[3];
   if (in->visc) {
     V t[3];
     for (int j = 0; j < 3; j++) t[j] = v[j] - vn * n[j];
     const V tl = M::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
     const V cd = c[0] * in->dir[0] + c[1] * in->dir[1] + c[2] * in->dir[2];
-    const V sk = in->len > 0 ? (cd - in->lo) / in->len : z + in->sbar;
+    const V sk = in->len > 0 ? (cd - in->lo) * (1 / in->len) : z + in->sbar;
     const V ff = in->kv * (1 + in->sbar - sk);
     const I sh = tl > 1e-12 * sp;
     const V s = -0.5 * in->rcf * ff * A * v2 / (sh ? tl : one);
     for (int j = 0; j < 3; j++) g[j] = fin ? (sh ? s * t[j] : z) : nanv;
     addLanes(wv, g, c, use);
   }
-  const V cs = vn / (on ? sp : one);
+  const V cs = vn * is;
   {
-    const V u = sp / in->vref;
+    const V u = sp * (1 / in->vref);
     const V sa = -(in->drag[0] * u + in->drag[1] * u * u) * A *
                  powLanes<V, M>(cs > 0 ? cs : z, in->drag[2]);
     const V sb = (in->suction[0] * u + in->suction[1] * u * u) * A *
@@ -616,7 +619,6 @@ static inline void flowForces(const FlowIn* in, typename TLanes<W>::V A, typenam
   }
   if (in->slam) {
     // effective mass along v at the centroid (rigid.cc effMass)
-    const V is = 1 / (on ? sp : one);
     const V u0 = v[0] * is, u1 = v[1] * is, u2 = v[2] * is;
     V d[3];
     for (int j = 0; j < 3; j++) d[j] = c[j] + in->com[j] - in->gcom[j];
@@ -629,10 +631,11 @@ static inline void flowForces(const FlowIn* in, typename TLanes<W>::V A, typenam
     const V mass = in->share * meff;
     V dq[3];
     for (int j = 0; j < 3; j++) dq[j] = q[j] - qp[j];
-    const V gam = M::sqrt(dq[0] * dq[0] + dq[1] * dq[1] + dq[2] * dq[2]) / (S * in->dt);
-    const V rg = gam / in->gmax;
+    // Gamma / Gamma_max = |dq| / (S dt Gamma_max)
+    const V rg = M::sqrt(dq[0] * dq[0] + dq[1] * dq[1] + dq[2] * dq[2]) / (S * (in->dt * in->gmax));
     const V r = rg < 1 ? rg : one;  // fmin(NaN, 1) is 1 too
-    const V s = -in->gain * powLanes<V, M>(r, in->pw) * cs * mass * 2 * A / in->shull / in->dt;
+    const double stop = -in->gain * 2 / (in->shull * in->dt);
+    const V s = stop * powLanes<V, M>(r, in->pw) * cs * mass * A;
     const I hit = on & (A > 0) & (cs > 0);
     for (int j = 0; j < 3; j++) g[j] = fin ? (hit ? s * v[j] : z) : nanv;
     addLanes(ws, g, c, use);
