@@ -69,11 +69,12 @@ const Buoy* buoyOf(const mjbBuoy* b);
 
 // one chunk of a hull's sums (cpu.cc hullChunks): pass 1's pressure
 // wrench [N, N m], wet area [m^2], its first moment along the flow [m^3]
-// and the wet extent along it [m]; pass 2's viscous, drag and slamming
+// and the wet extent along it [m]; pass 2's unit viscous wrench and its
+// first moment along the flow (cpuhull.h pass2Chunk), drag and slamming
 // wrenches
 struct ChunkSum {
   double wp[6], wet, wdir, lo, hi;
-  double wv[6], wd[6], ws[6];
+  double wv1[6], wvd[6], wd[6], ws[6];
 };
 
 // wet triangle data of one call, per thread for the largest hull, reused

@@ -39,15 +39,14 @@ static int chunkAt(int n, int nc, int i) {
 }
 
 // one hull's call, shared by the chunks of its stages: the owner's call
-// and scratch, the body's motion, the flow (hullFlow), pass 1's results
-// pass 2 reads, and the chunks' sums (the owner's)
+// and scratch, the body's motion, the flow (hullFlow), the
+// slamming step dt [s], and the chunks' sums (the owner's)
 struct HullRun {
   HullCall c;
   HullScr hs;
   const double* vel;
   const Rigid* rig;
-  double dir[3], speed, wet;
-  Flow2 f2;
+  double dir[3], speed, dt;
   int nc;
   ChunkSum* cs;
 };
@@ -83,37 +82,24 @@ static void vertexPart(const HullRun& r, int i, int slot) {
   vertexStage(c, hs, chunkAt(nv, r.nc, i), chunkAt(nv, r.nc, i + 1));
 }
 
-// stage 2, chunk i: pass 1 into the chunk's sums
-static void pass1Part(const HullRun& r, int i, int slot) {
+// stage 2, chunk i: passes 1 and 2 into the chunk's sums (and, on a
+// step's first call, the slamming history); pass 2 reads pass 1's
+// per-triangle results of the same chunk while they are in cache
+static void passPart(const HullRun& r, int i, int slot) {
   HullScr hs;
   const HullCall c = chunkCall(r, slot, &hs);
   const Hull& hl = c.hl;
   ChunkSum& cs = r.cs[i];
-  for (int j = 0; j < 6; j++) cs.wp[j] = 0;
+  cs = ChunkSum{};
   Pass1 q{c.b, c.b.cfg.sea, c.s, hs, hl, c.com, r.dir, c.ts, cs.wp, 0, 0, INFINITY, -INFINITY};
   int* wl = c.s->iscr.data() + c.s->iper * slot;
-  pass1Chunk(q, hl.t0 + chunkAt(hl.nt, r.nc, i), hl.t0 + chunkAt(hl.nt, r.nc, i + 1), wl);
+  const int k0 = hl.t0 + chunkAt(hl.nt, r.nc, i), k1 = hl.t0 + chunkAt(hl.nt, r.nc, i + 1);
+  pass1Chunk(q, k0, k1, wl);
   cs.wet = q.wet;
   cs.wdir = q.wdir;
   cs.lo = q.lo;
   cs.hi = q.hi;
-}
-
-// stage 3, chunk i: pass 2 into the chunk's sums (and, on a step's first
-// call, the slamming history)
-static void pass2Part(const HullRun& r, int i, int slot) {
-  HullScr hs;
-  const HullCall c = chunkCall(r, slot, &hs);
-  const Hull& hl = c.hl;
-  ChunkSum& cs = r.cs[i];
-  for (int j = 0; j < 6; j++) cs.wv[j] = cs.wd[j] = cs.ws[j] = 0;
-  double* w[mjbNPART] = {};
-  w[mjbPART_VISCOUS] = cs.wv;
-  w[mjbPART_DRAG] = cs.wd;
-  w[mjbPART_SLAM] = cs.ws;
-  const int k0 = hl.t0 + chunkAt(hl.nt, r.nc, i), k1 = hl.t0 + chunkAt(hl.nt, r.nc, i + 1);
-  int* wl = c.s->iscr.data() + c.s->iper * slot;
-  pass2Chunk(c, r.vel, *r.rig, r.dir, r.f2, k0, k1, wl, w);
+  pass2Chunk(c, r.vel, *r.rig, r.dir, r.dt, k0, k1, wl, &cs);
 }
 
 // before the stages: false when the whole hull is above the highest crest
@@ -132,46 +118,42 @@ static bool hullStart(HullRun* r, const mjData* d) {
   r->speed = hullFlow(c, r->vel, r->dir);
   r->nc = hullChunks(hl.nt);
   r->cs = s->csum.data() + s->cper * c.slot;
+  r->dt = s->hasPrev ? d->time - s->tprev : 0;
   return true;
 }
 
-// between passes 1 and 2: the chunks' pressure wrenches added in order
-// into w, and what pass 2 reads: the wet extent along the flow, ITTC
-// 1957's C_F at the hull's Reynolds number over that wetted length, the
-// form factor's mean position (formMean), the slamming dt
-static void hullMid(HullRun* r, const mjData* d, double* const w[]) {
-  State* s = r->c.s;
-  double wet = 0, wdir = 0, lo = INFINITY, hi = -INFINITY;
+// after the passes: the chunks' sums added in order into w; the viscous
+// wrench from the wet extent along the flow, ITTC 1957's C_F at the
+// hull's Reynolds number over that wetted length and the form factor's
+// mean position (formMean); the simple damping (Cruz 2023), scaled by the
+// wet fraction r_s = S_wet / S
+static void hullEnd(HullRun* r, double* const w[]) {
+  double wet = 0, wdir = 0, lo = INFINITY, hi = -INFINITY, v1[6] = {}, vd[6] = {};
   for (int i = 0; i < r->nc; i++) {
     const ChunkSum& cs = r->cs[i];
-    for (int j = 0; j < 6; j++) w[mjbPART_PRESSURE][j] += cs.wp[j];
+    for (int j = 0; j < 6; j++) {
+      w[mjbPART_PRESSURE][j] += cs.wp[j];
+      w[mjbPART_DRAG][j] += cs.wd[j];
+      w[mjbPART_SLAM][j] += cs.ws[j];
+      v1[j] += cs.wv1[j];
+      vd[j] += cs.wvd[j];
+    }
     wet += cs.wet;
     wdir += cs.wdir;
     lo = std::min(lo, cs.lo);
     hi = std::max(hi, cs.hi);
   }
+  const Hull& hl = r->c.hl;
+  const Sea& sea = r->c.b.cfg.sea;
   const double len = hi > lo ? hi - lo : 0;
-  const double cf = ittc57(r->speed * len / r->c.b.cfg.sea.nu);
-  r->wet = wet;
-  s->hwet[r->c.ih] = wet;
-  r->f2 = Flow2{lo, len, formMean(wet, wdir, lo, hi), cf, s->hasPrev ? d->time - s->tprev : 0};
-}
-
-// after pass 2: the chunks' wrenches added in order, and the simple
-// damping (Cruz 2023), scaled by the wet fraction r_s = S_wet / S
-static void hullEnd(const HullRun& r, double* const w[]) {
-  for (int i = 0; i < r.nc; i++) {
-    for (int j = 0; j < 6; j++) {
-      w[mjbPART_VISCOUS][j] += r.cs[i].wv[j];
-      w[mjbPART_DRAG][j] += r.cs[i].wd[j];
-      w[mjbPART_SLAM][j] += r.cs[i].ws[j];
-    }
-  }
-  const HullParams& par = r.c.hl.par;
-  const double rs = r.wet / r.c.hl.area;
+  const double cf = ittc57(r->speed * len / sea.nu);
+  viscousWrench(sea.rho * cf, hl.par.viscous, lo, len, formMean(wet, wdir, lo, hi), v1, vd,
+                w[mjbPART_VISCOUS]);
+  r->c.s->hwet[r->c.ih] = wet;
+  const double rs = wet / hl.area;
   for (int j = 0; j < 3; j++) {
-    w[mjbPART_DAMPING][j] -= par.damp[0] * rs * r.vel[3 + j];
-    w[mjbPART_DAMPING][3 + j] -= par.damp[1] * rs * r.vel[j];
+    w[mjbPART_DAMPING][j] -= hl.par.damp[0] * rs * r->vel[3 + j];
+    w[mjbPART_DAMPING][3 + j] -= hl.par.damp[1] * rs * r->vel[j];
   }
 }
 
@@ -200,16 +182,15 @@ static void stage(Pool* pool, const HullRun& r, void (*part)(const HullRun&, int
 static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6],
                        const Rigid& rig, bool first, State* s, int slot, double* const w[],
                        Pool* pool) {
-  HullRun r{hullCall(b, ih, d, first, s, slot), {}, vel, &rig, {0, 0, 0}, 0, 0, {}, 0, nullptr};
+  HullRun r{hullCall(b, ih, d, first, s, slot), {}, vel, &rig, {0, 0, 0}, 0, 0, 0, nullptr};
   if (!hullStart(&r, d)) return;
   stage(pool, r, vertexPart);
   // pass 1: cut, pressure force and torque: Kerner's rho g (eta - z), linear
   // in the cut's depth, exactly (-rho g dA n, -rho g drA x n); or linear
-  // wave theory (wavepress.h), which flat water reduces to the same
-  stage(pool, r, pass1Part);
-  hullMid(&r, d, w);
-  stage(pool, r, pass2Part);
-  hullEnd(r, w);
+  // wave theory (wavepress.h), which flat water reduces to the same; then
+  // pass 2, the hydrodynamic forces, chunk by chunk
+  stage(pool, r, passPart);
+  hullEnd(&r, w);
 }
 
 // hulls [h0, h1), which own whole bodies, with scratch slot i; pool: each

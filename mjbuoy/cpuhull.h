@@ -83,12 +83,6 @@ struct Pass1 {
   double wet, wdir, lo, hi;
 };
 
-// pass 1's results pass 2 reads: the wet extent along the flow and its
-// length, the mean position along it, ITTC's C_F, the slamming dt
-struct Flow2 {
-  double lo, len, sbar, cf, dt;
-};
-
 // hullWrench's per-call data: the body's pose, the thread's scratch and the
 // label guesses' weights L (guessWeights)
 struct HullCall {
@@ -143,14 +137,27 @@ void pass1Chunk(Pass1& q, int k0, int k1, int* wl);
 // and the extent [lo, hi] along dir
 double formMean(double wet, double wdir, double lo, double hi);
 
-// pass 2 over triangles [k0, k1): hydrodynamic forces at each wet
-// centroid, with the water's velocity averaged over the wet part (pass 1;
-// docs/physics.md, "Cost"); with a vector level in lanes (trivec.h) when
-// the exponents allow; on a step's first call each triangle's
-// swept-volume rate into the slamming history (0 when dry); wl: k1 - k0
-// ints of scratch
+// pass 2 over triangles [k0, k1), right after pass 1 of the same chunk:
+// hydrodynamic forces at each wet centroid, with the water's velocity
+// averaged over the wet part (pass 1; docs/physics.md, "Cost"), into cs's
+// drag and slamming wrenches (dt: the slamming step [s]). The viscous
+// force needs the hull's wet extent, known only after pass 1 of every
+// chunk, and is linear in the position along the flow: cs gets the unit
+// viscous wrench (rho C_F (1+k_i) = 1) and its first moment along dir,
+// which viscousWrench combines (docs/physics.md 4.2). With a vector level
+// in lanes (trivec.h) when the exponents allow; on a step's first call
+// each triangle's swept-volume rate into the slamming history (0 when
+// dry); wl: k1 - k0 ints of scratch
 void pass2Chunk(const HullCall& c, const double vel[6], const Rigid& rig, const double dir[3],
-                const Flow2& f2, int k0, int k1, int* wl, double* const w[]);
+                double dt, int k0, int k1, int* wl, ChunkSum* cs);
+
+// the hull's viscous wrench from the chunks' unit sums v1 = sum (g_i; c_i
+// x g_i) and vd = sum (c_i . dir) (g_i; c_i x g_i): with each triangle's
+// 1+k_i = (1+k)(1 + sbar - (c_i . dir - lo) / len) (formMean), sum
+// rho C_F (1+k_i) g_i = rho C_F (1+k) ((1 + sbar + lo / len) v1 - vd / len),
+// or rho C_F (1+k) v1 when the wet extent has no length
+void viscousWrench(double rcf, double kv, double lo, double len, double sbar,
+                   const double v1[6], const double vd[6], double w[6]);
 
 }  // namespace mjb
 

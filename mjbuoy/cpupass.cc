@@ -201,10 +201,8 @@ static bool flowExponents(const HullParams& par, bool slam) {
 // pass 2 for the wet triangles wl[0, nf) in vector lanes (trivec.h)
 static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const TriScr& ts, bool first,
                        const double vel[6], const double* com, const Rigid& rig,
-                       const double dir[3], const Flow2& f2, const int* wl, int nf,
-                       double* const w[]) {
+                       const double dir[3], double dt, const int* wl, int nf, ChunkSum* cs) {
   const HullParams& par = hl.par;
-  const Sea& sea = b.cfg.sea;
   FlowIn in;
   in.idx = wl;
   in.m = nf;
@@ -225,19 +223,14 @@ static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const TriScr& ts
     in.gcom[j] = rig.com[j];
   }
   in.visc = par.viscous > 0;
-  in.rcf = sea.rho * f2.cf;
-  in.kv = par.viscous;
-  in.lo = f2.lo;
-  in.len = f2.len;
-  in.sbar = f2.sbar;
   in.vref = par.vref;
-  in.slam = s->hasPrev && par.slam[0] > 0 && f2.dt > 0;
+  in.slam = s->hasPrev && par.slam[0] > 0 && dt > 0;
   in.gain = par.slam[0];
   in.gmax = par.slam[1];
   in.pw = par.slam[2];
   in.share = hl.share;
   in.shull = hl.area;
-  in.dt = f2.dt;
+  in.dt = dt;
   in.minv = rig.minv;
   for (int j = 0; j < 6; j++) in.iinv[j] = rig.iinv[j];
   if (simdLevel() == kSimdAvx512) {
@@ -246,9 +239,10 @@ static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const TriScr& ts
     flowLanesAvx2(&in);
   }
   for (int j = 0; j < 6; j++) {
-    w[mjbPART_VISCOUS][j] += in.wv[j];
-    w[mjbPART_DRAG][j] += in.wd[j];
-    w[mjbPART_SLAM][j] += in.ws[j];
+    cs->wv1[j] += in.wv1[j];
+    cs->wvd[j] += in.wvd[j];
+    cs->wd[j] += in.wd[j];
+    cs->ws[j] += in.ws[j];
   }
 }
 
@@ -299,11 +293,12 @@ double formMean(double wet, double wdir, double lo, double hi) {
   return (wdir - lo * wet) / (len * wet);
 }
 
-// pass 2's scalar reference for wet triangle k: viscous, drag and slamming
-// at its centroid with its relative velocity v; on a step's first call its
-// swept-volume rate into the slamming history
+// pass 2's scalar reference for wet triangle k: viscous (unit, and its
+// moment along dir: pass2Chunk), drag and slamming at its centroid with
+// its relative velocity v; on a step's first call its swept-volume rate
+// into the slamming history
 static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
-                     const double dir[3], const Flow2& f2, int k, double* const w[]) {
+                     const double dir[3], double dt, int k, ChunkSum* cs) {
   const HullParams& par = c.hl.par;
   State* s = c.s;
   const TriScr& ts = c.ts;
@@ -320,12 +315,14 @@ static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
   const double q[3] = {qf[0], qf[1], qf[2]};
   double g[3];
   if (par.viscous > 0) {
-    double sk = f2.len > 0 ? (dot(cc, dir) - f2.lo) / f2.len : f2.sbar;
-    viscousForce(c.b.cfg.sea.rho, f2.cf, par.viscous * (1 + f2.sbar - sk), A, n, v, g);
-    add(w[mjbPART_VISCOUS], g, cc);
+    viscousForce(1, 1, 1, A, n, v, g);
+    add(cs->wv1, g, cc);
+    const double cd = dot(cc, dir);
+    for (int j = 0; j < 3; j++) g[j] *= cd;
+    add(cs->wvd, g, cc);
   }
   dragForce(par.drag, par.suction, par.vref, A, n, v, g);
-  add(w[mjbPART_DRAG], g, cc);
+  add(cs->wd, g, cc);
   if (!s->hasPrev) return;
   // the stopping force is sized by the effective mass of the rigid group
   // at this point along v (docs/physics.md, "Slamming with the effective
@@ -339,8 +336,8 @@ static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
   const float* qpf = &s->prevQ[3 * k];
   const double qp[3] = {qpf[0], qpf[1], qpf[2]};
   slamForce(par.slam[0], par.slam[1], par.slam[2], c.hl.share * meff, c.hl.area, c.b.tarea[k],
-            A, v, q, qp, n, f2.dt, g);
-  add(w[mjbPART_SLAM], g, cc);
+            A, v, q, qp, n, dt, g);
+  add(cs->ws, g, cc);
 }
 
 // pass 2 over triangles [k0, k1): hydrodynamic forces at each wet
@@ -349,9 +346,8 @@ static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
 // the exponents allow; on a step's first call each triangle's
 // swept-volume rate into the slamming history (0 when dry); wl: k1 - k0
 // ints of scratch
-void pass2Chunk(const HullCall& c, const double vel[6], const Rigid& rig,
-                       const double dir[3], const Flow2& f2, int k0, int k1, int* wl,
-                       double* const w[]) {
+void pass2Chunk(const HullCall& c, const double vel[6], const Rigid& rig, const double dir[3],
+                double dt, int k0, int k1, int* wl, ChunkSum* cs) {
   const Hull& hl = c.hl;
   State* s = c.s;
   const bool lanes = simdLevel() != kSimdScalar && flowExponents(hl.par, s->hasPrev);
@@ -363,12 +359,18 @@ void pass2Chunk(const HullCall& c, const double vel[6], const Rigid& rig,
       wl[nf] = k;
       nf += c.ts.area(k) > 0;
     }
-    if (nf > 0) pass2Lanes(c.b, hl, s, c.ts, c.first, vel, c.com, rig, dir, f2, wl, nf, w);
+    if (nf > 0) pass2Lanes(c.b, hl, s, c.ts, c.first, vel, c.com, rig, dir, dt, wl, nf, cs);
     return;
   }
   for (int k = k0; k < k1; k++) {
-    if (c.ts.area(k) > 0) pass2Tri(c, vel, rig, dir, f2, k, w);
+    if (c.ts.area(k) > 0) pass2Tri(c, vel, rig, dir, dt, k, cs);
   }
+}
+
+void viscousWrench(double rcf, double kv, double lo, double len, double sbar,
+                   const double v1[6], const double vd[6], double w[6]) {
+  const double a = len > 0 ? 1 + sbar + lo / len : 1, b = len > 0 ? 1 / len : 0;
+  for (int j = 0; j < 6; j++) w[j] += rcf * kv * (a * v1[j] - b * vd[j]);
 }
 
 }  // namespace mjb

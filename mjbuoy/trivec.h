@@ -61,16 +61,17 @@ struct FlowIn {
   const float* prevQ;
   double vel[6];                     // body velocity [angular; linear] at the COM
   double com[3];                     // body COM, world [m]
-  // viscous: on, rho cf, viscous gain, extent and mean position along dir
+  // viscous: on, the flow's direction (sums: cpuhull.h pass2Chunk)
   int visc;
-  double rcf, kv, lo, len, sbar, dir[3];
+  double dir[3];
   double drag[3], suction[3], vref;
   // slamming: on (history and gain and dt > 0), gain, gmax, power, the
   // hull's share and area [m^2], dt [s], the rigid group (rigid.h)
   int slam;
   double gain, gmax, pw, share, shull, dt, minv, iinv[6], gcom[3];
-  // sums [force; torque about the COM] by family
-  double wv[6], wd[6], ws[6];
+  // sums [force; torque about the COM]: the unit viscous wrench and its
+  // first moment along dir (cpuhull.h pass2Chunk), drag, slamming
+  double wv1[6], wvd[6], wd[6], ws[6];
 };
 
 // (trivec_avx2.cc, trivec_avx512.cc: compiled for those instruction sets,

@@ -579,8 +579,8 @@ static inline void flowForces(const FlowIn* in, typename TLanes<W>::V A, typenam
                               const typename TLanes<W>::V c[3], const typename TLanes<W>::V n[3],
                               const typename TLanes<W>::V v[3], const typename TLanes<W>::V q[3],
                               const typename TLanes<W>::V qp[3], typename TLanes<W>::I use,
-                              typename TLanes<W>::V* wv, typename TLanes<W>::V* wd,
-                              typename TLanes<W>::V* ws) {
+                              typename TLanes<W>::V* wv1, typename TLanes<W>::V* wvd,
+                              typename TLanes<W>::V* wd, typename TLanes<W>::V* ws) {
   typedef typename TLanes<W>::V V;
   typedef typename TLanes<W>::I I;
   const V z = V{}, one = V{} + 1, nanv = V{} + __builtin_nan("");
@@ -599,12 +599,13 @@ static inline void flowForces(const FlowIn* in, typename TLanes<W>::V A, typenam
     for (int j = 0; j < 3; j++) t[j] = v[j] - vn * n[j];
     const V tl = M::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
     const V cd = c[0] * in->dir[0] + c[1] * in->dir[1] + c[2] * in->dir[2];
-    const V sk = in->len > 0 ? (cd - in->lo) * (1 / in->len) : z + in->sbar;
-    const V ff = in->kv * (1 + in->sbar - sk);
     const I sh = tl > 1e-12 * sp;
-    const V s = -0.5 * in->rcf * ff * A * v2 / (sh ? tl : one);
+    // the unit viscous force (rho C_F (1+k_i) = 1) and its moment along dir
+    const V s = -0.5 * A * v2 / (sh ? tl : one);
     for (int j = 0; j < 3; j++) g[j] = fin ? (sh ? s * t[j] : z) : nanv;
-    addLanes(wv, g, c, use);
+    addLanes(wv1, g, c, use);
+    for (int j = 0; j < 3; j++) g[j] *= cd;
+    addLanes(wvd, g, c, use);
   }
   const V cs = vn * is;
   {
@@ -647,8 +648,9 @@ static inline void flowForces(const FlowIn* in, typename TLanes<W>::V A, typenam
 // same NaN for a non-finite input), rigid.cc's effMass; on a step's first
 // call the swept-volume rates into the history
 template <int W, class M>
-static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
-                      typename TLanes<W>::V* wd, typename TLanes<W>::V* ws) {
+static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv1,
+                      typename TLanes<W>::V* wvd, typename TLanes<W>::V* wd,
+                      typename TLanes<W>::V* ws) {
   typedef typename TLanes<W>::V V;
   typedef typename TLanes<W>::I I;
   typedef typename TLanes<W>::F F;
@@ -690,18 +692,19 @@ static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv,
       for (int j = 0; j < 3; j++) in->q[3 * tk[l] + j] = qf[j][l];
     }
   }
-  flowForces<W, M>(in, A, S, c, n, v, q, qp, use, wv, wd, ws);
+  flowForces<W, M>(in, A, S, c, n, v, q, qp, use, wv1, wvd, wd, ws);
 }
 
 template <int W, class M>
 static void flowLanes(FlowIn* in) {
   typedef typename TLanes<W>::V V;
-  V wv[6] = {}, wd[6] = {}, ws[6] = {};
+  V wv1[6] = {}, wvd[6] = {}, wd[6] = {}, ws[6] = {};
   for (int p = 0; p < in->m; p += W) {
-    flowChunk<W, M>(in, p, in->m - p < W ? in->m - p : W, wv, wd, ws);
+    flowChunk<W, M>(in, p, in->m - p < W ? in->m - p : W, wv1, wvd, wd, ws);
   }
   for (int j = 0; j < 6; j++) {
-    in->wv[j] = TLanes<W>::hsum(wv[j]);
+    in->wv1[j] = TLanes<W>::hsum(wv1[j]);
+    in->wvd[j] = TLanes<W>::hsum(wvd[j]);
     in->wd[j] = TLanes<W>::hsum(wd[j]);
     in->ws[j] = TLanes<W>::hsum(ws[j]);
   }
