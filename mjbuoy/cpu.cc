@@ -83,8 +83,8 @@ static void vertexPart(const HullRun& r, int i, int slot) {
 }
 
 // stage 2, chunk i: passes 1 and 2 into the chunk's sums (and, on a
-// step's first call, the slamming history); pass 2 reads pass 1's
-// per-triangle results of the same chunk while they are in cache
+// step's first call, the slamming history), pass 2 in pass 1's lanes or
+// right after it on the same chunk (cpuhull.h passChunk)
 static void passPart(const HullRun& r, int i, int slot) {
   HullScr hs;
   const HullCall c = chunkCall(r, slot, &hs);
@@ -94,12 +94,11 @@ static void passPart(const HullRun& r, int i, int slot) {
   Pass1 q{c.b, c.b.cfg.sea, c.s, hs, hl, c.com, r.dir, c.ts, cs.wp, 0, 0, INFINITY, -INFINITY};
   int* wl = c.s->iscr.data() + c.s->iper * slot;
   const int k0 = hl.t0 + chunkAt(hl.nt, r.nc, i), k1 = hl.t0 + chunkAt(hl.nt, r.nc, i + 1);
-  pass1Chunk(q, k0, k1, wl);
+  passChunk(q, Pass2{c, r.vel, *r.rig, r.dir, r.dt, &cs}, k0, k1, wl);
   cs.wet = q.wet;
   cs.wdir = q.wdir;
   cs.lo = q.lo;
   cs.hi = q.hi;
-  pass2Chunk(c, r.vel, *r.rig, r.dir, r.dt, k0, k1, wl, &cs);
 }
 
 // before the stages: false when the whole hull is above the highest crest

@@ -124,12 +124,6 @@ double hullFlow(const HullCall& c, const double vel[6], double dir[3]);
 // the per-triangle scratch of thread slot for a hull whose first triangle is t0
 TriScr triScr(State* s, int slot, int t0);
 
-// pass 1 over the hull's triangles [k0, k1): a triangle with no vertex
-// below the surface has no wet part; with a vector level the wholly wet
-// ones and the cut ones go through the lanes (trivec.h) by kind, else
-// pass1Tri; wl: 4 (k1 - k0) ints of scratch
-void pass1Chunk(Pass1& q, int k0, int k1, int* wl);
-
 // Kerner's per-triangle form factor's mean position: 1+k_i = (1+k)(1 +
 // sbar - s_i), s in [0, 1] from rear to front along dir, whose
 // area-weighted mean is the hull's 1+k: sbar = sum A_i (c_i . dir - lo) /
@@ -137,19 +131,32 @@ void pass1Chunk(Pass1& q, int k0, int k1, int* wl);
 // and the extent [lo, hi] along dir
 double formMean(double wet, double wdir, double lo, double hi);
 
-// pass 2 over triangles [k0, k1), right after pass 1 of the same chunk:
-// hydrodynamic forces at each wet centroid, with the water's velocity
-// averaged over the wet part (pass 1; docs/physics.md, "Cost"), into cs's
-// drag and slamming wrenches (dt: the slamming step [s]). The viscous
-// force needs the hull's wet extent, known only after pass 1 of every
-// chunk, and is linear in the position along the flow: cs gets the unit
-// viscous wrench (rho C_F (1+k_i) = 1) and its first moment along dir,
-// which viscousWrench combines (docs/physics.md 4.2). With a vector level
-// in lanes (trivec.h) when the exponents allow; on a step's first call
+// pass 2's data for one chunk (passChunk): the call, the body's velocity
+// [angular; linear] at the COM, its rigid group, the flow direction, the
+// slamming step dt [s], and the chunk's sums
+struct Pass2 {
+  const HullCall& c;
+  const double* vel;
+  const Rigid& rig;
+  const double* dir;
+  double dt;
+  ChunkSum* cs;
+};
+
+// passes 1 and 2 over the hull's triangles [k0, k1). Pass 1: a triangle
+// with no vertex below the surface has no wet part; with a vector level
+// the wholly wet ones and the cut ones go through the lanes (trivec.h) by
+// kind, else pass1Tri. Pass 2: hydrodynamic forces at each wet centroid,
+// with the water's velocity averaged over the wet part (docs/physics.md,
+// "Cost"), into p2's drag and slamming wrenches; in pass 1's lanes when
+// the exponents allow, else over pass 1's stored results. The viscous
+// force needs the hull's wet extent, known only after every chunk, and is
+// linear in the position along the flow: the chunk gets the unit viscous
+// wrench (rho C_F (1+k_i) = 1) and its first moment along dir, which
+// viscousWrench combines (docs/physics.md 4.1). On a step's first call
 // each triangle's swept-volume rate into the slamming history (0 when
-// dry); wl: k1 - k0 ints of scratch
-void pass2Chunk(const HullCall& c, const double vel[6], const Rigid& rig, const double dir[3],
-                double dt, int k0, int k1, int* wl, ChunkSum* cs);
+// dry); wl: 4 (k1 - k0) ints of scratch
+void passChunk(Pass1& q, const Pass2& p2, int k0, int k1, int* wl);
 
 // the hull's viscous wrench from the chunks' unit sums v1 = sum (g_i; c_i
 // x g_i) and vd = sum (c_i . dir) (g_i; c_i x g_i): with each triangle's

@@ -168,10 +168,14 @@ static TriIn triIn(const Pass1& q) {
   return in;
 }
 
+static void pass2Tri(const Pass2& p, int k);
+
 // the triangles wl[0, nl) of one kind (trivec.h triLanes) in vector
-// lanes; those the lanes leave (a piece too coarse for the series, not
-// finite) through pass1Tri; rest: nl ints of scratch
-static void pass1Lanes(Pass1& q, TriIn& in, int kind, const int* wl, int nl, int* rest) {
+// lanes, with pass 2 in the same lanes when in.fl is set (p2: its sums);
+// those the lanes leave (a piece too coarse for the series, not finite)
+// through pass1Tri (and pass2Tri); rest: nl ints of scratch
+static void pass1Lanes(Pass1& q, TriIn& in, int kind, const int* wl, int nl, int* rest,
+                       const Pass2& p2) {
   in.idx = wl;
   in.m = nl;
   in.rest = rest;
@@ -188,7 +192,18 @@ static void pass1Lanes(Pass1& q, TriIn& in, int kind, const int* wl, int nl, int
   q.wdir += in.wdir;
   q.lo = std::min(q.lo, in.lo);
   q.hi = std::max(q.hi, in.hi);
-  for (int i = 0; i < in.nrest; i++) pass1Tri(q, rest[i]);
+  if (in.fl) {
+    for (int j = 0; j < 6; j++) {
+      p2.cs->wv1[j] += in.fl->wv1[j];
+      p2.cs->wvd[j] += in.fl->wvd[j];
+      p2.cs->wd[j] += in.fl->wd[j];
+      p2.cs->ws[j] += in.fl->ws[j];
+    }
+  }
+  for (int i = 0; i < in.nrest; i++) {
+    pass1Tri(q, rest[i]);
+    if (in.fl && q.ts.area(rest[i]) > 0) pass2Tri(p2, rest[i]);
+  }
 }
 
 // whether pass 2 can run in lanes: every exponent it raises to is 0.5, 1
@@ -198,74 +213,46 @@ static bool flowExponents(const HullParams& par, bool slam) {
   return ok(par.drag[2]) && ok(par.suction[2]) && (!slam || ok(par.slam[2]));
 }
 
-// pass 2 for the wet triangles wl[0, nf) in vector lanes (trivec.h)
-static void pass2Lanes(const Buoy& b, const Hull& hl, State* s, const TriScr& ts, bool first,
-                       const double vel[6], const double* com, const Rigid& rig,
-                       const double dir[3], double dt, const int* wl, int nf, ChunkSum* cs) {
+// pass 2's parameters for the lanes (trivec.h)
+static FlowIn flowIn(const Pass2& p) {
+  const HullCall& c = p.c;
+  const Hull& hl = c.hl;
   const HullParams& par = hl.par;
+  State* s = c.s;
   FlowIn in;
-  in.idx = wl;
-  in.m = nf;
-  in.area = ts.a;
-  in.c = ts.c;
-  in.nrm = ts.n;
-  in.u = ts.u;
-  in.t0 = ts.t0;
-  in.tarea = b.tarea.data();
-  in.q = first ? s->curQ.data() : nullptr;
+  in.tarea = c.b.tarea.data();
+  in.q = c.first ? s->curQ.data() : nullptr;
   in.prevQ = s->prevQ.data();
-  for (int j = 0; j < 6; j++) in.vel[j] = vel[j];
+  for (int j = 0; j < 6; j++) in.vel[j] = p.vel[j];
   for (int j = 0; j < 3; j++) {
-    in.com[j] = com[j];
-    in.dir[j] = dir[j];
+    in.com[j] = c.com[j];
+    in.dir[j] = p.dir[j];
     in.drag[j] = par.drag[j];
     in.suction[j] = par.suction[j];
-    in.gcom[j] = rig.com[j];
+    in.gcom[j] = p.rig.com[j];
   }
   in.visc = par.viscous > 0;
   in.vref = par.vref;
-  in.slam = s->hasPrev && par.slam[0] > 0 && dt > 0;
+  in.slam = s->hasPrev && par.slam[0] > 0 && p.dt > 0;
   in.gain = par.slam[0];
   in.gmax = par.slam[1];
   in.pw = par.slam[2];
   in.share = hl.share;
   in.shull = hl.area;
-  in.dt = dt;
-  in.minv = rig.minv;
-  for (int j = 0; j < 6; j++) in.iinv[j] = rig.iinv[j];
-  if (simdLevel() == kSimdAvx512) {
-    flowLanesAvx512(&in);
-  } else {
-    flowLanesAvx2(&in);
-  }
-  for (int j = 0; j < 6; j++) {
-    cs->wv1[j] += in.wv1[j];
-    cs->wvd[j] += in.wvd[j];
-    cs->wd[j] += in.wd[j];
-    cs->ws[j] += in.ws[j];
-  }
+  in.dt = p.dt;
+  in.minv = p.rig.minv;
+  for (int j = 0; j < 6; j++) in.iinv[j] = p.rig.iinv[j];
+  return in;
 }
 
-// pass 1 over the hull's triangles [k0, k1): a triangle with no vertex
-// below the surface has no wet part; with a vector level the wholly wet
-// ones and the cut ones go through the lanes (trivec.h) by kind, else
-// pass1Tri; wl: 4 (k1 - k0) ints of scratch
-void pass1Chunk(Pass1& q, int k0, int k1, int* wl) {
+// pass 1 over the hull's triangles [k0, k1) in lanes (trivec.h) by kind
+// (a triangle with no vertex below the surface has no wet part), with
+// pass 2 in the same lanes when fused; wl: 4 (k1 - k0) ints of scratch
+static void passLanes(Pass1& q, const Pass2& p2, bool fused, int k0, int k1, int* wl) {
   State* s = q.s;
   const int nt = k1 - k0;
-  if (simdLevel() == kSimdScalar) {
-    for (int k = k0; k < k1; k++) {
-      const int* fc = q.b.face.data() + 3 * k;
-      if (s->h[fc[0]] >= 0 && s->h[fc[1]] >= 0 && s->h[fc[2]] >= 0) {
-        q.ts.area(k) = 0;
-      } else {
-        pass1Tri(q, k);
-      }
-    }
-    return;
-  }
-  // dry triangles keep the zero area; the others are written below
-  std::memset(&q.ts.area(k0), 0, nt * sizeof(double));
+  // unfused: dry triangles keep the zero area pass 2 reads
+  if (!fused) std::memset(&q.ts.area(k0), 0, nt * sizeof(double));
   // lists by kind (trisort.h), nt ints each; the lanes' rest after them
   TriSort ks{q.b.face.data(), s->h.data(), k0, nt, {wl, wl + nt, wl + 2 * nt, wl + 3 * nt},
              {0, 0, 0, 0}};
@@ -275,10 +262,17 @@ void pass1Chunk(Pass1& q, int k0, int k1, int* wl) {
     sortKindsAvx2(&ks);
   }
   // a height not finite: the scalar path, which reports it
-  for (int i = 0; i < ks.n[kKindOther]; i++) pass1Tri(q, ks.list[kKindOther][i]);
+  for (int i = 0; i < ks.n[kKindOther]; i++) {
+    const int k = ks.list[kKindOther][i];
+    pass1Tri(q, k);
+    if (fused && q.ts.area(k) > 0) pass2Tri(p2, k);
+  }
   TriIn in = triIn(q);
+  FlowIn fl;
+  if (fused) fl = flowIn(p2);
+  in.fl = fused ? &fl : nullptr;
   for (int kind = 0; kind < 3; kind++) {
-    if (ks.n[kind] > 0) pass1Lanes(q, in, kind, ks.list[kind], ks.n[kind], wl + 3 * nt);
+    if (ks.n[kind] > 0) pass1Lanes(q, in, kind, ks.list[kind], ks.n[kind], wl + 3 * nt, p2);
   }
 }
 
@@ -297,8 +291,10 @@ double formMean(double wet, double wdir, double lo, double hi) {
 // moment along dir: pass2Chunk), drag and slamming at its centroid with
 // its relative velocity v; on a step's first call its swept-volume rate
 // into the slamming history
-static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
-                     const double dir[3], double dt, int k, ChunkSum* cs) {
+static void pass2Tri(const Pass2& p, int k) {
+  const HullCall& c = p.c;
+  const double* vel = p.vel;
+  ChunkSum* cs = p.cs;
   const HullParams& par = c.hl.par;
   State* s = c.s;
   const TriScr& ts = c.ts;
@@ -317,7 +313,7 @@ static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
   if (par.viscous > 0) {
     viscousForce(1, 1, 1, A, n, v, g);
     add(cs->wv1, g, cc);
-    const double cd = dot(cc, dir);
+    const double cd = dot(cc, p.dir);
     for (int j = 0; j < 3; j++) g[j] *= cd;
     add(cs->wvd, g, cc);
   }
@@ -331,39 +327,37 @@ static void pass2Tri(const HullCall& c, const double vel[6], const Rigid& rig,
   if (sp > 0) {
     double u[3] = {v[0] / sp, v[1] / sp, v[2] / sp}, pw[3];
     for (int j = 0; j < 3; j++) pw[j] = cc[j] + c.com[j];
-    meff = effMass(rig, pw, u);
+    meff = effMass(p.rig, pw, u);
   }
   const float* qpf = &s->prevQ[3 * k];
   const double qp[3] = {qpf[0], qpf[1], qpf[2]};
   slamForce(par.slam[0], par.slam[1], par.slam[2], c.hl.share * meff, c.hl.area, c.b.tarea[k],
-            A, v, q, qp, n, dt, g);
+            A, v, q, qp, n, p.dt, g);
   add(cs->ws, g, cc);
 }
 
-// pass 2 over triangles [k0, k1): hydrodynamic forces at each wet
-// centroid, with the water's velocity averaged over the wet part (pass 1;
-// docs/physics.md, "Cost"); with a vector level in lanes (trivec.h) when
-// the exponents allow; on a step's first call each triangle's
-// swept-volume rate into the slamming history (0 when dry); wl: k1 - k0
-// ints of scratch
-void pass2Chunk(const HullCall& c, const double vel[6], const Rigid& rig, const double dir[3],
-                double dt, int k0, int k1, int* wl, ChunkSum* cs) {
-  const Hull& hl = c.hl;
+void passChunk(Pass1& q, const Pass2& p2, int k0, int k1, int* wl) {
+  const HullCall& c = p2.c;
   State* s = c.s;
-  const bool lanes = simdLevel() != kSimdScalar && flowExponents(hl.par, s->hasPrev);
-  int nf = 0;
-  // dry triangles' history is zero; wet ones' are written below
+  // dry triangles' history is zero; wet ones' are written by pass 2
   if (c.first) std::memset(&s->curQ[3 * k0], 0, 3 * (k1 - k0) * sizeof(float));
+  const bool lanes = simdLevel() != kSimdScalar;
+  const bool fused = lanes && flowExponents(c.hl.par, s->hasPrev);
   if (lanes) {
+    passLanes(q, p2, fused, k0, k1, wl);
+  } else {
     for (int k = k0; k < k1; k++) {
-      wl[nf] = k;
-      nf += c.ts.area(k) > 0;
+      const int* fc = q.b.face.data() + 3 * k;
+      if (s->h[fc[0]] >= 0 && s->h[fc[1]] >= 0 && s->h[fc[2]] >= 0) {
+        q.ts.area(k) = 0;
+      } else {
+        pass1Tri(q, k);
+      }
     }
-    if (nf > 0) pass2Lanes(c.b, hl, s, c.ts, c.first, vel, c.com, rig, dir, dt, wl, nf, cs);
-    return;
   }
+  if (fused) return;
   for (int k = k0; k < k1; k++) {
-    if (c.ts.area(k) > 0) pass2Tri(c, vel, rig, dir, dt, k, cs);
+    if (q.ts.area(k) > 0) pass2Tri(p2, k);
   }
 }
 

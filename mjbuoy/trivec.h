@@ -10,6 +10,32 @@
 
 namespace mjb {
 
+// pass 2 in pass 1's lanes (hydro.h's viscous, drag and slamming forces
+// at each wet centroid); the exponents of drag, suction and slamming must
+// each be 0.5, 1 or 2 (cpupass.cc checks; others: scalar)
+struct FlowIn {
+  const double* tarea;               // the triangles' whole areas [m^2]
+  // slamming history, swept-volume rates Q = A v, 3 per triangle [m^3/s]
+  // (hydro.h sweptRate): q written on a step's first call (else null),
+  // prevQ the previous step's
+  float* q;
+  const float* prevQ;
+  double vel[6];                     // body velocity [angular; linear] at the COM
+  double com[3];                     // body COM, world [m]
+  // viscous: on, the flow's direction (sums: cpuhull.h pass2Chunk)
+  int visc;
+  double dir[3];
+  double drag[3], suction[3], vref;
+  // slamming: on (history and gain and dt > 0), gain, gmax, power, the
+  // hull's share and area [m^2], dt [s], the rigid group (rigid.h)
+  int slam;
+  double gain, gmax, pw, share, shull, dt, minv, iinv[6], gcom[3];
+  // sums of one kind's lanes [force; torque about the COM]: the unit
+  // viscous wrench and its first moment along dir (cpuhull.h pass2Chunk),
+  // drag, slamming
+  double wv1[6], wvd[6], wd[6], ws[6];
+};
+
 // one hull's wholly wet or cut triangles for the lane kernels
 struct TriIn {
   const int* idx;  // global triangle indices
@@ -38,40 +64,13 @@ struct TriIn {
   // or not finite): their indices, and how many (at most m)
   int* rest;
   int nrest;
+  // set: pass 2 in the same lanes, into its sums, and no per-triangle
+  // results stored; null: the results stored for pass 2 to read
+  FlowIn* fl;
   // sums over the triangles done: pressure force [N] and torque [N m]
   // (to add), wet area [m^2], wet area times centroid along dir [m^3];
   // extent of their corners along dir [m]
   double f[3], t[3], wet, wdir, lo, hi;
-};
-
-// one hull's wet triangles for pass 2 (hydro.h's viscous, drag and
-// slamming forces at each wet centroid); the exponents of drag, suction
-// and slamming must each be 0.5, 1 or 2 (cpupass.cc checks; others: scalar)
-struct FlowIn {
-  const int* idx;  // global triangle indices, wet area > 0
-  int m;
-  const double* area;                // pass 1's wet area, triangle k at k - t0
-  const double *c, *nrm, *u;         // pass 1's, triangle k at 3 (k - t0)
-  int t0;                            // the hull's first triangle
-  const double* tarea;               // the triangles' whole areas [m^2]
-  // slamming history, swept-volume rates Q = A v, 3 per triangle [m^3/s]
-  // (hydro.h sweptRate): q written on a step's first call (else null),
-  // prevQ the previous step's
-  float* q;
-  const float* prevQ;
-  double vel[6];                     // body velocity [angular; linear] at the COM
-  double com[3];                     // body COM, world [m]
-  // viscous: on, the flow's direction (sums: cpuhull.h pass2Chunk)
-  int visc;
-  double dir[3];
-  double drag[3], suction[3], vref;
-  // slamming: on (history and gain and dt > 0), gain, gmax, power, the
-  // hull's share and area [m^2], dt [s], the rigid group (rigid.h)
-  int slam;
-  double gain, gmax, pw, share, shull, dt, minv, iinv[6], gcom[3];
-  // sums [force; torque about the COM]: the unit viscous wrench and its
-  // first moment along dir (cpuhull.h pass2Chunk), drag, slamming
-  double wv1[6], wvd[6], wd[6], ws[6];
 };
 
 // (trivec_avx2.cc, trivec_avx512.cc: compiled for those instruction sets,
@@ -80,8 +79,6 @@ struct FlowIn {
 // surface (h <= 0) and two above (h > 0); 2 cut, one above and two below
 void triLanesAvx2(TriIn* in, int kind);
 void triLanesAvx512(TriIn* in, int kind);
-void flowLanesAvx2(FlowIn* in);
-void flowLanesAvx512(FlowIn* in);
 
 }  // namespace mjb
 

@@ -17,5 +17,4 @@ void triLanesAvx2(TriIn* in, int kind) {
   if (kind == 1) triLanes<4, Ops4, 1>(in);
   if (kind == 2) triLanes<4, Ops4, 2>(in);
 }
-void flowLanesAvx2(FlowIn* in) { flowLanes<4, Ops4>(in); }
 }  // namespace mjb

@@ -18,5 +18,4 @@ void triLanesAvx512(TriIn* in, int kind) {
   if (kind == 1) triLanes<8, Ops8, 1>(in);
   if (kind == 2) triLanes<8, Ops8, 2>(in);
 }
-void flowLanesAvx512(FlowIn* in) { flowLanes<8, Ops8>(in); }
 }  // namespace mjb

@@ -232,13 +232,164 @@ static typename TLanes<W>::V laneNormal(const typename TLanes<W>::V p[3][3],
   return len;
 }
 
+// x^p for x >= 0 and p = 0.5, 1 or 2 (hydro.cc's powp; others not used)
+template <class V, class M>
+static inline V powLanes(V x, double p) {
+  return p == 0.5 ? M::sqrt(x) : p == 1 ? x : x * x;
+}
+
+// w[0..2] += g, w[3..5] += c x g (cpuhull.h add), in the lanes of use
+template <class V, class I>
+static inline void addLanes(V* w, const V g[3], const V c[3], I use) {
+  const V z = V{};
+  const V t[3] = {c[1] * g[2] - c[2] * g[1], c[2] * g[0] - c[0] * g[2],
+                  c[0] * g[1] - c[1] * g[0]};
+  for (int j = 0; j < 3; j++) {
+    w[j] += use ? g[j] : z;
+    w[3 + j] += use ? t[j] : z;
+  }
+}
+
+// the lanes' viscous, drag and slamming forces (flowAt) from area A,
+// whole area S, centroid c, normal n, flow-relative velocity v and the
+// swept-volume rate q = A v as stored and the previous step's qp, summed
+// in the lanes of use
+template <int W, class M>
+static inline void flowForces(const FlowIn* in, typename TLanes<W>::V A, typename TLanes<W>::V S,
+                              const typename TLanes<W>::V c[3], const typename TLanes<W>::V n[3],
+                              const typename TLanes<W>::V v[3], const typename TLanes<W>::V q[3],
+                              const typename TLanes<W>::V qp[3], typename TLanes<W>::I use,
+                              typename TLanes<W>::V* wv1, typename TLanes<W>::V* wvd,
+                              typename TLanes<W>::V* wd, typename TLanes<W>::V* ws) {
+  typedef typename TLanes<W>::V V;
+  typedef typename TLanes<W>::I I;
+  const V z = V{}, one = V{} + 1, nanv = V{} + __builtin_nan("");
+  const V v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  const V vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+  const V sp = M::sqrt(v2);
+  const I on = sp > 0;
+  // a non-finite |v|^2 or area: NaN forces (reported), never zero
+  const I fin = ((v2 - v2) == 0) & ((A - A) == 0);
+  // one division for 1/|v| and none by a constant (a product with its
+  // reciprocal): rounding apart from hydro.cc, whose divisions these are
+  const V is = 1 / (on ? sp : one);
+  V g[3];
+  if (in->visc) {
+    V t[3];
+    for (int j = 0; j < 3; j++) t[j] = v[j] - vn * n[j];
+    const V tl = M::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    const V cd = c[0] * in->dir[0] + c[1] * in->dir[1] + c[2] * in->dir[2];
+    const I sh = tl > 1e-12 * sp;
+    // the unit viscous force (rho C_F (1+k_i) = 1) and its moment along dir
+    const V s = -0.5 * A * v2 / (sh ? tl : one);
+    for (int j = 0; j < 3; j++) g[j] = fin ? (sh ? s * t[j] : z) : nanv;
+    addLanes(wv1, g, c, use);
+    for (int j = 0; j < 3; j++) g[j] *= cd;
+    addLanes(wvd, g, c, use);
+  }
+  const V cs = vn * is;
+  {
+    const V u = sp * (1 / in->vref);
+    const V sa = -(in->drag[0] * u + in->drag[1] * u * u) * A *
+                 powLanes<V, M>(cs > 0 ? cs : z, in->drag[2]);
+    const V sb = (in->suction[0] * u + in->suction[1] * u * u) * A *
+                 powLanes<V, M>(cs < 0 ? -cs : z, in->suction[2]);
+    const V s = cs > 0 ? sa : cs < 0 ? sb : z;
+    for (int j = 0; j < 3; j++) g[j] = fin ? (on ? s * n[j] : z) : nanv;
+    addLanes(wd, g, c, use);
+  }
+  if (in->slam) {
+    // effective mass along v at the centroid (rigid.cc effMass)
+    const V u0 = v[0] * is, u1 = v[1] * is, u2 = v[2] * is;
+    V d[3];
+    for (int j = 0; j < 3; j++) d[j] = c[j] + in->com[j] - in->gcom[j];
+    const V e0 = d[1] * u2 - d[2] * u1, e1 = d[2] * u0 - d[0] * u2, e2 = d[0] * u1 - d[1] * u0;
+    const double* J = in->iinv;
+    const V Je0 = J[0] * e0 + J[3] * e1 + J[4] * e2;
+    const V Je1 = J[3] * e0 + J[1] * e1 + J[5] * e2;
+    const V Je2 = J[4] * e0 + J[5] * e1 + J[2] * e2;
+    const V meff = on ? 1 / (in->minv + e0 * Je0 + e1 * Je1 + e2 * Je2) : z;
+    const V mass = in->share * meff;
+    V dq[3];
+    for (int j = 0; j < 3; j++) dq[j] = q[j] - qp[j];
+    // Gamma / Gamma_max = |dq| / (S dt Gamma_max)
+    const V rg = M::sqrt(dq[0] * dq[0] + dq[1] * dq[1] + dq[2] * dq[2]) / (S * (in->dt * in->gmax));
+    const V r = rg < 1 ? rg : one;  // fmin(NaN, 1) is 1 too
+    const double stop = -in->gain * 2 / (in->shull * in->dt);
+    const V s = stop * powLanes<V, M>(r, in->pw) * cs * mass * A;
+    const I hit = on & (A > 0) & (cs > 0);
+    for (int j = 0; j < 3; j++) g[j] = fin ? (hit ? s * v[j] : z) : nanv;
+    addLanes(ws, g, c, use);
+  }
+}
+
+// the W lanes' sums of pass 2: the unit viscous wrench and its first
+// moment along the flow, drag, slamming ([force; torque about the COM])
+template <int W>
+struct FlowAcc {
+  typename TLanes<W>::V v1[6], vd[6], d[6], s[6];
+};
+
+// pass 2 in the lanes of pass 1 (cpuhull.h pass2Chunk): hydro.cc's
+// viscousForce (unit), dragForce and slamForce and rigid.cc's effMass
+// (the same tests, the same NaN for a non-finite input) for triangles tk
+// of wet area A, centroid c (relative to the COM), normal n and mean
+// water velocity u, in the lanes of use, into acc; on a step's first call
+// the swept-volume rates into the history. whole: the W triangles are
+// consecutive and all in use (loaded and stored whole)
+template <int W, class M>
+static inline void flowAt(const FlowIn* fl, const int* tk, bool whole, typename TLanes<W>::V A,
+                          const typename TLanes<W>::V c[3], const typename TLanes<W>::V n[3],
+                          const typename TLanes<W>::V u[3], typename TLanes<W>::I use,
+                          FlowAcc<W>* acc) {
+  typedef typename TLanes<W>::V V;
+  typedef typename TLanes<W>::F F;
+  V S, qp[3];
+  if (whole) {
+    S = zload<V>(fl->tarea + tk[0]);
+    F qf[3];
+    unzip3<F, W>(fl->prevQ + 3 * tk[0], qf);
+    for (int j = 0; j < 3; j++) qp[j] = __builtin_convertvector(qf[j], V);
+  } else {  // gathered into plain rows, then loaded (GCC 12 warns of lane stores)
+    double g[4][W];
+    for (int l = 0; l < W; l++) {
+      g[0][l] = fl->tarea[tk[l]];
+      for (int j = 0; j < 3; j++) g[1 + j][l] = fl->prevQ[3 * tk[l] + j];
+    }
+    __builtin_memcpy(&S, g[0], sizeof S);
+    for (int j = 0; j < 3; j++) __builtin_memcpy(&qp[j], g[1 + j], sizeof S);
+  }
+  const double* w = fl->vel;
+  const V wc[3] = {w[1] * c[2] - w[2] * c[1], w[2] * c[0] - w[0] * c[2],
+                   w[0] * c[1] - w[1] * c[0]};
+  V v[3];
+  for (int j = 0; j < 3; j++) v[j] = w[3 + j] + wc[j] - u[j];
+  // Q = A v rounded to float (hydro.h sweptRate), as the history keeps it
+  F qf[3];
+  V q[3];
+  for (int j = 0; j < 3; j++) {
+    qf[j] = __builtin_convertvector(A * v[j], F);
+    q[j] = __builtin_convertvector(qf[j], V);
+  }
+  if (fl->q && whole) {
+    zip3<F, W>(fl->q + 3 * tk[0], qf[0], qf[1], qf[2]);
+  } else if (fl->q) {
+    for (int l = 0; l < W; l++) {
+      if (!use[l]) continue;
+      for (int j = 0; j < 3; j++) fl->q[3 * tk[l] + j] = qf[j][l];
+    }
+  }
+  flowForces<W, M>(fl, A, S, c, n, v, q, qp, use, acc->v1, acc->vd, acc->d, acc->s);
+}
+
 // triangles [p0, p0 + nl) of in.idx as W lanes (the last repeated in the
-// lanes past nl, whose results are dropped); sums into f, t, wet, lo, hi
+// lanes past nl, whose results are dropped); sums into f, t, wet, lo, hi;
+// pass 2 into acc when in.fl is set, else the per-triangle results stored
 template <int W, class M>
 static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
                      typename TLanes<W>::V* Tq, typename TLanes<W>::V* wet,
                      typename TLanes<W>::V* wdir, typename TLanes<W>::V* lo,
-                     typename TLanes<W>::V* hi) {
+                     typename TLanes<W>::V* hi, FlowAcc<W>* acc) {
   typedef typename TLanes<W>::V V;
   typedef typename TLanes<W>::I I;
   V p[3][3], d[3], zs[3], lb[3][2];
@@ -274,7 +425,15 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   const V inv = ok ? 1 / A : V{};
   const V u[3] = {in->cur[0] + Vw[0] * inv, in->cur[1] + Vw[1] * inv, 0 + Vw[2] * inv};
   const V cen[3] = {sr[0] / 3, sr[1] / 3, sr[2] / 3};
-  if (nl == W && tk[W - 1] - tk[0] == W - 1 && TLanes<W>::all(good)) {
+  I use = good;
+  for (int l = nl; l < W; l++) use[l] = 0;
+  const bool whole = nl == W && tk[W - 1] - tk[0] == W - 1 && TLanes<W>::all(good);
+  if (in->fl) {
+    for (int l = 0; l < nl; l++) {
+      if (!good[l] && (ok[l] || len[l] != len[l])) in->rest[in->nrest++] = tk[l];
+    }
+    flowAt<W, M>(in->fl, tk, whole, A, cen, n, u, use, acc);
+  } else if (whole) {
     const int o = 3 * (tk[0] - in->t0);
     __builtin_memcpy(in->area + tk[0] - in->t0, &A, sizeof A);
     zip3<V, W>(in->c + o, cen[0], cen[1], cen[2]);
@@ -297,8 +456,6 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
       }
     }
   }
-  I use = good;
-  for (int l = nl; l < W; l++) use[l] = 0;
   const V zero = V{};
   F[0] -= use ? P * n[0] : zero;
   F[1] -= use ? P * n[1] : zero;
@@ -378,7 +535,7 @@ template <int W, class M, bool TWO>
 static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
                      typename TLanes<W>::V* Tq, typename TLanes<W>::V* wet,
                      typename TLanes<W>::V* wdir, typename TLanes<W>::V* lo,
-                     typename TLanes<W>::V* hi) {
+                     typename TLanes<W>::V* hi, FlowAcc<W>* acc) {
   typedef typename TLanes<W>::V V;
   typedef typename TLanes<W>::I I;
   V p[3][3], h[3], zs[3], lb[3][2];
@@ -467,13 +624,15 @@ static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   // per triangle done (wet area, centroid, normal, mean water velocity)
   const I has = A > 0;
   const V inv = has ? 1 / A : z;
+  I use = good & has;
+  for (int l = nl; l < W; l++) use[l] = 0;
   for (int l = 0; l < nl; l++) {
     const int k = tk[l];
     if (!good[l]) {
       if (ok[l] || len[l] != len[l] || hs[l] != hs[l]) in->rest[in->nrest++] = k;
       continue;  // else degenerate: no wet part, area 0 (wetTriangle)
     }
-    if (!has[l]) continue;
+    if (!has[l] || in->fl) continue;
     in->area[k - in->t0] = A[l];
     for (int j = 0; j < 3; j++) {
       const int kl = 3 * (k - in->t0) + j;
@@ -482,8 +641,12 @@ static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
       in->u[kl] = (j < 2 ? in->cur[j] : 0) + Vw[j][l] * inv[l];
     }
   }
-  I use = good & has;
-  for (int l = nl; l < W; l++) use[l] = 0;
+  if (in->fl) {
+    const V c[3] = {rA[0] * inv, rA[1] * inv, rA[2] * inv};
+    const V u[3] = {in->cur[0] + Vw[0] * inv, in->cur[1] + Vw[1] * inv, 0 + Vw[2] * inv};
+    const bool whole = nl == W && tk[W - 1] - tk[0] == W - 1 && TLanes<W>::all(use);
+    flowAt<W, M>(in->fl, tk, whole, A, c, n, u, use, acc);
+  }
   for (int j = 0; j < 3; j++) {
     F[j] += use ? Fl[j] : z;
     Tq[j] += use ? Tl[j] : z;
@@ -503,12 +666,21 @@ template <int W, class M, int KIND>
 static void triLanes(TriIn* in) {
   typedef typename TLanes<W>::V V;
   V F[3] = {}, Tq[3] = {}, wet = V{}, wdir = V{}, lo = V{} + __builtin_inf(), hi = -lo;
+  FlowAcc<W> acc = {};
   in->nrest = 0;
   for (int p = 0; p < in->m; p += W) {
     const int nl = in->m - p < W ? in->m - p : W;
-    if (KIND == 0) triChunk<W, M>(in, p, nl, F, Tq, &wet, &wdir, &lo, &hi);
-    if (KIND == 1) cutChunk<W, M, false>(in, p, nl, F, Tq, &wet, &wdir, &lo, &hi);
-    if (KIND == 2) cutChunk<W, M, true>(in, p, nl, F, Tq, &wet, &wdir, &lo, &hi);
+    if (KIND == 0) triChunk<W, M>(in, p, nl, F, Tq, &wet, &wdir, &lo, &hi, &acc);
+    if (KIND == 1) cutChunk<W, M, false>(in, p, nl, F, Tq, &wet, &wdir, &lo, &hi, &acc);
+    if (KIND == 2) cutChunk<W, M, true>(in, p, nl, F, Tq, &wet, &wdir, &lo, &hi, &acc);
+  }
+  if (in->fl) {
+    for (int j = 0; j < 6; j++) {
+      in->fl->wv1[j] = TLanes<W>::hsum(acc.v1[j]);
+      in->fl->wvd[j] = TLanes<W>::hsum(acc.vd[j]);
+      in->fl->wd[j] = TLanes<W>::hsum(acc.d[j]);
+      in->fl->ws[j] = TLanes<W>::hsum(acc.s[j]);
+    }
   }
   for (int j = 0; j < 3; j++) {
     in->f[j] = TLanes<W>::hsum(F[j]);
@@ -518,196 +690,6 @@ static void triLanes(TriIn* in) {
   in->wdir = TLanes<W>::hsum(wdir);
   in->lo = -TLanes<W>::hmax(-lo);
   in->hi = TLanes<W>::hmax(hi);
-}
-
-// x^p for x >= 0 and p = 0.5, 1 or 2 (hydro.cc's powp; others not used)
-template <class V, class M>
-static inline V powLanes(V x, double p) {
-  return p == 0.5 ? M::sqrt(x) : p == 1 ? x : x * x;
-}
-
-// w[0..2] += g, w[3..5] += c x g (cpuhull.h add), in the lanes of use
-template <class V, class I>
-static inline void addLanes(V* w, const V g[3], const V c[3], I use) {
-  const V z = V{};
-  const V t[3] = {c[1] * g[2] - c[2] * g[1], c[2] * g[0] - c[0] * g[2],
-                  c[0] * g[1] - c[1] * g[0]};
-  for (int j = 0; j < 3; j++) {
-    w[j] += use ? g[j] : z;
-    w[3 + j] += use ? t[j] : z;
-  }
-}
-
-// the lanes' pass-1 results and slamming history gathered triangle by
-// triangle (the last repeated past nl): into plain rows, then loaded
-// (GCC 12 warns of lane stores)
-template <int W>
-static inline void flowGather(const FlowIn* in, int p0, int nl, int* tk,
-                              typename TLanes<W>::V* A, typename TLanes<W>::V* S,
-                              typename TLanes<W>::V c[3], typename TLanes<W>::V n[3],
-                              typename TLanes<W>::V u[3], typename TLanes<W>::V qp[3]) {
-  double g1[2][W], g3[4][3][W];
-  for (int l = 0; l < W; l++) {
-    const int k = in->idx[p0 + (l < nl ? l : nl - 1)];
-    tk[l] = k;
-    g1[0][l] = in->area[k - in->t0];
-    g1[1][l] = in->tarea[k];
-    for (int j = 0; j < 3; j++) {
-      const int kl = 3 * (k - in->t0) + j;
-      g3[0][j][l] = in->c[kl];
-      g3[1][j][l] = in->nrm[kl];
-      g3[2][j][l] = in->u[kl];
-      g3[3][j][l] = in->prevQ[3 * k + j];
-    }
-  }
-  __builtin_memcpy(A, g1[0], sizeof *A);
-  __builtin_memcpy(S, g1[1], sizeof *A);
-  for (int j = 0; j < 3; j++) {
-    __builtin_memcpy(&c[j], g3[0][j], sizeof *A);
-    __builtin_memcpy(&n[j], g3[1][j], sizeof *A);
-    __builtin_memcpy(&u[j], g3[2][j], sizeof *A);
-    __builtin_memcpy(&qp[j], g3[3][j], sizeof *A);
-  }
-}
-
-// the lanes' viscous, drag and slamming forces (flowChunk) from area A,
-// whole area S, centroid c, normal n, flow-relative velocity v and the
-// swept-volume rate q = A v as stored and the previous step's qp, summed
-// in the lanes of use
-template <int W, class M>
-static inline void flowForces(const FlowIn* in, typename TLanes<W>::V A, typename TLanes<W>::V S,
-                              const typename TLanes<W>::V c[3], const typename TLanes<W>::V n[3],
-                              const typename TLanes<W>::V v[3], const typename TLanes<W>::V q[3],
-                              const typename TLanes<W>::V qp[3], typename TLanes<W>::I use,
-                              typename TLanes<W>::V* wv1, typename TLanes<W>::V* wvd,
-                              typename TLanes<W>::V* wd, typename TLanes<W>::V* ws) {
-  typedef typename TLanes<W>::V V;
-  typedef typename TLanes<W>::I I;
-  const V z = V{}, one = V{} + 1, nanv = V{} + __builtin_nan("");
-  const V v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-  const V vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
-  const V sp = M::sqrt(v2);
-  const I on = sp > 0;
-  // a non-finite |v|^2 or area: NaN forces (reported), never zero
-  const I fin = ((v2 - v2) == 0) & ((A - A) == 0);
-  // one division for 1/|v| and none by a constant (a product with its
-  // reciprocal): rounding apart from hydro.cc, whose divisions these are
-  const V is = 1 / (on ? sp : one);
-  V g[3];
-  if (in->visc) {
-    V t[3];
-    for (int j = 0; j < 3; j++) t[j] = v[j] - vn * n[j];
-    const V tl = M::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-    const V cd = c[0] * in->dir[0] + c[1] * in->dir[1] + c[2] * in->dir[2];
-    const I sh = tl > 1e-12 * sp;
-    // the unit viscous force (rho C_F (1+k_i) = 1) and its moment along dir
-    const V s = -0.5 * A * v2 / (sh ? tl : one);
-    for (int j = 0; j < 3; j++) g[j] = fin ? (sh ? s * t[j] : z) : nanv;
-    addLanes(wv1, g, c, use);
-    for (int j = 0; j < 3; j++) g[j] *= cd;
-    addLanes(wvd, g, c, use);
-  }
-  const V cs = vn * is;
-  {
-    const V u = sp * (1 / in->vref);
-    const V sa = -(in->drag[0] * u + in->drag[1] * u * u) * A *
-                 powLanes<V, M>(cs > 0 ? cs : z, in->drag[2]);
-    const V sb = (in->suction[0] * u + in->suction[1] * u * u) * A *
-                 powLanes<V, M>(cs < 0 ? -cs : z, in->suction[2]);
-    const V s = cs > 0 ? sa : cs < 0 ? sb : z;
-    for (int j = 0; j < 3; j++) g[j] = fin ? (on ? s * n[j] : z) : nanv;
-    addLanes(wd, g, c, use);
-  }
-  if (in->slam) {
-    // effective mass along v at the centroid (rigid.cc effMass)
-    const V u0 = v[0] * is, u1 = v[1] * is, u2 = v[2] * is;
-    V d[3];
-    for (int j = 0; j < 3; j++) d[j] = c[j] + in->com[j] - in->gcom[j];
-    const V e0 = d[1] * u2 - d[2] * u1, e1 = d[2] * u0 - d[0] * u2, e2 = d[0] * u1 - d[1] * u0;
-    const double* J = in->iinv;
-    const V Je0 = J[0] * e0 + J[3] * e1 + J[4] * e2;
-    const V Je1 = J[3] * e0 + J[1] * e1 + J[5] * e2;
-    const V Je2 = J[4] * e0 + J[5] * e1 + J[2] * e2;
-    const V meff = on ? 1 / (in->minv + e0 * Je0 + e1 * Je1 + e2 * Je2) : z;
-    const V mass = in->share * meff;
-    V dq[3];
-    for (int j = 0; j < 3; j++) dq[j] = q[j] - qp[j];
-    // Gamma / Gamma_max = |dq| / (S dt Gamma_max)
-    const V rg = M::sqrt(dq[0] * dq[0] + dq[1] * dq[1] + dq[2] * dq[2]) / (S * (in->dt * in->gmax));
-    const V r = rg < 1 ? rg : one;  // fmin(NaN, 1) is 1 too
-    const double stop = -in->gain * 2 / (in->shull * in->dt);
-    const V s = stop * powLanes<V, M>(r, in->pw) * cs * mass * A;
-    const I hit = on & (A > 0) & (cs > 0);
-    for (int j = 0; j < 3; j++) g[j] = fin ? (hit ? s * v[j] : z) : nanv;
-    addLanes(ws, g, c, use);
-  }
-}
-
-// pass 2 for the wet triangles [p0, p0 + nl) of in.idx as W lanes:
-// hydro.cc's viscousForce, dragForce and slamForce (the same tests, the
-// same NaN for a non-finite input), rigid.cc's effMass; on a step's first
-// call the swept-volume rates into the history
-template <int W, class M>
-static void flowChunk(FlowIn* in, int p0, int nl, typename TLanes<W>::V* wv1,
-                      typename TLanes<W>::V* wvd, typename TLanes<W>::V* wd,
-                      typename TLanes<W>::V* ws) {
-  typedef typename TLanes<W>::V V;
-  typedef typename TLanes<W>::I I;
-  typedef typename TLanes<W>::F F;
-  const int k0 = in->idx[p0];
-  // W triangles in a row (most of a hull's wet ones): loaded whole
-  const bool run = nl == W && in->idx[p0 + W - 1] - k0 == W - 1;
-  V A, S, c[3], n[3], v[3], qp[3];
-  int tk[W];
-  if (run) {
-    A = zload<V>(in->area + k0 - in->t0);
-    S = zload<V>(in->tarea + k0);
-    const int o = 3 * (k0 - in->t0);
-    unzip3<V, W>(in->c + o, c);
-    unzip3<V, W>(in->nrm + o, n);
-    unzip3<V, W>(in->u + o, v);
-    F qf[3];
-    unzip3<F, W>(in->prevQ + 3 * k0, qf);
-    for (int j = 0; j < 3; j++) qp[j] = __builtin_convertvector(qf[j], V);
-  } else {
-    flowGather<W>(in, p0, nl, tk, &A, &S, c, n, v, qp);
-  }
-  I use = A == A;
-  for (int l = 0; l < W; l++) use[l] = l < nl ? -1 : 0;
-  const double* w = in->vel;
-  const V wc[3] = {w[1] * c[2] - w[2] * c[1], w[2] * c[0] - w[0] * c[2],
-                   w[0] * c[1] - w[1] * c[0]};
-  for (int j = 0; j < 3; j++) v[j] = w[3 + j] + wc[j] - v[j];
-  // Q = A v rounded to float (hydro.h sweptRate), as the history keeps it
-  F qf[3];
-  V q[3];
-  for (int j = 0; j < 3; j++) {
-    qf[j] = __builtin_convertvector(A * v[j], F);
-    q[j] = __builtin_convertvector(qf[j], V);
-  }
-  if (in->q && run) {
-    zip3<F, W>(in->q + 3 * k0, qf[0], qf[1], qf[2]);
-  } else if (in->q) {
-    for (int l = 0; l < nl; l++) {
-      for (int j = 0; j < 3; j++) in->q[3 * tk[l] + j] = qf[j][l];
-    }
-  }
-  flowForces<W, M>(in, A, S, c, n, v, q, qp, use, wv1, wvd, wd, ws);
-}
-
-template <int W, class M>
-static void flowLanes(FlowIn* in) {
-  typedef typename TLanes<W>::V V;
-  V wv1[6] = {}, wvd[6] = {}, wd[6] = {}, ws[6] = {};
-  for (int p = 0; p < in->m; p += W) {
-    flowChunk<W, M>(in, p, in->m - p < W ? in->m - p : W, wv1, wvd, wd, ws);
-  }
-  for (int j = 0; j < 6; j++) {
-    in->wv1[j] = TLanes<W>::hsum(wv1[j]);
-    in->wvd[j] = TLanes<W>::hsum(wvd[j]);
-    in->wd[j] = TLanes<W>::hsum(wd[j]);
-    in->ws[j] = TLanes<W>::hsum(ws[j]);
-  }
 }
 
 }  // namespace
