@@ -70,7 +70,7 @@ const Buoy* buoyOf(const mjbBuoy* b);
 // one chunk of a hull's sums (cpu.cc hullChunks): pass 1's pressure
 // wrench [N, N m], wet area [m^2], its first moment along the flow [m^3]
 // and the wet extent along it [m]; pass 2's unit viscous wrench and its
-// first moment along the flow (cpuhull.h pass2Chunk), drag and slamming
+// first moment along the flow (cpuhull.h passChunk), drag and slamming
 // wrenches
 struct ChunkSum {
   double wp[6], wet, wdir, lo, hi;

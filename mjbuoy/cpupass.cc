@@ -288,7 +288,7 @@ double formMean(double wet, double wdir, double lo, double hi) {
 }
 
 // pass 2's scalar reference for wet triangle k: viscous (unit, and its
-// moment along dir: pass2Chunk), drag and slamming at its centroid with
+// moment along dir: passChunk), drag and slamming at its centroid with
 // its relative velocity v; on a step's first call its swept-volume rate
 // into the slamming history
 static void pass2Tri(const Pass2& p, int k) {

@@ -1,5 +1,5 @@
 // trisort: a hull's triangles sorted by how the surface cuts them, for the
-// lane kernels of trivec.h (cpupass.cc pass1Chunk). The vector sorts gather
+// lane kernels of trivec.h (cpupass.cc passLanes). The vector sorts gather
 // three heights per triangle in lanes and append each lane's triangle to
 // its kind's list in order (AVX-512F compress stores; AVX2 a permutation
 // per mask from a table), so the lists are the scalar rule's, in the same

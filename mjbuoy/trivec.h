@@ -22,7 +22,7 @@ struct FlowIn {
   const float* prevQ;
   double vel[6];                     // body velocity [angular; linear] at the COM
   double com[3];                     // body COM, world [m]
-  // viscous: on, the flow's direction (sums: cpuhull.h pass2Chunk)
+  // viscous: on, the flow's direction (sums: cpuhull.h passChunk)
   int visc;
   double dir[3];
   double drag[3], suction[3], vref;
@@ -31,7 +31,7 @@ struct FlowIn {
   int slam;
   double gain, gmax, pw, share, shull, dt, minv, iinv[6], gcom[3];
   // sums of one kind's lanes [force; torque about the COM]: the unit
-  // viscous wrench and its first moment along dir (cpuhull.h pass2Chunk),
+  // viscous wrench and its first moment along dir (cpuhull.h passChunk),
   // drag, slamming
   double wv1[6], wvd[6], wd[6], ws[6];
 };

@@ -330,7 +330,7 @@ struct FlowAcc {
   typename TLanes<W>::V v1[6], vd[6], d[6], s[6];
 };
 
-// pass 2 in the lanes of pass 1 (cpuhull.h pass2Chunk): hydro.cc's
+// pass 2 in the lanes of pass 1 (cpuhull.h passChunk): hydro.cc's
 // viscousForce (unit), dragForce and slamForce and rigid.cc's effMass
 // (the same tests, the same NaN for a non-finite input) for triangles tk
 // of wet area A, centroid c (relative to the COM), normal n and mean
