@@ -39,8 +39,8 @@ static int chunkAt(int n, int nc, int i) {
 }
 
 // one hull's call, shared by the chunks of its stages: the owner's call
-// and scratch, the body's motion, the flow (hullFlow), the
-// slamming step dt [s], and the chunks' sums (the owner's)
+// and scratch, the body's motion, the flow (hullFlow), the slamming step
+// dt [s], and the chunks' sums (the owner's)
 struct HullRun {
   HullCall c;
   HullScr hs;

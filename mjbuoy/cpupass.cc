@@ -170,6 +170,13 @@ static TriIn triIn(const Pass1& q) {
 
 static void pass2Tri(const Pass2& p, int k);
 
+// triangle k on the scalar path, beside lanes that run pass 2 (fused):
+// pass 1, then pass 2 when it is wet
+static void scalarTri(Pass1& q, const Pass2& p2, bool fused, int k) {
+  pass1Tri(q, k);
+  if (fused && q.ts.area(k) > 0) pass2Tri(p2, k);
+}
+
 // the triangles wl[0, nl) of one kind (trivec.h triLanes) in vector
 // lanes, with pass 2 in the same lanes when in.fl is set (p2: its sums);
 // those the lanes leave (a piece too coarse for the series, not finite)
@@ -200,10 +207,7 @@ static void pass1Lanes(Pass1& q, TriIn& in, int kind, const int* wl, int nl, int
       p2.cs->ws[j] += in.fl->ws[j];
     }
   }
-  for (int i = 0; i < in.nrest; i++) {
-    pass1Tri(q, rest[i]);
-    if (in.fl && q.ts.area(rest[i]) > 0) pass2Tri(p2, rest[i]);
-  }
+  for (int i = 0; i < in.nrest; i++) scalarTri(q, p2, in.fl != nullptr, rest[i]);
 }
 
 // whether pass 2 can run in lanes: every exponent it raises to is 0.5, 1
@@ -262,11 +266,7 @@ static void passLanes(Pass1& q, const Pass2& p2, bool fused, int k0, int k1, int
     sortKindsAvx2(&ks);
   }
   // a height not finite: the scalar path, which reports it
-  for (int i = 0; i < ks.n[kKindOther]; i++) {
-    const int k = ks.list[kKindOther][i];
-    pass1Tri(q, k);
-    if (fused && q.ts.area(k) > 0) pass2Tri(p2, k);
-  }
+  for (int i = 0; i < ks.n[kKindOther]; i++) scalarTri(q, p2, fused, ks.list[kKindOther][i]);
   TriIn in = triIn(q);
   FlowIn fl;
   if (fused) fl = flowIn(p2);

@@ -382,6 +382,21 @@ static inline void flowAt(const FlowIn* fl, const int* tk, bool whole, typename 
   flowForces<W, M>(fl, A, S, c, n, v, q, qp, use, acc->v1, acc->vd, acc->d, acc->s);
 }
 
+// lane l's results for triangle k into the hull's scratch, for pass 2 to
+// read when it does not run in these lanes: wet area A, centroid c
+// (relative to the COM), normal n, mean water velocity u
+template <class V>
+static inline void storeLane(TriIn* in, int k, V A, const V c[3], const V n[3], const V u[3],
+                             int l) {
+  in->area[k - in->t0] = A[l];
+  for (int j = 0; j < 3; j++) {
+    const int kl = 3 * (k - in->t0) + j;
+    in->c[kl] = c[j][l];
+    in->nrm[kl] = n[j][l];
+    in->u[kl] = u[j][l];
+  }
+}
+
 // triangles [p0, p0 + nl) of in.idx as W lanes (the last repeated in the
 // lanes past nl, whose results are dropped); sums into f, t, wet, lo, hi;
 // pass 2 into acc when in.fl is set, else the per-triangle results stored
@@ -428,10 +443,18 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   I use = good;
   for (int l = nl; l < W; l++) use[l] = 0;
   const bool whole = nl == W && tk[W - 1] - tk[0] == W - 1 && TLanes<W>::all(good);
-  if (in->fl) {
+  if (!whole) {  // lane by lane: the leftovers, and the results unless fused
     for (int l = 0; l < nl; l++) {
-      if (!good[l] && (ok[l] || len[l] != len[l])) in->rest[in->nrest++] = tk[l];
+      const int k = tk[l];
+      if (!good[l]) {
+        if (ok[l] || len[l] != len[l]) in->rest[in->nrest++] = k;
+        else if (!in->fl) in->area[k - in->t0] = 0;  // degenerate: no wet part (wetTriangle)
+        continue;
+      }
+      if (!in->fl) storeLane(in, k, A, cen, n, u, l);
     }
+  }
+  if (in->fl) {
     flowAt<W, M>(in->fl, tk, whole, A, cen, n, u, use, acc);
   } else if (whole) {
     const int o = 3 * (tk[0] - in->t0);
@@ -439,22 +462,6 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
     zip3<V, W>(in->c + o, cen[0], cen[1], cen[2]);
     zip3<V, W>(in->nrm + o, n[0], n[1], n[2]);
     zip3<V, W>(in->u + o, u[0], u[1], u[2]);
-  } else {
-    for (int l = 0; l < nl; l++) {
-      const int k = tk[l];
-      if (!good[l]) {
-        if (ok[l] || len[l] != len[l]) in->rest[in->nrest++] = k;
-        else in->area[k - in->t0] = 0;  // degenerate: no wet part (wetTriangle)
-        continue;
-      }
-      in->area[k - in->t0] = A[l];
-      for (int j = 0; j < 3; j++) {
-        const int kl = 3 * (k - in->t0) + j;
-        in->c[kl] = cen[j][l];
-        in->nrm[kl] = n[j][l];
-        in->u[kl] = u[j][l];
-      }
-    }
   }
   const V zero = V{};
   F[0] -= use ? P * n[0] : zero;
@@ -626,24 +633,17 @@ static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   const V inv = has ? 1 / A : z;
   I use = good & has;
   for (int l = nl; l < W; l++) use[l] = 0;
+  const V c[3] = {rA[0] * inv, rA[1] * inv, rA[2] * inv};
+  const V u[3] = {in->cur[0] + Vw[0] * inv, in->cur[1] + Vw[1] * inv, 0 + Vw[2] * inv};
   for (int l = 0; l < nl; l++) {
     const int k = tk[l];
     if (!good[l]) {
       if (ok[l] || len[l] != len[l] || hs[l] != hs[l]) in->rest[in->nrest++] = k;
       continue;  // else degenerate: no wet part, area 0 (wetTriangle)
     }
-    if (!has[l] || in->fl) continue;
-    in->area[k - in->t0] = A[l];
-    for (int j = 0; j < 3; j++) {
-      const int kl = 3 * (k - in->t0) + j;
-      in->c[kl] = rA[j][l] * inv[l];
-      in->nrm[kl] = n[j][l];
-      in->u[kl] = (j < 2 ? in->cur[j] : 0) + Vw[j][l] * inv[l];
-    }
+    if (has[l] && !in->fl) storeLane(in, k, A, c, n, u, l);
   }
   if (in->fl) {
-    const V c[3] = {rA[0] * inv, rA[1] * inv, rA[2] * inv};
-    const V u[3] = {in->cur[0] + Vw[0] * inv, in->cur[1] + Vw[1] * inv, 0 + Vw[2] * inv};
     const bool whole = nl == W && tk[W - 1] - tk[0] == W - 1 && TLanes<W>::all(use);
     flowAt<W, M>(in->fl, tk, whole, A, c, n, u, use, acc);
   }
