@@ -57,7 +57,7 @@ static HullCall hullCall(const Buoy& b, int ih, const mjData* d, bool first, Sta
   HullCall c{b, hl, ih, d->xpos + 3 * hl.body, d->xmat + 9 * hl.body, d->xipos + 3 * hl.body,
              {0, 0, 0}, first, s, slot, s->scr.data() + s->per * slot, nullptr,
              triScr(s, slot, hl.t0)};
-  c.tmp = c.sc + 2 * b.cfg.sea.waves.size();
+  c.tmp = laneTmp(c.sc, b.cfg.sea.waves.size());
   return c;
 }
 
@@ -68,7 +68,7 @@ static HullCall chunkCall(const HullRun& r, int slot, HullScr* hs) {
   State* s = c.s;
   c.slot = slot;
   c.sc = s->scr.data() + s->per * slot;
-  c.tmp = c.sc + 2 * c.b.cfg.sea.waves.size();
+  c.tmp = laneTmp(c.sc, c.b.cfg.sea.waves.size());
   *hs = r.hs;
   hs->arg = c.sc + (r.hs.arg - r.c.sc);
   return c;

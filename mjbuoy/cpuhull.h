@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "buoy.h"
 #include "rigid.h"
@@ -107,6 +108,17 @@ struct HullCall {
 // converging quadratically, reaches its tolerance in one step instead of
 // two; the tolerance is unchanged, so the labels differ only within it
 void hullGuess(const State& s, int ih, double t, double L[3]);
+
+// p rounded up to a 64-byte line: the lane kernels' scratch arrays start on
+// one, so a vector of 8 doubles is one line (a store split over two lines
+// is not forwarded to the load that reads it back: each costs a stall)
+inline double* lineUp(double* p) {
+  return reinterpret_cast<double*>((reinterpret_cast<uintptr_t>(p) + 63) & ~uintptr_t(63));
+}
+
+// the Newton scratch in the thread's scratch sc: after the phases (2 per
+// wave), on a line (2 + kLaneTmp per wave, seavec.h)
+inline double* laneTmp(double* sc, size_t nw) { return lineUp(sc + 2 * nw); }
 
 // the vertex stage's scratch layout in sc (scratchSize)
 HullScr hullScr(const Sea& sea, double* sc, size_t mi, int nv);

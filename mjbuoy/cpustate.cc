@@ -35,11 +35,16 @@ static size_t maxVerts(const Buoy& b) {
 // every point of a hull, e^L (eStride per wave), the position relative
 // to the COM (3), label (2) and record (kRec, aligned to 8 doubles) for
 // every vertex of a hull, and 2 per wave per vertex of a chunk of exp
-// arguments
+// arguments; the Newton scratch, the point arrays and the records each
+// start on a 64-byte line (hullScr: up to 7 doubles to reach one, the
+// point count rounded up to 8). A multiple of 8 doubles, so every thread's
+// part falls on the lines the same way
 static size_t scratchSize(const Buoy& b) {
   size_t nw = std::max(b.wcap, b.cfg.sea.waves.size());
-  return (4 + kLaneTmp + 2 * kExpChunk) * nw + (6 + 2 * nw) * maxItems(b) +
-         (eStride(b.cfg.sea) * nw + 5 + kRec) * maxVerts(b) + kRec;
+  const size_t mi8 = (maxItems(b) + 7) & ~size_t(7);
+  const size_t n = (4 + kLaneTmp + 2 * kExpChunk) * nw + (6 + 2 * nw) * mi8 +
+                   (eStride(b.cfg.sea) * nw + 5 + kRec) * maxVerts(b) + kRec + 3 * 7;
+  return (n + 7) & ~size_t(7);
 }
 
 void makeState(const Buoy& b, State* s) {

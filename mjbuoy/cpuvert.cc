@@ -55,7 +55,9 @@ static void vertexWaves(const WaveTab& t, size_t nw, size_t stride, const HullSc
 HullScr hullScr(const Sea& sea, double* sc, size_t mi, int nv) {
   const size_t nw = sea.waves.size();
   HullScr hs;
-  hs.X = sc + (4 + kLaneTmp) * nw;
+  // the point arrays each on a line (mi rounded up to 8 doubles)
+  mi = (mi + 7) & ~size_t(7);
+  hs.X = lineUp(laneTmp(sc, nw) + (2 + kLaneTmp) * nw);
   hs.Y = hs.X + mi;
   hs.A0 = hs.Y + mi;
   hs.A1 = hs.A0 + mi;
@@ -65,9 +67,7 @@ HullScr hullScr(const Sea& sea, double* sc, size_t mi, int nv) {
   hs.E = hs.SC + 2 * nw * mi;
   hs.rel = hs.E + eStride(sea) * nw * nv;
   hs.lab = hs.rel + 3 * nv;
-  // (64-byte lines: a record is one load)
-  const uintptr_t r = reinterpret_cast<uintptr_t>(hs.lab + 2 * nv);
-  hs.rec = reinterpret_cast<double*>((r + 63) & ~uintptr_t(63));
+  hs.rec = lineUp(hs.lab + 2 * nv);  // (a record is one load)
   hs.arg = hs.rec + kRec * nv;
   return hs;
 }
