@@ -136,7 +136,13 @@ static void vertexOut(const HullCall& c, const HullScr& hs, int q0, int q1) {
 }
 
 // at the wet vertices of [q0, q1) (h <= 0, a wet piece's corner 0) the
-// stretched height and e^L, kExpChunk vertices per vertexWaves call
+// stretched height and e^L, kExpChunk vertices per vertexWaves call; for
+// a sea of at most kWetLanesMax components whole lane groups of every
+// vertex at once instead (seavec.h WetIn: no branch on wet or dry, whose
+// pattern along the mesh mispredicts; the dry ones' values are not read),
+// with the same operations and exp, so the same bits per vertex. More
+// components: the list, which spends the exps on wet vertices only
+enum { kWetLanesMax = 8 };
 static void wetVertices(const HullCall& c, const HullScr& hs, int q0, int q1) {
   const Hull& hl = c.hl;
   const Sea& sea = c.b.cfg.sea;
@@ -144,8 +150,16 @@ static void wetVertices(const HullCall& c, const HullScr& hs, int q0, int q1) {
   const size_t nw = sea.waves.size();
   if (nw == 0) return;
   const double zc = c.com[2];
+  int qs = q0;
+  if (simdLevel() != kSimdScalar && int(nw) <= kWetLanesMax) {
+    const WaveTab& t = s->tab;
+    WetIn in{q1 - q0, hs.rel + 3 * q0, hs.Z + q0, hs.SC + 2 * nw * q0, zc, sea.level, t.depth,
+             t.n, int(nw), t.finite, int(eStride(sea)), t.k.data(), t.ident ? nullptr : t.perm.data(),
+             hs.ZS + q0, hs.E + eStride(sea) * nw * q0};
+    qs += simdLevel() == kSimdAvx512 ? wetLanesAvx512(in) : wetLanesAvx2(in);
+  }
   int wq[kExpChunk], nq = 0;
-  for (int q = q0; q < q1; q++) {
+  for (int q = qs; q < q1; q++) {
     const int i = hl.v0 + q;
     if (!(s->h[i] <= 0)) continue;
     hs.ZS[q] = stretch(sea.depth, hs.rel[3 * q + 2] + zc - sea.level, hs.Z[q] - sea.level);

@@ -1,8 +1,10 @@
-// placekern: the vertex stage's placement in lanes (seavec.h PlaceIn),
-// included by seavec_avx2.cc and seavec_avx512.cc after seavec_kern.h
-// (Lanes). Body-frame vertices in, positions relative to the COM (3 each,
-// as cpuvert.cc stores them) and the label search's points and guesses out;
-// cpuvert.cc's placeVertices is the scalar path. Everything here is static.
+// placekern: the vertex stage's passes around the label search in lanes
+// (seavec.h PlaceIn, HeightIn, PackIn, WetIn), included by seavec_avx2.cc
+// and seavec_avx512.cc after seavec_kern.h (Lanes). Placement: body-frame
+// vertices in, positions relative to the COM (3 each, as cpuvert.cc stores
+// them) and the label search's points and guesses out; then heights,
+// e^L and the records. cpuvert.cc's loops are the scalar path. Everything
+// here is static.
 #ifndef MJBUOY_PLACEKERN_H_
 #define MJBUOY_PLACEKERN_H_
 
@@ -123,6 +125,49 @@ template <int W>
 static int placeLanes(const PlaceIn& in) {
   int q = 0;
   for (; q + W <= in.m; q += W) placeChunk<W>(in, q);
+  return q;
+}
+
+// sea.cc's stretch in lanes, the same operations: glibc's fmin(x, y) is x
+// where x <= y (so fmin(-0, 0) is -0) or y is NaN, else y (y where x is
+// NaN); fmax the same with >=
+template <class V>
+static inline V stretchLanes(double depth, V z, V eta) {
+  const V t = z - eta;
+  if (!(depth > 0)) return t <= 0 ? t : V{};
+  const V s = t * depth / (depth + eta);
+  const V lo = s >= -depth ? s : V{} - depth;
+  const V r = lo <= 0 ? lo : V{};
+  return depth + eta > 0 ? r : V{} - depth;
+}
+
+// vertices [q, q + W) of in (cpuvert.cc wetVertices and vertexWaves, for
+// every vertex: no branch on wet or dry)
+template <int W, class M>
+static inline void wetChunk(const WetIn& in, int q) {
+  typedef typename Lanes<W>::V V;
+  V rz;
+  for (int l = 0; l < W; l++) rz[l] = in.rel[3 * (q + l) + 2];
+  const V zs = stretchLanes<V>(in.depth, rz + in.zc - in.level, Lanes<W>::ld(in.Z + q) - in.level);
+  Lanes<W>::st(in.ZS + q, zs);
+  for (int f = 0; f < (in.finite ? 2 : 1); f++) {
+    for (int j = 0; j < in.n; j++) {
+      const V a = M::exp(f == 0 ? in.k[j] * zs : -in.k[j] * (zs + 2 * in.depth));
+      const int i = in.perm ? in.perm[j] : j;
+      for (int l = 0; l < W; l++) {
+        const double* sc = in.SC + 2 * in.nw * (q + l);
+        double* er = in.E + in.stride * in.nw * (q + l) + 2 * f * in.nw;
+        er[j] = a[l] * sc[2 * i + 1];
+        er[in.nw + j] = a[l] * sc[2 * i];
+      }
+    }
+  }
+}
+
+template <int W, class M>
+static int wetLanes(const WetIn& in) {
+  int q = 0;
+  for (; q + W <= in.m; q += W) wetChunk<W, M>(in, q);
   return q;
 }
 

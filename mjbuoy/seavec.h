@@ -81,6 +81,29 @@ struct PackIn {
 int packLanesAvx2(const PackIn& in);
 int packLanesAvx512(const PackIn& in);
 
+// the vertex stage's e^L (cpuvert.cc wetVertices, in lanes: placekern.h)
+// for a sea of few components: for each of m vertices (rel 3 each,
+// relative to the COM; Z the surface height above them [m]) its stretched
+// height zs (sea.cc stretch, with the COM height zc, the sea level and
+// depth h, 0 for deep water) and per component j of n (wave numbers k
+// [rad/m], sorted; perm the WaveNow index of each, null for the identity)
+// and family f (1, or 2 at finite depth) e^(k zs) (e^(-k (zs + 2 h))) times
+// the cos and sin of the component's phase (SC, 2 nw per vertex) into E
+// (stride nw per vertex: re then im per family). Dry vertices get them
+// too: nobody reads them (wetVertices)
+struct WetIn {
+  int m;
+  const double *rel, *Z, *SC;
+  double zc, level, depth;
+  int n, nw, finite, stride;
+  const double* k;
+  const int* perm;
+  double *ZS, *E;
+};
+// done in whole chunks of lanes: returns how many (the rest: cpuvert.cc)
+int wetLanesAvx2(const WetIn& in);
+int wetLanesAvx512(const WetIn& in);
+
 }  // namespace mjb
 
 #endif  // MJBUOY_SEAVEC_H_

@@ -8,6 +8,7 @@
 // glibc libmvec, 8 doubles per call (x86_64 vector ABI, ISA "e" = AVX-512)
 extern "C" __m512d _ZGVeN8v_sin(__m512d);
 extern "C" __m512d _ZGVeN8v_cos(__m512d);
+extern "C" __m512d _ZGVeN8v_exp(__m512d);
 
 namespace mjb {
 namespace {
@@ -15,6 +16,7 @@ struct Mvec8 {
   typedef Lanes<8>::V V;
   static V sin(V x) { return (V)_ZGVeN8v_sin((__m512d)x); }
   static V cos(V x) { return (V)_ZGVeN8v_cos((__m512d)x); }
+  static V exp(V x) { return (V)_ZGVeN8v_exp((__m512d)x); }  // vExpAvx512's
 };
 }  // namespace
 
@@ -22,4 +24,5 @@ long solveLanesAvx512(const LaneIn& in) { return solveLanes<8, Mvec8>(in); }
 int placeLanesAvx512(const PlaceIn& in) { return placeLanes<8>(in); }
 int heightLanesAvx512(const HeightIn& in) { return heightLanes<8>(in); }
 int packLanesAvx512(const PackIn& in) { return packLanes<8>(in); }
+int wetLanesAvx512(const WetIn& in) { return wetLanes<8, Mvec8>(in); }
 }  // namespace mjb

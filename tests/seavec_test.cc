@@ -5,6 +5,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <random>
 #include <sstream>
 #include <vector>
@@ -241,6 +242,77 @@ TEST(SeaVec, LanesMatchTheScalarSearch) {
 }
 
 // a Wigley hull and a box on a sea of three Gerstner and one Airy
+
+// the vertex stage's e^L in lanes (seavec.h WetIn, for seas of few
+// components) gives the list path's bits (cpuvert.cc wetVertices): the
+// stretched height bit for bit that of sea.cc's stretch and each e^L the
+// level's vExp of the same argument times the same cos and sin. 4000
+// vertices of random heights, with surfaces above and below them, one
+// at the surface, a NaN surface and a NaN height, and at finite depth
+// surfaces at and below the bed (stretch's branches and glibc's fmin and
+// fmax at NaN); three components in permuted order (perm), deep water and
+// 4 m
+TEST(SeaVec, WetVerticesInLanesGiveTheListsBits) {
+  const int prev = mjb::simdLevel();
+  const int m = 4000, n = 3, nw = 3;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<double> rel(3 * m), Z(m), SC(2 * nw * m);
+  const double zc = -0.2, level = 0.1;
+  for (int q = 0; q < m; q++) {
+    for (int j = 0; j < 3; j++) rel[3 * q + j] = u(rng);
+    Z[q] = level + 0.5 * u(rng);
+    for (int j = 0; j < 2 * nw; j++) SC[2 * nw * q + j] = u(rng);
+  }
+  // edge cases: at the surface, NaN surface, surface at and below the bed
+  rel[3 * 0 + 2] = 0, Z[0] = zc;           // z - eta = (0 + zc - level) - (zc - level) = 0
+  Z[1] = std::nan("");
+  Z[2] = level - 4, Z[3] = level - 5;      // depth + eta = 0, < 0 at 4 m
+  rel[3 * 4 + 2] = std::nan("");
+  const double k[n] = {0.2, 0.7, 1.9};
+  const int perm[n] = {2, 0, 1};
+  for (double depth : {0.0, 4.0}) {
+    const bool finite = depth > 0;
+    const int stride = finite ? 4 : 2;
+    for (int level_ : vectorLevels("seavec")) {
+      mjb::simdSet(level_);
+      std::vector<double> ZS(m, 7), E(stride * nw * m, 7);
+      mjb::WetIn in{m, rel.data(), Z.data(), SC.data(), zc, level, depth, n, nw, finite, stride,
+                    k, perm, ZS.data(), E.data()};
+      const int done = level_ == mjb::kSimdAvx512 ? mjb::wetLanesAvx512(in) : mjb::wetLanesAvx2(in);
+      ASSERT_EQ(done, m - m % (level_ == mjb::kSimdAvx512 ? 8 : 4));
+      long bad = 0;
+      for (int q = 0; q < done; q++) {
+        const double zs = mjb::stretch(depth, rel[3 * q + 2] + zc - level, Z[q] - level);
+        bad += std::memcmp(&zs, &ZS[q], sizeof zs) != 0;
+        for (int f = 0; f < (finite ? 2 : 1); f++) {
+          double arg[n], a[n];
+          for (int j = 0; j < n; j++) arg[j] = f == 0 ? k[j] * zs : -k[j] * (zs + 2 * depth);
+          mjb::vExp(n, arg, a);
+          for (int j = 0; j < n; j++) {
+            const double er = a[j] * SC[2 * nw * q + 2 * perm[j] + 1];
+            const double ei = a[j] * SC[2 * nw * q + 2 * perm[j]];
+            const double* e = &E[stride * nw * q + 2 * f * nw];
+            bad += std::memcmp(&er, &e[j], sizeof er) != 0;
+            bad += std::memcmp(&ei, &e[nw + j], sizeof ei) != 0;
+          }
+        }
+      }
+      EXPECT_EQ(bad, 0) << mjb::simdName(level_) << ", depth " << depth;
+      // the cases were hit: at the surface 0; deep, a NaN surface gives
+      // fmin(NaN, 0) = 0; at 4 m the bed and a NaN height give -depth
+      EXPECT_EQ(ZS[0], 0);
+      if (!finite) {
+        EXPECT_EQ(ZS[1], 0);
+      } else {
+        EXPECT_EQ(ZS[2], -depth);
+        EXPECT_EQ(ZS[3], -depth);
+        EXPECT_EQ(ZS[4], -depth);
+      }
+    }
+  }
+  mjb::simdSet(prev);
+}
 // component (fold 0.27)
 std::string scene(int threads) {
   std::ostringstream s;
