@@ -229,8 +229,22 @@ static long solveChunk(const LaneIn& in, int p0, int nl) {
       }
     }
   }
-  // Airy components: a direct sum at the physical point
-  for (int i = ng; i < n; i++) {
+  // Airy components: a direct sum at the physical point; their sin and cos
+  // go to each point's row W / 2 components at a time through a W x W
+  // transpose (row l: point l's W / 2 pairs, one store) instead of two
+  // lane stores each, the rest lane by lane
+  int i = ng;
+  for (; i + W / 2 <= n; i += W / 2) {
+    V r[W];
+    for (int a = 0; a < W / 2; a++) {
+      const WaveNow& wa = w[i + a];
+      sinCosPhases<W, M>(wa.k * (wa.dx * x + wa.dy * y) - wa.wt + wa.ph, &r[2 * a], &r[2 * a + 1]);
+      z += wa.amp * r[2 * a + 1];
+    }
+    transpose<V, W>(r);
+    for (int l = 0; l < nl; l++) __builtin_memcpy(in.sc + 2 * n * (p0 + l) + 2 * i, &r[l], sizeof(V));
+  }
+  for (; i < n; i++) {
     const V th = w[i].k * (w[i].dx * x + w[i].dy * y) - w[i].wt + w[i].ph;
     V s, c;
     sinCosPhases<W, M>(th, &s, &c);
