@@ -242,7 +242,9 @@ static long solveChunk(const LaneIn& in, int p0, int nl) {
       z += wa.amp * r[2 * a + 1];
     }
     transpose<V, W>(r);
-    for (int l = 0; l < nl; l++) __builtin_memcpy(in.sc + 2 * n * (p0 + l) + 2 * i, &r[l], sizeof(V));
+    for (int l = 0; l < nl; l++) {
+      __builtin_memcpy(in.sc + 2 * n * (p0 + l) + 2 * i, &r[l], sizeof(V));
+    }
   }
   for (; i < n; i++) {
     const V th = w[i].k * (w[i].dx * x + w[i].dy * y) - w[i].wt + w[i].ph;

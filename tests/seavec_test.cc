@@ -241,8 +241,6 @@ TEST(SeaVec, LanesMatchTheScalarSearch) {
   checkSea(makeSea(0, 3, 0.0), 0.0, "airy");
 }
 
-// a Wigley hull and a box on a sea of three Gerstner and one Airy
-
 // the vertex stage's e^L in lanes (seavec.h WetIn, for seas of few
 // components) gives the list path's bits (cpuvert.cc wetVertices): the
 // stretched height bit for bit that of sea.cc's stretch and each e^L the
@@ -313,6 +311,8 @@ TEST(SeaVec, WetVerticesInLanesGiveTheListsBits) {
   }
   mjb::simdSet(prev);
 }
+
+// a Wigley hull and a box on a sea of three Gerstner and one Airy
 // component (fold 0.27)
 std::string scene(int threads) {
   std::ostringstream s;
