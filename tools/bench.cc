@@ -32,7 +32,7 @@ using Clock = std::chrono::steady_clock;
 
 // boats spaced on a grid 6 m x 2 m apart, all partly wet on a 20 m swell
 static int gthreads = -1;  // mjbuoy.threads, -1: leave it out (auto)
-static std::string gsea = "swell";  // flat, swell (one Gerstner wave) or jonswap
+static std::string gsea = "swell";  // flat, swell (one Gerstner wave), jonswap, longcrested
 static double gradiation = -1;  // --radiation: memory length [s]; < 0: off
 static std::string gradmem;     // --radiation-memory: mjbuoy.radiation.memorymodel, "": default
 static bool gwarmmem = false;   // --warm-memory: warm up until every radiation memory is full
@@ -70,16 +70,17 @@ static bool addRadiation(mjbBuoy* b, const mjModel* m) {
 static std::string gpress = "linear";  // mjbuoy.sea.pressure: linear or kerner
 
 // the sea entries of --sea: jonswap is a 64-component short-crested sea
-// (Hs 0.6 m, Tp 5 s, spreading s = 10 about 20 deg)
+// (Hs 0.6 m, Tp 5 s, spreading s = 10 about 20 deg), longcrested the same
+// spectrum with every component along 20 deg (spreading 0, the default)
 static std::string seaEntries() {
   if (gsea == "flat") return "";
   if (gsea == "swell") return "<numeric name=\"mjbuoy.wave.swell\" data=\"0.3 20 20 0 0.5\"/>";
-  return "<text name=\"mjbuoy.spectrum.sea.type\" data=\"jonswap\"/>"
-         "<numeric name=\"mjbuoy.spectrum.sea.hs\" data=\"0.6\"/>"
-         "<numeric name=\"mjbuoy.spectrum.sea.tp\" data=\"5\"/>"
-         "<numeric name=\"mjbuoy.spectrum.sea.components\" data=\"64\"/>"
-         "<numeric name=\"mjbuoy.spectrum.sea.spreading\" data=\"10\"/>"
-         "<numeric name=\"mjbuoy.spectrum.sea.direction\" data=\"20\"/>";
+  return std::string("<text name=\"mjbuoy.spectrum.sea.type\" data=\"jonswap\"/>"
+                     "<numeric name=\"mjbuoy.spectrum.sea.hs\" data=\"0.6\"/>"
+                     "<numeric name=\"mjbuoy.spectrum.sea.tp\" data=\"5\"/>"
+                     "<numeric name=\"mjbuoy.spectrum.sea.components\" data=\"64\"/>"
+                     "<numeric name=\"mjbuoy.spectrum.sea.direction\" data=\"20\"/>") +
+         (gsea == "jonswap" ? "<numeric name=\"mjbuoy.spectrum.sea.spreading\" data=\"10\"/>" : "");
 }
 
 static std::string scene(const std::string& meshes, int boats, int tris) {
@@ -144,7 +145,7 @@ struct Cell {
 };
 
 // the reference kernel's CPU ns per triangle on a sea (roofline.h), once
-// per sea: components of flat 0, swell 1, jonswap 64
+// per sea: components of flat 0, swell 1, jonswap and longcrested 64
 static double roofline(const std::string& sea) {
   static double ns[3] = {-1, -1, -1};
   const int i = sea == "flat" ? 0 : sea == "swell" ? 1 : 2;
@@ -480,8 +481,9 @@ int main(int argc, char** argv) {
   app.add_option("--json", json, "also write the results as JSON (replaced only when complete)");
   std::vector<std::string> seas = {"swell"}, pressures = {"linear"};
   app.add_option("--sea", seas, "seas, each measured in turn in every cell: flat, swell (one "
-                 "Gerstner wave, the default) or jonswap (64 components)")
-      ->check(CLI::IsMember({"flat", "swell", "jonswap"}));
+                 "Gerstner wave, the default), jonswap (64 components, short-crested) or "
+                 "longcrested (the same spectrum, every component along 20 deg)")
+      ->check(CLI::IsMember({"flat", "swell", "jonswap", "longcrested"}));
   app.add_option("--pressure", pressures, "pressure models (mjbuoy.sea.pressure), each "
                  "measured in turn: linear (the default) or kerner")
       ->check(CLI::IsMember({"linear", "kerner"}));
