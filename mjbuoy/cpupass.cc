@@ -147,6 +147,10 @@ static TriIn triIn(const Pass1& q) {
   in.kdx = t.kdx.data();
   in.kdy = t.kdy.data();
   in.gm = t.gm.data();
+  in.lc = t.lc;
+  in.ldx = t.ldx;
+  in.ldy = t.ldy;
+  in.lgm = t.lgm;
   for (int f = 0; f < 2; f++) {
     in.wp[f] = t.wp[f].data();
     in.wux[f] = t.wux[f].data();

@@ -103,6 +103,61 @@ __attribute__((always_inline)) inline void seriesPair(const V ur[2][2], const V 
   }
 }
 
+// the series' terms m = 1 .. N-1 without the powers of k, for corner
+// differences that are k times w_c = wr[c] + i wi[c] for every component
+// of a long-crested sea: h_m is homogeneous of degree m, h_m(k w1, k w2) =
+// k^m h_m(w1, w2) (and g_m likewise), so C[m] = (kInvF2[m] h_m, and with
+// MOM kInvF3[m] h_m, kInvF3[m] g_m) as (re, im) pairs serve every k
+// (docs/physics.md "Dynamic part in closed form"); seriesLoop's
+// recurrences and groupings, C[0] unused
+template <class V, bool MOM>
+__attribute__((always_inline)) inline void seriesCoefs(const V wr[2], const V wi[2], int N,
+                                                       V (*C)[6]) {
+  V pr = V{} + 1, pi = V{}, hr = pr, hi = pi, gr = pr, gi = pi;
+  for (int m = 1; m < N; m++) {
+    V t = pr * wr[1] - pi * wi[1];
+    pi = pr * wi[1] + pi * wr[1];
+    pr = t;
+    t = hr * wr[0] + (pr - hi * wi[0]);
+    hi = hr * wi[0] + (pi + hi * wr[0]);
+    hr = t;
+    C[m][0] = kInvF2[m] * hr;
+    C[m][1] = kInvF2[m] * hi;
+    if (!MOM) continue;
+    t = gr * wr[0] + (hr - gi * wi[0]);
+    gi = gr * wi[0] + (hi + gi * wr[0]);
+    gr = t;
+    C[m][2] = kInvF3[m] * hr;
+    C[m][3] = kInvF3[m] * hi;
+    C[m][4] = kInvF3[m] * gr;
+    C[m][5] = kInvF3[m] * gi;
+  }
+}
+
+// S and T (seriesLoop's with ID: T2 by the sum rule, the m = 0 terms
+// added last) of the component of wave number k from seriesCoefs' C, N
+// terms: k sum_(m=1)^(N-1) C[m] k^(m-1) by Horner, one multiply-add a
+// term and sum (2, with MOM 6, a term where seriesLoop takes 10 and 18)
+template <class V, bool MOM>
+__attribute__((always_inline)) inline void hornerSums(const V (*C)[6], int N, double k, V S[2],
+                                                      V T[6]) {
+  const int nv = MOM ? 6 : 2;
+  V a[6] = {};
+  for (int m = N - 1; m >= 1; m--) {
+    for (int i = 0; i < nv; i++) a[i] = a[i] * k + C[m][i];
+  }
+  for (int i = 0; i < nv; i++) a[i] *= k;
+  S[0] = a[0] + kInvF2[0];
+  S[1] = a[1];
+  if (!MOM) return;
+  T[0] = a[2] + kInvF3[0];
+  T[1] = a[3];
+  T[2] = a[4] + kInvF3[0];
+  T[3] = a[5];
+  T[4] = a[0] - a[2] - a[4] + kInvF3[0];
+  T[5] = a[1] - a[3] - a[5];
+}
+
 // the term count for radius r by the radii R (kSeriesR, kSeriesRv) for r
 // at or above the r that gave N (the radii rise with N): the search
 // resumes at N, so a loop over ascending k pays for it once

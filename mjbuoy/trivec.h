@@ -52,6 +52,9 @@ struct TriIn {
   int n, finite;
   double depth;
   const double *k, *kdx, *kdy, *gm;
+  // long-crested (WaveTab lc): every component along (ldx, ldy), of kind lgm
+  int lc;
+  double ldx, ldy, lgm;
   const double *wp[2], *wux[2], *wuy[2], *wz[2];
   int linear;  // linear pressure (dynamic part), else Kerner's rho g (eta - z)
   double rg, level, comz, cur[2], dir[3];

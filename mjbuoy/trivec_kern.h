@@ -68,19 +68,14 @@ static inline void laneU(const TriIn& in, int j, double sgn, const typename TLan
   }
 }
 
-// component j of family f: its S, T times each lane's e^L0 (zero in the
-// lanes outside keep) and its weights, into acc[7]
+// component j of family f with the lanes' e^L0 = er + i ei: its S, T
+// times e^L0 (zero in the lanes outside keep) and its weights, into acc[7]
 template <int W, bool MOM>
-static inline void laneAdd(const TriIn& in, int f, int j, const double* const e0[W],
-                           typename TLanes<W>::I keep, const typename TLanes<W>::V S[2],
-                           const typename TLanes<W>::V T[6], typename TLanes<W>::V acc[7]) {
+static inline void laneAddE(const TriIn& in, int f, int j, typename TLanes<W>::V er,
+                            typename TLanes<W>::V ei, typename TLanes<W>::I keep,
+                            const typename TLanes<W>::V S[2], const typename TLanes<W>::V T[6],
+                            typename TLanes<W>::V acc[7]) {
   typedef typename TLanes<W>::V V;
-  const int eo = 2 * f * in.nw;
-  V er, ei;
-  for (int l = 0; l < W; l++) {
-    er[l] = e0[l][eo + j];
-    ei[l] = e0[l][eo + in.nw + j];
-  }
   er = keep ? er : V{};
   ei = keep ? ei : V{};
   const V Ir = er * S[0] - ei * S[1], Ii = er * S[1] + ei * S[0];
@@ -93,6 +88,37 @@ static inline void laneAdd(const TriIn& in, int f, int j, const double* const e0
   acc[4] += in.wux[f][j] * Ir;
   acc[5] += in.wuy[f][j] * Ir;
   acc[6] += in.wz[f][j] * Ii;
+}
+
+// laneAddE with component j's e^L0 gathered lane by lane
+template <int W, bool MOM>
+static inline void laneAdd(const TriIn& in, int f, int j, const double* const e0[W],
+                           typename TLanes<W>::I keep, const typename TLanes<W>::V S[2],
+                           const typename TLanes<W>::V T[6], typename TLanes<W>::V acc[7]) {
+  typedef typename TLanes<W>::V V;
+  const int eo = 2 * f * in.nw;
+  V er, ei;
+  for (int l = 0; l < W; l++) {
+    er[l] = e0[l][eo + j];
+    ei[l] = e0[l][eo + in.nw + j];
+  }
+  laneAddE<W, MOM>(in, f, j, er, ei, keep, S, T, acc);
+}
+
+// e^L0 of components [j, j + W) of family f (j + W <= n): er[i][l] =
+// Re e0[l] of component j + i, ei the imaginary parts; one load a lane
+// and a transpose (zipkern.h) instead of W lane inserts a component
+template <int W>
+static inline void laneEBlock(const TriIn& in, int f, int j, const double* const e0[W],
+                              typename TLanes<W>::V er[W], typename TLanes<W>::V ei[W]) {
+  typedef typename TLanes<W>::V V;
+  const int eo = 2 * f * in.nw;
+  for (int l = 0; l < W; l++) {
+    er[l] = zload<V>(e0[l] + eo + j);
+    ei[l] = zload<V>(e0[l] + eo + in.nw + j);
+  }
+  transpose<V, W>(er);
+  transpose<V, W>(ei);
 }
 
 // the series sums of one exponent family f for the lanes (waveint_kern.h's
@@ -136,6 +162,60 @@ static void familyLanes(const TriIn& in, int f, const double* const e0[W],
     laneAdd<W, MOM>(in, f, j, e0, keep, S, T, acc);
     j++;
   }
+}
+
+// familyLanes for a long-crested sea (TriIn lc): every component's
+// corner differences are k times the same w_c = sgn dz_c + i D.(dx_c, or
+// the labels'), so the series' recurrences run once per piece, up to the
+// terms the largest kept k needs (seriesCoefs), and each component costs
+// a polynomial in its k (hornerSums): the same terms and term counts as
+// familyLanes, so the same accuracy (docs/physics.md "Dynamic part in
+// closed form")
+template <int W, bool MOM>
+static void familyShared(const TriIn& in, int f, const double* const e0[W],
+                         typename TLanes<W>::V zx, const typename TLanes<W>::V dz[2],
+                         const typename TLanes<W>::V dp[2][2],
+                         const typename TLanes<W>::V dl[2][2], double rmax,
+                         typename TLanes<W>::V acc[7]) {
+  typedef typename TLanes<W>::V V;
+  const double sgn = f == 0 ? 1 : -1;
+  // components past 40 / zx in every lane are skipped (familyLanes)
+  const V lim = zx > 0 ? 40 / zx : V{} + __builtin_inf();
+  const double lmax = TLanes<W>::hmax(lim);
+  int jn = 0;
+  while (jn < in.n && in.k[jn] <= lmax) jn++;
+  if (jn == 0) return;
+  V wr[2], wi[2];
+  for (int c = 0; c < 2; c++) {
+    const V X = dp[c][0] + in.lgm * (dl[c][0] - dp[c][0]);
+    const V Y = dp[c][1] + in.lgm * (dl[c][1] - dp[c][1]);
+    wr[c] = sgn * dz[c];
+    wi[c] = in.ldx * X + in.ldy * Y;
+  }
+  V C[kNMax][6];
+  seriesCoefs<V, MOM>(wr, wi, termsFrom(1, in.k[jn - 1] * rmax, kSeriesRv), C);
+  // (sums in locals: acc in memory would chain every component's adds
+  // through a store and a load)
+  V a[7];
+  for (int i = 0; i < 7; i++) a[i] = acc[i];
+  int N = 1;
+  for (int j = 0; j < jn; j += W) {
+    V er[W], ei[W];
+    const bool block = j + W <= in.n;
+    if (block) laneEBlock<W>(in, f, j, e0, er, ei);
+    for (int i = 0; i < W && j + i < jn; i++) {
+      const int c = j + i;
+      V S[2], T[6] = {};
+      N = termsFrom(N, in.k[c] * rmax, kSeriesRv);
+      hornerSums<V, MOM>(C, N, in.k[c], S, T);
+      if (block) {
+        laneAddE<W, MOM>(in, f, c, er[i], ei[i], in.k[c] <= lim, S, T, a);
+      } else {
+        laneAdd<W, MOM>(in, f, c, e0, in.k[c] <= lim, S, T, a);
+      }
+    }
+  }
+  for (int i = 0; i < 7; i++) acc[i] = a[i];
 }
 
 // the pressure and wave integrals of W lanes' pieces (corners p relative
@@ -195,8 +275,12 @@ static void laneIntegrals(const TriIn* in, const typename TLanes<W>::V p[3][3],
   V acc[7] = {};
   for (int f = 0; f < (in->finite ? 2 : 1); f++) {
     const V zx = f == 0 ? -zmax : zmin + 2 * in->depth;
-    if (in->linear) {
+    if (in->linear && in->lc) {
+      familyShared<W, true>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+    } else if (in->linear) {
       familyLanes<W, true>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+    } else if (in->lc) {
+      familyShared<W, false>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
     } else {
       familyLanes<W, false>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
     }

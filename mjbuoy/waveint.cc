@@ -86,6 +86,15 @@ void WaveTab::fill(const Sea& sea, const WaveNow* w) {
   });
   ident = true;
   for (int j = 0; j < n; j++) ident = ident && perm[j] == j;
+  // (directions compared exactly: a spectrum's long-crested components
+  // share the one cos and sin)
+  lc = n >= 2;
+  for (int j = 1; j < n && lc; j++) {
+    lc = w[j].dx == w[0].dx && w[j].dy == w[0].dy && (j < sea.ng) == (0 < sea.ng);
+  }
+  ldx = n > 0 ? w[0].dx : 0;
+  ldy = n > 0 ? w[0].dy : 0;
+  lgm = 0 < sea.ng ? 1 : 0;
   for (int j = 0; j < n; j++) {
     const WaveNow& c = w[perm[j]];
     k[j] = c.k;

@@ -33,6 +33,11 @@ struct WaveTab {
   std::vector<int> perm;                // sorted index -> WaveNow index
   bool ident = false;                   // perm is the identity (already ascending)
   std::vector<double> k, kdx, kdy, gm;  // k [rad/m], k D, 1 if Gerstner else 0
+  // long-crested: two or more components, all of one kind (gm 0 or 1)
+  // along one direction D = (dx, dy), so a piece's corner differences are
+  // k times one pair for all of them (trivec_kern.h familyShared)
+  bool lc = false;
+  double ldx = 0, ldy = 0, lgm = 0;
   // weights of Re(I) in the pressure [m], in the horizontal velocity along
   // x and y [m/s] and of Im(I) in the vertical velocity [m/s]; [1]: the
   // finite-depth second exponent

@@ -127,6 +127,19 @@ TEST(TriVec, LanesMatchTheScalarTriangles) {
       "<numeric name=\"mjbuoy.wave.a\" data=\"0.3 12 20 0 0.6\"/>"
       "<numeric name=\"mjbuoy.wave.b\" data=\"0.1 5 -50 40 0.5\"/>"
       "<numeric name=\"mjbuoy.airy.c\" data=\"0.1 8 -120 10\"/>";
+  // long-crested: every component along one direction, so the lanes share
+  // one series per piece among them (trivec_kern.h familyShared); a deep
+  // and a 3 m JONSWAP (two exponent families) and two Gerstner components
+  const std::string longcrested =
+      "<text name=\"mjbuoy.spectrum.sea.type\" data=\"jonswap\"/>"
+      "<numeric name=\"mjbuoy.spectrum.sea.hs\" data=\"0.6\"/>"
+      "<numeric name=\"mjbuoy.spectrum.sea.tp\" data=\"5\"/>"
+      "<numeric name=\"mjbuoy.spectrum.sea.components\" data=\"64\"/>"
+      "<numeric name=\"mjbuoy.spectrum.sea.direction\" data=\"20\"/>";
+  const std::string lcshallow = longcrested + "<numeric name=\"mjbuoy.sea.depth\" data=\"3\"/>";
+  const std::string lcgerstner =
+      "<numeric name=\"mjbuoy.wave.a\" data=\"0.3 12 20 0 0.6\"/>"
+      "<numeric name=\"mjbuoy.wave.b\" data=\"0.1 5 20 40 0.5\"/>";
   const std::string swell = "<numeric name=\"mjbuoy.wave.a\" data=\"0.3 20 20 0 0.6\"/>";
   const std::string expo =
       "<numeric name=\"mjbuoy.hull.drag\" data=\"100 400 1\"/>"
@@ -135,6 +148,10 @@ TEST(TriVec, LanesMatchTheScalarTriangles) {
   const Case cases[] = {{"steep Gerstner (Q 1, fold 0.94), linear", steep, "linear"},
                         {"steep Gerstner, kerner", steep, "kerner"},
                         {"JONSWAP 64, linear", jonswap, "linear"},
+                        {"long-crested JONSWAP 64, linear", longcrested, "linear"},
+                        {"long-crested JONSWAP 64, kerner", longcrested, "kerner"},
+                        {"long-crested JONSWAP 64, 3 m deep, linear", lcshallow, "linear"},
+                        {"2 Gerstner along one direction, linear", lcgerstner, "linear"},
                         {"finite depth 3 m, 2 Gerstner + Airy, linear", shallow, "linear"},
                         {"flat", "", "linear"},
                         {"swell, drag exponent 1, suction 2, slamming power 1",
