@@ -169,7 +169,7 @@ void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
     mjb::radImmersion(b->b.rad, s->part.data() + 6 * m->nbody * mjbPART_PRESSURE, s->bad.data(),
                       s->badPart.data() + mjbPART_PRESSURE, mjbNPART, sea.rho * sea.g, &s->rad);
   }
-  mjb::radiationStep(b->b.rad, m, d, &s->rad, b->b.cfg.sea, &s->notices);
+  mjb::radiationStep(b->b.rad, m, d, &s->rad, b->b.cfg.sea, &s->notices, b->b.pool);
   // diffraction excitation of the same bodies, per wave component (diffract.cc)
   const mjb::Diffraction& df = b->b.diff;
   if (!df.db.empty()) {

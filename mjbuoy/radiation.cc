@@ -432,6 +432,11 @@ void radMakeState(const Radiation& r, RadState* s) {
   s->imm.assign(r.rb.size(), 1.0);
   s->sstep.assign(2 * r.rb.size(), 1.0);
   s->mdiag.assign(r.rb.size(), NAN);
+  s->poff.assign(r.rb.size() + 1, 0);
+  for (size_t ib = 0; ib < r.rb.size(); ib++) {
+    s->poff[ib + 1] = s->poff[ib] + int(r.rb[ib].pair.size());
+  }
+  s->pre.assign(3 * s->poff.back(), 0);
   radRestart(s);
 }
 

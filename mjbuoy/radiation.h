@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "pool.h"
+
 #include <mujoco/mujoco.h>
 
 #include "hydrocoef.h"
@@ -100,6 +102,12 @@ struct RadState {
   // with mstamp it tells a qM that holds A_inf from one mj_crb rebuilt
   // (mj_resetData then mj_forward gives the same counts again)
   std::vector<double> mdiag;
+  // the convolution's parts of this step that do not read the newest
+  // sample, 3 per pair (radstep.cc pairParts), computed before the per-body
+  // loop, on the cpu backend's threads when there is enough of it; poff:
+  // each body's first pair
+  std::vector<double> pre;
+  std::vector<int> poff;
 };
 
 // K_ij(k dt), k = 0..n-1, from B_ij of c: K(t) = (2/pi) int_0^inf B cos(w t) dw
@@ -159,8 +167,11 @@ void radImmersion(const Radiation& r, const double* part, const char* bad, const
 // velocity relative to the sea's uniform current, the Kirchhoff terms on
 // the velocity relative to the water at the body's COM (current and wave
 // orbital velocity; docs/physics.md section 14, "Kirchhoff terms in waves")
+// pool: the cpu backend's workers (nullptr: none), which share the
+// memory convolutions' pairs when they are long enough to repay it; the
+// result does not depend on it
 void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s, const Sea& sea,
-                   std::string* notices);
+                   std::string* notices, Pool* pool = nullptr);
 
 // give body (a MuJoCo body id) of an attached model radiation from c, with
 // a memory of tmem seconds (0: automatic, memoryLength; < 0: none). Call

@@ -59,24 +59,92 @@ double dotBack(const double* Kr, int nk, int a, const double* x, int i, int n) {
   return vDot(n, Kr + nk - a - n, x + i - n + 1);
 }
 
+// the parts of pair p's sum over n >= 2 samples that do not read the
+// newest one (at head): the oldest sample's trapezoid product q[0], the
+// samples 1 .. k1 back without wrap q[1] and the rest q[2], k1 = min(n -
+// 2, head); all of the sum's work, done before the newest sample exists
+void pairParts(const RadBody& rb, size_t p, const double* hist, int nh, int head, int n,
+               double q[3]) {
+  const double* Kr = rb.Kr->data() + p * rb.nk;  // K[k] = Kr[nk - 1 - k]
+  const double* h = hist + nh * (rb.pair[p] % 6);
+  const int k1 = std::min(n - 2, head);
+  q[0] = Kr[rb.nk - n] * h[(head - n + 1 + nh) % nh];
+  q[1] = dotBack(Kr, rb.nk, 1, h, head - 1, k1);
+  q[2] = dotBack(Kr, rb.nk, k1 + 1, h, head - k1 - 1 + nh, n - 2 - k1);
+}
+
+// rb's memory wrench f from its pairs' parts q (3 each, pairParts) and the
+// newest samples: f_i -= dt (K(0) nu_j(t) / 2 + q[0] / 2 + q[1] + q[2])
+void memoryFrom(const RadBody& rb, const double* hist, int nh, int head, int n, double dt,
+                const double* q, double* f) {
+  std::memset(f, 0, 6 * sizeof(double));
+  if (n < 2) return;
+  for (size_t p = 0; p < rb.pair.size(); p++) {
+    const double* Kr = rb.Kr->data() + p * rb.nk;
+    const double* h = hist + nh * (rb.pair[p] % 6);
+    double sum = 0.5 * (Kr[rb.nk - 1] * h[head] + q[3 * p]);
+    sum += q[3 * p + 1];
+    sum += q[3 * p + 2];
+    f[rb.pair[p] / 6] -= dt * sum;
+  }
+}
+
+// samples a convolution body uses now (0: none, or state-space memory)
+int convSamples(const RadBody& rb, int count) {
+  return rb.nk && !rb.ss.size() ? std::min(count, rb.nk) : 0;
+}
+
+// the pairs' parts (RadState pre) of chunk c of nc of all bodies' pairs
+struct PreJob {
+  const Radiation* r;
+  RadState* s;
+  int nc;
+};
+void preChunk(void* arg, int c, int) {
+  const PreJob& j = *static_cast<const PreJob*>(arg);
+  const RadState& s = *j.s;
+  const int np = s.poff.back();
+  const int g0 = int(long(np) * c / j.nc), g1 = int(long(np) * (c + 1) / j.nc);
+  size_t ib = std::upper_bound(s.poff.begin(), s.poff.end(), g0) - s.poff.begin() - 1;
+  for (int g = g0; g < g1; g++) {
+    while (g >= s.poff[ib + 1]) ib++;
+    const RadBody& rb = j.r->rb[ib];
+    const int n = convSamples(rb, s.count);
+    if (n < 2) continue;
+    pairParts(rb, g - s.poff[ib], s.hist.data() + 6 * j.r->nh * ib, j.r->nh, s.head, n,
+              j.s->pre.data() + 3 * g);
+  }
+}
+
+// multiply-adds of the convolutions below which the pool's hand-over
+// (about a microsecond with its workers polling) is not worth it
+const long kPoolWork = 16384;
+
+// every convolution body's pairParts for this step, shared among the
+// pool's threads when there is enough work; the same values either way
+void preParts(const Radiation& r, RadState* s, Pool* pool) {
+  long work = 0;
+  for (size_t ib = 0; ib < r.rb.size(); ib++) {
+    work += long(convSamples(r.rb[ib], s->count)) * long(r.rb[ib].pair.size());
+  }
+  if (work == 0) return;
+  PreJob j{&r, s, std::min(s->poff.back(), 16)};
+  if (pool && work >= kPoolWork && poolRun(pool, preChunk, &j, j.nc)) return;
+  j.nc = 1;
+  preChunk(&j, 0, 0);
+}
+
 }  // namespace
 
 // the body at rest before the first sample (radiation.h)
 void radMemory(const RadBody& rb, const double* hist, int nh, int head, int count, double dt,
                double* f) {
-  std::memset(f, 0, 6 * sizeof(double));
   const int n = std::min(count, rb.nk);
-  if (n < 2) return;
-  const int k1 = std::min(n - 2, head);  // k <= k1: no wrap
-  for (size_t p = 0; p < rb.pair.size(); p++) {
-    const double* Kr = rb.Kr->data() + p * rb.nk;  // K[k] = Kr[nk - 1 - k]
-    const int i = rb.pair[p] / 6;
-    const double* h = hist + nh * (rb.pair[p] % 6);
-    double sum = 0.5 * (Kr[rb.nk - 1] * h[head] + Kr[rb.nk - n] * h[(head - n + 1 + nh) % nh]);
-    sum += dotBack(Kr, rb.nk, 1, h, head - 1, k1);
-    sum += dotBack(Kr, rb.nk, k1 + 1, h, head - k1 - 1 + nh, n - 2 - k1);
-    f[i] -= dt * sum;
+  double q[3 * 36];  // (at most 36 pairs)
+  for (size_t p = 0; n >= 2 && p < rb.pair.size(); p++) {
+    pairParts(rb, p, hist, nh, head, n, q + 3 * p);
   }
+  memoryFrom(rb, hist, nh, head, n, dt, q, f);
 }
 
 namespace {
@@ -187,7 +255,7 @@ void radImmersion(const Radiation& r, const double* part, const char* bad, const
 }
 
 void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s, const Sea& sea,
-                   std::string* notices) {
+                   std::string* notices, Pool* pool) {
   const double cur[3] = {sea.current[0], sea.current[1], 0};
   if (r.rb.empty()) return;
   const int tick = clock(m, d, s);
@@ -205,6 +273,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
   bool addM = pos != s->mstamp;
   for (size_t ib = 0; ib < r.rb.size() && !addM; ib++)
     addM = !(diagSum(m, d, r.rb[ib]) == s->mdiag[ib]);
+  if (tick != kMid) preParts(r, s, pool);
   for (size_t ib = 0; ib < r.rb.size(); ib++) {
     const RadBody& rb = r.rb[ib];
     const int n = rb.dof.size();
@@ -275,7 +344,8 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
       ssForce(rb.ss, st, r.dt, fm);
     } else if (rb.nk && tick != kMid) {
       for (int j = 0; j < 6; j++) hist[r.nh * j + s->head] = nu[j];
-      radMemory(rb, hist, r.nh, s->head, s->count, r.dt, fm);
+      memoryFrom(rb, hist, r.nh, s->head, convSamples(rb, s->count), r.dt,
+                 s->pre.data() + 3 * s->poff[ib], fm);
     }
     for (int j = 0; j < 6; j++) W[j] += si * fm[j];
 

@@ -113,10 +113,12 @@ TEST(RadMemory, ConvolutionIsTheTrapezoidSum) {
 
 // ---- identical hulls: one memory ----
 
-// n Wigley hulls (64 triangles), the same mass, at the given x [m]
-std::string fleet(const std::vector<double>& x) {
+// n Wigley hulls (64 triangles), the same mass, at the given x [m], on
+// the given cpu threads
+std::string fleet(const std::vector<double>& x, int threads = 1) {
   std::ostringstream s;
   s << "<mujoco><option timestep=\"0.002\"/><custom>"
+       "<numeric name=\"mjbuoy.threads\" data=\"" << threads << "\"/>"
        "<text name=\"mjbuoy.hulls\" data=\"h*\"/><text name=\"mjbuoy.radiation\" data=\"on\"/>"
        "<text name=\"mjbuoy.radiation.memorymodel\" data=\"convolution\"/>"
        "</custom><asset><mesh name=\"w\" file=\"" MJB_MODELS "/meshes/wigley_64.obj\"/></asset>"
@@ -174,6 +176,33 @@ TEST(RadMemory, IdenticalHullsShareOneMemory) {
     const double qa = all.d->qpos[14 + j], q1 = one.d->qpos[j];
     EXPECT_NEAR(qa - (j == 0 ? -81.7 : j == 1 ? 6 : 0), q1 - (j == 0 ? -81.7 : 0), 1e-9) << j;
   }
+}
+
+// the convolutions' pairs are shared among the cpu backend's threads once
+// a step holds enough of them (radstep.cc preParts: 16384 multiply-adds);
+// each pair's sum is the same function of the same history whoever
+// computes it, so 1 and 2 threads give the same bits, step after step
+// (docs/mjcf.md, mjbuoy.threads: the result does not depend on them)
+TEST(RadMemory, ThreadsShareTheConvolutionsWithTheSameBits) {
+  std::vector<double> x;
+  for (int i = 0; i < 12; i++) x.push_back(7.0 * (i % 4));
+  Scene one(fleet(x, 1)), two(fleet(x, 2));
+  ASSERT_TRUE(one.ok() && two.ok()) << one.err << two.err;
+  const mjb::Radiation& r = mjb::buoyOf(two.b)->rad;
+  long work = 0;
+  for (const mjb::RadBody& rb : r.rb) work += long(rb.pair.size()) * rb.nk;
+  ASSERT_GT(work, 2 * 16384) << "too little memory to reach the threads";
+  for (int k = 0; k < 400; k++) {
+    mj_step(one.m, one.d);
+    mj_step(two.m, two.d);
+  }
+  for (int i = 0; i < one.m->nq; i++) EXPECT_EQ(one.d->qpos[i], two.d->qpos[i]) << i;
+  for (int i = 0; i < one.m->nv; i++) {
+    EXPECT_EQ(one.d->qvel[i], two.d->qvel[i]) << i;
+    EXPECT_EQ(one.d->qfrc_passive[i], two.d->qfrc_passive[i]) << i;
+  }
+  // the boats moved, so the memory had something to sum
+  EXPECT_GT(std::fabs(one.d->qvel[2]), 1e-4);
 }
 
 }  // namespace
