@@ -164,6 +164,10 @@ static void familyLanes(const TriIn& in, int f, const double* const e0[W],
   }
 }
 
+// the most terms familyShared keeps per piece (27 serve k rho = kRMax at
+// 2^-kSeriesBitsV; more: familyLanes)
+enum { kShareTerms = 32 };
+
 // familyLanes for a long-crested sea (TriIn lc): every component's
 // corner differences are k times the same w_c = sgn dz_c + i D.(dx_c, or
 // the labels'), so the series' recurrences run once per piece, up to the
@@ -185,6 +189,11 @@ static void familyShared(const TriIn& in, int f, const double* const e0[W],
   int jn = 0;
   while (jn < in.n && in.k[jn] <= lmax) jn++;
   if (jn == 0) return;
+  const int nmax = termsFrom(1, in.k[jn - 1] * rmax, kSeriesRv);
+  if (nmax > kShareTerms) {
+    familyLanes<W, MOM>(in, f, e0, zx, dz, dp, dl, rmax, acc);
+    return;
+  }
   V wr[2], wi[2];
   for (int c = 0; c < 2; c++) {
     const V X = dp[c][0] + in.lgm * (dl[c][0] - dp[c][0]);
@@ -192,8 +201,8 @@ static void familyShared(const TriIn& in, int f, const double* const e0[W],
     wr[c] = sgn * dz[c];
     wi[c] = in.ldx * X + in.ldy * Y;
   }
-  V C[kNMax][6];
-  seriesCoefs<V, MOM>(wr, wi, termsFrom(1, in.k[jn - 1] * rmax, kSeriesRv), C);
+  V C[kShareTerms][6];
+  seriesCoefs<V, MOM>(wr, wi, nmax, C);
   // (sums in locals: acc in memory would chain every component's adds
   // through a store and a load)
   V a[7];
