@@ -14,8 +14,9 @@
 // k: the scalar path subdivides) or not finite goes back to the scalar
 // path whole. Only the rounding differs: FMA contraction, the order of sums,
 // the series' count of terms (cut at 2^-kSeriesBitsV of the first instead
-// of the scalar's 2^-54, waveker.h), and T_2 by the sum rule T_0 + T_1 +
-// T_2 = S (serieskern.h).
+// of the scalar's 2^-54, waveker.h), T_2 by the sum rule T_0 + T_1 +
+// T_2 = S (serieskern.h), and on a long-crested sea the powers of k applied
+// after the recurrences (familyShared).
 #ifndef MJBUOY_TRIVEC_KERN_H_
 #define MJBUOY_TRIVEC_KERN_H_
 
