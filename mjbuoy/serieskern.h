@@ -10,6 +10,23 @@
 namespace mjb {
 namespace {
 
+// a *= u, complex, (re, im) in vectors: the powers u2^m
+template <class V>
+__attribute__((always_inline)) inline void mulBy(V& ar, V& ai, V ur, V ui) {
+  const V t = ar * ur - ai * ui;
+  ai = ar * ui + ai * ur;
+  ar = t;
+}
+
+// a = a u + b, complex: one step of the h, g and f chains, grouped so each
+// part is two dependent FMAs (the chain's latency)
+template <class V>
+__attribute__((always_inline)) inline void mulAdd(V& ar, V& ai, V ur, V ui, V br, V bi) {
+  const V t = ar * ur + (br - ai * ui);
+  ai = ar * ui + (bi + ai * ur);
+  ar = t;
+}
+
 // for corner differences u_c = ur[c] + i ui[c] (c = 0, 1) and N terms:
 // S = sum_m kInvF2[m] h_m and, when MOM, T = sum_m kInvF3[m] (h_m, g_m, f_m)
 // with h_m = u1 h_(m-1) + u2^m, g_m = u1 g_(m-1) + h_m, f_m = u2 f_(m-1) + h_m;
@@ -28,29 +45,20 @@ __attribute__((always_inline)) inline void seriesLoop(const V ur[2], const V ui[
   V Sr = V{} + s0, Si = V{}, T0r = V{} + t0, T0i = V{};
   V T1r = T0r, T1i = V{}, T2r = T0r, T2i = V{};
   for (int m = 1; m < N; m++) {
-    V t = pr * ur[1] - pi * ui[1];
-    pi = pr * ui[1] + pi * ur[1];
-    pr = t;
-    // (grouped so each is two dependent FMAs: the chain's latency)
-    t = hr * ur[0] + (pr - hi * ui[0]);
-    hi = hr * ui[0] + (pi + hi * ur[0]);
-    hr = t;
+    mulBy(pr, pi, ur[1], ui[1]);
+    mulAdd(hr, hi, ur[0], ui[0], pr, pi);
     const double c2 = kInvF2[m];
     Sr += c2 * hr;
     Si += c2 * hi;
     if (!MOM) continue;
-    t = gr * ur[0] + (hr - gi * ui[0]);
-    gi = gr * ui[0] + (hi + gi * ur[0]);
-    gr = t;
+    mulAdd(gr, gi, ur[0], ui[0], hr, hi);
     const double c3 = kInvF3[m];
     T0r += c3 * hr;
     T0i += c3 * hi;
     T1r += c3 * gr;
     T1i += c3 * gi;
     if (ID) continue;
-    t = fr * ur[1] + (hr - fi * ui[1]);
-    fi = fr * ui[1] + (hi + fi * ur[1]);
-    fr = t;
+    mulAdd(fr, fi, ur[1], ui[1], hr, hi);
     T2r += c3 * fr;
     T2i += c3 * fi;
   }
@@ -87,12 +95,8 @@ __attribute__((always_inline)) inline void seriesPair(const V ur[2][2], const V 
   for (int m = 1; m < N; m++) {
     const double c2 = kInvF2[m];
     for (int a = 0; a < 2; a++) {
-      V t = pr[a] * ur[a][1] - pi[a] * ui[a][1];
-      pi[a] = pr[a] * ui[a][1] + pi[a] * ur[a][1];
-      pr[a] = t;
-      t = hr[a] * ur[a][0] + (pr[a] - hi[a] * ui[a][0]);
-      hi[a] = hr[a] * ui[a][0] + (pi[a] + hi[a] * ur[a][0]);
-      hr[a] = t;
+      mulBy(pr[a], pi[a], ur[a][1], ui[a][1]);
+      mulAdd(hr[a], hi[a], ur[a][0], ui[a][0], pr[a], pi[a]);
       Sr[a] += c2 * hr[a];
       Si[a] += c2 * hi[a];
     }
@@ -108,25 +112,19 @@ __attribute__((always_inline)) inline void seriesPair(const V ur[2][2], const V 
 // of a long-crested sea: h_m is homogeneous of degree m, h_m(k w1, k w2) =
 // k^m h_m(w1, w2) (and g_m likewise), so C[m] = (kInvF2[m] h_m, and with
 // MOM kInvF3[m] h_m, kInvF3[m] g_m) as (re, im) pairs serve every k
-// (docs/physics.md "Dynamic part in closed form"); seriesLoop's
-// recurrences and groupings, C[0] unused
+// (docs/physics.md "Dynamic part in closed form"); seriesLoop's steps
+// (mulBy, mulAdd), C[0] unused
 template <class V, bool MOM>
 __attribute__((always_inline)) inline void seriesCoefs(const V wr[2], const V wi[2], int N,
                                                        V (*C)[6]) {
   V pr = V{} + 1, pi = V{}, hr = pr, hi = pi, gr = pr, gi = pi;
   for (int m = 1; m < N; m++) {
-    V t = pr * wr[1] - pi * wi[1];
-    pi = pr * wi[1] + pi * wr[1];
-    pr = t;
-    t = hr * wr[0] + (pr - hi * wi[0]);
-    hi = hr * wi[0] + (pi + hi * wr[0]);
-    hr = t;
+    mulBy(pr, pi, wr[1], wi[1]);
+    mulAdd(hr, hi, wr[0], wi[0], pr, pi);
     C[m][0] = kInvF2[m] * hr;
     C[m][1] = kInvF2[m] * hi;
     if (!MOM) continue;
-    t = gr * wr[0] + (hr - gi * wi[0]);
-    gi = gr * wi[0] + (hi + gi * wr[0]);
-    gr = t;
+    mulAdd(gr, gi, wr[0], wi[0], hr, hi);
     C[m][2] = kInvF3[m] * hr;
     C[m][3] = kInvF3[m] * hi;
     C[m][4] = kInvF3[m] * gr;
