@@ -60,7 +60,7 @@ file(WRITE ${OUT} "\
 // generated from shaders/ by cmake/embed_shaders.cmake at build time: do not edit
 #include <cstring>
 
-#include \"glprog.h\"
+#include \"gl/glprog.h\"
 
 namespace mjb {
 namespace {

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "buoy.h"
-#include "sea.h"
+#include "api/buoy.h"
+#include "sea/sea.h"
 #include "testutil.h"
 
 namespace mjbt {

@@ -12,8 +12,8 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
-#include "buoy.h"
-#include "diffract.h"
+#include "api/buoy.h"
+#include "radiation/diffract.h"
 #include "hemisphere.h"
 #include "testutil.h"
 

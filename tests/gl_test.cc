@@ -18,9 +18,9 @@
 #include <gtest/gtest.h>
 #include <mujoco/mujoco.h>
 
-#include "egl.h"
-#include "glprog.h"
-#include "gltimer.h"
+#include "gl/egl.h"
+#include "gl/glprog.h"
+#include "gl/gltimer.h"
 #include "shared.h"
 
 namespace mjb {

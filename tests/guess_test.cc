@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "buoy.h"
+#include "api/buoy.h"
 #include "testutil.h"
 
 namespace mjbt {

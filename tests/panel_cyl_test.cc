@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "panel.h"
-#include "panelmesh.h"
+#include "radiation/panel.h"
+#include "radiation/panelmesh.h"
 
 namespace {
 

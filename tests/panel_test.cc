@@ -16,14 +16,14 @@
 
 #include <Eigen/Dense>
 
-#include "green.h"
-#include "greentab.h"
-#include "panel.h"
-#include "panellid.h"
-#include "panelmesh.h"
-#include "radiation.h"
-#include "rankine.h"
-#include "diffract.h"
+#include "radiation/green.h"
+#include "radiation/greentab.h"
+#include "radiation/panel.h"
+#include "radiation/panellid.h"
+#include "radiation/panelmesh.h"
+#include "radiation/radiation.h"
+#include "radiation/rankine.h"
+#include "radiation/diffract.h"
 
 namespace {
 

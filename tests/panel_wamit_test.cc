@@ -13,8 +13,8 @@
 #include <utility>
 #include <vector>
 
-#include "panel.h"
-#include "panelmesh.h"
+#include "radiation/panel.h"
+#include "radiation/panelmesh.h"
 
 namespace {
 

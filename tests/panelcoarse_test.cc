@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "hemisphere.h"
-#include "panel.h"
-#include "panelcoarse.h"
-#include "panelmesh.h"
+#include "radiation/panel.h"
+#include "radiation/panelcoarse.h"
+#include "radiation/panelmesh.h"
 
 namespace {
 

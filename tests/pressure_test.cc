@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "pressure.h"
+#include "hull/pressure.h"
 
 namespace mjb {
 namespace {

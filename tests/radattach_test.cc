@@ -11,17 +11,17 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
-#include "buoy.h"
-#include "coefpsd.h"
-#include "coefxform.h"
-#include "green.h"
+#include "api/buoy.h"
+#include "radiation/coefpsd.h"
+#include "radiation/coefxform.h"
+#include "radiation/green.h"
 #include "hemisphere.h"
-#include "config.h"
-#include "eqdraft.h"
+#include "api/config.h"
+#include "hull/eqdraft.h"
 #include "floatbox.h"
-#include "hull.h"
-#include "panelmesh.h"
-#include "radattach.h"
+#include "hull/hull.h"
+#include "radiation/panelmesh.h"
+#include "radiation/radattach.h"
 #include "testutil.h"
 
 namespace {

@@ -14,8 +14,8 @@
 
 #include <gtest/gtest.h>
 
-#include "buoy.h"
-#include "radcache.h"
+#include "api/buoy.h"
+#include "radiation/radcache.h"
 #include "testutil.h"
 
 namespace {

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "buoy.h"
+#include "api/buoy.h"
 #include "floatbox.h"
 #include "testutil.h"
 

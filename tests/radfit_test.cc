@@ -9,10 +9,10 @@
 
 #include <gtest/gtest.h>
 
-#include "buoy.h"
+#include "api/buoy.h"
 #include "hemisphere.h"
-#include "radfit.h"
-#include "radiation.h"
+#include "radiation/radfit.h"
+#include "radiation/radiation.h"
 #include "testutil.h"
 
 namespace mjbt {

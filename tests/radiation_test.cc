@@ -7,9 +7,9 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
-#include "buoy.h"
-#include "hydrocoef.h"
-#include "radiation.h"
+#include "api/buoy.h"
+#include "radiation/hydrocoef.h"
+#include "radiation/radiation.h"
 #include "testutil.h"
 
 namespace mjbt {

@@ -11,10 +11,10 @@
 
 #include <gtest/gtest.h>
 
-#include "buoy.h"
-#include "radiation.h"
+#include "api/buoy.h"
+#include "radiation/radiation.h"
 #include "testutil.h"
-#include "vmath.h"
+#include "util/vmath.h"
 
 namespace {
 

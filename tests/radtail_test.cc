@@ -10,11 +10,11 @@
 
 #include <gtest/gtest.h>
 
-#include "buoy.h"
+#include "api/buoy.h"
 #include "floatbox.h"
-#include "radattach.h"
-#include "radiation.h"
-#include "radtail.h"
+#include "radiation/radattach.h"
+#include "radiation/radiation.h"
+#include "radiation/radtail.h"
 #include "testutil.h"
 
 namespace mjbt {

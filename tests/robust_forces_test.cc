@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "buoy.h"
-#include "hydrocoef.h"
-#include "radiation.h"
-#include "sea.h"
+#include "api/buoy.h"
+#include "radiation/hydrocoef.h"
+#include "radiation/radiation.h"
+#include "sea/sea.h"
 #include "testutil.h"
 
 namespace mjbt {

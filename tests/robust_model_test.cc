@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "radconfig.h"
+#include "api/radconfig.h"
 #include "testutil.h"
 
 namespace mjbt {

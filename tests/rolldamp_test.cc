@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "buoy.h"
-#include "hydrocoef.h"
-#include "radiation.h"
+#include "api/buoy.h"
+#include "radiation/hydrocoef.h"
+#include "radiation/radiation.h"
 #include "testutil.h"
 
 namespace mjbt {

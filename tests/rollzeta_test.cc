@@ -11,9 +11,9 @@
 
 #include <gtest/gtest.h>
 
-#include "buoy.h"
-#include "hydrostatic.h"
-#include "panelmesh.h"
+#include "api/buoy.h"
+#include "radiation/hydrostatic.h"
+#include "radiation/panelmesh.h"
 #include "testutil.h"
 
 namespace mjbt {

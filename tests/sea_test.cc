@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sea.h"
+#include "sea/sea.h"
 #include "testutil.h"
 
 namespace mjbt {

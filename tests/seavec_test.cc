@@ -12,13 +12,13 @@
 
 #include <gtest/gtest.h>
 
-#include "buoy.h"
-#include "sea.h"
-#include "seavec.h"
+#include "api/buoy.h"
+#include "sea/sea.h"
+#include "sea/seavec.h"
 #include "simdlevels.h"
-#include "sincoskern.h"
+#include "util/sincoskern.h"
 #include "testutil.h"
-#include "vmath.h"
+#include "util/vmath.h"
 
 namespace mjbt {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "vmath.h"
+#include "util/vmath.h"
 
 namespace mjbt {
 

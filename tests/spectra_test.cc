@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "spectra.h"
+#include "sea/spectra.h"
 #include "testutil.h"
 
 namespace {

@@ -13,8 +13,8 @@
 
 #include "simdlevels.h"
 #include "testutil.h"
-#include "trisort.h"
-#include "vmath.h"
+#include "cpu/trisort.h"
+#include "util/vmath.h"
 
 namespace mjbt {
 namespace {

@@ -13,11 +13,11 @@
 
 #include <gtest/gtest.h>
 
-#include "sea.h"
+#include "sea/sea.h"
 #include "testutil.h"
-#include "vmath.h"
-#include "waveint.h"
-#include "wavepress.h"
+#include "util/vmath.h"
+#include "sea/waveint.h"
+#include "hull/wavepress.h"
 
 namespace mjbt {
 namespace {

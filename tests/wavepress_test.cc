@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "sea.h"
+#include "sea/sea.h"
 #include "testutil.h"
-#include "wavepress.h"
+#include "hull/wavepress.h"
 
 namespace mjbt {
 namespace {

@@ -28,7 +28,7 @@
 #include <mujoco/mujoco.h>
 
 #include "mjbuoy.h"
-#include "radconfig.h"
+#include "api/radconfig.h"
 
 namespace {
 

@@ -15,9 +15,9 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
-#include "hydro.h"
-#include "pressure.h"
-#include "sea.h"
+#include "hull/hydro.h"
+#include "hull/pressure.h"
+#include "sea/sea.h"
 
 namespace {
 

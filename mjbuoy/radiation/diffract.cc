@@ -1,0 +1,178 @@
+// diffraction excitation (diffract.h, docs/physics.md section 15)
+#include "radiation/diffract.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+namespace mjb {
+
+std::string setDiffraction(int body, const double R0[9], const HydroCoef& c, size_t wcap,
+                           Diffraction* df) {
+  const int nw = c.nw(), nh = c.nh();
+  const size_t nx = 6 * (size_t)nw * nh;
+  if (nw < 1 || nh != kDiffHeadings || c.Xre.size() != nx || c.Xim.size() != nx ||
+      c.FKre.size() != nx || c.FKim.size() != nx) {
+    return "mjbuoy: diffraction: the exciting-force table needs " +
+           std::to_string(kDiffHeadings) + " headings and 6 values per frequency and heading";
+  }
+  for (int h = 0; h < nh; h++) {
+    if (std::fabs(c.heading[h] - 2 * M_PI * h / nh) > 1e-12) {
+      return "mjbuoy: diffraction: the headings must be uniform from 0";
+    }
+  }
+  DiffBody b;
+  b.body = body;
+  std::memcpy(b.R0, R0, sizeof(b.R0));
+  b.c = c;
+  b.D.resize(2 * nx);
+  for (size_t i = 0; i < nx; i++) {
+    b.D[2 * i] = c.Xre[i] - c.FKre[i];
+    b.D[2 * i + 1] = c.Xim[i] - c.FKim[i];
+    if (!std::isfinite(b.D[2 * i]) || !std::isfinite(b.D[2 * i + 1])) {
+      return "mjbuoy: diffraction: the exciting force is not finite";
+    }
+  }
+  b.iw.reserve(wcap);
+  b.tw.reserve(wcap);
+  for (DiffBody& o : df->db) {
+    if (o.body == body) {
+      o = std::move(b);
+      return "";
+    }
+  }
+  df->db.push_back(std::move(b));
+  return "";
+}
+
+void diffRow(const std::vector<double>& omega, double w, int* iw, double* tw) {
+  const int n = omega.size();
+  if (!(w > 0) || n == 0 || w > omega[n - 1]) {
+    *iw = -2;  // beyond the table (or a still component): no force
+    *tw = 0;
+  } else if (w < omega[0]) {
+    *iw = -1;  // D -> 0 as omega -> 0: linear from 0 to the first row
+    *tw = w / omega[0];
+  } else {
+    int i = 0;
+    while (i < n - 2 && omega[i + 1] <= w) i++;
+    *iw = i;
+    *tw = n > 1 ? (w - omega[i]) / (omega[i + 1] - omega[i]) : 0;
+  }
+}
+
+void diffSea(const Sea& sea, Diffraction* df) {
+  const size_t n = sea.waves.size();
+  for (DiffBody& b : df->db) {
+    b.iw.resize(n);  // within the capacity reserved at attach
+    b.tw.resize(n);
+    for (size_t j = 0; j < n; j++) {
+      const Wave& w = sea.waves[j];
+      if (w.amp == 0) {
+        b.iw[j] = -2;
+        b.tw[j] = 0;
+      } else {
+        diffRow(b.c.omega, w.omega, &b.iw[j], &b.tw[j]);
+      }
+    }
+  }
+}
+
+void headingWeights(double beta, int n, int idx[4], double w[4]) {
+  double u = beta * n / (2 * M_PI);
+  u -= n * std::floor(u / n);  // [0, n)
+  int i = (int)u;
+  if (i >= n) i = n - 1;  // u rounded up to n
+  const double s = u - i, s2 = s * s, s3 = s2 * s;
+  w[0] = 0.5 * (-s3 + 2 * s2 - s);
+  w[1] = 0.5 * (3 * s3 - 5 * s2 + 2);
+  w[2] = 0.5 * (-3 * s3 + 4 * s2 + s);
+  w[3] = 0.5 * (s3 - s2);
+  for (int k = 0; k < 4; k++) idx[k] = (i - 1 + k + n) % n;
+}
+
+void diffAt(const DiffBody& b, int iw, double tw, double beta, double re[6], double im[6]) {
+  for (int k = 0; k < 6; k++) re[k] = im[k] = 0;
+  if (iw == -2) return;
+  const int nh = b.c.nh();
+  int idx[4];
+  double hw[4];
+  headingWeights(beta, nh, idx, hw);
+  // rows r0 (weight 1 - tw) and r0 + 1 (tw); below the table only row 0,
+  // weighted tw (D linear from 0 at omega = 0)
+  const int r0 = iw < 0 ? 0 : iw;
+  const double w0 = iw < 0 ? tw : 1 - tw, w1 = iw < 0 ? 0 : tw;
+  for (int r = 0; r < 2; r++) {
+    const double wr = r ? w1 : w0;
+    if (wr == 0) continue;
+    for (int k = 0; k < 4; k++) {
+      const double* p = &b.D[2 * 6 * ((size_t)(r0 + r) * nh + idx[k])];
+      const double f = wr * hw[k];
+      for (int dof = 0; dof < 6; dof++) {
+        re[dof] += f * p[2 * dof];
+        im[dof] += f * p[2 * dof + 1];
+      }
+    }
+  }
+}
+
+// the wrench of one body in the frame turned by psi from the table's, at t
+static void bodyWrench(const DiffBody& b, const Sea& sea, const double x[3], double psi,
+                       double t, double F[6]) {
+  for (int k = 0; k < 6; k++) F[k] = 0;
+  const size_t n = sea.waves.size() < b.iw.size() ? sea.waves.size() : b.iw.size();
+  for (size_t j = 0; j < n; j++) {
+    if (b.iw[j] == -2) continue;
+    const Wave& w = sea.waves[j];
+    double re[6], im[6];
+    diffAt(b, b.iw[j], b.tw[j], w.dir * (M_PI / 180) - psi, re, im);
+    // a e^{-i omega t}, a = A e^{i (k D.x + phi)}: the component's complex
+    // amplitude at the COM (the sea's phase, docs/physics.md section 11)
+    const double ph = w.k * (w.dx * x[0] + w.dy * x[1]) + w.ph - w.omega * t;
+    const double c = w.amp * std::cos(ph), s = w.amp * std::sin(ph);
+    for (int k = 0; k < 6; k++) F[k] += re[k] * c - im[k] * s;
+  }
+}
+
+void diffractionStep(const Diffraction& df, const Sea& sea, const mjModel* m, const mjData* d,
+                     double* out, char* told, std::string* notices) {
+  for (size_t ib = 0; ib < df.db.size(); ib++) {
+    const DiffBody& b = df.db[ib];
+    double* w = out + 6 * ib;
+    const mjtNum* R = d->xmat + 9 * b.body;
+    // Q = R R0^T: world from the table's axes, the body's turn since qpos0
+    double Q[9];
+    for (int i = 0; i < 3; i++) {
+      for (int j = 0; j < 3; j++) {
+        Q[3 * i + j] = R[3 * i] * b.R0[3 * j] + R[3 * i + 1] * b.R0[3 * j + 1] +
+                       R[3 * i + 2] * b.R0[3 * j + 2];
+      }
+    }
+    // the waves' heading in the table's axes: turned by Q's yaw
+    const double psi = std::atan2(Q[3], Q[0]);
+    double F[6];
+    bodyWrench(b, sea, d->xipos + 3 * b.body, psi, d->time, F);
+    // the wrench turns with the body, roll and pitch too, as the radiation
+    // force does (body axes, radstep.cc): the two nearly cancel in long
+    // waves, and turning one alone leaves a mean surge force of second
+    // order against the waves (docs/physics.md section 15, "Frame")
+    mju_mulMatVec(w, Q, F, 3, 3);
+    mju_mulMatVec(w + 3, Q, F + 3, 3, 3);
+    bool fin = true;
+    for (int k = 0; k < 6; k++) fin = fin && std::isfinite(w[k]);
+    if (!fin) {
+      for (int k = 0; k < 6; k++) w[k] = 0;
+      if (!told[ib]) {
+        told[ib] = 1;
+        char line[256];
+        std::snprintf(line, sizeof(line),
+                      "body \"%s\": diffraction force not finite at t = %g s; mjbuoy leaves it "
+                      "out\n", m->names + m->name_bodyadr[b.body], d->time);
+        // within the capacity reserved in makeState: no allocation while stepping
+        if (notices->size() + std::strlen(line) < notices->capacity()) *notices += line;
+      }
+    }
+  }
+}
+
+}  // namespace mjb

@@ -1,0 +1,66 @@
+// diffraction excitation (docs/physics.md section 15): per wave component
+// of the sea, the part D = X - FK of the panel solver's exciting force that
+// the per-triangle pressure (hydrostatic plus Froude-Krylov) leaves out
+#ifndef MJBUOY_DIFFRACT_H_
+#define MJBUOY_DIFFRACT_H_
+
+#include <string>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "radiation/hydrocoef.h"
+#include "sea/sea.h"
+
+namespace mjb {
+
+// headings solved at attach: uniform 2 pi h / n, h = 0..n-1 (10 deg apart)
+const int kDiffHeadings = 36;
+
+// one rigid group's table, about its COM
+struct DiffBody {
+  int body;                // MuJoCo body id (the group's top body)
+  double R0[9];            // its rotation at qpos0 (world from body, row-major)
+  HydroCoef c;             // X and FK about the COM in world axes at qpos0
+  std::vector<double> D;   // X - FK, (re, im) per (omega, heading, dof): 2 ((w nh + h) 6 + dof)
+  std::vector<int> iw;     // per sea component: table row at or below its omega;
+                           //   -1 below the first (D linear from 0), -2 above the last (none)
+  std::vector<double> tw;  // weight of the next row
+  int ri = -1;             // its body's index in Radiation::rb (immersion factor)
+};
+
+struct Diffraction {
+  std::vector<DiffBody> db;
+};
+
+// add body's table from c (about its COM, world axes at qpos0, headings
+// uniform as kDiffHeadings), R0 its rotation at qpos0; per-component
+// arrays reserved for wcap components. "" or the error
+std::string setDiffraction(int body, const double R0[9], const HydroCoef& c, size_t wcap,
+                           Diffraction* df);
+
+// each component's table row and weight for every body (when the sea is
+// set: at attach and by mjb_setSea); allocates nothing while
+// sea.waves.size() stays within the wcap given to setDiffraction
+void diffSea(const Sea& sea, Diffraction* df);
+
+// frequency row and weight of omega [rad/s] in a table of frequencies
+void diffRow(const std::vector<double>& omega, double omega1, int* iw, double* tw);
+
+// periodic Catmull-Rom weights of heading beta [rad] on n uniform headings
+void headingWeights(double beta, int n, int idx[4], double w[4]);
+
+// D of b at row (iw, tw) and heading beta [rad] (table axes): re, im per dof
+void diffAt(const DiffBody& b, int iw, double tw, double beta, double re[6], double im[6]);
+
+// in mjcb_passive: each body's diffraction wrench [N, N m] in world axes,
+// about its COM (d->xipos), 6 per body in w: sum over components of
+// Re(a_j D(omega_j, beta_j - psi) e^{-i omega_j t}) turned by the body's
+// rotation since qpos0 (psi its yaw). A non-finite wrench is left out (zero) and named
+// once in notices (told: per body)
+void diffractionStep(const Diffraction& df, const Sea& sea, const mjModel* m, const mjData* d,
+                     double* w, char* told, std::string* notices);
+
+}  // namespace mjb
+
+#endif  // MJBUOY_DIFFRACT_H_

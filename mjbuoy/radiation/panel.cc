@@ -1,0 +1,709 @@
+// boundary-element solve of the radiation and diffraction problems
+// (docs/physics.md section 13): constant-strength sources on flat panels,
+// collocation at the centroids, the deep-water Green function of green.h,
+// a damped interior lid (dphi/dz = K (1 + i w) phi on the waterplane inside
+// the hull, w 0 at the waterline) against irregular frequencies
+#include "radiation/panel.h"
+#include "radiation/panellid.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <memory>
+#include <thread>
+
+#include <Eigen/Dense>
+
+#include "util/gauss.h"
+#include "radiation/green.h"
+#include "radiation/greentab.h"
+#include "radiation/rankine.h"
+
+namespace mjb {
+
+namespace {
+
+typedef std::complex<double> cplx;
+typedef Eigen::MatrixXd MatR;
+typedef Eigen::MatrixXcd MatC;
+const double kPi = 3.14159265358979323846;
+
+// runs body(i) for i in [0, n) on up to hardware_concurrency threads
+// (rows interleaved: near and far rows cost about the same)
+template <class Fn>
+void parallelRows(int n, Fn body, int minn = 64) {
+  int nt = (int)std::thread::hardware_concurrency();
+  nt = nt < 1 ? 1 : (nt > 8 ? 8 : nt);
+  if (nt == 1 || n < minn) {
+    for (int i = 0; i < n; i++) body(i);
+    return;
+  }
+  // a thread that cannot start has its rows run here (never an abort)
+  std::vector<std::thread> th;
+  std::vector<int> here;
+  for (int t = 0; t < nt; t++) {
+    try {
+      th.emplace_back([=]() {
+        for (int i = t; i < n; i += nt) body(i);
+      });
+    } catch (...) {
+      here.push_back(t);
+    }
+  }
+  for (int t : here)
+    for (int i = t; i < n; i += nt) body(i);
+  for (auto& t : th) t.join();
+}
+
+// quadrature point of a panel: position and weight [m^2]
+struct QPoint {
+  double p[3], w;
+};
+
+// 2x2 Gauss on the bilinear map of a quad, 3 interior points on a triangle
+void panelRule(const Panel& pn, std::vector<QPoint>* q) {
+  q->clear();
+  if (pn.nv == 3) {
+    const double b[3][3] = {{2. / 3, 1. / 6, 1. / 6}, {1. / 6, 2. / 3, 1. / 6}, {1. / 6, 1. / 6, 2. / 3}};
+    for (int i = 0; i < 3; i++) {
+      QPoint t;
+      for (int k = 0; k < 3; k++) t.p[k] = b[i][0] * pn.v[0][k] + b[i][1] * pn.v[1][k] + b[i][2] * pn.v[2][k];
+      t.w = pn.area / 3;
+      q->push_back(t);
+    }
+    return;
+  }
+  const double g = 0.5 / std::sqrt(3.0);
+  double wsum = 0;
+  for (int a = 0; a < 2; a++)
+    for (int b = 0; b < 2; b++) {
+      double u = 0.5 + (a ? g : -g), v = 0.5 + (b ? g : -g);
+      QPoint t;
+      double du[3], dv[3];
+      for (int k = 0; k < 3; k++) {
+        t.p[k] = (1 - u) * (1 - v) * pn.v[0][k] + u * (1 - v) * pn.v[1][k] + u * v * pn.v[2][k] +
+                 (1 - u) * v * pn.v[3][k];
+        du[k] = -(1 - v) * pn.v[0][k] + (1 - v) * pn.v[1][k] + v * pn.v[2][k] - v * pn.v[3][k];
+        dv[k] = -(1 - u) * pn.v[0][k] - u * pn.v[1][k] + u * pn.v[2][k] + (1 - u) * pn.v[3][k];
+      }
+      double c[3] = {du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2],
+                     du[0] * dv[1] - du[1] * dv[0]};
+      t.w = 0.25 * std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+      wsum += t.w;
+      q->push_back(t);
+    }
+  for (auto& t : *q) t.w *= pn.area / wsum;
+}
+
+// Duffy rule about the centroid (its 1/r and log singularity integrated
+// exactly by the Jacobian u): triangles (c, v_k, v_k+1), 6x6 Gauss
+void duffyRule(const Panel& pn, std::vector<QPoint>* q) {
+  q->clear();
+  const GaussRule& g = gaussRule(6);
+  for (int e = 0; e < pn.nv; e++) {
+    const double* a = pn.v[e];
+    const double* b = pn.v[(e + 1) % pn.nv];
+    double ea[3], eb[3], cr[3];
+    for (int k = 0; k < 3; k++) {
+      ea[k] = a[k] - pn.c[k];
+      eb[k] = b[k] - pn.c[k];
+    }
+    cr[0] = ea[1] * eb[2] - ea[2] * eb[1];
+    cr[1] = ea[2] * eb[0] - ea[0] * eb[2];
+    cr[2] = ea[0] * eb[1] - ea[1] * eb[0];
+    double at = std::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);  // 2 x area
+    for (int i = 0; i < g.n; i++)
+      for (int j = 0; j < g.n; j++) {
+        double u = 0.5 * (g.x[i] + 1), v = 0.5 * (g.x[j] + 1);
+        QPoint t;
+        for (int k = 0; k < 3; k++) t.p[k] = pn.c[k] + u * (ea[k] + v * (eb[k] - ea[k]));
+        t.w = 0.25 * g.w[i] * g.w[j] * u * at;
+        q->push_back(t);
+      }
+  }
+}
+
+// the problem: panels (body first, then lid) and their rules
+struct Problem {
+  std::vector<Panel> pn;
+  int nb = 0, nl = 0;
+  std::vector<std::vector<QPoint>> near, self;
+  std::vector<double> lidw;  // per lid panel: its damping weight w (panellid.h)
+  double gn[6];  // scratch
+};
+
+bool buildPanels(const PanelMesh& m, bool lid, Problem* pb, std::string* err) {
+  const char* what = lid ? "lid" : "body";
+  int nv = (int)m.vert.size() / 3;
+  if (m.vert.size() % 3 || m.face.size() % 4) {
+    *err = std::string("panel ") + what + ": vert must hold 3 and face 4 numbers per entry";
+    return false;
+  }
+  for (int f = 0; f < m.nface(); f++) {
+    const int* fi = &m.face[4 * f];
+    int n = fi[3] < 0 ? 3 : 4;
+    for (int k = 0; k < n; k++)
+      if (fi[k] < 0 || fi[k] >= nv) {
+        char b[200];
+        std::snprintf(b, sizeof b, "panel %s face %d: vertex index %d outside 0..%d", what, f, fi[k], nv - 1);
+        *err = b;
+        return false;
+      }
+    const double* p[4];
+    for (int k = 0; k < n; k++) p[k] = &m.vert[3 * fi[k]];
+    for (int k = 0; k < n; k++)
+      for (int c = 0; c < 3; c++)
+        if (!std::isfinite(p[k][c])) {
+          char b[200];
+          std::snprintf(b, sizeof b, "panel %s face %d: vertex %d is not finite", what, f, fi[k]);
+          *err = b;
+          return false;
+        }
+    Panel pn;
+    if (!makePanel(p[0], p[1], p[2], n == 4 ? p[3] : nullptr, &pn)) {
+      char b[200];
+      std::snprintf(b, sizeof b, "panel %s face %d: degenerate (zero area); remove it", what, f);
+      *err = b;
+      return false;
+    }
+    double tol = 1e-6 * (1 + pn.diam);
+    for (int k = 0; k < pn.nv; k++)
+      if ((lid && std::fabs(pn.v[k][2]) > tol) || (!lid && pn.v[k][2] > tol)) {
+        char b[200];
+        std::snprintf(b, sizeof b, "panel %s face %d: vertex z = %g m, accepted %s (clip the mesh at the waterline)",
+                      what, f, pn.v[k][2], lid ? "0" : "<= 0");
+        *err = b;
+        return false;
+      }
+    if (lid) pn.v[0][2] = pn.v[1][2] = pn.v[2][2] = pn.v[3][2] = pn.c[2] = 0;
+    pb->pn.push_back(pn);
+  }
+  return true;
+}
+
+// generalized normal: n, (c - ref) x n
+void genNormal(const Panel& p, const double* ref, double* g) {
+  double r[3] = {p.c[0] - ref[0], p.c[1] - ref[1], p.c[2] - ref[2]};
+  g[0] = p.n[0];
+  g[1] = p.n[1];
+  g[2] = p.n[2];
+  g[3] = r[1] * p.n[2] - r[2] * p.n[1];
+  g[4] = r[2] * p.n[0] - r[0] * p.n[2];
+  g[5] = r[0] * p.n[1] - r[1] * p.n[0];
+}
+
+// mirror image of a panel in z = 0
+Panel mirror(const Panel& p) {
+  double v[4][3];
+  for (int i = 0; i < p.nv; i++) {
+    v[i][0] = p.v[i][0];
+    v[i][1] = p.v[i][1];
+    v[i][2] = -p.v[i][2];
+  }
+  Panel m;
+  makePanel(v[0], v[1], v[2], p.nv == 4 ? v[3] : nullptr, &m);
+  return m;
+}
+
+// Rankine parts: S (potential, all rows) and D (normal derivative, body
+// rows) of 1/r and of the image 1/r' separately
+struct Rankine {
+  MatR Sd, Si, Dd, Di;
+};
+
+void rankineMatrices(const Problem& pb, Rankine* rk) {
+  int n = pb.nb + pb.nl, nb = pb.nb;
+  rk->Sd.resize(n, n);
+  rk->Si.resize(n, n);
+  rk->Dd.resize(nb, n);
+  rk->Di.resize(nb, n);
+  std::vector<Panel> im(n);
+  for (int j = 0; j < n; j++) im[j] = mirror(pb.pn[j]);
+  parallelRows(n, [&](int i) {
+    const Panel& pi = pb.pn[i];
+    for (int j = 0; j < n; j++) {
+      double phi, g[3], phm, gm[3];
+      rankinePanel(pb.pn[j], pi.c, &phi, g);
+      rankinePanel(im[j], pi.c, &phm, gm);
+      rk->Sd(i, j) = phi;
+      rk->Si(i, j) = phm;
+      if (i < nb) {
+        rk->Dd(i, j) = g[0] * pi.n[0] + g[1] * pi.n[1] + g[2] * pi.n[2];
+        rk->Di(i, j) = gm[0] * pi.n[0] + gm[1] * pi.n[1] + gm[2] * pi.n[2];
+      }
+    }
+  });
+  // the flat self term (0) misses the curvature part of the principal
+  // value, -(H/2) int dS/r: an O(h) error. The wetted surface and its
+  // image close, so int over x of dG/dn_x (1/r) = -2 pi for each source
+  // panel (Gauss); the column sums fix each diagonal to O(h^2)
+  for (int j = 0; j < nb; j++) {
+    double s = 0;
+    for (int i = 0; i < nb; i++) {
+      if (i != j) s += pb.pn[i].area * rk->Dd(i, j);
+      s += pb.pn[i].area * rk->Di(i, j);
+    }
+    rk->Dd(j, j) = (-2 * kPi * pb.pn[j].area - s) / pb.pn[j].area;
+  }
+}
+
+// wave part of G integrated over panel j at x: potential and gradient
+void waveIntegral(const GreenTable* tab, const std::vector<QPoint>& q, double K, const double* x,
+                  bool grad, cplx* s, cplx g[3]) {
+  cplx ss = 0, gg[3] = {0, 0, 0};
+  for (const QPoint& t : q) {
+    double dx = x[0] - t.p[0], dy = x[1] - t.p[1];
+    double R = std::sqrt(dx * dx + dy * dy);
+    double X = K * R, Y = -K * (x[2] + t.p[2]);
+    if (Y < 0) Y = 0;
+    WaveF f = greenWaveTab(tab, X, Y);
+    double ey = std::exp(-Y), j0 = f.J0;
+    // G_w = 2K F + 2 pi i K e^-Y J0(X)
+    ss += t.w * cplx(2 * K * f.F, 2 * kPi * K * ey * j0);
+    if (grad) {
+      double j1 = f.J1;
+      // d/dR = K d/dX, d/dz = -K d/dY
+      cplx dR = K * cplx(2 * K * f.FX, -2 * kPi * K * ey * j1);
+      cplx dz = -K * cplx(2 * K * f.FY, -2 * kPi * K * ey * j0);
+      double ux = R > 0 ? dx / R : 0, uy = R > 0 ? dy / R : 0;
+      gg[0] += t.w * dR * ux;
+      gg[1] += t.w * dR * uy;
+      gg[2] += t.w * dz;
+    }
+  }
+  *s = ss;
+  if (grad) {
+    g[0] = gg[0];
+    g[1] = gg[1];
+    g[2] = gg[2];
+  }
+}
+
+// frequency-dependent wave matrices on the rows listed (body rows first):
+// WS (all of them) and WD (the body rows)
+void waveMatrices(const Problem& pb, const std::vector<int>& rows, const GreenTable* tab, double K,
+                  bool par, MatC* WS, MatC* WD) {
+  int n = pb.nb + pb.nl, nb = pb.nb, nr = (int)rows.size(), nrb = 0;
+  for (int i : rows) nrb += i < nb;
+  WS->resize(nr, n);
+  WD->resize(nrb, n);
+  parallelRows(nr, [&](int r) {
+    std::vector<QPoint> one(1);
+    int i = rows[r];
+    const Panel& pi = pb.pn[i];
+    bool grad = i < nb;
+    for (int j = 0; j < n; j++) {
+      const Panel& pj = pb.pn[j];
+      const std::vector<QPoint>* q;
+      double dx = pi.c[0] - pj.c[0], dy = pi.c[1] - pj.c[1], dz = pi.c[2] + pj.c[2];
+      double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+      if (i == j && i >= nb) {
+        q = &pb.self[j];
+      } else if (d < 2 * pj.diam) {
+        q = &pb.near[j];
+      } else {
+        one[0].p[0] = pj.c[0];
+        one[0].p[1] = pj.c[1];
+        one[0].p[2] = pj.c[2];
+        one[0].w = pj.area;
+        q = &one;
+      }
+      cplx s, g[3];
+      waveIntegral(tab, *q, K, pi.c, grad, &s, g);
+      (*WS)(r, j) = s;
+      if (grad) (*WD)(r, j) = g[0] * pi.n[0] + g[1] * pi.n[1] + g[2] * pi.n[2];
+    }
+  }, par ? 64 : 1 << 30);
+}
+
+// the tabulated wave part covering every panel pair up to wavenumber K:
+// X = K R <= K (horizontal diagonal of the bounding box), Y <= 2 K depth
+std::shared_ptr<const GreenTable> waveTable(const Problem& pb, double K) {
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (const Panel& p : pb.pn)
+    for (int v = 0; v < p.nv; v++)
+      for (int k = 0; k < 3; k++) lo[k] = std::fmin(lo[k], p.v[v][k]), hi[k] = std::fmax(hi[k], p.v[v][k]);
+  double dh = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+  return greenTable(K * dh, -2 * K * lo[2]);
+}
+
+bool finiteAll(const double* a, int n) {
+  for (int i = 0; i < n; i++)
+    if (!std::isfinite(a[i])) return false;
+  return true;
+}
+
+// mirror symmetry of the panels about a vertical plane u . x = c (u a
+// horizontal unit vector): mir[j] the image of panel j, rows the panels on
+// the side u . x > c (body first)
+struct Mirror {
+  std::vector<int> mir, rows;
+};
+
+std::atomic<bool> gSymmetry{true};
+
+// the image of point p in the plane u . x = c (u horizontal); d: 0 for a
+// point, 1 for a direction (no offset)
+void reflect(const double* p, const double* u, double c, double d, double* q) {
+  double t = 2 * (p[0] * u[0] + p[1] * u[1] - d * c);
+  q[0] = p[0] - t * u[0];
+  q[1] = p[1] - t * u[1];
+  q[2] = p[2];
+}
+
+// whether panels p and q are images of each other in u . x = c (centroid
+// within tol, normal within 1e-6, area within 1e-6 relative)
+bool images(const Panel& p, const Panel& q, const double* u, double c, double tol) {
+  double pc[3], pn[3];
+  reflect(p.c, u, c, 1, pc);
+  reflect(p.n, u, c, 0, pn);
+  for (int k = 0; k < 3; k++)
+    if (std::fabs(pc[k] - q.c[k]) > tol || std::fabs(pn[k] - q.n[k]) > 1e-6) return false;
+  return std::fabs(p.area - q.area) <= 1e-6 * p.area;
+}
+
+// symmetry about the vertical plane of normal u through the body's
+// wetted-area centroid, within 1e-6 of the mesh size; a panel on the plane
+// (its own image) or one without an image: none
+bool findMirror(const Problem& pb, const double* u, Mirror* m) {
+  int n = pb.nb + pb.nl;
+  double c = 0, area = 0, lo = 1e300, hi = -1e300;
+  for (int j = 0; j < pb.nb; j++) {
+    const Panel& p = pb.pn[j];
+    c += p.area * (p.c[0] * u[0] + p.c[1] * u[1]);
+    area += p.area;
+  }
+  c /= area;
+  for (const Panel& p : pb.pn)
+    for (int v = 0; v < p.nv; v++)
+      for (int k = 0; k < 3; k++) lo = std::fmin(lo, p.v[v][k]), hi = std::fmax(hi, p.v[v][k]);
+  double tol = 1e-6 * (hi - lo);
+  m->mir.assign(n, -1);
+  m->rows.clear();
+  for (int j = 0; j < n; j++) {
+    double s = pb.pn[j].c[0] * u[0] + pb.pn[j].c[1] * u[1] - c;
+    if (std::fabs(s) <= tol) return false;
+    if (s > 0) m->rows.push_back(j);
+    if (m->mir[j] >= 0) continue;
+    int e = j < pb.nb ? pb.nb : n;  // body panels pair with body panels, lid with lid
+    for (int k = j + 1; k < e && m->mir[j] < 0; k++)
+      if (m->mir[k] < 0 && images(pb.pn[j], pb.pn[k], u, c, tol)) m->mir[j] = k, m->mir[k] = j;
+    if (m->mir[j] < 0) return false;
+  }
+  return true;
+}
+
+// the symmetry group of the mesh: img[k][j] the image of panel j under
+// element k (k = 0 the identity; 1 or 3 mirrors, each its own inverse),
+// rows one panel of each orbit (body first); planes: bit 0 the first
+// mirror found, bit 1 the second
+struct Group {
+  std::vector<std::vector<int>> img;
+  std::vector<int> rows;
+  int planes = 0;
+};
+
+// mirrors about the planes of normal y and x, else about the principal
+// axes of the wetted surface's horizontal second moment (a hull yawed in
+// the model's initial pose): both (4 elements), one, or none
+Group symmetryGroup(const Problem& pb) {
+  Group g;
+  int n = pb.nb + pb.nl;
+  double cx = 0, cy = 0, a = 0, ixx = 0, iyy = 0, ixy = 0;
+  for (int j = 0; j < pb.nb; j++) {
+    const Panel& p = pb.pn[j];
+    cx += p.area * p.c[0], cy += p.area * p.c[1], a += p.area;
+  }
+  cx /= a, cy /= a;
+  for (int j = 0; j < pb.nb; j++) {
+    const Panel& p = pb.pn[j];
+    double x = p.c[0] - cx, y = p.c[1] - cy;
+    ixx += p.area * x * x, iyy += p.area * y * y, ixy += p.area * x * y;
+  }
+  double th = 0.5 * std::atan2(2 * ixy, ixx - iyy);
+  const double axes[2][2][2] = {{{0, 1}, {1, 0}},
+                                {{-std::sin(th), std::cos(th)}, {std::cos(th), std::sin(th)}}};
+  Mirror m1, m2;
+  bool h1 = false, h2 = false;
+  for (int t = 0; t < 2 && !h1 && !h2; t++) {
+    h1 = findMirror(pb, axes[t][0], &m1);
+    h2 = findMirror(pb, axes[t][1], &m2);
+  }
+  std::vector<int> id(n);
+  for (int j = 0; j < n; j++) id[j] = j;
+  g.img.push_back(id);
+  if (h1) g.img.push_back(m1.mir);
+  if (h2) g.img.push_back(m2.mir);
+  if (h1 && h2) {
+    std::vector<int> b(n);
+    for (int j = 0; j < n; j++) b[j] = m2.mir[m1.mir[j]];
+    g.img.push_back(b);
+  }
+  std::vector<char> in1(n, !h1), in2(n, !h2);
+  for (int j : m1.rows) in1[j] = h1;
+  for (int j : m2.rows) in2[j] = h2;
+  for (int j = 0; j < n; j++)
+    if (in1[j] && in2[j]) g.rows.push_back(j);
+  g.planes = (h1 ? 1 : 0) | (h2 ? 2 : 0);
+  return g;
+}
+
+// one frequency's radiation and diffraction solve (panelSolve's inputs);
+// false on a non-finite result
+struct Freq {
+  const Problem* pb;
+  const Rankine* rk;
+  const MatR *Nn, *Na;
+  const GreenTable* tab;
+  const std::vector<double>*omega, *heading;
+  HydroCoef* out;
+  bool outer;        // frequencies run in parallel: fill serially
+  const Group* gr;  // rows: the reduced solve; else all rows
+  std::vector<int> rows;
+};
+
+// the source strengths of M sig = rhs on the full mesh from the
+// symmetry-adapted systems, one per character chi of the group (Z2 or
+// Z2 x Z2; docs/physics.md section 13): M holds the rows gr.rows only;
+// M(g i, g j) = M(i, j) for every element g, so with sig(g j) =
+// sum_p chi_p(g) sig_p(j) and rhs_p(i) = (1/|G|) sum_g chi_p(g) rhs(g i),
+// M_p(i, j) = sum_g chi_p(g) M(i, g j) decouples them
+MatC groupSolve(const Group& gr, const MatC& M, const MatC& rhs) {
+  int nr = (int)gr.rows.size(), nc = (int)rhs.cols(), ng = (int)gr.img.size();
+  // chi_p(g): element k flips mirror bit b when bit b of k is set (k = 1:
+  // the first mirror, 2: the second, 3: both)
+  auto chi = [](int p, int k) { return __builtin_popcount(p & k) % 2 ? -1.0 : 1.0; };
+  MatC sig = MatC::Zero(M.cols(), nc);
+  for (int p = 0; p < ng; p++) {
+    MatC Mp = MatC::Zero(nr, nr), rp = MatC::Zero(nr, nc);
+    for (int c = 0; c < nr; c++)
+      for (int k = 0; k < ng; k++) {
+        Mp.col(c) += chi(p, k) * M.col(gr.img[k][gr.rows[c]]);
+        rp.row(c) += (chi(p, k) / ng) * rhs.row(gr.img[k][gr.rows[c]]);
+      }
+    MatC sp = Mp.partialPivLu().solve(rp);
+    for (int c = 0; c < nr; c++)
+      for (int k = 0; k < ng; k++) sig.row(gr.img[k][gr.rows[c]]) += chi(p, k) * sp.row(c);
+  }
+  return sig;
+}
+
+bool solveOmega(const Freq& f, int w) {
+  const Problem& pb = *f.pb;
+  const Rankine& rk = *f.rk;
+  const MatR &Nn = *f.Nn, &Na = *f.Na;
+  const std::vector<double>& heading = *f.heading;
+  const std::vector<int>& rows = f.rows;
+  HydroCoef* out = f.out;
+  int n = pb.nb + pb.nl, nb = pb.nb, nh = (int)heading.size(), nr = (int)rows.size();
+  const double* ref = out->ref;
+  double rho = out->rho, grav = out->g;
+  double om = (*f.omega)[w], K = om * om / grav;
+  MatC WS, WD;
+  waveMatrices(pb, rows, f.tab, K, !f.outer, &WS, &WD);
+  int nrb = (int)WD.rows();
+  // lid rows: the damped lid, dphi/dz(0-) = K (1 + i w) phi on the lid's
+  // interior side, w 0 at the waterline (docs/physics.md section 13); with
+  // dphi/dz(0-) = K phi + 4 pi sigma (the free-surface condition of G plus
+  // the jump of the doubled source sheet): -i w K phi + 4 pi sigma = 0
+  std::vector<int> rb(rows.begin(), rows.begin() + nrb), rl(rows.begin() + nrb, rows.end());
+  MatC M(nr, n);
+  M.topRows(nrb) = (rk.Dd(rb, Eigen::all) + rk.Di(rb, Eigen::all)).cast<cplx>() + WD;
+  if (nr > nrb)
+    M.bottomRows(nr - nrb) =
+        K * ((rk.Sd(rl, Eigen::all) + rk.Si(rl, Eigen::all)).cast<cplx>() + WS.bottomRows(nr - nrb));
+  for (int r = nrb; r < nr; r++) M.row(r) *= cplx(0, -pb.lidw[rows[r] - nb]);
+  for (int r = 0; r < nr; r++) M(r, rows[r]) += rows[r] < nb ? -2 * kPi : 4 * kPi;
+  // right-hand sides: 6 radiation modes (dphi/dn = n_j), nh diffraction
+  // problems (dphi_D/dn = -dphi_0/dn)
+  MatC rhs = MatC::Zero(n, 6 + nh);
+  rhs.block(0, 0, nb, 6) = Nn.cast<cplx>();
+  // incident potential per unit amplitude: phi0 = -i g/omega e^{Kz} e^{iK(x cos b + y sin b)}
+  MatC phi0(nb, nh);
+  for (int h = 0; h < nh; h++) {
+    double cb = std::cos(heading[h]), sb = std::sin(heading[h]);
+    for (int i = 0; i < nb; i++) {
+      const Panel& p = pb.pn[i];
+      double ph = K * ((p.c[0] - ref[0]) * cb + (p.c[1] - ref[1]) * sb);
+      cplx e = std::exp(K * p.c[2]) * cplx(std::cos(ph), std::sin(ph));
+      cplx f0 = cplx(0, -grav / om) * e;
+      phi0(i, h) = f0;
+      cplx dn = f0 * (cplx(0, K * cb) * p.n[0] + cplx(0, K * sb) * p.n[1] + K * p.n[2]);
+      rhs(i, 6 + h) = -dn;
+    }
+  }
+  bool sym = nr < n;
+  MatC sig = sym ? groupSolve(*f.gr, M, rhs) : MatC(M.partialPivLu().solve(rhs));
+  MatC S = (rk.Sd(rb, Eigen::all) + rk.Si(rb, Eigen::all)).cast<cplx>() + WS.topRows(nrb);
+  MatC phi(nb, 6 + nh);
+  if (!sym) {
+    phi = S * sig;
+  } else {
+    // phi(g i) = sum_j S(i, g j) sig(j) = (S sig(g .))(i), g its own inverse
+    MatC sg(n, 6 + nh);
+    for (const std::vector<int>& g : f.gr->img) {
+      for (int j = 0; j < n; j++) sg.row(j) = sig.row(g[j]);
+      MatC pg = S * sg;
+      for (int r = 0; r < nrb; r++) phi.row(g[rows[r]]) = pg.row(r);
+    }
+  }
+  // radiation force per unit velocity: -i omega rho int phi_j n_i dS
+  //   = i omega A_ij - B_ij
+  MatC P = Na.transpose().cast<cplx>() * phi;
+  for (int a = 0; a < 6; a++)
+    for (int b = 0; b < 6; b++) {
+      out->A[36 * w + 6 * a + b] = -rho * P(a, b).real();
+      out->B[36 * w + 6 * a + b] = -rho * om * P(a, b).imag();
+    }
+  // exciting force: -i omega rho int (phi0 + phiD) n dS
+  for (int h = 0; h < nh; h++)
+    for (int a = 0; a < 6; a++) {
+      cplx fk = 0, fd = 0;
+      for (int i = 0; i < nb; i++) {
+        fk += phi0(i, h) * Na(i, a);
+        fd += phi(i, 6 + h) * Na(i, a);
+      }
+      fk *= cplx(0, -om * rho);
+      fd *= cplx(0, -om * rho);
+      int o = (w * nh + h) * 6 + a;
+      out->FKre[o] = fk.real();
+      out->FKim[o] = fk.imag();
+      out->Xre[o] = (fk + fd).real();
+      out->Xim[o] = (fk + fd).imag();
+    }
+  return finiteAll(&out->A[36 * w], 36) && finiteAll(&out->B[36 * w], 36) &&
+         finiteAll(out->Xre.data() + 6 * w * nh, 6 * nh) &&  // data(): no headings is allowed
+         finiteAll(out->Xim.data() + 6 * w * nh, 6 * nh);
+}
+
+}  // namespace
+
+void panelSymmetryUse(bool on) { gSymmetry = on; }
+
+int panelMirrors(const PanelMesh& body, const PanelMesh& lid) {
+  Problem pb;
+  std::string err;
+  if (!buildPanels(body, false, &pb, &err)) return 0;
+  pb.nb = (int)pb.pn.size();
+  if (!pb.nb || !buildPanels(lid, true, &pb, &err)) return 0;
+  pb.nl = (int)pb.pn.size() - pb.nb;
+  return symmetryGroup(pb).planes;
+}
+
+bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,
+                const std::vector<double>& heading, HydroCoef* out, std::string* err) {
+  Problem pb;
+  if (!buildPanels(body, false, &pb, err)) return false;
+  pb.nb = (int)pb.pn.size();
+  if (pb.nb == 0) {
+    *err = "panel body: no panels";
+    return false;
+  }
+  if (!buildPanels(lid, true, &pb, err)) return false;
+  pb.nl = (int)pb.pn.size() - pb.nb;
+  std::vector<double> xy(2 * pb.nl);
+  for (int k = 0; k < pb.nl; k++) {
+    xy[2 * k] = pb.pn[pb.nb + k].c[0];
+    xy[2 * k + 1] = pb.pn[pb.nb + k].c[1];
+  }
+  pb.lidw = lidWeights(lid, xy);
+  for (size_t w = 0; w < omega.size(); w++)
+    if (!(omega[w] > 0 && std::isfinite(omega[w])) || (w && !(omega[w] > omega[w - 1]))) {
+      char b[200];
+      std::snprintf(b, sizeof b, "panel omega[%d] = %g rad/s: accepted finite, > 0 and increasing", (int)w, omega[w]);
+      *err = b;
+      return false;
+    }
+  for (size_t h = 0; h < heading.size(); h++)
+    if (!std::isfinite(heading[h])) {
+      char b[200];
+      std::snprintf(b, sizeof b, "panel heading[%d] = %g rad: accepted finite", (int)h, heading[h]);
+      *err = b;
+      return false;
+    }
+  if (!(out->rho > 0) || !(out->g > 0) || out->depth != 0) {
+    *err = "panel: rho and g must be > 0 and depth 0 (deep water only)";
+    return false;
+  }
+  int n = pb.nb + pb.nl, nb = pb.nb, nh = (int)heading.size(), nw = (int)omega.size();
+  pb.near.resize(n);
+  pb.self.resize(n);
+  for (int j = 0; j < n; j++) {
+    panelRule(pb.pn[j], &pb.near[j]);
+    if (j >= nb) duffyRule(pb.pn[j], &pb.self[j]);
+  }
+  const double* ref = out->ref;
+  double rho = out->rho, grav = out->g;
+  // generalized normals times area, body panels
+  MatR Nn(nb, 6), Na(nb, 6);
+  for (int i = 0; i < nb; i++) {
+    double gn[6];
+    genNormal(pb.pn[i], ref, gn);
+    for (int k = 0; k < 6; k++) {
+      Nn(i, k) = gn[k];
+      Na(i, k) = gn[k] * pb.pn[i].area;
+    }
+  }
+  Rankine rk;
+  rankineMatrices(pb, &rk);
+
+  // infinite frequency: G = 1/r - 1/r' (phi = 0 on z = 0), body only
+  {
+    MatR M = rk.Dd.leftCols(nb) - rk.Di.leftCols(nb);
+    M.diagonal().array() -= 2 * kPi;
+    MatR sig = M.partialPivLu().solve(Nn);
+    MatR phi = (rk.Sd.topLeftCorner(nb, nb) - rk.Si.topLeftCorner(nb, nb)) * sig;
+    MatR Ai = -rho * Na.transpose() * phi;
+    for (int a = 0; a < 6; a++)
+      for (int b = 0; b < 6; b++) out->Ainf[6 * a + b] = Ai(a, b);
+    if (!finiteAll(out->Ainf, 36)) {
+      *err = "panel: non-finite infinite-frequency added mass (check the mesh for coincident panels)";
+      return false;
+    }
+  }
+
+  out->omega = omega;
+  out->heading = heading;
+  out->A.assign(36 * nw, 0);
+  out->B.assign(36 * nw, 0);
+  out->Xre.assign(6 * nw * nh, 0);
+  out->Xim.assign(6 * nw * nh, 0);
+  out->FKre.assign(6 * nw * nh, 0);
+  out->FKim.assign(6 * nw * nh, 0);
+  std::shared_ptr<const GreenTable> tab = waveTable(pb, omega.back() * omega.back() / grav);
+  // frequencies in parallel (each with a serial fill; one frequency: a
+  // parallel fill): every frequency is computed by the same operations in
+  // the same order whatever the thread, so results do not depend on it
+  // a mirror-symmetric mesh (about y = c, x = c or both): reduced systems
+  Group gr;
+  bool sym = gSymmetry && (gr = symmetryGroup(pb), gr.img.size() > 1);
+  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &omega, &heading, out, nw > 1, &gr, {}};
+  if (sym) {
+    fq.rows = gr.rows;
+  } else {
+    for (int i = 0; i < n; i++) fq.rows.push_back(i);
+  }
+  // a failed allocation on a worker thread is reported, never an abort
+  std::vector<char> bad(nw, 0);
+  parallelRows(nw, [&](int w) {
+    try {
+      bad[w] = !solveOmega(fq, w);
+    } catch (...) {
+      bad[w] = 2;
+    }
+  }, 2);
+  for (int w = 0; w < nw; w++)
+    if (bad[w]) {
+      char b[240];
+      std::snprintf(b, sizeof b, bad[w] == 2 ? "panel: out of memory at omega = %g rad/s (%d unknowns); "
+                    "use fewer panels (mjbuoy.radiation.refine)" : "panel: non-finite coefficients at omega = %g rad/s",
+                    omega[w], n);
+      *err = b;
+      return false;
+    }
+  return true;
+}
+
+}  // namespace mjb

@@ -1,0 +1,560 @@
+// radattach: panel solver to time-domain radiation at attach (radattach.h)
+#include "radiation/radattach.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <utility>
+
+#include "api/buoy.h"
+#include "radiation/coefpsd.h"
+#include "radiation/coefxform.h"
+#include "radiation/diffract.h"
+#include "hull/eqdraft.h"
+#include "radiation/hydrostatic.h"
+#include "radiation/panelcoarse.h"
+#include "radiation/panelmesh.h"
+#include "radiation/radcache.h"
+#include "hull/rigid.h"
+#include "util/fmt.h"
+
+namespace mjb {
+
+// f(a, length) for each panel edge from corner a (an edge shared by two
+// panels comes twice)
+template <class F>
+static void eachEdge(const PanelMesh& p, F f) {
+  for (int i = 0; i < p.nface(); i++) {
+    const int* q = &p.face[4 * i];
+    const int nv = q[3] < 0 ? 3 : 4;
+    for (int k = 0; k < nv; k++) {
+      const double* a = &p.vert[3 * q[k]];
+      const double* b = &p.vert[3 * q[(k + 1) % nv]];
+      f(a, std::hypot(std::hypot(a[0] - b[0], a[1] - b[1]), a[2] - b[2]));
+    }
+  }
+}
+
+double panelEdge90(const PanelMesh& p) {
+  std::vector<double> len;
+  eachEdge(p, [&](const double*, double l) { len.push_back(l); });
+  if (len.empty()) return 0;
+  // nearest rank: the smallest length with at least 90% of them at or below
+  const size_t r = size_t(std::ceil(0.9 * len.size())) - 1;
+  std::nth_element(len.begin(), len.begin() + r, len.end());
+  return len[r];
+}
+
+double defaultTopKR(double R, double h) {
+  // 6 panels per wavelength: k_h = 2 pi / (6 h)
+  const double kh = h > 0 ? 2 * M_PI / (6 * h) : INFINITY;
+  return std::min(kTopKRMax, std::max(kTopKRMin, kh * R));
+}
+
+std::vector<double> defaultOmega(double R, double h, double g) {
+  const int n = 20;
+  double w0 = std::sqrt(g * 0.05 / R), w1 = std::sqrt(g * defaultTopKR(R, h) / R);
+  std::vector<double> w(n);
+  for (int i = 0; i < n; i++) w[i] = w0 + (w1 - w0) * i / (n - 1);
+  return w;
+}
+
+double waterplaneRadius(const PanelMesh& p) {
+  double az = 0, rmax = 0;
+  for (int f = 0; f < p.nface(); f++) {
+    const int* q = &p.face[4 * f];
+    int nv = q[3] < 0 ? 3 : 4;
+    for (int k = 0; k < nv; k++) {
+      const double* a = &p.vert[3 * q[k]];
+      const double* b = &p.vert[3 * q[(k + 1) % nv]];
+      az += 0.5 * (a[0] * b[1] - a[1] * b[0]);  // z of the polygon's area vector
+      rmax = std::max(rmax, std::hypot(a[0], a[1]));
+    }
+  }
+  double r = std::sqrt(std::fabs(az) / M_PI);
+  return r > 1e-6 * rmax ? r : rmax;
+}
+
+// A, B and A_inf are symmetric in potential flow (Newman 1977, sec. 4.13:
+// Green's theorem); a collocation panel method is so only to its
+// discretisation error (0.1% on a 24 x 8 hemisphere). Replaces each matrix
+// by its symmetric part; returns the largest |M - M^T| / 2 over max |M| of
+// each matrix
+static double symmetrize(HydroCoef* c) {
+  double worst = 0;
+  auto sym = [&](double* M) {
+    double big = 0, off = 0;
+    for (int i = 0; i < 36; i++) big = std::max(big, std::fabs(M[i]));
+    for (int i = 0; i < 6; i++)
+      for (int j = 0; j < i; j++) {
+        double a = 0.5 * (M[6 * i + j] + M[6 * j + i]);
+        off = std::max(off, std::fabs(M[6 * i + j] - a));
+        M[6 * i + j] = M[6 * j + i] = a;
+      }
+    if (big > 0) worst = std::max(worst, off / big);
+  };
+  sym(c->Ainf);
+  for (int w = 0; w < c->nw(); w++) sym(&c->A[36 * w]), sym(&c->B[36 * w]);
+  return worst;
+}
+static const double kAsymWarn = 0.02;
+
+static const char* bodyName(const mjModel* m, int b) { return m->names + m->name_bodyadr[b]; }
+
+// whether an entry names the group of root: mjbuoy.radiation.body.<b> on
+// for root or one of its hull bodies
+static bool namedOn(const Buoy& B, int root) {
+  const RadConfig& r = B.cfg.rad;
+  for (const Hull& h : B.hull) {
+    if (B.m->body_weldid[h.body] != root) continue;
+    for (int b : {h.body, root})
+      if (std::count(r.onBody.begin(), r.onBody.end(), b)) return true;
+  }
+  return false;
+}
+
+// a group on by default that gets no radiation after all (dry, too many
+// panels, a failed solve): the warning why, and its hulls take back the
+// linear drag terms the default had set to 0 for radiation (config.h,
+// restoreDrag; docs/physics.md section 16): without radiation they are
+// their only damping of slow heave
+static std::string skipGroup(Buoy* B, int root, const std::string& why) {
+  B->cfg.warn.push_back(why);
+  for (Hull& h : B->hull)
+    if (B->m->body_weldid[h.body] == root) restoreDrag(&h.par, &h.radDrag);
+  return "";
+}
+
+// the steepest wave component beyond Miche's breaking limit, H / lambda =
+// 0.142 tanh(k h) (deep water 0.142; H = 2 A for Airy and Gerstner waves
+// alike), as a sentence; "" if none (docs/physics.md section 14, "Seas
+// beyond breaking")
+static std::string breakingWave(const Sea& s) {
+  double worst = 0;
+  std::string what;
+  for (size_t i = 0; i < s.waves.size(); i++) {
+    const Wave& w = s.waves[i];
+    double lim = kBreakHL * (s.depth > 0 ? std::tanh(w.k * s.depth) : 1.0);
+    double hl = 2 * w.amp / w.len;
+    if (hl <= lim || hl / lim <= worst) continue;
+    worst = hl / lim;
+    char t[256];
+    std::snprintf(t, sizeof(t), "wave component %d (amplitude %.4g m, wavelength %.4g m) is "
+                  "steeper than a sea can be: H / lambda = %.3f above Miche's breaking "
+                  "limit %.3f", int(i + 1), w.amp, w.len, hl, lim);
+    what = t;
+  }
+  return what;
+}
+
+// whether the rigid group of root radiates (RadConfig::groupRadiates)
+static bool groupRadiates(const Buoy& B, int root) {
+  std::vector<int> hb;
+  for (const Hull& h : B.hull) hb.push_back(h.body);
+  return B.cfg.rad.groupRadiates(B.m, hb, root);
+}
+
+// the group's hull vertices in root's frame (float, as hullPanels takes
+// them) and its faces
+static void groupMesh(const Buoy& B, const mjData* d, int root, std::vector<float>* v,
+                      std::vector<int>* f) {
+  const mjModel* m = B.m;
+  const mjtNum* Rr = d->xmat + 9 * root;
+  for (const Hull& h : B.hull) {
+    if (m->body_weldid[h.body] != root) continue;
+    int v0 = v->size() / 3;
+    const mjtNum* Rb = d->xmat + 9 * h.body;
+    for (int i = h.v0; i < h.v0 + h.nv; i++) {
+      mjtNum x[3], y[3], z[3];
+      mju_rotVecMat(x, &B.vert[3 * i], Rb);
+      for (int k = 0; k < 3; k++) y[k] = x[k] + d->xpos[3 * h.body + k] - d->xpos[3 * root + k];
+      mju_rotVecMatT(z, y, Rr);
+      for (int k = 0; k < 3; k++) v->push_back((float)z[k]);
+    }
+    for (int t = h.t0; t < h.t0 + h.nt; t++)
+      for (int k = 0; k < 3; k++) f->push_back(B.face[3 * t + k] - h.v0 + v0);
+  }
+}
+
+// warnings on c, then its symmetric part (who names the body)
+static void checkCoef(Buoy* B, const std::string& who, HydroCoef* cp) {
+  HydroCoef& c = *cp;
+  // potential flow radiates energy: B_ii >= 0; a coarse mesh (or the lid
+  // at high kR) can give small negative values, which the memory turns
+  // into a source of energy
+  for (int i = 0; i < 6; i++) {
+    double big = 0, low = 0, wl = 0;
+    for (int w = 0; w < c.nw(); w++) {
+      double b = c.B[36 * w + 7 * i];
+      big = std::max(big, std::fabs(b));
+      if (b < low) low = b, wl = c.omega[w];
+    }
+    if (low < -0.01 * big) {
+      static const char* kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+      B->cfg.warn.push_back(who.substr(8) + ": the panel solver's " + kDof[i] + " damping is " +
+                            fmt(low) + " at omega " + fmt(wl) + " rad/s (below -1% of its peak " +
+                            fmt(big) + "); refine its panels (mjbuoy.radiation.refine) or lower "
+                            "the highest frequency (mjbuoy.radiation.omega)");
+    }
+  }
+  double asym = symmetrize(cp);
+  if (asym > kAsymWarn) {
+    B->cfg.warn.push_back(who.substr(8) + ": the panel solver's added mass or damping is " +
+                          fmt(100 * asym) + "% asymmetric (made symmetric); refine its panels "
+                          "(mjbuoy.radiation.refine)");
+  }
+  // damping that would feed energy: projected out, with a warning
+  projectDamping(cp, who.substr(8), &B->cfg.warn);
+}
+
+// panelSolve through the cache (radcache.h): a file whose key matches is
+// used as it is, else the solution is computed and stored; every cache
+// problem is a warning, never an error
+static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
+                        const PanelMesh& lid, const std::vector<double>& omega,
+                        const std::vector<double>& head, HydroCoef* c, std::string* err) {
+  std::string dir = radCacheDir(B->cfg.rad.cache), key, note;
+  if (!dir.empty()) {
+    key = radCacheKey(body, lid, omega, head, *c);
+    if (radCacheLoad(dir, key, c, &note)) return B->radcache.hit++, true;
+    if (!note.empty()) B->cfg.warn.push_back(who.substr(8) + ": " + note);
+  }
+  B->radcache.miss++;
+  if (!panelSolve(body, lid, omega, head, c, err)) return false;
+  if (dir.empty()) return true;
+  if (radCacheStore(dir, key, *c, &note)) {
+    B->radcache.write++;
+  } else {
+    B->cfg.warn.push_back(who.substr(8) + ": " + note);
+  }
+  return true;
+}
+
+// heave offset [m] of the panel pose from qpos0: the flat-water
+// equilibrium of a free body's subtree (eqdraft.h), else 0 (a body on a
+// joint other than free floats where its joints hold it); at: the pose's
+// name for messages. A free body without equilibrium is warned about
+static double poseHeave(Buoy* B, const mjData* d, int root, const std::string& who,
+                        std::string* at) {
+  const mjModel* m = B->m;
+  *at = "the model's initial pose (qpos0; not a free body)";
+  if (!m->body_jntnum[root] || m->jnt_type[m->body_jntadr[root]] != mjJNT_FREE) return 0;
+  double dz = 0;
+  std::string why;
+  if (equilibriumHeave(*B, d, root, &dz, &why)) {
+    *at = "its floating equilibrium (qpos0 moved " + fmt(dz) + " m in z)";
+    return dz;
+  }
+  *at = "the model's initial pose (qpos0; no floating equilibrium)";
+  B->cfg.warn.push_back(who.substr(8) + ": no floating equilibrium on flat water (" + why +
+                        "); its added mass and damping are for its wetted surface at the "
+                        "model's initial pose (qpos0)");
+  return 0;
+}
+
+// why A_inf of the panel solution is not positive semi-definite, and what
+// to do: the panels are too coarse for the draft. A collocation point a
+// draft d below the surface sees its panel's image 2 d away; a panel much
+// wider than d is then integrated at one point across a 1/r^2 kernel that
+// varies over d, and the diagonal fix (panel.cc rankineMatrices) carries
+// that error: the solution is not resolved (a 2 x 1 m box at 2.5 mm
+// draft gave A33 = -3.2e6 kg at rho 1e5)
+static std::string unresolved(const PanelMesh& p, const HydroCoef& c) {
+  double zlo = 0, wide = 0;
+  eachEdge(p, [&](const double* a, double l) {
+    zlo = std::min(zlo, a[2]);
+    wide = std::max(wide, l);
+  });
+  double lo = INFINITY;
+  for (int i = 0; i < 6; i++) lo = std::min(lo, c.Ainf[7 * i]);
+  return "the panel solver's infinite-frequency added mass is not positive semi-definite "
+         "(smallest diagonal entry " + fmt(lo) + "): its " + std::to_string(p.nface()) +
+         " wet panels, up to " + fmt(wide) + " m wide, do not resolve its draft of " +
+         fmt(-zlo) + " m (panels should be no wider than a few drafts); give the hull a "
+         "finer mesh below the waterline or raise mjbuoy.radiation.refine, or turn its "
+         "radiation off";
+}
+
+// the wet panels counted against mjbuoy.radiation.panels: those of a
+// hull without symmetry that cost as much to solve. k mirror planes split
+// the LU into 2^k systems of N / 2^k (docs/physics.md section 13, "Mirror
+// symmetry"): N^3 / 4^k, as much as N / 4^(k/3) unsymmetric panels
+static double solveSize(const PanelMesh& body, const PanelMesh& lid, bool useLid) {
+  int n = body.nface() + (useLid ? lid.nface() : 0);
+  int m = panelMirrors(body, useLid ? lid : PanelMesh());
+  int k = (m & 1) + (m >> 1 & 1);
+  return n * std::pow(4.0, -k / 3.0);
+}
+
+// a coarsened copy of the group's hull within the budget
+// mjbuoy.radiation.panels (docs/physics.md section 13, "Coarsened hulls"):
+// body, lid, note and *np become its own, with a warning giving the
+// change; left as they are, with a warning, if it cannot be had
+static void coarsenGroup(Buoy* B, const std::string& who, const std::vector<float>& v,
+                         const std::vector<int>& f, const double pos[3], const double* quat,
+                         PanelMesh* body, PanelMesh* lid, std::string* note, int* np) {
+  const RadConfig& rc = B->cfg.rad;
+  CoarseInfo ci;
+  std::string cn = *note;
+  if (!coarsenPanels(v.data(), v.size() / 3, f.data(), f.size() / 3, pos, quat, rc.refine,
+                     rc.lid, rc.panels, body, lid, &cn, &ci)) {
+    B->cfg.warn.push_back(who.substr(8) + ": not coarsened: " + cn);
+    return;
+  }
+  *note = cn;
+  *np = ci.panels;
+  auto pct = [](double r) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%+.1f%%", 100 * (r - 1));
+    return std::string(b);
+  };
+  B->cfg.warn.push_back(who.substr(8) + ": hull coarsened for the panel solver from " +
+                        std::to_string(ci.panels0) + " to " + std::to_string(ci.panels) +
+                        " wet panels (" + std::to_string(ci.tri0) + " to " +
+                        std::to_string(ci.tri) + " triangles; mjbuoy.radiation.panels = " +
+                        std::to_string(rc.panels) + "): displaced volume " + pct(ci.vol / ci.vol0) +
+                        ", waterplane area " + pct(ci.awp / ci.awp0) + " (the hydrostatics keep "
+                        "the full mesh); mjbuoy.radiation.panels = 0 solves the full mesh "
+                        "(minutes, cached)");
+}
+
+// the rollzeta share of critical roll damping added to x (docs/physics.md
+// section 14, "Viscous roll damping"): B_1 = 2 zeta sqrt(C44 (I44 + A44)),
+// C44 the hydrostatic stiffness of the wet panels body about the body x
+// axis through the group's COM, I44 the group's inertia about that axis,
+// A44 = A_inf's roll entry (about the root's COM, body axes); dz: the
+// panel pose's heave (d is at qpos0, after mj_comPos)
+static void rollZeta(Buoy* B, const mjData* d, int root, const PanelMesh& body,
+                     const HydroCoef& c, double dz, const std::string& who, RadBody* x) {
+  const mjModel* m = B->m;
+  const RadConfig& rc = B->cfg.rad;
+  double I[6], G[3], mass, C[9];
+  if (!groupInertia(m, d, root, I, G, &mass)) return;
+  // the COM in the panel frame: world axes, origin (x_root, y_root, sea level)
+  for (int k = 0; k < 3; k++) G[k] -= d->xpos[3 * root + k];
+  G[2] += d->xpos[3 * root + 2] + dz - B->cfg.sea.level;
+  rotStiffness(body, G, c.rho * c.g, C);
+  const mjtNum* R = d->xmat + 9 * root;
+  const double e[3] = {R[0], R[3], R[6]};  // the body's x axis in the world
+  x->c44 = axisStiffness(C, e);
+  const double i44 = e[0] * e[0] * I[0] + e[1] * e[1] * I[1] + e[2] * e[2] * I[2] +
+                     2 * (e[0] * e[1] * I[3] + e[0] * e[2] * I[4] + e[1] * e[2] * I[5]);
+  const double it = i44 + c.Ainf[21];
+  if (!(x->c44 > 0) || !(it > 0)) {
+    if (rc.zetaGiven && rc.zeta > 0)
+      B->cfg.warn.push_back(who.substr(8) + ": no roll restoring at its panel pose (C44 = " +
+                            fmt(x->c44) + " N m/rad about its x axis), so mjbuoy.radiation."
+                            "rollzeta adds no roll damping; give it mjbuoy.radiation.rolldamping");
+    return;
+  }
+  x->roll[0] += 2 * rc.zeta * std::sqrt(x->c44 * it);
+}
+
+// coefficients of one group; "" or the error
+static std::string solveGroup(Buoy* B, const mjData* d, int root) {
+  const mjModel* m = B->m;
+  const RadConfig& rc = B->cfg.rad;
+  std::string who = std::string("mjbuoy: radiation of body \"") + bodyName(m, root) + "\"";
+  std::vector<float> v;
+  std::vector<int> f;
+  groupMesh(*B, d, root, &v, &f);
+  // the pose: qpos0 lifted or lowered to its flat-water equilibrium
+  // (docs/physics.md section 14, "Equilibrium draft"); at names it
+  std::string at;
+  double dz = poseHeave(B, d, root, who, &at);
+  double pos[3] = {d->xpos[3 * root], d->xpos[3 * root + 1],
+                   d->xpos[3 * root + 2] + dz - B->cfg.sea.level};
+  PanelMesh body, lid;
+  std::string note;
+  if (!hullPanels(v.data(), v.size() / 3, f.data(), f.size() / 3, pos, d->xquat + 4 * root,
+                  rc.refine, &body, &lid, &note)) {
+    if (!(rc.given && rc.on) && !namedOn(*B, root)) {
+      // on by default only: the body keeps running without radiation
+      return skipGroup(B, root, who.substr(8) + " is off: " + note + " at " + at + " (mean sea "
+                       "level " + fmt(B->cfg.sea.level) + " m); place the body at its "
+                       "floating position in the model for added mass and radiation "
+                       "damping, or set <text name=\"mjbuoy.radiation.body." +
+                       bodyName(m, root) + "\" data=\"off\"/>");
+    }
+    return who + ": " + note + " at " + at + " (mean sea level " + fmt(B->cfg.sea.level) +
+           " m); place the body at its floating position in the model, "
+           "or turn radiation off for it with <text name=\"mjbuoy.radiation.body." +
+           bodyName(m, root) + "\" data=\"off\"/>";
+  }
+  int np = body.nface() + (rc.lid ? lid.nface() : 0);
+  if (rc.panels > 0 && solveSize(body, lid, rc.lid) > rc.panels)
+    coarsenGroup(B, who, v, f, pos, d->xquat + 4 * root, &body, &lid, &note, &np);
+  if (rc.panels > 0 && solveSize(body, lid, rc.lid) > rc.panels && !(rc.given && rc.on) &&
+      !namedOn(*B, root)) {
+    // on by default only within the cost bound (seconds at attach)
+    return skipGroup(B, root, who.substr(8) + " is off: " + std::to_string(np) + " wet panels, "
+                     "above the " + std::to_string(rc.panels) + " radiation solves "
+                     "by default (mjbuoy.radiation.panels); switch it on explicitly with "
+                     "<text name=\"mjbuoy.radiation\" data=\"on\"/> (minutes, cached), or "
+                     "coarsen the hull below the waterline");
+  }
+  if (!rc.lid) {
+    lid = PanelMesh();
+  } else if (!lid.nface()) {
+    B->cfg.warn.push_back(who.substr(8) + ": no interior lid (" + note +
+                          "); its coefficients may be spoiled near irregular frequencies");
+  }
+  std::vector<double> omega;
+  if (rc.omega[2] > 0) {
+    int n = (int)rc.omega[2];
+    for (int i = 0; i < n; i++) omega.push_back(rc.omega[0] + (rc.omega[1] - rc.omega[0]) * i / (n - 1));
+  } else {
+    omega = defaultOmega(waterplaneRadius(body), panelEdge90(body), B->cfg.sea.g);
+  }
+  HydroCoef c;
+  c.rho = B->cfg.sea.rho;
+  c.g = B->cfg.sea.g;
+  std::string err;
+  // diffraction: a uniform heading set, interpolated at the components'
+  // headings relative to the body's yaw (docs/physics.md section 15)
+  std::vector<double> head;
+  for (int h = 0; rc.diffraction && h < kDiffHeadings; h++) head.push_back(2 * M_PI * h / kDiffHeadings);
+  if (!cachedSolve(B, who, body, lid, omega, head, &c, &err)) {
+    if (!(rc.given && rc.on) && !namedOn(*B, root))
+      return skipGroup(B, root, who.substr(8) + " is off: panel solver: " + err);
+    return who + ": panel solver: " + err;
+  }
+  // panel frame: world axes, origin (x_root, y_root, sea level); the root's
+  // COM there is R ipos + (0, 0, pos z) (pos z at the panel pose, with dz);
+  // body axes: R's columns
+  const mjtNum* R = d->xmat + 9 * root;
+  const mjtNum* ip = m->body_ipos + 3 * root;
+  double p[3], Rd[9], pn[3] = {ip[0], ip[1], ip[2]};
+  mju_rotVecMat(p, ip, R);
+  p[2] += pos[2];
+  for (int i = 0; i < 9; i++) Rd[i] = R[i];
+  // the exciting force about the COM, kept in world axes at qpos0 (any
+  // initial rotation; the step turns it with the body's yaw)
+  HydroCoef cx;
+  if (rc.diffraction) {
+    cx = c;
+    const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    err = coefTransform(&cx, p, I, p);
+    if (!err.empty()) return who + ": " + err;
+    cx.A.clear();
+    cx.B.clear();
+  }
+  for (auto* v : {&c.heading, &c.Xre, &c.Xim, &c.FKre, &c.FKim}) v->clear();
+  err = coefTransform(&c, p, Rd, pn);
+  if (!err.empty()) return who + ": " + err;
+  checkCoef(B, who, &c);
+  B->rad.conv = rc.conv;
+  B->rad.ssAsked = rc.ssAsked;
+  std::copy(rc.roll, rc.roll + 2, B->rad.roll);
+  B->rad.entry = rc.entry;
+  if (addedMassIndefinite(c.Ainf)) {
+    // an unresolved wet surface, not a fault of the user's numbers
+    std::string why = unresolved(body, c);
+    if (!(rc.given && rc.on) && !namedOn(*B, root))
+      return skipGroup(B, root, who.substr(8) + " is off: " + why);
+    return who + ": " + why;
+  }
+  err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
+  if (!err.empty()) return err;
+  // the immersion factor's reference (docs/physics.md, "Immersion factor"):
+  // the group's displaced volume at the panel pose, and its hull bodies
+  for (RadBody& x : B->rad.rb) {
+    if (x.body != root) continue;
+    x.veq = groupVolume(*B, d, root, dz);
+    rollZeta(B, d, root, body, c, dz, who, &x);
+    for (int hb : B->body)
+      if (m->body_weldid[hb] == root) x.hb.push_back(hb);
+  }
+  for (std::string& n : B->rad.note) B->cfg.warn.push_back(n);
+  B->rad.note.clear();
+  if (rc.diffraction) err = setDiffraction(root, Rd, cx, B->wcap, &B->diff);
+  if (!err.empty()) return err + " (body \"" + bodyName(m, root) + "\")";
+  B->coef.emplace_back(root, std::move(c));
+  return "";
+}
+
+std::string attachRadiation(Buoy* B) {
+  const mjModel* m = B->m;
+  const RadConfig& rc = B->cfg.rad;
+  for (int b : rc.onBody) {
+    bool has = false;
+    for (const Hull& h : B->hull)
+      has = has || (m->body_weldid[h.body] == m->body_weldid[b] &&
+                    groupMoves(m, m->body_weldid[b]));
+    if (!has) {
+      return std::string("mjbuoy: <text name=\"mjbuoy.radiation.body.") + bodyName(m, b) +
+             "\"> turns radiation on for body \"" + bodyName(m, b) +
+             "\", which carries no hull that can move; list its geoms in mjbuoy.hulls or "
+             "remove the entry";
+    }
+  }
+  std::vector<int> roots;
+  for (const Hull& h : B->hull) {
+    int r = m->body_weldid[h.body];
+    if (std::find(roots.begin(), roots.end(), r) == roots.end() && groupRadiates(*B, r))
+      roots.push_back(r);
+  }
+  // linear radiation theory is for waves that can exist: a default group
+  // in a sea beyond breaking keeps Kerner's drag instead (an explicit on
+  // is honoured, with a warning)
+  std::string brk = breakingWave(B->cfg.sea);
+  if (!brk.empty()) {
+    std::vector<int> keep;
+    for (int r : roots) {
+      if ((rc.given && rc.on) || namedOn(*B, r)) {
+        keep.push_back(r);
+        continue;
+      }
+      skipGroup(B, r, std::string("radiation of body \"") + bodyName(m, r) + "\" is off: " +
+                          brk + ", where linear radiation theory does not hold; turn it on "
+                          "with <text name=\"mjbuoy.radiation\" data=\"on\"/> or lower the "
+                          "wave");
+    }
+    if (!keep.empty())
+      B->cfg.warn.push_back("radiation: " + brk + "; linear radiation theory does not hold "
+                            "in such a sea (docs/physics.md section 14, \"Seas beyond "
+                            "breaking\")");
+    roots.swap(keep);
+  }
+  if (roots.empty()) {
+    if (rc.roll[0] > 0 || rc.roll[1] > 0) {
+      B->cfg.warn.push_back("radiation: mjbuoy.radiation.rolldamping acts only on bodies with "
+                            "radiation on, and no hull body has it; turn radiation on "
+                            "(mjbuoy.radiation) or remove the entry");
+    }
+    if (rc.zetaGiven && rc.zeta > 0) {
+      B->cfg.warn.push_back("radiation: mjbuoy.radiation.rollzeta acts only on bodies with "
+                            "radiation on, and no hull body has it; turn radiation on "
+                            "(mjbuoy.radiation) or remove the entry");
+    }
+    return "";
+  }
+  if (B->cfg.sea.depth > 0) {
+    B->cfg.warn.push_back("radiation: the panel solver is for deep water; mjbuoy.sea.depth = " +
+                          fmt(B->cfg.sea.depth) + " m is not used for the radiation coefficients");
+  }
+  if (B->cfg.sea.kerner && rc.diffraction) {
+    B->cfg.warn.push_back("radiation: mjbuoy.sea.pressure = kerner is not linear theory's "
+                          "Froude-Krylov pressure, to which the diffraction force "
+                          "(mjbuoy.radiation.diffraction) adds; use pressure linear, or turn "
+                          "diffraction off");
+  }
+  // the initial pose: qpos0 (mj_makeData resets to it)
+  std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m), mj_deleteData);
+  if (!d) return "mjbuoy: radiation: could not allocate an mjData for the initial pose";
+  mj_kinematics(m, d.get());
+  mj_comPos(m, d.get());  // cinert, for the groups' roll inertia (rollZeta)
+  for (int r : roots) {
+    std::string e = solveGroup(B, d.get(), r);
+    if (!e.empty()) return e;
+  }
+  diffSea(B->cfg.sea, &B->diff);
+  // each diffraction body's radiation body, for its immersion factor
+  for (DiffBody& db : B->diff.db)
+    for (size_t i = 0; i < B->rad.rb.size(); i++)
+      if (B->rad.rb[i].body == db.body) db.ri = int(i);
+  return "";
+}
+
+}  // namespace mjb

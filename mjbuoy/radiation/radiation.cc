@@ -1,0 +1,454 @@
+// radiation set-up: retardation functions from B(omega), checks of a
+// HydroCoef, the bodies' dof chains (docs/physics.md section 14)
+#include "radiation/radiation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "radiation/radtail.h"
+
+namespace mjb {
+
+namespace {
+
+// int B cos(w t) dw over [w0, w1] with B linear from b0 to b1. Closed form
+// [B sin(w t) / t + s cos(w t) / t^2] (s the slope); 4-point Gauss-Legendre
+// when t (w1 - w0) is small and the closed form would cancel
+double segment(double w0, double w1, double b0, double b1, double t) {
+  const double h = w1 - w0, s = (b1 - b0) / h;
+  if (t * h < 0.1) {
+    static const double x[4] = {-0.8611363115940526, -0.3399810435848563,
+                                0.3399810435848563, 0.8611363115940526};
+    static const double wt[4] = {0.3478548451374538, 0.6521451548625461,
+                                 0.6521451548625461, 0.3478548451374538};
+    double sum = 0;
+    for (int k = 0; k < 4; k++) {
+      double w = w0 + 0.5 * h * (x[k] + 1);
+      sum += wt[k] * (b0 + s * (w - w0)) * std::cos(w * t);
+    }
+    return 0.5 * h * sum;
+  }
+  return (b1 * std::sin(w1 * t) - b0 * std::sin(w0 * t)) / t +
+         s * (std::cos(w1 * t) - std::cos(w0 * t)) / (t * t);
+}
+
+double maxAbs(const std::vector<double>& v, int i, int j) {
+  double mx = 0;
+  for (size_t f = 0; 36 * f < v.size(); f++) mx = std::max(mx, std::fabs(v[36 * f + 6 * i + j]));
+  return mx;
+}
+
+bool finite(const double* x, size_t n) {
+  for (size_t i = 0; i < n; i++) if (!std::isfinite(x[i])) return false;
+  return true;
+}
+
+// positive semi-definite within round-off: Cholesky of A + eps tr(A) I
+bool psd(const double A[36]) {
+  double L[36] = {0}, tr = 0;
+  for (int i = 0; i < 6; i++) tr += A[7 * i];
+  const double eps = 1e-9 * std::max(tr, 1e-300);
+  for (int i = 0; i < 6; i++) {
+    for (int j = 0; j <= i; j++) {
+      double s = A[6 * i + j] + (i == j ? eps : 0);
+      for (int k = 0; k < j; k++) s -= L[6 * i + k] * L[6 * j + k];
+      if (i == j) {
+        if (!(s > 0)) return false;
+        L[6 * i + i] = std::sqrt(s);
+      } else {
+        L[6 * i + j] = s / L[6 * j + j];
+      }
+    }
+  }
+  return true;
+}
+
+std::string checkCoef(const HydroCoef& c) {
+  char e[512];
+  if (!finite(c.ref, 3)) return "mjbuoy: radiation: the reference point ref is not finite";
+  if (!finite(c.Ainf, 36)) return "mjbuoy: radiation: Ainf is not finite";
+  double mx = 0;
+  for (double a : c.Ainf) mx = std::max(mx, std::fabs(a));
+  for (int i = 0; i < 6; i++) {
+    for (int j = 0; j < i; j++) {
+      if (std::fabs(c.Ainf[6 * i + j] - c.Ainf[6 * j + i]) > 1e-6 * mx) {
+        std::snprintf(e, sizeof(e), "mjbuoy: radiation: Ainf is not symmetric (Ainf[%d][%d] = %g, "
+                      "Ainf[%d][%d] = %g); added mass is symmetric", i, j, c.Ainf[6 * i + j], j, i,
+                      c.Ainf[6 * j + i]);
+        return e;
+      }
+    }
+  }
+  if (!psd(c.Ainf)) {
+    return "mjbuoy: radiation: Ainf is not positive semi-definite (the kinetic energy of the "
+           "water it carries would be negative)";
+  }
+  const size_t nw = c.omega.size();
+  if (c.B.size() != 36 * nw || (!c.A.empty() && c.A.size() != 36 * nw)) {
+    std::snprintf(e, sizeof(e), "mjbuoy: radiation: %zu frequencies need %zu values of B (and of A, "
+                  "or none); got %zu and %zu", nw, 36 * nw, c.B.size(), c.A.size());
+    return e;
+  }
+  for (size_t f = 0; f < nw; f++) {
+    if (!std::isfinite(c.omega[f]) || c.omega[f] <= 0 || (f && c.omega[f] <= c.omega[f - 1])) {
+      std::snprintf(e, sizeof(e), "mjbuoy: radiation: omega[%zu] = %g; frequencies must be finite, "
+                    "positive and increasing", f, c.omega[f]);
+      return e;
+    }
+  }
+  if (!finite(c.B.data(), c.B.size()) || !finite(c.A.data(), c.A.size())) {
+    return "mjbuoy: radiation: A or B holds a value that is not finite";
+  }
+  return "";
+}
+
+// K over n samples tapered to zero over its last quarter, then
+// less c sin^2(pi t / T_m) with c such that its trapezoid sum, the
+// memory's gain for a steady velocity, is B(0) = 0 (docs/physics.md
+// section 14, "Steady gain")
+void steadyZero(double* K, int n) {
+  if (n < 3) return;
+  const int n0 = (3 * (n - 1)) / 4;
+  for (int k = n0 + 1; k < n; k++) K[k] *= 0.5 * (1 + std::cos(M_PI * (k - n0) / (n - 1 - n0)));
+  double sk = 0, sg = 0;
+  for (int k = 0; k < n; k++) {
+    const double w = k == 0 || k == n - 1 ? 0.5 : 1, g = std::pow(std::sin(M_PI * k / (n - 1)), 2);
+    sk += w * K[k];
+    sg += w * g;
+  }
+  for (int k = 0; k < n; k++) K[k] -= sk / sg * std::pow(std::sin(M_PI * k / (n - 1)), 2);
+}
+
+// rb's retardation functions over tmem seconds at step dt: one per pair
+// (i, j) whose B_ij is not zero
+void kernels(const HydroCoef& c, double tmem, double dt, RadBody* rb) {
+  double bmax = 0;
+  for (double b : c.B) bmax = std::max(bmax, std::fabs(b));
+  if (!(tmem > 0 && bmax > 0)) return;
+  rb->nk = int(std::ceil(tmem / dt)) + 1;
+  for (int i = 0; i < 6; i++) {
+    for (int j = 0; j < 6; j++) {
+      if (maxAbs(c.B, i, j) > 1e-12 * bmax) rb->pair.push_back(6 * i + j);
+    }
+  }
+  rb->K.resize(rb->pair.size() * rb->nk);
+  double pd[6];  // the tail's exponents, fitted once for every pair
+  tailExponents(c, pd);
+  for (size_t p = 0; p < rb->pair.size(); p++) {
+    int i = rb->pair[p] / 6, j = rb->pair[p] % 6;
+    // K is symmetric like B: the transposed pair copies
+    auto q = std::find(rb->pair.begin(), rb->pair.begin() + p, 6 * j + i);
+    if (q != rb->pair.begin() + p) {
+      std::copy_n(rb->K.begin() + (q - rb->pair.begin()) * rb->nk, rb->nk,
+                  rb->K.begin() + p * rb->nk);
+    } else {
+      retardationP(c, pd, i, j, dt, rb->nk, rb->K.data() + p * rb->nk);
+      steadyZero(rb->K.data() + p * rb->nk, rb->nk);
+    }
+  }
+}
+
+// rb's memory as a state-space model (docs/physics.md section 14,
+// "State-space memory"): each pair's K fitted, or copied from an identical
+// K fitted before (the transposed pair, another body with the same
+// coefficients). Any pair that misses the tolerance leaves rb on the
+// convolution, with a note naming the body and the error
+void fitMemory(const HydroCoef& c, double dt, const std::vector<RadBody>& done, const char* name,
+               RadBody* rb, std::vector<std::string>* note) {
+  rb->ss = SsModes();
+  const int nk = rb->nk;
+  auto same = [&](const RadBody& o, int p) {
+    if (o.K.size() != o.pair.size() * size_t(o.nk)) return -1;  // a twin: its source is in done
+    for (size_t q = 0; q < o.pair.size(); q++)
+      if (o.nk == nk && std::equal(o.K.begin() + q * nk, o.K.begin() + (q + 1) * nk,
+                                   rb->K.begin() + p * nk))
+        return int(q);
+    return -1;
+  };
+  std::vector<KFit> fit(rb->pair.size());
+  for (size_t p = 0; p < rb->pair.size(); p++) {
+    const int i = rb->pair[p] / 6, j = rb->pair[p] % 6;
+    bool found = false;
+    for (size_t q = 0; q < p && !found; q++)
+      if (std::equal(rb->K.begin() + q * nk, rb->K.begin() + (q + 1) * nk, rb->K.begin() + p * nk))
+        fit[p] = fit[q], found = true;
+    for (const RadBody& o : done) {
+      if (found) break;
+      if (o.ss.size() == 0) continue;
+      const int q = same(o, p);
+      if (q < 0) continue;
+      // o's modes of pair q, in o.ss order
+      const int oi = o.pair[q] / 6, oj = o.pair[q] % 6;
+      for (int r = 0; r < o.ss.size(); r++) {
+        if (o.ss.i[r] != oi || o.ss.j[r] != oj) continue;
+        fit[p].p.push_back(std::log(o.ss.lam[r]) / dt);
+        fit[p].c.push_back(o.ss.c[r]);
+      }
+      found = true;
+    }
+    // the pair's scale sqrt(S_i S_j), S_d dof d's own diagonal K (L2) and
+    // B (peak), but at least kFitNoise of the largest diagonal of d's kind
+    // (translation or rotation, the same units): each diagonal is held to
+    // its own size (a slender hull's roll damping is 1e-3 of its yaw
+    // damping and decides the roll decay), a coupling to the size at which
+    // B stays positive semi-definite (|B_ij| <= sqrt(B_ii B_jj)), and only a
+    // diagonal that is noise (yaw of a body of revolution) to the floor
+    double sT = 0, sB = 0;
+    {
+      double D[6][2] = {}, S[2][2] = {};  // [dof or kind][L2 of K, peak B]
+      for (size_t q = 0; q < rb->pair.size(); q++) {
+        const int d = rb->pair[q] / 6;
+        if (rb->pair[q] != 7 * d) continue;
+        double n2 = 0;
+        for (int k = 0; k < nk; k++) n2 += rb->K[q * nk + k] * rb->K[q * nk + k];
+        D[d][0] = std::sqrt(n2);
+        D[d][1] = maxAbs(c.B, d, d);
+        for (int e = 0; e < 2; e++) S[d / 3][e] = std::max(S[d / 3][e], D[d][e]);
+      }
+      double E[2][2];
+      for (int e = 0; e < 2; e++) {
+        E[0][e] = std::max(D[i][e], kFitNoise * S[i / 3][e]);
+        E[1][e] = std::max(D[j][e], kFitNoise * S[j / 3][e]);
+      }
+      sT = std::sqrt(E[0][0] * E[1][0]);
+      sB = std::sqrt(E[0][1] * E[1][1]);
+    }
+    if (!found && !fitKernel(rb->K.data() + p * nk, nk, dt, c.omega, sT, sB, &fit[p])) {
+      char e[512];
+      std::snprintf(e, sizeof(e), "radiation: body \"%s\": no fit of K_%d%d(t) by up to %d damped "
+                    "exponentials within %g%% (L2 in time) and %g%% (B, A at the table's "
+                    "frequencies); best %.3g%%, %.3g%%; its memory is the convolution (docs/physics.md "
+                    "section 14)", name, i + 1, j + 1, kFitMaxOrder, 100 * kFitTolT, 100 * kFitTolF,
+                    100 * fit[p].errT, 100 * fit[p].errF);
+      note->push_back(e);
+      return;
+    }
+  }
+  for (size_t p = 0; p < rb->pair.size(); p++)
+    rb->ss.add(rb->pair[p] / 6, rb->pair[p] % 6, fit[p], dt);
+}
+
+// MuJoCo factors the dofs of a "simple" body as diagonal: J^T A J is not.
+// Clear their flag and recount the runs of simple dofs (docs/physics.md
+// section 14); the first call keeps the model's flags for restoreModel
+void clearSimple(const mjModel* m, const std::vector<int>& dof, Radiation* r) {
+  if (r->simple0.empty()) r->simple0.assign(m->dof_simplenum, m->dof_simplenum + m->nv);
+  int* simple = const_cast<mjModel*>(m)->dof_simplenum;
+  for (int i : dof) simple[i] = 0;
+  for (int i = m->nv - 1, cnt = 0; i >= 0; i--) {
+    cnt = simple[i] ? cnt + 1 : 0;
+    simple[i] = cnt;
+  }
+}
+
+}  // namespace
+
+bool addedMassIndefinite(const double A[36]) { return finite(A, 36) && !psd(A); }
+
+void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K, bool tail) {
+  double pd[6];
+  if (tail) tailExponents(c, pd);
+  retardationP(c, tail ? pd : nullptr, i, j, dt, n, K);
+}
+
+void retardationP(const HydroCoef& c, const double* pd, int i, int j, double dt, int n, double* K) {
+  const int nw = c.nw();
+  // beyond the last frequency B_ij(w) = B_ij(w_N) (w_N / w)^p (radtail.h)
+  const double p = pd ? tailExponent(pd, i, j) : 0;
+  const double bN = nw ? c.B[36 * (nw - 1) + 6 * i + j] : 0, wN = nw ? c.omega.back() : 0;
+  for (int k = 0; k < n; k++) {
+    const double t = k * dt;
+    double w0 = 0, b0 = 0, sum = 0;  // B(0) = 0
+    for (int f = 0; f < nw; f++) {
+      const double w1 = c.omega[f], b1 = c.B[36 * f + 6 * i + j];
+      sum += t == 0 ? 0.5 * (b0 + b1) * (w1 - w0) : segment(w0, w1, b0, b1, t);
+      w0 = w1;
+      b0 = b1;
+    }
+    K[k] = 2 / M_PI * sum + (p > 0 && bN != 0 ? tailK(bN, wN, p, t) : 0);
+  }
+}
+
+double memoryLength(const HydroCoef& c) {
+  if (c.nw() == 0) return 0;
+  // K is band-limited to the last frequency: a grid of a quarter of its
+  // half period resolves the envelope
+  const double dc = std::min(M_PI / (4 * c.omega.back()), 0.05);
+  const int n = int(kMaxMemory / dc) + 1;
+  std::vector<double> K(n);
+  double peak = 0, bmax = 0;
+  int last = 0;
+  for (int i = 0; i < 6; i++) for (int j = 0; j < 6; j++) bmax = std::max(bmax, maxAbs(c.B, i, j));
+  std::vector<std::vector<double>> all;
+  double pd[6];  // the tail's exponents, fitted once for every pair
+  tailExponents(c, pd);
+  for (int i = 0; i < 6; i++) {
+    for (int j = i; j < 6; j++) {
+      if (maxAbs(c.B, i, j) <= 1e-12 * bmax) continue;
+      retardationP(c, pd, i, j, dc, n, K.data());
+      all.push_back(K);
+      for (double k : K) peak = std::max(peak, std::fabs(k));
+    }
+  }
+  for (const auto& k : all) {
+    for (int s = n - 1; s > last; s--) {
+      if (std::fabs(k[s]) > 0.01 * peak) {
+        last = s;
+        break;
+      }
+    }
+  }
+  return peak > 0 ? std::min(kMaxMemory, (last + 1) * dc) : 0;
+}
+
+// what a body's memory (K and its fit) depends on: the memory length
+// asked (0: automatic, from B), the step, the frequencies and B
+static std::vector<double> memoryKey(const HydroCoef& c, double tmem, double dt) {
+  std::vector<double> k = {tmem, dt, double(c.omega.size())};
+  k.insert(k.end(), c.omega.begin(), c.omega.end());
+  k.insert(k.end(), c.B.begin(), c.B.end());
+  return k;
+}
+
+// whether two memory keys agree: the same memory length, step and
+// frequencies, and B within 1e-9 of its largest entry. Identical hulls at
+// different places get B different in the last bits (their panel meshes
+// are built from world positions), far below what the fit resolves
+static bool sameMemory(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size() || a.size() < 3) return false;
+  const size_t nb = 3 + size_t(a[2]);
+  if (!std::equal(a.begin(), a.begin() + nb, b.begin())) return false;
+  double bmax = 0, dmax = 0;
+  for (size_t q = nb; q < a.size(); q++) {
+    bmax = std::max(bmax, std::fabs(a[q]));
+    dmax = std::max(dmax, std::fabs(a[q] - b[q]));
+  }
+  return dmax <= 1e-9 * bmax;
+}
+
+// rb's memory copied from a body set before with the same key (a fleet of
+// one hull: K and the fit within round-off of its own, without their 0.1 s
+// per body); quiet: no note is due for a fit that fell back to the
+// convolution, else such a twin is not copied, so the note names each body
+static bool copyMemory(const std::vector<RadBody>& done, bool quiet, RadBody* rb) {
+  for (const RadBody& o : done) {
+    if (!sameMemory(o.key, rb->key) || (o.nk && !quiet && o.ss.size() == 0)) continue;
+    rb->pair = o.pair;
+    rb->Kr = o.Kr;
+    rb->nk = o.nk;
+    rb->ss = o.ss;
+    return true;
+  }
+  return false;
+}
+
+std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double tmem,
+                         Radiation* r) {
+  char e[512];
+  if (body <= 0 || body >= m->nbody) {
+    std::snprintf(e, sizeof(e), "mjbuoy: radiation: body id %d out of range [1, %d]", body,
+                  m->nbody - 1);
+    return e;
+  }
+  const char* name = m->names + m->name_bodyadr[body];
+  int mover = body;
+  while (mover && !m->body_dofnum[mover]) mover = m->body_parentid[mover];
+  if (!mover) {
+    std::snprintf(e, sizeof(e), "mjbuoy: radiation: body \"%s\" has no joint between it and the "
+                  "world; added mass needs a body free to move", name);
+    return e;
+  }
+  std::string ce = checkCoef(c);
+  if (!ce.empty()) return ce + " (body \"" + name + "\")";
+  const double dt = m->opt.timestep;
+  if (!std::isfinite(tmem) || tmem > kMaxMemory) {
+    std::snprintf(e, sizeof(e), "mjbuoy: radiation: memory length %g s for body \"%s\" is out of "
+                  "range; give (0, %g] s, 0 for automatic or < 0 for none", tmem, name, kMaxMemory);
+    return e;
+  }
+  if (!r->rb.empty() && r->dt != dt) {
+    return "mjbuoy: radiation: opt.timestep changed since the first body was set";
+  }
+  r->dt = dt;
+
+  RadBody rb;
+  rb.body = body;
+  std::copy(c.ref, c.ref + 3, rb.ref);
+  std::copy(c.Ainf, c.Ainf + 36, rb.A);
+  std::copy(r->roll, r->roll + 2, rb.roll);
+  for (int i = m->body_dofadr[mover] + m->body_dofnum[mover] - 1; i >= 0; i = m->dof_parentid[i]) {
+    rb.dof.push_back(i);
+  }
+  rb.key = memoryKey(c, tmem, dt);
+  if (!copyMemory(r->rb, r->conv || !r->ssAsked, &rb)) {
+    if (tmem == 0) tmem = memoryLength(c);
+    kernels(c, tmem, dt, &rb);
+    // a fallback to the exact convolution costs time, not accuracy: it is
+    // noted (a warning) only when the state-space model was asked for
+    std::vector<std::string> quiet;
+    if (rb.nk && !r->conv) fitMemory(c, dt, r->rb, name, &rb, r->ssAsked ? &r->note : &quiet);
+    // the convolution runs forward over the history (radstep.cc, radMemory)
+    auto kr = std::make_shared<std::vector<double>>(rb.K.size());
+    for (size_t p = 0; p < rb.pair.size(); p++)
+      std::reverse_copy(rb.K.begin() + p * rb.nk, rb.K.begin() + (p + 1) * rb.nk,
+                        kr->begin() + p * rb.nk);
+    rb.Kr = std::move(kr);
+  }
+  clearSimple(m, rb.dof, r);
+
+  auto it = std::find_if(r->rb.begin(), r->rb.end(), [&](const RadBody& x) { return x.body == body; });
+  if (it != r->rb.end()) {
+    *it = std::move(rb);
+  } else {
+    r->rb.push_back(std::move(rb));
+  }
+  r->maxdof = 0;
+  r->nh = 1;
+  r->nmode = 0;
+  for (RadBody& x : r->rb) {
+    x.soff = r->nmode;
+    r->nmode += x.ss.size();
+    r->maxdof = std::max(r->maxdof, int(x.dof.size()));
+    r->nh = std::max(r->nh, x.nk);
+  }
+  return "";
+}
+
+void restoreModel(const mjModel* m, const Radiation& r) {
+  if (r.simple0.empty()) return;
+  std::copy(r.simple0.begin(), r.simple0.end(), const_cast<mjModel*>(m)->dof_simplenum);
+}
+
+void radMakeState(const Radiation& r, RadState* s) {
+  s->hist.assign(6 * r.rb.size() * r.nh, 0);
+  s->fmem.assign(6 * r.rb.size(), 0);
+  s->jac.assign(6 * r.maxdof, 0);
+  s->ajac.assign(6 * r.maxdof, 0);
+  s->told.assign(r.rb.size(), 0);
+  s->ssX.assign(r.nmode, 0);
+  s->ssPw.assign(r.nmode, 0);
+  s->ssNu.assign(12 * r.rb.size(), 0);
+  s->imm.assign(r.rb.size(), 1.0);
+  s->sstep.assign(2 * r.rb.size(), 1.0);
+  s->mdiag.assign(r.rb.size(), NAN);
+  s->poff.assign(r.rb.size() + 1, 0);
+  for (size_t ib = 0; ib < r.rb.size(); ib++) {
+    s->poff[ib + 1] = s->poff[ib] + int(r.rb[ib].pair.size());
+  }
+  s->pre.assign(3 * s->poff.back(), 0);
+  radRestart(s);
+}
+
+void radRestart(RadState* s) {
+  std::fill(s->fmem.begin(), s->fmem.end(), 0.0);
+  std::fill(s->told.begin(), s->told.end(), 0);
+  std::fill(s->imm.begin(), s->imm.end(), 1.0);
+  std::fill(s->sstep.begin(), s->sstep.end(), 1.0);
+  s->head = s->count = 0;
+  s->key = -1;
+  s->tcur = 0;
+  s->mstamp = -1;
+}
+
+}  // namespace mjb

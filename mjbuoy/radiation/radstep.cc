@@ -1,0 +1,376 @@
+// radiation per step, inside mjcb_passive (docs/physics.md section 14):
+// A_inf into MuJoCo's inertia matrix, Kirchhoff and memory forces
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "radiation/radiation.h"
+#include "sea/sea.h"
+#include "util/vmath.h"
+
+namespace mjb {
+
+namespace {
+
+enum { kSame = 0, kNew, kRestart, kMid };
+
+// the memory's step clock, as the slamming history's (docs/physics.md
+// section 7): a call at least 3/4 of a step after the current step's time
+// opens a new step, a call at that time repeats it, one in between is an
+// RK4 stage; time going back or the step counter dropping restarts
+int clock(const mjModel* m, const mjData* d, RadState* s) {
+  long k = d->timer[mjTIMER_STEP].number;
+  int r;
+  if (s->key < 0 || k < s->key || d->time < s->tcur) {
+    r = kRestart;
+  } else if (d->time - s->tcur >= 0.75 * m->opt.timestep) {
+    r = kNew;
+  } else {
+    s->key = k;
+    return d->time == s->tcur ? kSame : kMid;
+  }
+  s->key = k;
+  s->tcur = d->time;
+  return r;
+}
+
+void cross(const double* a, const double* b, double* c) {
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+double dot6(const double* a, const double* b) {
+  double s = 0;
+  for (int i = 0; i < 6; i++) s += a[i] * b[i];
+  return s;
+}
+
+void mul6(const double* A, const double* x, double* y) {
+  for (int i = 0; i < 6; i++) y[i] = dot6(A + 6 * i, x);
+}
+
+// sum_k K[a + k] x[i - k], k < n, from Kr (K reversed, nk samples): a
+// forward dot product of contiguous arrays, which runs in vector lanes
+// (vmath.h); Kr[nk - a - n + m] = K[a + n - 1 - m] meets x[i - n + 1 + m]
+double dotBack(const double* Kr, int nk, int a, const double* x, int i, int n) {
+  if (n <= 0) return 0;
+  return vDot(n, Kr + nk - a - n, x + i - n + 1);
+}
+
+// the parts of pair p's sum over n >= 2 samples that do not read the
+// newest one (at head): the oldest sample's trapezoid product q[0], the
+// samples 1 .. k1 back without wrap q[1] and the rest q[2], k1 = min(n -
+// 2, head); all of the sum's work, done before the newest sample exists
+void pairParts(const RadBody& rb, size_t p, const double* hist, int nh, int head, int n,
+               double q[3]) {
+  const double* Kr = rb.Kr->data() + p * rb.nk;  // K[k] = Kr[nk - 1 - k]
+  const double* h = hist + nh * (rb.pair[p] % 6);
+  const int k1 = std::min(n - 2, head);
+  q[0] = Kr[rb.nk - n] * h[(head - n + 1 + nh) % nh];
+  q[1] = dotBack(Kr, rb.nk, 1, h, head - 1, k1);
+  q[2] = dotBack(Kr, rb.nk, k1 + 1, h, head - k1 - 1 + nh, n - 2 - k1);
+}
+
+// rb's memory wrench f from its pairs' parts q (3 each, pairParts) and the
+// newest samples: f_i -= dt (K(0) nu_j(t) / 2 + q[0] / 2 + q[1] + q[2])
+void memoryFrom(const RadBody& rb, const double* hist, int nh, int head, int n, double dt,
+                const double* q, double* f) {
+  std::memset(f, 0, 6 * sizeof(double));
+  if (n < 2) return;
+  for (size_t p = 0; p < rb.pair.size(); p++) {
+    const double* Kr = rb.Kr->data() + p * rb.nk;
+    const double* h = hist + nh * (rb.pair[p] % 6);
+    double sum = 0.5 * (Kr[rb.nk - 1] * h[head] + q[3 * p]);
+    sum += q[3 * p + 1];
+    sum += q[3 * p + 2];
+    f[rb.pair[p] / 6] -= dt * sum;
+  }
+}
+
+// samples a convolution body uses now (0: none, or state-space memory)
+int convSamples(const RadBody& rb, int count) {
+  return rb.nk && !rb.ss.size() ? std::min(count, rb.nk) : 0;
+}
+
+// the pairs' parts (RadState pre) of chunk c of nc of all bodies' pairs
+struct PreJob {
+  const Radiation* r;
+  RadState* s;
+  int nc;
+};
+void preChunk(void* arg, int c, int) {
+  const PreJob& j = *static_cast<const PreJob*>(arg);
+  const RadState& s = *j.s;
+  const int np = s.poff.back();
+  const int g0 = int(long(np) * c / j.nc), g1 = int(long(np) * (c + 1) / j.nc);
+  size_t ib = std::upper_bound(s.poff.begin(), s.poff.end(), g0) - s.poff.begin() - 1;
+  for (int g = g0; g < g1; g++) {
+    while (g >= s.poff[ib + 1]) ib++;
+    const RadBody& rb = j.r->rb[ib];
+    const int n = convSamples(rb, s.count);
+    if (n < 2) continue;
+    pairParts(rb, g - s.poff[ib], s.hist.data() + 6 * j.r->nh * ib, j.r->nh, s.head, n,
+              j.s->pre.data() + 3 * g);
+  }
+}
+
+// multiply-adds of the convolutions below which the pool's hand-over
+// (about a microsecond with its workers polling) is not worth it
+const long kPoolWork = 16384;
+
+// every convolution body's pairParts for this step, shared among the
+// pool's threads when there is enough work; the same values either way
+void preParts(const Radiation& r, RadState* s, Pool* pool) {
+  long work = 0;
+  for (size_t ib = 0; ib < r.rb.size(); ib++) {
+    work += long(convSamples(r.rb[ib], s->count)) * long(r.rb[ib].pair.size());
+  }
+  if (work == 0) return;
+  PreJob j{&r, s, std::min(s->poff.back(), 16)};
+  if (pool && work >= kPoolWork && poolRun(pool, preChunk, &j, j.nc)) return;
+  j.nc = 1;
+  preChunk(&j, 0, 0);
+}
+
+}  // namespace
+
+// the body at rest before the first sample (radiation.h)
+void radMemory(const RadBody& rb, const double* hist, int nh, int head, int count, double dt,
+               double* f) {
+  const int n = std::min(count, rb.nk);
+  double q[3 * 36];  // (at most 36 pairs)
+  for (size_t p = 0; n >= 2 && p < rb.pair.size(); p++) {
+    pairParts(rb, p, hist, nh, head, n, q + 3 * p);
+  }
+  memoryFrom(rb, hist, nh, head, n, dt, q, f);
+}
+
+namespace {
+
+// body-axes Jacobian J (6 x n, column k for rb.dof[k]) at rb's reference
+// point p, its velocity nu = J qdot, and bias, the rate of change of nu
+// with qacc = 0: the spatial acceleration sum cdof_dot qdot (alpha, a_o at
+// o) moved to p and turned into body axes (docs/physics.md section 14)
+void kinematics(const RadBody& rb, const mjModel* m, const mjData* d, double* J, double nu[6],
+                double bias[6]) {
+  const mjtNum* R = d->xmat + 9 * rb.body;
+  const mjtNum* o = d->subtree_com + 3 * m->body_rootid[rb.body];
+  double p[3], po[3], ab[6] = {0};
+  mju_rotVecMat(p, rb.ref, R);
+  mju_addTo3(p, d->xpos + 3 * rb.body);
+  mju_sub3(po, p, o);
+  std::memset(nu, 0, 6 * sizeof(double));
+  for (size_t k = 0; k < rb.dof.size(); k++) {
+    const int i = rb.dof[k];
+    const mjtNum* c = d->cdof + 6 * i;  // [angular; linear at o]
+    double lin[3];
+    cross(c, po, lin);
+    mju_addTo3(lin, c + 3);
+    mju_rotVecMatT(J + 6 * k, lin, R);
+    mju_rotVecMatT(J + 6 * k + 3, c, R);
+    for (int j = 0; j < 6; j++) {
+      nu[j] += J[6 * k + j] * d->qvel[i];
+      ab[j] += d->cdof_dot[6 * i + j] * d->qvel[i];
+    }
+  }
+  double ap[3];
+  cross(ab, po, ap);
+  mju_addTo3(ap, ab + 3);
+  mju_rotVecMatT(bias, ap, R);
+  mju_rotVecMatT(bias + 3, ab, R);
+}
+
+// the added mass's velocity wrench in body axes at ref: -A bias plus
+// Kirchhoff's terms, with (p, h) = A nu: F = -w x p, M = -w x h - v x p
+// [Newman 1977, sec. 4.13; Fossen 2011, -C_A(nu) nu]
+void kirchhoff(const double A[36], const double nu[6], const double bias[6], double W[6]) {
+  double P[6], t[3];
+  mul6(A, nu, P);
+  mul6(A, bias, W);
+  for (int j = 0; j < 6; j++) W[j] = -W[j];
+  cross(nu + 3, P, t);
+  mju_subFrom3(W, t);
+  cross(nu + 3, P + 3, t);
+  mju_subFrom3(W + 3, t);
+  cross(nu, P, t);
+  mju_subFrom3(W + 3, t);
+}
+
+// nu and its rate relative to the water moving at U (world): v - R^T U,
+// and since d(R^T U)/dt = -w x R^T U for a steady U the rate gains
+// w x R^T U (docs/physics.md section 14, "Current"); the rate of a wave's
+// U is the incident flow's acceleration, whose force is the excitation's
+// (Froude-Krylov and diffraction, section 15), not added here
+void relative(const mjtNum* R, const double U[3], double nu[6], double bias[6]) {
+  double u[3], t[3];
+  mju_rotVecMatT(u, U, R);
+  mju_subFrom3(nu, u);
+  cross(nu + 3, u, t);
+  mju_addTo3(bias, t);
+}
+
+// rate [1/s] of the immersion factor si on the memory's clock, from the
+// factor at the last step's time and this step's (ss[0], ss[1], kept
+// here); an RK4 stage takes its slope from the step's start at tcur
+double immRate(int tick, double si, double t, double tcur, double h, double* ss) {
+  if (tick == kRestart) ss[0] = ss[1] = si;
+  if (tick == kNew) ss[0] = ss[1];
+  if (tick == kMid) return t > tcur ? (si - ss[1]) / (t - tcur) : 0;
+  ss[1] = si;
+  return (ss[1] - ss[0]) / h;
+}
+
+// sum of qM's diagonal over the dofs that move rb
+double diagSum(const mjModel* m, const mjData* d, const RadBody& rb) {
+  double q = 0;
+  for (int i : rb.dof) q += d->qM[m->dof_Madr[i]];
+  return q;
+}
+
+}  // namespace
+
+void radImmersion(const Radiation& r, const double* part, const char* bad, const char* badp,
+                  int np, double rhog, RadState* s) {
+  for (size_t ib = 0; ib < r.rb.size(); ib++) {
+    const RadBody& rb = r.rb[ib];
+    if (!(rb.veq > 0)) {
+      s->imm[ib] = 1;
+      continue;
+    }
+    // V = F_z / (rho g): -sum dA n_z of the wet pieces on flat water
+    // (eqdraft.h), the same below the wave surface in waves
+    double fz = 0;
+    bool ok = true;
+    for (int b : rb.hb) {
+      ok = ok && !bad[b] && !badp[np * b] && std::isfinite(part[6 * b + 2]);
+      fz += part[6 * b + 2];
+    }
+    // a pressure that is not finite is named by finishWrench: keep the last
+    if (!ok) continue;
+    const double v = fz / (rhog * kImmKnee * rb.veq);
+    s->imm[ib] = v >= 1 ? 1.0 : v > 0 ? v : 0.0;
+  }
+}
+
+void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s, const Sea& sea,
+                   std::string* notices, Pool* pool) {
+  const double cur[3] = {sea.current[0], sea.current[1], 0};
+  if (r.rb.empty()) return;
+  const int tick = clock(m, d, s);
+  if (tick == kRestart) {
+    s->head = 0;
+    s->count = 0;
+  }
+  if (tick == kNew) s->head = (s->head + 1) % r.nh;
+  if (tick == kNew || tick == kRestart) s->count = std::min(s->count + 1, r.nh);
+  // qM is rebuilt by every mj_fwdPosition; a second callback after the same
+  // one (mj_forwardSkip from the velocity stage) finds A_inf in it already
+  const long pos = d->timer[mjTIMER_POSITION].number;
+  // with the same count mj_crb may still have rebuilt qM since (a reset in
+  // between): then some body's diagonal sum is not the one left after adding
+  bool addM = pos != s->mstamp;
+  for (size_t ib = 0; ib < r.rb.size() && !addM; ib++)
+    addM = !(diagSum(m, d, r.rb[ib]) == s->mdiag[ib]);
+  if (tick != kMid) preParts(r, s, pool);
+  for (size_t ib = 0; ib < r.rb.size(); ib++) {
+    const RadBody& rb = r.rb[ib];
+    const int n = rb.dof.size();
+    const double si = s->imm[ib];  // immersion factor (radImmersion)
+    double* J = s->jac.data();
+    double nu[6], bias[6];
+    kinematics(rb, m, d, J, nu, bias);
+    // the Kirchhoff terms see the water at the COM (current and waves), the
+    // memory only the current (docs/physics.md section 14, "Kirchhoff terms
+    // in waves")
+    double nw[6], bw[6], uw[3];
+    sea.velocity(d->xipos + 3 * rb.body, d->time, uw);
+    for (int j = 0; j < 6; j++) {
+      nw[j] = nu[j];
+      bw[j] = bias[j];
+    }
+    relative(d->xmat + 9 * rb.body, uw, nw, bw);
+    relative(d->xmat + 9 * rb.body, cur, nu, bias);
+    if (!std::isfinite(dot6(nu, nu)) || !std::isfinite(dot6(bias, bias)) ||
+        !std::isfinite(dot6(nw, nw)) || !std::isfinite(dot6(bw, bw))) {
+      continue;
+    }
+
+    if (addM) {
+      // M(dof[a], dof[b]) += J_a^T A J_b, b an ancestor (later in the chain)
+      double* AJ = s->ajac.data();
+      for (int k = 0; k < n; k++) mul6(rb.A, J + 6 * k, AJ + 6 * k);
+      for (int a = 0; a < n; a++) {
+        const int adr = m->dof_Madr[rb.dof[a]];
+        for (int b = a; b < n; b++) d->qM[adr + b - a] += si * dot6(J + 6 * a, AJ + 6 * b);
+      }
+    }
+
+    double W[6];
+    kirchhoff(rb.A, nw, bw, W);
+    for (int j = 0; j < 6; j++) W[j] *= si;  // linear in A: the terms of s A_inf
+    // water entry: the hull takes up the momentum s A nu_w of the water
+    // it wets as s rises, -ds/dt A nu_w; on exit the water keeps its own
+    // (docs/physics.md section 14, "Water entry")
+    const double ds = immRate(tick, si, d->time, s->tcur, r.dt, s->sstep.data() + 2 * ib);
+    if (r.entry && ds > 0) {
+      double P[6];
+      mul6(rb.A, nw, P);
+      for (int j = 0; j < 6; j++) W[j] -= ds * P[j];
+    }
+    // viscous roll damping about the body's x axis, on the wetted share
+    // (docs/physics.md section 14, "Viscous roll damping")
+    const double p = nu[3];
+    W[3] -= si * (rb.roll[0] + rb.roll[1] * std::fabs(p)) * p;
+    // the memory's input is the wetted surface's velocity s nu: a dry
+    // body radiates no waves (docs/physics.md, "Immersion factor")
+    for (int j = 0; j < 6; j++) nu[j] *= si;
+
+    // memory: the step's first call records nu and evaluates the convolution
+    double* fm = s->fmem.data() + 6 * ib;
+    double* hist = s->hist.data() + 6 * r.nh * ib;
+    if (rb.ss.size() && tick != kMid) {
+      // state-space memory (radss.cc), on the same clock as the history
+      SsState st{s->ssX.data() + rb.soff, s->ssPw.data() + rb.soff, s->ssNu.data() + 12 * ib,
+                 s->ssNu.data() + 12 * ib + 6};
+      if (tick == kRestart) {
+        ssRestart(rb.ss, st, nu);
+      } else if (tick == kNew) {
+        ssNew(rb.ss, st, nu);
+      } else {
+        ssSame(st, nu, s->count == 1);
+      }
+      ssForce(rb.ss, st, r.dt, fm);
+    } else if (rb.nk && tick != kMid) {
+      for (int j = 0; j < 6; j++) hist[r.nh * j + s->head] = nu[j];
+      memoryFrom(rb, hist, r.nh, s->head, convSamples(rb, s->count), r.dt,
+                 s->pre.data() + 3 * s->poff[ib], fm);
+    }
+    for (int j = 0; j < 6; j++) W[j] += si * fm[j];
+
+    if (!std::isfinite(dot6(W, W))) {
+      if (!s->told[ib]) {
+        s->told[ib] = 1;
+        char line[256];
+        std::snprintf(line, sizeof(line),
+                      "body \"%s\": radiation force not finite at t = %g s; mjbuoy leaves it out\n",
+                      m->names + m->name_bodyadr[rb.body], d->time);
+        // within the capacity reserved in makeState: no allocation while stepping
+        if (notices->size() + std::strlen(line) < notices->capacity()) *notices += line;
+      }
+      continue;
+    }
+    for (int k = 0; k < n; k++) d->qfrc_passive[rb.dof[k]] += dot6(J + 6 * k, W);
+  }
+  if (addM) {
+    // as mj_fwdPosition does after mj_crb: the integrators, the constraint
+    // solver and mj_implicit then all see M + J^T A J
+    mj_factorM(m, d);
+    if (d->nefc > 0) mj_projectConstraint(m, d);
+    s->mstamp = pos;
+    for (size_t ib = 0; ib < r.rb.size(); ib++) s->mdiag[ib] = diagSum(m, d, r.rb[ib]);
+  }
+}
+
+}  // namespace mjb

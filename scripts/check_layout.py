@@ -1,0 +1,135 @@
+#!/usr/bin/env python3
+"""The library's house rules (docs/architecture.md): which subsystem folder
+of mjbuoy/ may include which. Exits 1 naming each include that breaks a
+rule, 0 when the tree is as drawn.
+
+  python3 scripts/check_layout.py [--root DIR]
+  python3 scripts/check_layout.py --self-test   (a tree with a broken include fails)
+"""
+import argparse
+import os
+import re
+import sys
+import tempfile
+
+# folder -> the folders its files may include (besides its own); the
+# public header mjbuoy.h (plain C types and the API's declarations) may be
+# included from anywhere
+MAY_USE = {
+    'util': set(),
+    'sea': {'util'},
+    'hull': {'sea', 'util'},
+    'cpu': {'hull', 'sea', 'util'},
+    'gl': {'hull', 'sea', 'util'},
+    'radiation': {'hull', 'sea', 'util'},
+    'mooring': {'sea', 'util'},
+    'api': {'cpu', 'gl', 'radiation', 'mooring', 'hull', 'sea', 'util'},
+}
+PUBLIC = {'mjbuoy.h', 'mjbuoy_version.h'}
+# includes that still break a rule: each is a file that takes the glue's
+# central Buoy (api/buoy.h) where it could be handed the part it needs.
+# The list may only shrink: a new break, or a listed one that is gone
+# (remove it here), fails the check
+KNOWN = {
+    ('mjbuoy/cpu/cpuhull.h', 'api/buoy.h'),
+    ('mjbuoy/gl/gl.cc', 'api/buoy.h'),
+    ('mjbuoy/hull/eqdraft.cc', 'api/buoy.h'),
+    ('mjbuoy/radiation/radattach.cc', 'api/buoy.h'),
+    ('mjbuoy/sea/wind.cc', 'api/buoy.h'),
+    ('mjbuoy/sea/wind.cc', 'hull/hull.h'),
+}
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
+
+
+def check(root):
+    lib = os.path.join(root, 'mjbuoy')
+    bad = []
+    seen = set()
+    folders = sorted(d for d in os.listdir(lib) if os.path.isdir(os.path.join(lib, d)))
+    for d in folders:
+        if d not in MAY_USE:
+            bad.append('mjbuoy/%s/: a folder the rules do not know; add it to MAY_USE in '
+                       'scripts/check_layout.py and to docs/architecture.md' % d)
+    for name in sorted(os.listdir(lib)):
+        p = os.path.join(lib, name)
+        if os.path.isfile(p) and name.endswith(('.cc', '.h')) and name not in PUBLIC:
+            bad.append('mjbuoy/%s: library sources live in a subsystem folder' % name)
+    for d in folders:
+        allowed = MAY_USE.get(d, set()) | {d}
+        for dp, _, files in os.walk(os.path.join(lib, d)):
+            for f in sorted(files):
+                if not f.endswith(('.cc', '.h', '.inc')):
+                    continue
+                path = os.path.join(dp, f)
+                rel = os.path.relpath(path, root)
+                with open(path, encoding='utf-8') as fh:
+                    for n, line in enumerate(fh, 1):
+                        m = INCLUDE.match(line)
+                        if not m:
+                            continue
+                        inc = m.group(1)
+                        if inc in PUBLIC:
+                            continue
+                        if '/' not in inc:
+                            if os.path.exists(os.path.join(dp, inc)):
+                                bad.append('%s:%d: #include "%s": name it from mjbuoy/, '
+                                           'as "%s/%s"' % (rel, n, inc, d, inc))
+                            continue  # shaders/ and generated headers
+                        top = inc.split('/')[0]
+                        if top not in MAY_USE:
+                            continue
+                        if top not in allowed and (rel, inc) in KNOWN:
+                            seen.add((rel, inc))
+                        elif top not in allowed:
+                            uses = ', '.join(sorted(MAY_USE[d])) or 'nothing else'
+                            bad.append('%s:%d: #include "%s": %s/ may use only %s '
+                                       '(docs/architecture.md)' % (rel, n, inc, d, uses))
+    for rel, inc in sorted(KNOWN - seen):
+        bad.append('%s: no longer includes "%s": remove it from KNOWN in '
+                   'scripts/check_layout.py' % (rel, inc))
+    return bad
+
+
+def self_test():
+    """a sea/ file that includes hull/ and a loose source must both be named"""
+    with tempfile.TemporaryDirectory() as t:
+        for d in MAY_USE:
+            os.makedirs(os.path.join(t, 'mjbuoy', d))
+        with open(os.path.join(t, 'mjbuoy', 'sea', 'bad.cc'), 'w') as f:
+            f.write('#include "mjbuoy.h"\n#include "util/fmt.h"\n#include "hull/hull.h"\n')
+        with open(os.path.join(t, 'mjbuoy', 'loose.cc'), 'w') as f:
+            f.write('\n')
+        global KNOWN
+        KNOWN = set()
+        bad = check(t)
+    want = ['mjbuoy/loose.cc: library sources live in a subsystem folder',
+            'mjbuoy/sea/bad.cc:3: #include "hull/hull.h": sea/ may use only util']
+    ok = len(bad) == 2 and all(any(b.startswith(w) for b in bad) for w in want)
+    print('\n'.join(bad))
+    print('check_layout self-test: %s' % ('ok' if ok else 'FAIL the check missed a break'))
+    return 0 if ok else 1
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument('--root', default=os.path.join(os.path.dirname(__file__), '..'))
+    ap.add_argument('--self-test', action='store_true', help='check the checker on a broken tree')
+    a = ap.parse_args()
+    if a.self_test:
+        return self_test()
+    bad = check(os.path.abspath(a.root))
+    for b in bad:
+        print('FAIL ' + b)
+    if bad:
+        print('check_layout: %d include(s) break the house rules' % len(bad))
+        return 1
+    if KNOWN:
+        print('check_layout: no new break of the house rules; %d known break(s) still listed '
+              'in KNOWN' % len(KNOWN))
+    else:
+        print('check_layout: every include of mjbuoy/ follows the house rules')
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())

@@ -1,0 +1,124 @@
+// view_sim: mjbuoy-view's physics thread (see view.h)
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <thread>
+
+#include "api/config.h"
+#include "view.h"
+
+namespace mjbview {
+namespace {
+
+double wallClock() {
+  using namespace std::chrono;
+  return duration<double>(steady_clock::now().time_since_epoch()).count();
+}
+
+// one step with the mouse perturbation: it goes through xfrc_applied, which
+// the viewer owns (mjbuoy never writes it)
+void stepOnce(View* v) {
+  mju_zero(v->d->xfrc_applied, 6 * v->m->nbody);
+  mjv_applyPerturbPose(v->m, v->d, &v->pert, 0);  // mocap bodies only
+  mjv_applyPerturbForce(v->m, v->d, &v->pert);
+  double before = v->d->time;
+  mj_step(v->m, v->d);
+  if (v->d->time < before && !v->diverged) {
+    v->diverged = true;
+    std::fprintf(stderr, "mjbuoy-view: the simulation diverged at t = %g s and MuJoCo reset it "
+                 "(NaN, Inf or huge value in the state)\n", before);
+  }
+}
+
+}  // namespace
+
+void physics(View* v) {
+  const double kMisalign = 0.1;    // resync when stepping lags the clock by this [s]
+  const double kHold = 1.0 / 60;   // longest hold of the lock [s]
+  double syncWall = 0, syncSim = 0;
+  bool synced = false;
+  int slow = -1;
+  while (!v->quit) {
+    bool stepped = false;
+    {
+      std::lock_guard<std::mutex> lk(v->mtx);
+      mjModel* m = v->m;
+      mjData* d = v->d;
+      const double eps = 1e-9 * std::fmax(1.0, v->stopAt);
+      if (v->reset) {
+        mj_resetData(m, d);
+        mj_forward(m, d);
+        v->reset = false;
+        v->diverged = false;
+        synced = false;
+      }
+      bool atStop = d->time >= v->stopAt - eps;
+      if (v->paused) {
+        if (v->steps > 0 && !atStop) {
+          stepOnce(v);
+          v->steps--;
+          stepped = true;
+        } else if (v->pert.active) {
+          mjv_applyPerturbPose(m, d, &v->pert, 1);  // paused: move the body itself
+          mj_forward(m, d);
+        }
+        synced = false;
+      } else if (!atStop) {
+        double now = wallClock();
+        double k = kSlow[v->slow];
+        if (!synced || slow != v->slow ||
+            (now - syncWall) - (d->time - syncSim) * k > kMisalign) {
+          // start, slow-motion change, or too far behind: follow the clock from here
+          syncWall = now;
+          syncSim = d->time;
+          synced = true;
+          slow = v->slow;
+          stepOnce(v);
+          stepped = true;
+        }
+        while ((d->time - syncSim) * k < wallClock() - syncWall && wallClock() - now < kHold &&
+               d->time < v->stopAt - eps) {
+          double before = d->time;
+          stepOnce(v);
+          stepped = true;
+          if (d->time < before) {
+            synced = false;
+            break;
+          }
+        }
+      }
+    }
+    // let the renderer take the lock; sleep when ahead of the clock
+    if (stepped) {
+      std::this_thread::yield();
+    } else {
+      std::this_thread::sleep_for(std::chrono::microseconds(v->paused ? 2000 : 500));
+    }
+  }
+}
+
+std::string describeSea(const mjModel* m) {
+  mjb::Config c;
+  if (!mjb::parseConfig(m, &c).empty()) return "?";
+  char buf[256];
+  if (c.sea.waves.empty()) {
+    std::snprintf(buf, sizeof(buf), "calm, level %g m", c.sea.level);
+  } else {
+    double amax = 0, lmin = 1e300, lmax = 0;
+    for (const mjb::Wave& w : c.sea.waves) {
+      amax = std::fmax(amax, w.amp);
+      lmin = std::fmin(lmin, w.len);
+      lmax = std::fmax(lmax, w.len);
+    }
+    std::snprintf(buf, sizeof(buf), "%zu Gerstner wave%s, A <= %g m, lambda %g-%g m",
+                  c.sea.waves.size(), c.sea.waves.size() > 1 ? "s" : "", amax, lmin, lmax);
+  }
+  std::string s = buf;
+  if (c.sea.current[0] != 0 || c.sea.current[1] != 0) {
+    std::snprintf(buf, sizeof(buf), ", current %g %g m/s", c.sea.current[0], c.sea.current[1]);
+    s += buf;
+  }
+  return s;
+}
+
+}  // namespace mjbview
