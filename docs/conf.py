@@ -13,7 +13,7 @@ exclude_patterns = ["_build", "README.md"]
 # anchors for headings down to ####, so [text](page.md#a-heading) resolves
 # and a missing anchor is a warning (an error with -W)
 myst_heading_anchors = 4
-myst_enable_extensions = ["dollarmath", "deflist"]
+myst_enable_extensions = []
 
 html_theme = "sphinx_rtd_theme"
 html_title = "mjbuoy"
