@@ -164,6 +164,9 @@ def mode_slurm(bin_):
         t0 = time.time()
         with LocalSlurm(os.path.join(d, "cluster")) as env:
             print(f"slurm up in {time.time() - t0:.1f} s")
+            # sbatch passes the submitter's environment on: without a cache
+            # of the user's the scripts share DIR/radcache
+            env = {k: v for k, v in env.items() if k != "MJBUOY_RADIATION_CACHE"}
             r = run([bin_, "slurm", BARGE, "--out", remote, "--shards", "3", "--time", "5",
                      "--mem", "200M"], env=env, ok=(0,))
             print(r.stdout.strip())
@@ -181,7 +184,14 @@ def mode_slurm(bin_):
                 time.sleep(0.5)
             check(done, f"array finished within 90 s ({time.time() - t0:.1f} s)")
             logs = sorted(os.listdir(os.path.join(remote, "slurm")))
-            check(len(logs) == 3, f"3 array task logs: {logs}")
+            arr = [f for f in logs if re.match(r"^[0-9]+_[0-9]+\.out$", f)]
+            pre = [f for f in logs if f.startswith("precompute_")]
+            check(len(arr) == 3 and len(pre) == 1, f"3 array task logs and the precompute job's: {logs}")
+            if pre:
+                t = open(os.path.join(remote, "slurm", pre[0])).read()
+                check("mjbuoy-sweep: precompute barge: 6 case(s), radiation cache " +
+                      os.path.join(remote, "radcache") + ":" in t and " 0 computed" not in t,
+                      f"the precompute job filled the shared cache: {t.strip()}")
         run([bin_, "merge", remote])
         for f in ("sweep.csv", "junit.xml"):
             check(read(os.path.join(local, f)) == read(os.path.join(remote, f)), f"{f} identical locally and on Slurm")
