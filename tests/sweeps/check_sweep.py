@@ -17,7 +17,8 @@ check_sweep.py MODE BIN [ARGS]; prints "FAIL ..." and exits 1 on a failure.
                           sbatch option are refused naming the option and its form;
                           nothing of them reaches a script; --shard 0/2/3 is refused
   fifo BIN                a FIFO in the results folder is refused by run and merge
-                          (they blocked forever), naming it
+                          (they blocked forever), naming it; run does not write its
+                          manifest over the sweep file
   cluster BIN             the scripts run as they are on a cluster: --time and --mem
                           from the measured case, --jobs 0 from the CPU allocation
                           (taskset, SLURM_CPUS_PER_TASK), one shared radiation cache
@@ -389,6 +390,15 @@ def mode_fifo(bin_):
                       f"{cmd[0]}: refused naming the FIFO: {r.returncode} {r.stderr.strip()}")
             except subprocess.TimeoutExpired:
                 check(False, f"{cmd[0]} with a FIFO in cases/ finished within 30 s")
+        # outputs never replace inputs: a sweep file where run writes its manifest
+        o = os.path.join(d, "o")
+        os.mkdir(o)
+        sj = os.path.join(o, "sweep.json")
+        open(sj, "w").write(open(sw).read().replace('scenario="base.xml"', 'scenario="../base.xml"'))
+        before = read(sj)
+        r = subprocess.run([bin_, "run", sj, "--out", o], capture_output=True, text=True)
+        check(r.returncode == 2 and "same file as the sweep file" in r.stderr and read(sj) == before,
+              f"run --out onto the sweep file's directory refused, the file intact: {r.stderr.strip()}")
 
 
 def mode_cluster(bin_):

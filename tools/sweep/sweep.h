@@ -169,6 +169,11 @@ std::string checkSlurmOptions(const SlurmOptions& o, const std::string& out);
 // where a case's result lives
 std::string resultPath(const std::string& dir, const std::string& id);
 
+// outs (files the command writes) are none of the sweep's inputs: the sweep
+// file, the base scenario, the model and the files it reads (case 0's);
+// false with the message printed
+bool checkSweepOutputs(const Sweep& s, const std::vector<std::string>& outs);
+
 // "" when path is a regular file or absent, else why it cannot be a result,
 // log or manifest (a FIFO would block the reader forever)
 std::string notRegular(const std::string& path);

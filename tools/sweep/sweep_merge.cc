@@ -171,6 +171,10 @@ int merge(const std::string& dir) {
   std::vector<std::string> now;
   try {
     Sweep s = parseSweep(man.value("file", ""));
+    if (!checkSweepOutputs(s, {(fs::path(dir) / "sweep.csv").string(),
+                               (fs::path(dir) / "junit.xml").string()})) {
+      return 2;
+    }
     if (s.ncases == (long)man["cases"].size()) now = caseHashes(s);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "mjbuoy-sweep: warning: cannot tell whether the results are current "

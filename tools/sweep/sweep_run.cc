@@ -20,6 +20,7 @@
 
 #include "api/buoy.h"
 #include "atomic.h"
+#include "outfile.h"
 #include "radiation/radcache.h"
 #include "sweep.h"
 
@@ -85,6 +86,23 @@ std::vector<std::string> caseHashes(const Sweep& s) {
     h.push_back(caseHash(s, xml, caseFiles(sc)));
   }
   return h;
+}
+
+bool checkSweepOutputs(const Sweep& s, const std::vector<std::string>& outs) {
+  std::vector<mjbtool::PathUse> uses = {{s.file, "sweep file", false}, {s.base, "base scenario", false}};
+  try {
+    std::string xml;
+    for (const std::string& f : caseFiles(caseScenario(s, caseAt(s, 0), &xml))) {
+      uses.push_back({f, "file the sweep's model reads:", false});
+    }
+  } catch (const std::exception&) {
+    // an invalid case is reported where the cases are built
+  }
+  for (const std::string& o : outs) uses.push_back({o, "output", true});
+  std::string err;
+  if (mjbtool::checkDistinct(uses, &err)) return true;
+  std::fprintf(stderr, "mjbuoy-sweep: %s\n", err.c_str());
+  return false;
 }
 
 // the first result, log or manifest path of this shard that is not a
@@ -158,6 +176,7 @@ int runSweep(const std::string& file, const std::string& out, int jobs, int shar
              const std::string& self) {
   Sweep s = parseSweep(file);
   json man = manifest(s);  // builds every case's scenario: a bad value stops here (exit 2)
+  if (!checkSweepOutputs(s, {(fs::path(out) / "sweep.json").string()})) return 2;
   if (std::string why = blocked(s, out, shard, nshards); !why.empty()) {
     std::fprintf(stderr, "mjbuoy-sweep: %s\n", why.c_str());
     return 2;

@@ -221,6 +221,7 @@ int slurm(const std::string& file, const std::string& outdir, const SlurmOptions
     return 2;
   }
   std::string ppath = out + "/precompute.sbatch", path = out + "/sweep.sbatch", err;
+  if (!checkSweepOutputs(s, {ppath, path})) return 2;
   if (!atomicfile::write(ppath, pre, &err) || !atomicfile::write(path, arr, &err)) {
     std::fprintf(stderr, "mjbuoy-sweep: %s\n", err.c_str());
     return 2;
