@@ -178,10 +178,11 @@ static void groupMesh(const Buoy& B, const mjData* d, int root, std::vector<floa
   }
 }
 
-// warnings on c, then its symmetric part (who names the body, src the
-// coefficients' source)
-static void checkCoef(Buoy* B, const std::string& who, const char* src, HydroCoef* cp) {
+// warnings on c, then its symmetric part (who names the body; file: c is
+// from a coefficient file, not the panel solver)
+static void checkCoef(Buoy* B, const std::string& who, bool file, HydroCoef* cp) {
   HydroCoef& c = *cp;
+  const char* src = file ? "the coefficient file" : "the panel solver";
   // potential flow radiates energy: B_ii >= 0; a coarse mesh (or the lid
   // at high kR) can give small negative values, which the memory turns
   // into a source of energy
@@ -196,15 +197,16 @@ static void checkCoef(Buoy* B, const std::string& who, const char* src, HydroCoe
       static const char* kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
       B->cfg.warn.push_back(who.substr(8) + ": " + src + "'s " + kDof[i] + " damping is " +
                             fmt(low) + " at omega " + fmt(wl) + " rad/s (below -1% of its peak " +
-                            fmt(big) + "); refine its panels (mjbuoy.radiation.refine) or lower "
-                            "the highest frequency (mjbuoy.radiation.omega)");
+                            fmt(big) + "); " + (file ? "check the file's damping" :
+                            "refine its panels (mjbuoy.radiation.refine) or lower the highest "
+                            "frequency (mjbuoy.radiation.omega)"));
     }
   }
   double asym = symmetrize(cp);
   if (asym > kAsymWarn) {
     B->cfg.warn.push_back(who.substr(8) + ": " + src + "'s added mass or damping is " +
-                          fmt(100 * asym) + "% asymmetric (made symmetric); refine its panels "
-                          "(mjbuoy.radiation.refine)");
+                          fmt(100 * asym) + "% asymmetric (made symmetric)" + (file ? "" :
+                          "; refine its panels (mjbuoy.radiation.refine)"));
   }
   // damping that would feed energy: projected out, with a warning
   projectDamping(cp, who.substr(8), &B->cfg.warn);
@@ -364,7 +366,7 @@ static std::string finishGroup(Buoy* B, const mjData* d, int root, const std::st
   const mjModel* m = B->m;
   const RadConfig& rc = B->cfg.rad;
   std::string err;
-  checkCoef(B, who, imported ? "the coefficient file" : "the panel solver", &c);
+  checkCoef(B, who, imported, &c);
   B->rad.conv = rc.conv;
   B->rad.ssAsked = rc.ssAsked;
   std::copy(rc.roll, rc.roll + 2, B->rad.roll);
