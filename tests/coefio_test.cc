@@ -316,6 +316,57 @@ TEST(CoefIO, HeadingResample) {
   EXPECT_NEAR(gap, 2 * M_PI, 1e-12);
 }
 
+// the Froude-Krylov force on a box L x B x T (centred on the z axis, top
+// at the waterline) in a wave along +x, k = omega^2 / g, against the
+// integral of the incident pressure rho g e^{k z} e^{i k x} over its
+// faces: heave (the bottom) rho g B e^{-k T} 2 sin(k L / 2) / k, surge
+// (the two ends) -2 i rho g B (1 - e^{-k T}) / k sin(k L / 2). The
+// centroid rule on panels h long integrates e^{i k x} to the exact over
+// sinc(k h / 2) and e^{k z} to the exact over sinh(k h / 2) / (k h / 2)
+// (each panel's exact integral h e^{i k x_c} sin(k h / 2) / (k h / 2)):
+// 4.2e-4 off at k h = 0.1, and exactly that
+TEST(CoefIO, FroudeKrylovOfABox) {
+  const double L = 2, Bw = 1, T = 0.5, h = 0.1, rho = 1025, g = 9.81;
+  mjb::PanelMesh p;
+  // a grid of quads from corner o along u and v, normal u x v out of the box
+  auto grid = [&](const double o[3], const double u[3], const double v[3], int nu, int nv) {
+    int v0 = p.vert.size() / 3;
+    for (int i = 0; i <= nu; i++)
+      for (int j = 0; j <= nv; j++)
+        for (int k = 0; k < 3; k++) p.vert.push_back(o[k] + u[k] * i / nu + v[k] * j / nv);
+    for (int i = 0; i < nu; i++)
+      for (int j = 0; j < nv; j++) {
+        int a = v0 + i * (nv + 1) + j;
+        p.face.insert(p.face.end(), {a, a + nv + 1, a + nv + 2, a + 1});
+      }
+  };
+  const double x0 = -L / 2, y0 = -Bw / 2;
+  {  // bottom, normal -z: u along y, v along x
+    double o[3] = {x0, y0, -T}, u[3] = {0, Bw, 0}, v[3] = {L, 0, 0};
+    grid(o, u, v, int(Bw / h), int(L / h));
+  }
+  {  // end x = L/2, normal +x: u along y, v along z
+    double o[3] = {L / 2, y0, -T}, u[3] = {0, Bw, 0}, v[3] = {0, 0, T};
+    grid(o, u, v, int(Bw / h), int(T / h));
+  }
+  {  // end x = -L/2, normal -x: u along z, v along y
+    double o[3] = {-L / 2, y0, -T}, u[3] = {0, 0, T}, v[3] = {0, Bw, 0};
+    grid(o, u, v, int(T / h), int(Bw / h));
+  }
+  mjb::HydroCoef c;
+  c.rho = rho, c.g = g;
+  c.omega = {std::sqrt(g * 1.0)};  // k = 1
+  c.heading = {0};
+  mjb::froudeKrylov(p, &c);
+  const double k = 1, f3 = rho * g * Bw * std::exp(-k * T) * 2 * std::sin(k * L / 2) / k;
+  const double f1 = -2 * rho * g * Bw * (1 - std::exp(-k * T)) / k * std::sin(k * L / 2);
+  const double s = std::sin(k * h / 2) / (k * h / 2), sh = std::sinh(k * h / 2) / (k * h / 2);
+  EXPECT_NEAR(c.FKre[2], f3 / s, 1e-12 * f3);
+  EXPECT_NEAR(c.FKim[2], 0, 1e-12 * f3);
+  EXPECT_NEAR(c.FKre[0], 0, 1e-12 * f3);
+  EXPECT_NEAR(c.FKim[0], f1 / sh, 1e-12 * f3);
+}
+
 // the floating hemisphere of tests/hemisphere.h (COM 0.3 m below its
 // frame's origin) in a wave from 30 deg, with radiation and diffraction;
 // its full mesh is solved (panels 0), as the import's roll stiffness
@@ -381,6 +432,38 @@ void importMovesIdentically(const char* name, double tol) {
 TEST(CoefImport, CapytaineMovesIdentically) { importMovesIdentically("hemi.nc", 0); }
 TEST(CoefImport, BemioMovesIdentically) { importMovesIdentically("hemi.h5", 1e-10); }
 TEST(CoefImport, WamitMovesIdentically) { importMovesIdentically("hemi.1", 1e-10); }
+
+// a WAMIT set without its .3fk file: the diffraction force is the file's
+// exciting force less the hull panels' own Froude-Krylov force, by the
+// panel solver's centroid rule, so the body moves as the panel solver's to
+// the file's rounding, as WamitMovesIdentically
+TEST(CoefImport, WamitWithoutFroudeKrylovUsesTheHulls) {
+  mjbt::Scene own(hemiXML(""));
+  ASSERT_TRUE(own.ok()) << own.err;
+  CoefFile f;
+  ASSERT_EQ(mjb::exportCoef(*mjb::buoyOf(own.b), own.body("hemi"), &f), "");
+  std::string dir = tmpDir();
+  CoefOpt o;
+  o.rho = mjbt::kRho;
+  ASSERT_EQ(mjb::writeCoefFile(dir + "/h.1", o, f), "");
+  ASSERT_EQ(std::remove((dir + "/h.3fk").c_str()), 0);
+  mjbt::Scene imp(hemiXML("<text name=\"mjbuoy.radiation.file.hemi\" data=\"" + dir + "/h.1\"/>"
+                          "<numeric name=\"mjbuoy.radiation.fileorigin.hemi\" data=\"0 0 -0.3\"/>"));
+  ASSERT_TRUE(imp.ok()) << imp.err;
+  EXPECT_NE(std::string(mjb_warnings(imp.b)).find("holds no Froude-Krylov force"),
+            std::string::npos) << mjb_warnings(imp.b);
+  const int n = 2000;
+  std::vector<double> a = mjbt::stepRecord(own.m, own.d, own.b, n);
+  std::vector<double> b = mjbt::stepRecord(imp.m, imp.d, imp.b, n);
+  double worst = 0;
+  for (int s = 0; s < n; s++)
+    for (int k = 0; k < own.m->nq; k++) {
+      size_t i = s * (own.m->nq + 6 * own.m->nbody) + k;
+      worst = std::max(worst, std::fabs(a[i] - b[i]));
+    }
+  EXPECT_LE(worst, 1e-10);
+  std::printf("without .3fk: largest qpos difference %.3g over %d steps\n", worst, n);
+}
 
 TEST(CoefImport, EntriesAreChecked) {
   mjbt::Scene s(hemiXML("<numeric name=\"mjbuoy.radiation.ulen.hemi\" data=\"2\"/>"));

@@ -423,6 +423,12 @@ static std::string importGroup(Buoy* B, const mjData* d, int root, const std::st
   for (int i = 0; i < 9; i++) in.R[i] = Rd[i] = d->xmat[9 * root + i];
   for (int k = 0; k < 3; k++) in.com[k] = B->m->body_ipos[3 * root + k];
   in.diffraction = B->cfg.rad.diffraction;
+  in.body = &body;
+  // the COM in the panel frame (world axes, origin below the root's on the
+  // mean sea level): R ipos, at the height of the panel pose
+  const mjtNum* ip = B->m->body_ipos + 3 * root;
+  mju_rotVecMat(in.comPanel, ip, d->xmat + 9 * root);
+  in.comPanel[2] += d->xpos[3 * root + 2] + dz - B->cfg.sea.level;
   HydroCoef c, cx;
   std::vector<std::string> warn;
   std::string err = importCoef(in, &c, &cx, &warn);

@@ -56,6 +56,57 @@ bool resampleHeadings(HydroCoef* c, int n, double* gap) {
   return true;
 }
 
+// area centroid (a fan of triangles from the first vertex, as the panel
+// solver's, rankine.cc), area and unit normal (Newell's) of panel f
+static void panelGeom(const PanelMesh& p, int f, double c[3], double* area, double n[3]) {
+  const int* q = &p.face[4 * f];
+  const int nv = q[3] < 0 ? 3 : 4;
+  double a[3] = {0, 0, 0}, at = 0;
+  c[0] = c[1] = c[2] = 0;
+  for (int k = 0; k < nv; k++) {
+    const double* u = &p.vert[3 * q[k]];
+    const double* v = &p.vert[3 * q[(k + 1) % nv]];
+    a[0] += 0.5 * (u[1] * v[2] - u[2] * v[1]);
+    a[1] += 0.5 * (u[2] * v[0] - u[0] * v[2]);
+    a[2] += 0.5 * (u[0] * v[1] - u[1] * v[0]);
+  }
+  *area = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  for (int i = 0; i < 3; i++) n[i] = *area > 0 ? a[i] / *area : 0;
+  const double* o = &p.vert[3 * q[0]];
+  for (int k = 1; k + 1 < nv; k++) {
+    const double* u = &p.vert[3 * q[k]];
+    const double* v = &p.vert[3 * q[k + 1]];
+    double e[3] = {u[0] - o[0], u[1] - o[1], u[2] - o[2]}, g[3] = {v[0] - o[0], v[1] - o[1], v[2] - o[2]};
+    double x[3] = {e[1] * g[2] - e[2] * g[1], e[2] * g[0] - e[0] * g[2], e[0] * g[1] - e[1] * g[0]};
+    double t = 0.5 * (x[0] * n[0] + x[1] * n[1] + x[2] * n[2]);
+    for (int i = 0; i < 3; i++) c[i] += t * (o[i] + u[i] + v[i]) / 3;
+    at += t;
+  }
+  for (int i = 0; i < 3 && at != 0; i++) c[i] /= at;
+}
+
+void froudeKrylov(const PanelMesh& body, HydroCoef* c) {
+  const int nw = c->nw(), nh = c->nh();
+  c->FKre.assign(6 * (size_t)nw * nh, 0);
+  c->FKim.assign(c->FKre.size(), 0);
+  for (int f = 0; f < body.nface(); f++) {
+    double x[3], dS, n[3];
+    panelGeom(body, f, x, &dS, n);
+    // generalized normal (n, r x n) dS
+    const double N[6] = {n[0] * dS, n[1] * dS, n[2] * dS, (x[1] * n[2] - x[2] * n[1]) * dS,
+                         (x[2] * n[0] - x[0] * n[2]) * dS, (x[0] * n[1] - x[1] * n[0]) * dS};
+    for (int w = 0; w < nw; w++) {
+      const double k = c->omega[w] * c->omega[w] / c->g, amp = -c->rho * c->g * std::exp(k * x[2]);
+      for (int h = 0; h < nh; h++) {
+        const double ph = k * (x[0] * std::cos(c->heading[h]) + x[1] * std::sin(c->heading[h]));
+        const double re = amp * std::cos(ph), im = amp * std::sin(ph);
+        size_t o = 6 * ((size_t)w * nh + h);
+        for (int a = 0; a < 6; a++) c->FKre[o + a] += re * N[a], c->FKim[o + a] += im * N[a];
+      }
+    }
+  }
+}
+
 // the file's density to the model's: every coefficient is proportional to it
 static void scaleRho(CoefFile* f, double rho) {
   double s = rho / f->c.rho;
@@ -72,7 +123,7 @@ static std::string excitation(const RadImport& in, const CoefFile& f, HydroCoef*
     return who + " holds no exciting force, which the diffraction force needs; give it one "
            "(WAMIT: the .3 and .3fk files beside the .1) or turn diffraction off with <text "
            "name=\"mjbuoy.radiation.diffraction\" data=\"off\"/>";
-  if (!f.hasFK)
+  if (!f.hasFK && !in.body)
     return who + " holds no Froude-Krylov force, whose difference from the exciting force is "
            "the diffraction force mjbuoy adds to its pressure integration; give it (WAMIT: the "
            ".3fk file; BEMIO: excitation/froude-krylov) or turn diffraction off with <text "
@@ -91,6 +142,19 @@ static std::string excitation(const RadImport& in, const CoefFile& f, HydroCoef*
            "diffraction force needs headings all round the body no more than " +
            fmt(kImportGap * 180 / M_PI) + " deg apart (e.g. 0 to 345 every 15 deg), or turn "
            "diffraction off with <text name=\"mjbuoy.radiation.diffraction\" data=\"off\"/>";
+  if (!f.hasFK) {
+    // the hull's own Froude-Krylov force, about the COM in world axes
+    HydroCoef fk = *cx;
+    froudeKrylov(*in.body, &fk);
+    fk.Xre = fk.FKre;
+    fk.Xim = fk.FKim;
+    for (int k = 0; k < 3; k++) fk.ref[k] = 0;
+    const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    e = coefTransform(&fk, in.comPanel, I, in.com);
+    if (!e.empty()) return who + ": " + e;
+    cx->FKre.swap(fk.FKre);
+    cx->FKim.swap(fk.FKim);
+  }
   cx->A.clear();
   cx->B.clear();
   return "";
@@ -106,6 +170,9 @@ std::string importCoef(const RadImport& in, HydroCoef* c, HydroCoef* cx,
   std::string e = readCoefFile(in.path, o, &f);
   if (!e.empty()) return e;
   const std::string who = "coefficient file " + in.path;
+  if (in.diffraction && f.hasX && !f.hasFK && in.body)
+    warn->push_back(who + " holds no Froude-Krylov force: the diffraction force is its exciting "
+                    "force less the Froude-Krylov force on the hull's wet panels");
   if (std::fabs(f.c.rho / in.rho - 1) > 1e-9) {
     warn->push_back(who + " is for rho = " + fmt(f.c.rho) + " kg/m^3; scaled to the model's " +
                     fmt(in.rho) + " kg/m^3");

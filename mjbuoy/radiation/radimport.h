@@ -10,6 +10,7 @@
 
 #include "radiation/coefio.h"
 #include "radiation/hydrocoef.h"
+#include "radiation/panel.h"
 
 namespace mjb {
 
@@ -22,6 +23,11 @@ struct RadImport {
   double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // body to world rotation at qpos0 (row-major)
   double com[3] = {0, 0, 0};      // the body's COM in its frame [m]
   bool diffraction = true;        // cx wanted
+  // the wet panels at the panel pose (panel frame: world axes, origin on
+  // the mean sea level below the body's origin) and the COM there [m]: the
+  // Froude-Krylov force of a file without one
+  const PanelMesh* body = nullptr;
+  double comPanel[3] = {0, 0, 0};
 };
 
 // c: A, B, A_inf about the COM in body axes (c->ref = com); cx (when
@@ -38,6 +44,15 @@ std::string importCoef(const RadImport& in, HydroCoef* c, HydroCoef* cx,
 // bridges by interpolation [rad] (30 deg: the linear interpolation's error
 // of a force varying as cos(beta) is below 1 - cos(15 deg) = 3.4%)
 const double kImportGap = M_PI / 6;
+
+// the Froude-Krylov force of deep-water waves on the wet panels body, per
+// unit amplitude, about the panel frame's origin in its axes, at c's
+// frequencies and headings (mjbuoy's conventions, hydrocoef.h): the
+// incident pressure p = rho g e^{k z} e^{i k (x cos b + y sin b)}, k =
+// omega^2 / g, integrated at each panel's centroid, F = -sum p n dS,
+// M = -sum p (r x n) dS (n out of the body; docs/physics.md section 15).
+// Sets c's FKre, FKim
+void froudeKrylov(const PanelMesh& body, HydroCoef* c);
 
 // X and FK of c (about any point) on n uniform headings 2 pi h / n,
 // from c's headings (any order, any range); false if two neighbouring
