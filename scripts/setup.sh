@@ -9,8 +9,8 @@ pkgs=(
   cmake g++ make pkg-config
   libmujoco-dev libqhull-dev   # MuJoCo 2.2.2; its CMake config names qhull's include dir
   libc6-dev                    # libmvec: vector sin, cos, exp of the cpu backend (comes with g++)
-  libeigen3-dev                # the panel solver's dense complex LU (mjbuoy/panel.cc); small linear algebra in tests
-  libmeshoptimizer-dev         # quadric simplification of a hull too fine for the panel budget (mjbuoy/panelcoarse.cc)
+  libeigen3-dev                # the panel solver's dense complex LU (mjbuoy/radiation/panel.cc); small linear algebra in tests
+  libmeshoptimizer-dev         # quadric simplification of a hull too fine for the panel budget (mjbuoy/radiation/panelcoarse.cc)
   libhdf5-dev libnetcdf-dev    # coefficient files of other tools: BEMIO HDF5, Capytaine NetCDF (mjbuoy/radiation/coefio_*.cc)
   libgtest-dev                 # unit tests
   libcli11-dev                 # command-line parsing of the tools
@@ -29,6 +29,7 @@ pkgs=(
   clang libclang-rt-14-dev     # libFuzzer (-fsanitize=fuzzer) for tests/fuzz, run by scripts/test.sh
   nlohmann-json3-dev           # mjbuoy-sweep: JSON result files (header-only)
   slurm-wlm munge              # mjbuoy-sweep slurm: sbatch; sweep.slurm starts a single-node Slurm (munged, slurmctld, slurmd)
+  python3-sphinx python3-sphinx-rtd-theme python3-myst-parser  # the documentation site (docs/, target docs, tests docs.*)
 )
 
 missing=()

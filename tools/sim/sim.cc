@@ -361,7 +361,7 @@ int main(int argc, char** argv) {
         std::fprintf(out, ",%s.%s", n, c);
       }
     }
-    // every other joint by name (README "Use"): slide [m], hinge [deg],
+    // every other joint by name (docs/tools.md, mjbuoy-sim): slide [m], hinge [deg],
     // ball as its quaternion w, x, y, z; then every sensor by name, one
     // column per value (<sensor>.<i> when it has several)
     for (int j = 0; j < m->njnt; j++) {

@@ -127,7 +127,7 @@ static bool plot(const std::string& dir, const json& man, const json& p,
 
 // the default plots: every statistic against the first axis, a curve per
 // value of the second
-// the JUnit report, written atomically (tools/outfile.h)
+// the JUnit report, written atomically (tools/common/outfile.h)
 static bool writeJUnitFile(const std::vector<scn::Report>& reps, const std::string& path,
                            std::string* err) {
   mjbtool::OutFile o;

@@ -37,7 +37,7 @@ bool parseShot(const std::string& s, Options* o) {
   return true;
 }
 
-// the window's picture to o.shotFile, atomically (tools/outfile.h)
+// the window's picture to o.shotFile, atomically (tools/common/outfile.h)
 bool screenshot(View* v, mjrRect vp, double t) {
   std::vector<unsigned char> rgb((size_t)3 * vp.width * vp.height);
   mjr_readPixels(rgb.data(), nullptr, vp, &v->con);
