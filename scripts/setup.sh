@@ -11,6 +11,7 @@ pkgs=(
   libc6-dev                    # libmvec: vector sin, cos, exp of the cpu backend (comes with g++)
   libeigen3-dev                # the panel solver's dense complex LU (mjbuoy/radiation/panel.cc); small linear algebra in tests
   libmeshoptimizer-dev         # quadric simplification of a hull too fine for the panel budget (mjbuoy/radiation/panelcoarse.cc)
+  libhdf5-dev libnetcdf-dev    # coefficient files of other tools: BEMIO HDF5, Capytaine NetCDF (mjbuoy/radiation/coefio_*.cc)
   libgtest-dev                 # unit tests
   libcli11-dev                 # command-line parsing of the tools
   python3                      # CSV checks of the command-line tests

@@ -497,6 +497,25 @@ def hydro(tools, models, tmp):
         p = run([exe, box, "--plot", png], cwd=tmp, env=env)
         check(p.returncode == 0 and os.path.exists(png) and
               open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n", "--plot writes a PNG")
+    # coefficient files (docs/interchange.md): written in the three formats
+    # and read back through mjbuoy.radiation.file.<body>, the Capytaine file
+    # bit for bit, so the printed tables are the same; --convert refuses to
+    # write over its input
+    files = [os.path.join(tmp, f) for f in ("box.1", "box.nc", "box.h5")]
+    p = run([exe, box] + sum([["--write", f] for f in files], []), cwd=tmp, env=env)
+    check(p.returncode == 0 and all(os.path.exists(f) for f in files + [os.path.join(tmp, "box.3")]),
+          "--write box.1 box.nc box.h5")
+    imp = os.path.join(tmp, "boximp.xml")
+    open(imp, "w").write(xml % ('<text name="mjbuoy.radiation" data="on"/>'
+                                '<text name="mjbuoy.radiation.file.boat" data="%s"/>' % files[1]))
+    p3 = run([exe, imp], cwd=tmp, env=env)
+    check(p3.returncode == 0 and p3.stdout == p2.stdout,
+          "tables from the Capytaine file equal the panel solver's")
+    conv = os.path.join(tmp, "conv.h5")
+    p = run([exe, "--convert", files[0], "--write", conv], cwd=tmp)
+    check(p.returncode == 0 and os.path.exists(conv), "--convert box.1 --write conv.h5")
+    p = run([exe, "--convert", files[1], "--write", files[1]], cwd=tmp)
+    refused(p, "--convert onto its input", "refusing to overwrite an input")
     # radiation is on by default for a free body: off explicitly
     open(box, "w").write(xml % '<text name="mjbuoy.radiation" data="off"/>')
     p = run([exe, box], cwd=tmp)

@@ -1,5 +1,6 @@
 // radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, diffraction, entry, cache, memorymodel,
-// omega, refine, panels, memory, rolldamping, rollzeta} and mjbuoy.radiation.body.<body> (schema: docs/mjcf.md)
+// omega, refine, panels, memory, rolldamping, rollzeta}, mjbuoy.radiation.body.<body> and
+// mjbuoy.radiation.{file, fileorigin, ulen}.<body> (schema: docs/mjcf.md)
 #include "api/radconfig.h"
 
 #include <algorithm>
@@ -59,6 +60,61 @@ static std::string onOff(const char* name, const char* text, bool* v) {
   return "";
 }
 
+static std::string checkRad(const char* name, const char* what, double v, double lo, double hi,
+                            bool whole, const char* unit, const char* example);
+
+// mjbuoy.radiation.file.<body>: a coefficient file; turns the body's radiation on
+static std::string parseFile(const mjModel* m, const char* name, const char* text, RadConfig* r) {
+  const char* body = name + 22;
+  int b = mj_name2id(m, mjOBJ_BODY, body);
+  if (b < 0) {
+    return "mjbuoy: " + tag("text", name) + " refers to body \"" + body + "\", which does not "
+           "exist; give the name of a body that carries hulls";
+  }
+  if (!*text) {
+    return "mjbuoy: " + tag("text", name) + " is empty; give a coefficient file of WAMIT (.1), "
+           "Capytaine (.nc) or BEMIO (.h5), e.g. data=\"/data/spar.h5\" (docs/interchange.md)";
+  }
+  RadConfig::File f;
+  f.body = b;
+  f.path = text;
+  r->file.push_back(f);
+  r->onBody.push_back(b);
+  return "";
+}
+
+// mjbuoy.radiation.fileorigin.<body> (3 values, m) and
+// mjbuoy.radiation.ulen.<body> (WAMIT's ULEN, m) of a body with a file
+static std::string parseFileNumeric(const mjModel* m, const char* name, int n, const mjtNum* v,
+                                    RadConfig* r) {
+  const bool ulen = !std::strncmp(name + 7, "radiation.ulen.", 15);
+  const char* body = name + 7 + (ulen ? 15 : 21);
+  int b = mj_name2id(m, mjOBJ_BODY, body);
+  RadConfig::File* f = nullptr;
+  for (RadConfig::File& x : r->file) if (x.body == b && b >= 0) f = &x;
+  if (!f) {
+    return "mjbuoy: " + tag("numeric", name) + " needs a coefficient file for body \"" + body +
+           "\"; add <text name=\"mjbuoy.radiation.file." + body + "\" data=\"...\"/> or remove it";
+  }
+  const char* ex = ulen ? "1" : "0 0 0";
+  if (n != (ulen ? 1 : 3)) {
+    return "mjbuoy: " + tag("numeric", name) + " has " + std::to_string(n) + " value(s), expected " +
+           (ulen ? "1 (WAMIT's length scale ULEN, m)" : "3 (the file's origin in the body frame, m)") +
+           ", e.g. data=\"" + ex + "\"";
+  }
+  if (ulen) {
+    std::string e = checkRad(name, "value", v[0], 1e-6, 1e6, false, "m", ex);
+    if (e.empty()) f->ulen = v[0];
+    return e;
+  }
+  for (int k = 0; k < 3; k++) {
+    std::string e = checkRad(name, "value", v[k], -1e6, 1e6, false, "m", ex);
+    if (!e.empty()) return e;
+    f->origin[k] = v[k];
+  }
+  return "";
+}
+
 static std::string parseText(const mjModel* m, const char* name, const char* text, RadConfig* r) {
   const char* key = name + 7;
   if (!std::strcmp(key, "radiation.cache")) {
@@ -78,6 +134,7 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
     r->ssAsked = !r->conv;
     return "";
   }
+  if (!std::strncmp(key, "radiation.file.", 15)) return parseFile(m, name, text, r);
   bool v = false;
   std::string e = onOff(name, text, &v);
   if (!e.empty()) return e;
@@ -100,7 +157,7 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
   } else {
     return "mjbuoy: unknown entry " + tag("text", name) +
            "; radiation text entries are mjbuoy.radiation, mjbuoy.radiation.lid, "
-           "mjbuoy.radiation.diffraction, mjbuoy.radiation.entry, mjbuoy.radiation.cache, mjbuoy.radiation.memorymodel and mjbuoy.radiation.body.<body> (see docs/mjcf.md)";
+           "mjbuoy.radiation.diffraction, mjbuoy.radiation.entry, mjbuoy.radiation.cache, mjbuoy.radiation.memorymodel, mjbuoy.radiation.body.<body> and mjbuoy.radiation.file.<body> (see docs/mjcf.md)";
   }
   return "";
 }
@@ -157,6 +214,8 @@ static std::string parseNumeric(const mjModel* m, int i, RadConfig* r) {
   const mjtNum* v = m->numeric_data + m->numeric_adr[i];
   if (!std::strcmp(key, "radiation.rolldamping")) return parseRollDamping(name, n, v, r);
   if (!std::strcmp(key, "radiation.rollzeta")) return parseRollZeta(name, n, v, r);
+  if (!std::strncmp(key, "radiation.ulen.", 15) || !std::strncmp(key, "radiation.fileorigin.", 21))
+    return parseFileNumeric(m, name, n, v, r);
   struct F { const char* key; int n; const char* unit; const char* ex; };
   static const F kF[] = {{"radiation.omega", 3, "rad/s, rad/s, count", "0.5 6 20"},
                          {"radiation.refine", 1, "refine level", "0"},
@@ -167,8 +226,9 @@ static std::string parseNumeric(const mjModel* m, int i, RadConfig* r) {
   if (!f) {
     return "mjbuoy: unknown entry " + tag("numeric", name) +
            "; radiation numeric entries are mjbuoy.radiation.omega, mjbuoy.radiation.refine, "
-           "mjbuoy.radiation.panels, mjbuoy.radiation.memory, mjbuoy.radiation.rolldamping and "
-           "mjbuoy.radiation.rollzeta (see docs/mjcf.md)";
+           "mjbuoy.radiation.panels, mjbuoy.radiation.memory, mjbuoy.radiation.rolldamping, "
+           "mjbuoy.radiation.rollzeta, mjbuoy.radiation.fileorigin.<body> and "
+           "mjbuoy.radiation.ulen.<body> (see docs/mjcf.md)";
   }
   if (n != f->n) {
     return "mjbuoy: " + tag("numeric", name) + " has " + std::to_string(n) + " value(s), expected " +

@@ -45,6 +45,17 @@ struct RadConfig {
   // mjbuoy.radiation.entry: the water's momentum taken up as the immersion
   // factor rises (docs/physics.md section 14, "Water entry")
   bool entry = false;
+  // mjbuoy.radiation.file.<body>: the body's coefficients read from a file
+  // of another tool instead of the panel solver (docs/interchange.md), with
+  // mjbuoy.radiation.fileorigin.<body> (the file's origin in the body frame
+  // [m]) and mjbuoy.radiation.ulen.<body> (WAMIT's length scale [m])
+  struct File {
+    int body = -1;
+    std::string path;
+    double origin[3] = {0, 0, 0};
+    double ulen = 1;
+  };
+  std::vector<File> file;
   bool radiates(int body) const;
   // whether the rigid group of weld root `root` radiates: an override
   // naming the root or any of its hull bodies (hullBody, one per hull)

@@ -25,7 +25,11 @@ double projectDamping(HydroCoef* c, const std::string& who, std::vector<std::str
     Mat6 S = 0.5 * (B + B.transpose());
     Eigen::SelfAdjointEigenSolver<Mat6> es(S);
     Eigen::Matrix<double, 6, 1> lam = es.eigenvalues();
-    if (lam.minCoeff() >= 0) {
+    // an eigenvalue above -1e-13 |B|max is zero to the solver's rounding
+    // (a few eps ||S||): left alone, so that a projected B (the
+    // reconstruction's own rounding) passes unchanged a second time, as
+    // when mjbuoy's coefficients are written to a file and read back
+    if (lam.minCoeff() >= -1e-13 * big) {
       B = S;
       continue;
     }

@@ -16,6 +16,7 @@
 #include "radiation/panelcoarse.h"
 #include "radiation/panelmesh.h"
 #include "radiation/radcache.h"
+#include "radiation/radimport.h"
 #include "hull/rigid.h"
 #include "util/fmt.h"
 
@@ -177,9 +178,11 @@ static void groupMesh(const Buoy& B, const mjData* d, int root, std::vector<floa
   }
 }
 
-// warnings on c, then its symmetric part (who names the body)
-static void checkCoef(Buoy* B, const std::string& who, HydroCoef* cp) {
+// warnings on c, then its symmetric part (who names the body; file: c is
+// from a coefficient file, not the panel solver)
+static void checkCoef(Buoy* B, const std::string& who, bool file, HydroCoef* cp) {
   HydroCoef& c = *cp;
+  const char* src = file ? "the coefficient file" : "the panel solver";
   // potential flow radiates energy: B_ii >= 0; a coarse mesh (or the lid
   // at high kR) can give small negative values, which the memory turns
   // into a source of energy
@@ -192,17 +195,18 @@ static void checkCoef(Buoy* B, const std::string& who, HydroCoef* cp) {
     }
     if (low < -0.01 * big) {
       static const char* kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
-      B->cfg.warn.push_back(who.substr(8) + ": the panel solver's " + kDof[i] + " damping is " +
+      B->cfg.warn.push_back(who.substr(8) + ": " + src + "'s " + kDof[i] + " damping is " +
                             fmt(low) + " at omega " + fmt(wl) + " rad/s (below -1% of its peak " +
-                            fmt(big) + "); refine its panels (mjbuoy.radiation.refine) or lower "
-                            "the highest frequency (mjbuoy.radiation.omega)");
+                            fmt(big) + "); " + (file ? "check the file's damping" :
+                            "refine its panels (mjbuoy.radiation.refine) or lower the highest "
+                            "frequency (mjbuoy.radiation.omega)"));
     }
   }
   double asym = symmetrize(cp);
   if (asym > kAsymWarn) {
-    B->cfg.warn.push_back(who.substr(8) + ": the panel solver's added mass or damping is " +
-                          fmt(100 * asym) + "% asymmetric (made symmetric); refine its panels "
-                          "(mjbuoy.radiation.refine)");
+    B->cfg.warn.push_back(who.substr(8) + ": " + src + "'s added mass or damping is " +
+                          fmt(100 * asym) + "% asymmetric (made symmetric)" + (file ? "" :
+                          "; refine its panels (mjbuoy.radiation.refine)"));
   }
   // damping that would feed energy: projected out, with a warning
   projectDamping(cp, who.substr(8), &B->cfg.warn);
@@ -351,6 +355,88 @@ static void rollZeta(Buoy* B, const mjData* d, int root, const PanelMesh& body,
   x->roll[0] += 2 * rc.zeta * std::sqrt(x->c44 * it);
 }
 
+// the group's coefficients c (about its COM in body axes) and cx (the
+// exciting force about its COM in world axes at qpos0, with diffraction
+// on) to the time-domain radiation, the roll damping and the diffraction;
+// imported: c is from a coefficient file, not the panel solver; Rd: the
+// root's rotation at qpos0. "" or the error
+static std::string finishGroup(Buoy* B, const mjData* d, int root, const std::string& who,
+                               const PanelMesh& body, double dz, const double Rd[9],
+                               HydroCoef c, const HydroCoef& cx, bool imported) {
+  const mjModel* m = B->m;
+  const RadConfig& rc = B->cfg.rad;
+  std::string err;
+  checkCoef(B, who, imported, &c);
+  B->rad.conv = rc.conv;
+  B->rad.ssAsked = rc.ssAsked;
+  std::copy(rc.roll, rc.roll + 2, B->rad.roll);
+  B->rad.entry = rc.entry;
+  if (addedMassIndefinite(c.Ainf)) {
+    if (imported)
+      return who + ": the coefficient file's infinite-frequency added mass is not positive "
+             "semi-definite; check its units (WAMIT: mjbuoy.radiation.ulen) and that it is "
+             "for this body";
+    // an unresolved wet surface, not a fault of the user's numbers
+    std::string why = unresolved(body, c);
+    if (!(rc.given && rc.on) && !namedOn(*B, root))
+      return skipGroup(B, root, who.substr(8) + " is off: " + why);
+    return who + ": " + why;
+  }
+  err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
+  if (!err.empty()) return err;
+  // the immersion factor's reference (docs/physics.md, "Immersion factor"):
+  // the group's displaced volume at the panel pose, and its hull bodies
+  for (RadBody& x : B->rad.rb) {
+    if (x.body != root) continue;
+    x.veq = groupVolume(*B, d, root, dz);
+    rollZeta(B, d, root, body, c, dz, who, &x);
+    for (int hb : B->body)
+      if (m->body_weldid[hb] == root) x.hb.push_back(hb);
+  }
+  for (std::string& n : B->rad.note) B->cfg.warn.push_back(n);
+  B->rad.note.clear();
+  if (rc.diffraction) err = setDiffraction(root, Rd, cx, B->wcap, &B->diff);
+  if (!err.empty()) return err + " (body \"" + bodyName(m, root) + "\")";
+  B->coef.emplace_back(root, std::move(c));
+  return "";
+}
+
+// the coefficient file of the group of root (mjbuoy.radiation.file.<body>
+// naming root or one of its hull bodies), nullptr if none
+static const RadConfig::File* fileOf(const Buoy& B, int root) {
+  for (const RadConfig::File& f : B.cfg.rad.file)
+    if (B.m->body_weldid[f.body] == root) return &f;
+  return nullptr;
+}
+
+// the group's coefficients from its file (radimport.h) instead of the
+// panel solver; body: its wet panels at the panel pose (roll stiffness)
+static std::string importGroup(Buoy* B, const mjData* d, int root, const std::string& who,
+                               const RadConfig::File& rf, const PanelMesh& body, double dz) {
+  RadImport in;
+  in.path = rf.path;
+  std::copy(rf.origin, rf.origin + 3, in.origin);
+  in.ulen = rf.ulen;
+  in.rho = B->cfg.sea.rho;
+  in.g = B->cfg.sea.g;
+  double Rd[9];
+  for (int i = 0; i < 9; i++) in.R[i] = Rd[i] = d->xmat[9 * root + i];
+  for (int k = 0; k < 3; k++) in.com[k] = B->m->body_ipos[3 * root + k];
+  in.diffraction = B->cfg.rad.diffraction;
+  in.body = &body;
+  // the COM in the panel frame (world axes, origin below the root's on the
+  // mean sea level): R ipos, at the height of the panel pose
+  const mjtNum* ip = B->m->body_ipos + 3 * root;
+  mju_rotVecMat(in.comPanel, ip, d->xmat + 9 * root);
+  in.comPanel[2] += d->xpos[3 * root + 2] + dz - B->cfg.sea.level;
+  HydroCoef c, cx;
+  std::vector<std::string> warn;
+  std::string err = importCoef(in, &c, &cx, &warn);
+  for (const std::string& w : warn) B->cfg.warn.push_back(who.substr(8) + ": " + w);
+  if (!err.empty()) return who + ": " + err;
+  return finishGroup(B, d, root, who, body, dz, Rd, std::move(c), cx, true);
+}
+
 // coefficients of one group; "" or the error
 static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   const mjModel* m = B->m;
@@ -382,6 +468,8 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
            "or turn radiation off for it with <text name=\"mjbuoy.radiation.body." +
            bodyName(m, root) + "\" data=\"off\"/>";
   }
+  if (const RadConfig::File* rf = fileOf(*B, root))
+    return importGroup(B, d, root, who, *rf, body, dz);
   int np = body.nface() + (rc.lid ? lid.nface() : 0);
   if (rc.panels > 0 && solveSize(body, lid, rc.lid) > rc.panels)
     coarsenGroup(B, who, v, f, pos, d->xquat + 4 * root, &body, &lid, &note, &np);
@@ -443,35 +531,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   for (auto* v : {&c.heading, &c.Xre, &c.Xim, &c.FKre, &c.FKim}) v->clear();
   err = coefTransform(&c, p, Rd, pn);
   if (!err.empty()) return who + ": " + err;
-  checkCoef(B, who, &c);
-  B->rad.conv = rc.conv;
-  B->rad.ssAsked = rc.ssAsked;
-  std::copy(rc.roll, rc.roll + 2, B->rad.roll);
-  B->rad.entry = rc.entry;
-  if (addedMassIndefinite(c.Ainf)) {
-    // an unresolved wet surface, not a fault of the user's numbers
-    std::string why = unresolved(body, c);
-    if (!(rc.given && rc.on) && !namedOn(*B, root))
-      return skipGroup(B, root, who.substr(8) + " is off: " + why);
-    return who + ": " + why;
-  }
-  err = setRadiation(m, root, c, rc.memory > 0 ? rc.memory : 0, &B->rad);
-  if (!err.empty()) return err;
-  // the immersion factor's reference (docs/physics.md, "Immersion factor"):
-  // the group's displaced volume at the panel pose, and its hull bodies
-  for (RadBody& x : B->rad.rb) {
-    if (x.body != root) continue;
-    x.veq = groupVolume(*B, d, root, dz);
-    rollZeta(B, d, root, body, c, dz, who, &x);
-    for (int hb : B->body)
-      if (m->body_weldid[hb] == root) x.hb.push_back(hb);
-  }
-  for (std::string& n : B->rad.note) B->cfg.warn.push_back(n);
-  B->rad.note.clear();
-  if (rc.diffraction) err = setDiffraction(root, Rd, cx, B->wcap, &B->diff);
-  if (!err.empty()) return err + " (body \"" + bodyName(m, root) + "\")";
-  B->coef.emplace_back(root, std::move(c));
-  return "";
+  return finishGroup(B, d, root, who, body, dz, Rd, std::move(c), cx, false);
 }
 
 std::string attachRadiation(Buoy* B) {

@@ -2,7 +2,8 @@
 // for each hull body with radiation on (docs/mjcf.md section 11):
 // A_inf, A(omega), B(omega), the retardation function K(t) and the
 // exciting force X(omega, heading) with its Froude-Krylov part, and the
-// roll stiffness and viscous roll damping it applies
+// roll stiffness and viscous roll damping it applies; --write and --convert:
+// coefficient files of WAMIT, Capytaine and BEMIO (docs/interchange.md)
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -12,7 +13,9 @@
 #include <mujoco/mujoco.h>
 
 #include "api/buoy.h"
+#include "api/coefexport.h"
 #include "cliopt.h"
+#include "hydroio.h"
 #include "hydroplot.h"
 #include "mjbuoy.h"
 #include "modelload.h"
@@ -99,6 +102,58 @@ static bool printX(FILE* o, const mjb::DiffBody& b) {
   return !std::ferror(o);
 }
 
+// --write: the coefficients of body wbody (or the first) to files; 0 or 1
+static int writeBody(const mjb::Buoy& B, const mjModel* m, const std::string& wbody,
+                     const std::vector<std::string>& writes, const mjb::CoefOpt& o,
+                     std::string* e) {
+  size_t i = 0;
+  while (!wbody.empty() && i < B.coef.size() && wbody != m->names + m->name_bodyadr[B.coef[i].first])
+    i++;
+  if (i == B.coef.size()) {
+    *e = "--write-body " + wbody + ": no body of that name has radiation";
+    return 1;
+  }
+  int body = B.coef[i].first;
+  mjb::CoefFile f;
+  *e = mjb::exportCoef(B, body, &f);
+  if (!e->empty()) {
+    *e = "--write-body " + std::string(m->names + m->name_bodyadr[body]) + ": " + *e;
+    return 1;
+  }
+  if (!mjbhydro::writeAll(writes, o, f, e)) return 1;
+  const double* c = B.coef[i].second.ref;
+  std::fprintf(stderr, "mjbuoy-hydro: wrote body \"%s\" about its COM, in its axes: read it back "
+               "with <numeric name=\"mjbuoy.radiation.fileorigin.%s\" data=\"%.17g %.17g "
+               "%.17g\"/>\n", m->names + m->name_bodyadr[body], m->names + m->name_bodyadr[body],
+               c[0], c[1], c[2]);
+  return 0;
+}
+
+// --convert: one coefficient file into the --write files; 0 or 1
+static int convertFile(const std::string& in, const std::string& model,
+                       const std::vector<std::string>& writes, const mjb::CoefOpt& o) {
+  std::string e;
+  std::vector<mjbtool::PathUse> uses = {{in, "--convert", false}};
+  for (const std::string& w : writes)
+    for (const std::string& p : mjbhydro::outputsOf(w)) uses.push_back({p, "--write", true});
+  if (!model.empty()) {
+    e = "--convert reads no model (" + model + ")";
+  } else if (writes.empty()) {
+    e = "--convert needs --write FILE";
+  } else if (mjbtool::checkDistinct(uses, &e)) {
+    mjb::CoefFile f;
+    e = mjb::readCoefFile(in, o, &f);
+    if (e.empty()) mjbhydro::writeAll(writes, o, f, &e);
+    if (e.empty())
+      std::fprintf(stderr, "mjbuoy-hydro: %s: %d frequencies, %d headings%s%s%s\n", in.c_str(),
+                   f.c.nw(), f.c.nh(), f.hasAinf ? ", A_inf" : "", f.hasFK ? ", Froude-Krylov" : "",
+                   f.hasC ? ", hydrostatics" : "");
+  }
+  if (e.empty()) return 0;
+  std::fprintf(stderr, "mjbuoy-hydro: %s\n", e.c_str());
+  return 1;
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"Compute and print the radiation coefficients of each hull body with "
                "radiation on (mjbuoy.radiation, docs/mjcf.md section 11): A_inf, A(omega), "
@@ -111,8 +166,23 @@ int main(int argc, char** argv) {
   std::string model, file;
   double dt = 0.05, tk = 0;
   using mjbtool::Finite;
-  app.add_option("model", model, "MJCF model with mjbuoy.radiation on")->required()
-      ->check(CLI::ExistingFile);
+  app.add_option("model", model, "MJCF model with mjbuoy.radiation on (not with --convert)");
+  std::vector<std::string> writes;
+  std::string wbody, convert;
+  mjb::CoefOpt copt;
+  app.add_option("--write", writes, "also write the coefficients of one body to this file, "
+                 "its format by its name: WAMIT stem.1 (writes stem.1, stem.3, stem.3fk), "
+                 "Capytaine NetCDF .nc, BEMIO HDF5 .h5 (docs/interchange.md); repeatable");
+  app.add_option("--write-body", wbody, "the body --write writes (default: the first with "
+                 "radiation)");
+  app.add_option("--convert", convert, "read this coefficient file (WAMIT .1, Capytaine .nc, "
+                 "BEMIO .h5) instead of a model and write it with --write");
+  app.add_option("--ulen", copt.ulen, "WAMIT's length scale ULEN [m] of files read and "
+                 "written")->check(Finite(1e-6, 1e6));
+  app.add_option("--rho", copt.rho, "water density [kg/m^3] of WAMIT files read by --convert "
+                 "(WAMIT's numbers are per rho)")->check(Finite(1, 1e5));
+  app.add_option("--g", copt.g, "gravity [m/s^2] of WAMIT files read by --convert")
+      ->check(Finite(0.1, 100));
   app.add_option("--kt-step", dt, "time step of the K(t) table [s]")->check(Finite(1e-4, 10));
   app.add_option("--kt-length", tk, "length of the K(t) table [s]; 0: the automatic memory "
                  "length")->check(Finite(0, mjb::kMaxMemory));
@@ -127,13 +197,20 @@ int main(int argc, char** argv) {
     int rc = mjbtool::parseArgs(app, argc, argv, 1);  // docs: invalid input exits 1
     if (rc >= 0) return rc;
   }
+  if (!convert.empty()) return convertFile(convert, model, writes, copt);
+  if (model.empty()) {
+    std::fprintf(stderr, "mjbuoy-hydro: give a model (or --convert FILE)\n");
+    return 1;
+  }
 
+  std::string e;
   {
     // outputs never replace the model, its files or each other (before anything is computed)
     std::vector<mjbtool::PathUse> uses;
     if (!file.empty()) uses.push_back({file, "-o", true});
     if (!png.empty()) uses.push_back({png, "--plot", true});
-    std::string e;
+    for (const std::string& w : writes)
+      for (const std::string& o : mjbhydro::outputsOf(w)) uses.push_back({o, "--write", true});
     if (!mjbtool::checkOutputs(model, uses, &e)) {
       std::fprintf(stderr, "mjbuoy-hydro: %s\n", e.c_str());
       return 1;
@@ -166,7 +243,6 @@ int main(int argc, char** argv) {
     rc = 1;
   }
   mjbtool::OutFile of;
-  std::string e;
   if (!rc && !file.empty() && !of.open(file, "-o", &e)) {
     std::fprintf(stderr, "mjbuoy-hydro: %s\n", e.c_str());
     rc = 1;
@@ -202,6 +278,7 @@ int main(int argc, char** argv) {
         rc = 1;
     }
   }
+  if (!rc && !writes.empty()) rc = writeBody(*B, m, wbody, writes, copt, &e);
   if (!rc && !file.empty() && !of.commit(&e)) rc = 1;
   if (rc && B && !B->coef.empty()) {
     if (e.empty()) e = std::string("write failed on ") + (file.empty() ? "stdout" : file.c_str());
