@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <new>
+#include <stdexcept>
 #include <utility>
 
 #include "api/buoy.h"
@@ -16,6 +18,7 @@
 #include "radiation/panelcoarse.h"
 #include "radiation/panelmesh.h"
 #include "radiation/radcache.h"
+#include "radiation/radmem.h"
 #include "hull/rigid.h"
 #include "util/fmt.h"
 
@@ -208,17 +211,34 @@ static void checkCoef(Buoy* B, const std::string& who, HydroCoef* cp) {
   projectDamping(cp, who.substr(8), &B->cfg.warn);
 }
 
-// panelSolve through the cache (radcache.h): a file whose key matches is
-// used as it is, else the solution is computed and stored; every cache
-// problem is a warning, never an error
+// panelSolve through the cache (radcache.h): a file whose key matches and
+// whose payload fits it (radCacheCheck) is used as it is, else the
+// solution is computed, after its memory is estimated (radmem.h), and
+// stored; every cache problem is a warning, never an error
 static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
                         const PanelMesh& lid, const std::vector<double>& omega,
                         const std::vector<double>& head, HydroCoef* c, std::string* err) {
   std::string dir = radCacheDir(B->cfg.rad.cache), key, note;
   if (!dir.empty()) {
     key = radCacheKey(body, lid, omega, head, *c);
-    if (radCacheLoad(dir, key, c, &note)) return B->radcache.hit++, true;
+    HydroCoef got;
+    if (radCacheLoad(dir, key, &got, &note)) {
+      // a file whose checksum holds can still not fit its key: replaced
+      note = radCacheCheck(body, omega, head, *c, got);
+      if (note.empty()) return *c = std::move(got), B->radcache.hit++, true;
+      note = "radiation cache: " + radCachePath(dir, key) + " " + note + "; recomputed and "
+             "rewritten";
+    }
     if (!note.empty()) B->cfg.warn.push_back(who.substr(8) + ": " + note);
+  }
+  // the dense systems' memory, estimated before they are allocated
+  const int nb = body.nface(), nl = lid.nface();
+  note = panelMemoryCheck(nb + nl, nb, int(omega.size()));
+  if (!note.empty()) {
+    *err = note + "; lower mjbuoy.radiation.panels (e.g. " + std::to_string(kDefaultPanels) +
+           ": a coarsened copy of the hull is solved) or mjbuoy.radiation.refine, or turn its "
+           "radiation off";
+    return false;
   }
   B->radcache.miss++;
   if (!panelSolve(body, lid, omega, head, c, err)) return false;
@@ -474,7 +494,8 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   return "";
 }
 
-std::string attachRadiation(Buoy* B) {
+// attachRadiation's work, which may throw (std::bad_alloc)
+static std::string attachGroups(Buoy* B) {
   const mjModel* m = B->m;
   const RadConfig& rc = B->cfg.rad;
   for (int b : rc.onBody) {
@@ -555,6 +576,22 @@ std::string attachRadiation(Buoy* B) {
     for (size_t i = 0; i < B->rad.rb.size(); i++)
       if (B->rad.rb[i].body == db.body) db.ri = int(i);
   return "";
+}
+
+// no C++ exception leaves the attach: an allocation that fails despite
+// the estimate (panelMemoryCheck; another process took the memory
+// meanwhile) is an error naming the setting
+std::string attachRadiation(Buoy* B) {
+  try {
+    return attachGroups(B);
+  } catch (const std::bad_alloc&) {
+    return "mjbuoy: radiation: out of memory at attach; lower mjbuoy.radiation.panels or "
+           "mjbuoy.radiation.refine, or turn radiation off (<text name=\"mjbuoy.radiation\" "
+           "data=\"off\"/>)";
+  } catch (const std::exception& e) {
+    return std::string("mjbuoy: radiation: failed at attach (") + e.what() + "); turn radiation "
+           "off (<text name=\"mjbuoy.radiation\" data=\"off\"/>) and report the model";
+  }
 }
 
 }  // namespace mjb
