@@ -13,7 +13,7 @@
 namespace mjb {
 
 double panelSolveBytes(double n, double nb, int nconc) {
-  return 16 * n * n + 16 * nb * n + 32 * nb * nb + 96.0 * nconc * n * n;
+  return 16 * n * n + 16 * nb * n + 32 * nb * nb + 80.0 * nconc * n * n;
 }
 
 int panelConcurrency(int nw) {

@@ -10,8 +10,9 @@ namespace mjb {
 // bytes panelSolve holds at its peak for n unknowns (nb body panels, the
 // rest lid) solving nconc frequencies at once: the four real Rankine
 // matrices (16 n^2 + 16 nb n), the infinite-frequency solve (32 nb^2) and
-// per frequency about six dense complex n x n matrices (wave parts, the
-// system, its LU, the potential: 96 n^2; panel.cc solveOmega)
+// per frequency five dense complex n x n matrices at its peak (the wave
+// parts WS and WD, the system, its LU and the real sums it is built from:
+// 80 n^2; panel.cc solveOmega)
 double panelSolveBytes(double n, double nb, int nconc);
 
 // frequencies panelSolve solves at once for nw of them: its worker
