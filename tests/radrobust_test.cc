@@ -287,4 +287,32 @@ TEST(RadRobust, PanelMemoryIsEstimatedBeforeAllocating) {
   }
 }
 
+// advice to refine the panels names the panel budget too: a refined hull
+// above mjbuoy.radiation.panels is coarsened back to it, so raising
+// mjbuoy.radiation.refine alone changes nothing. The case: a 2 x 1 m box
+// of 500 kg in water of density 1e5 floats at 500 / (1e5 x 2) = 2.5 mm,
+// which its 12-triangle mesh's metre-wide panels do not resolve (A_inf
+// indefinite, the error of RobustLimits.DensestWaterWithRadiationNamesThe
+// UnresolvedDraft)
+TEST(RadRobust, RefineAdviceNamesThePanelBudget) {
+  mjModel* m = mjbt::loadXML(
+      "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
+      "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+      "<numeric name=\"mjbuoy.sea.density\" data=\"1e5\"/>"
+      "<numeric name=\"mjbuoy.radiation.panels\" data=\"300\"/></custom>"
+      "<worldbody><body name=\"box\" pos=\"0 0 0.2475\"><freejoint/>"
+      "<geom name=\"hull\" type=\"box\" size=\"1 0.5 0.25\" mass=\"500\"/>"
+      "</body></worldbody></mujoco>");
+  ASSERT_TRUE(m);
+  char e[2048] = "";
+  mjbBuoy* b = mjb_attach(m, "cpu", e, sizeof e);
+  EXPECT_FALSE(b);
+  std::string err = e;
+  EXPECT_NE(err.find("not positive semi-definite"), std::string::npos) << err;
+  EXPECT_NE(err.find("mjbuoy.radiation.refine"), std::string::npos) << err;
+  EXPECT_NE(err.find("mjbuoy.radiation.panels (now 300"), std::string::npos) << err;
+  if (b) mjb_detach(b);
+  mj_deleteModel(m);
+}
+
 }  // namespace

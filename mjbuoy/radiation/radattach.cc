@@ -180,6 +180,16 @@ static void groupMesh(const Buoy& B, const mjData* d, int root, std::vector<floa
   }
 }
 
+// what refines a hull's panels: mjbuoy.radiation.refine, and while a
+// budget (mjbuoy.radiation.panels) holds, that too, since a refined hull
+// above it is coarsened back to it
+static std::string refineHint(const RadConfig& rc) {
+  if (rc.panels <= 0) return "raise mjbuoy.radiation.refine";
+  return "raise mjbuoy.radiation.refine together with mjbuoy.radiation.panels (now " +
+         std::to_string(rc.panels) + "; a refined hull is coarsened back to it, 0 solves the "
+         "full mesh)";
+}
+
 // warnings on c, then its symmetric part (who names the body)
 static void checkCoef(Buoy* B, const std::string& who, HydroCoef* cp) {
   HydroCoef& c = *cp;
@@ -197,18 +207,25 @@ static void checkCoef(Buoy* B, const std::string& who, HydroCoef* cp) {
       static const char* kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
       B->cfg.warn.push_back(who.substr(8) + ": the panel solver's " + kDof[i] + " damping is " +
                             fmt(low) + " at omega " + fmt(wl) + " rad/s (below -1% of its peak " +
-                            fmt(big) + "); refine its panels (mjbuoy.radiation.refine) or lower "
+                            fmt(big) + "); " + refineHint(B->cfg.rad) + ", or lower "
                             "the highest frequency (mjbuoy.radiation.omega)");
     }
   }
   double asym = symmetrize(cp);
   if (asym > kAsymWarn) {
     B->cfg.warn.push_back(who.substr(8) + ": the panel solver's added mass or damping is " +
-                          fmt(100 * asym) + "% asymmetric (made symmetric); refine its panels "
-                          "(mjbuoy.radiation.refine)");
+                          fmt(100 * asym) + "% asymmetric (made symmetric); " +
+                          refineHint(B->cfg.rad));
   }
   // damping that would feed energy: projected out, with a warning
+  const size_t nw = B->cfg.warn.size();
   projectDamping(cp, who.substr(8), &B->cfg.warn);
+  // its advice to refine names the budget too
+  for (size_t i = nw; i < B->cfg.warn.size() && B->cfg.rad.panels > 0; i++)
+    if (B->cfg.warn[i].find("mjbuoy.radiation.refine") != std::string::npos)
+      B->cfg.warn[i] += " (with mjbuoy.radiation.panels = " + std::to_string(B->cfg.rad.panels) +
+                        ", a refined hull is coarsened back to that budget: raise it too, or 0 "
+                        "to solve the full mesh)";
 }
 
 // panelSolve through the cache (radcache.h): a file whose key matches and
@@ -280,7 +297,7 @@ static double poseHeave(Buoy* B, const mjData* d, int root, const std::string& w
 // varies over d, and the diagonal fix (panel.cc rankineMatrices) carries
 // that error: the solution is not resolved (a 2 x 1 m box at 2.5 mm
 // draft gave A33 = -3.2e6 kg at rho 1e5)
-static std::string unresolved(const PanelMesh& p, const HydroCoef& c) {
+static std::string unresolved(const PanelMesh& p, const HydroCoef& c, const RadConfig& rc) {
   double zlo = 0, wide = 0;
   eachEdge(p, [&](const double* a, double l) {
     zlo = std::min(zlo, a[2]);
@@ -292,8 +309,7 @@ static std::string unresolved(const PanelMesh& p, const HydroCoef& c) {
          "(smallest diagonal entry " + fmt(lo) + "): its " + std::to_string(p.nface()) +
          " wet panels, up to " + fmt(wide) + " m wide, do not resolve its draft of " +
          fmt(-zlo) + " m (panels should be no wider than a few drafts); give the hull a "
-         "finer mesh below the waterline or raise mjbuoy.radiation.refine, or turn its "
-         "radiation off";
+         "finer mesh below the waterline or " + refineHint(rc) + ", or turn its radiation off";
 }
 
 // the wet panels counted against mjbuoy.radiation.panels: those of a
@@ -470,7 +486,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   B->rad.entry = rc.entry;
   if (addedMassIndefinite(c.Ainf)) {
     // an unresolved wet surface, not a fault of the user's numbers
-    std::string why = unresolved(body, c);
+    std::string why = unresolved(body, c, rc);
     if (!(rc.given && rc.on) && !namedOn(*B, root))
       return skipGroup(B, root, who.substr(8) + " is off: " + why);
     return who + ": " + why;
