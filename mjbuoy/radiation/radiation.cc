@@ -434,7 +434,8 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
     if (tmem == 0) tmem = memoryLength(c);
     // a convolution memory is bounded in samples (docs/physics.md section
     // 14, "Small timesteps"): refused with its cost beyond
-    if (r->conv && tmem > 0 && std::ceil(tmem / dt) + 1 > kMaxKernelSamples)
+    if (r->conv && tmem > 0 && std::ceil(tmem / dt) + 1 > kMaxKernelSamples &&
+        !memoryPairs(c).empty())
       return memoryCost(c, tmem, dt, name, "");
     double hk = dt;
     kernels(c, tmem, dt, !r->conv, &rb, &hk);
