@@ -6,7 +6,9 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <new>
 #include <shared_mutex>
+#include <stdexcept>
 #include <thread>
 
 #include "api/buoy.h"
@@ -270,7 +272,8 @@ void copyError(const std::string& e, char* error, int error_sz) {
 
 }  // namespace
 
-mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz) {
+// mjb_attach's work, which may throw (std::bad_alloc)
+static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, int error_sz) {
   copyError("", error, error_sz);
   if (!m) {
     copyError("mjbuoy: mjb_attach was given a NULL model", error, error_sz);
@@ -411,6 +414,20 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
   }
   gattached.push_back(out);
   return out;
+}
+
+// no C++ exception crosses the C API: an allocation that fails inside the
+// attach is an error, never an abort
+mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz) {
+  try {
+    return attachModel(m, backend, error, error_sz);
+  } catch (const std::bad_alloc&) {
+    copyError("mjbuoy: out of memory in mjb_attach; use fewer or coarser hulls, or lower "
+              "mjbuoy.radiation.panels", error, error_sz);
+  } catch (const std::exception& e) {
+    copyError(std::string("mjbuoy: mjb_attach failed: ") + e.what(), error, error_sz);
+  }
+  return nullptr;
 }
 
 void mjb_detach(mjbBuoy* b) {

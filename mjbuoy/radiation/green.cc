@@ -163,7 +163,11 @@ WaveF greenWave(double X, double Y) {
   WaveF r;
   double ey = std::exp(-Y);
   double rho = std::sqrt(X * X + Y * Y);
-  if (X < 1e-9 * (1 + Y)) {
+  // the axis form only where X is negligible next to Y: at Y = 0 (two
+  // points on the free surface) Ei(0) is infinite while F(X, 0) is finite
+  // for every X > 0, and a long wave (omega 1e-3 rad/s: K = 1e-7 / m) makes
+  // X = K R below any absolute threshold
+  if (X == 0 || X < 1e-9 * Y) {
     // on the axis: PV int e^{-uY}/(u-1) du = -e^{-Y} Ei(Y); dF/dX = 0
     if (Y > kDeep) {
       // e^-Y Ei(Y) = sum k! / Y^(k+1) asymptotically (A&S 5.1.51); Ei overflows

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <new>
+#include <stdexcept>
 #include <utility>
 
 #include "api/buoy.h"
@@ -17,6 +19,7 @@
 #include "radiation/panelmesh.h"
 #include "radiation/radcache.h"
 #include "radiation/radimport.h"
+#include "radiation/radmem.h"
 #include "hull/rigid.h"
 #include "util/fmt.h"
 
@@ -178,6 +181,16 @@ static void groupMesh(const Buoy& B, const mjData* d, int root, std::vector<floa
   }
 }
 
+// what refines a hull's panels: mjbuoy.radiation.refine, and while a
+// budget (mjbuoy.radiation.panels) holds, that too, since a refined hull
+// above it is coarsened back to it
+static std::string refineHint(const RadConfig& rc) {
+  if (rc.panels <= 0) return "raise mjbuoy.radiation.refine";
+  return "raise mjbuoy.radiation.refine together with mjbuoy.radiation.panels (now " +
+         std::to_string(rc.panels) + "; a refined hull is coarsened back to it, 0 solves the "
+         "full mesh)";
+}
+
 // warnings on c, then its symmetric part (who names the body; file: c is
 // from a coefficient file, not the panel solver)
 static void checkCoef(Buoy* B, const std::string& who, bool file, HydroCoef* cp) {
@@ -197,32 +210,56 @@ static void checkCoef(Buoy* B, const std::string& who, bool file, HydroCoef* cp)
       static const char* kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
       B->cfg.warn.push_back(who.substr(8) + ": " + src + "'s " + kDof[i] + " damping is " +
                             fmt(low) + " at omega " + fmt(wl) + " rad/s (below -1% of its peak " +
-                            fmt(big) + "); " + (file ? "check the file's damping" :
-                            "refine its panels (mjbuoy.radiation.refine) or lower the highest "
-                            "frequency (mjbuoy.radiation.omega)"));
+                            fmt(big) + "); " + (file ? std::string("check the file's damping") :
+                            refineHint(B->cfg.rad) + ", or lower the highest frequency "
+                            "(mjbuoy.radiation.omega)"));
     }
   }
   double asym = symmetrize(cp);
   if (asym > kAsymWarn) {
     B->cfg.warn.push_back(who.substr(8) + ": " + src + "'s added mass or damping is " +
                           fmt(100 * asym) + "% asymmetric (made symmetric)" + (file ? "" :
-                          "; refine its panels (mjbuoy.radiation.refine)"));
+                          "; " + refineHint(B->cfg.rad)));
   }
   // damping that would feed energy: projected out, with a warning
+  const size_t nw = B->cfg.warn.size();
   projectDamping(cp, who.substr(8), &B->cfg.warn);
+  // its advice to refine names the budget too
+  for (size_t i = nw; i < B->cfg.warn.size() && B->cfg.rad.panels > 0; i++)
+    if (B->cfg.warn[i].find("mjbuoy.radiation.refine") != std::string::npos)
+      B->cfg.warn[i] += " (with mjbuoy.radiation.panels = " + std::to_string(B->cfg.rad.panels) +
+                        ", a refined hull is coarsened back to that budget: raise it too, or 0 "
+                        "to solve the full mesh)";
 }
 
-// panelSolve through the cache (radcache.h): a file whose key matches is
-// used as it is, else the solution is computed and stored; every cache
-// problem is a warning, never an error
+// panelSolve through the cache (radcache.h): a file whose key matches and
+// whose payload fits it (radCacheCheck) is used as it is, else the
+// solution is computed, after its memory is estimated (radmem.h), and
+// stored; every cache problem is a warning, never an error
 static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
                         const PanelMesh& lid, const std::vector<double>& omega,
                         const std::vector<double>& head, HydroCoef* c, std::string* err) {
   std::string dir = radCacheDir(B->cfg.rad.cache), key, note;
   if (!dir.empty()) {
     key = radCacheKey(body, lid, omega, head, *c);
-    if (radCacheLoad(dir, key, c, &note)) return B->radcache.hit++, true;
+    HydroCoef got;
+    if (radCacheLoad(dir, key, &got, &note)) {
+      // a file whose checksum holds can still not fit its key: replaced
+      note = radCacheCheck(body, omega, head, *c, got);
+      if (note.empty()) return *c = std::move(got), B->radcache.hit++, true;
+      note = "radiation cache: " + radCachePath(dir, key) + " " + note + "; recomputed and "
+             "rewritten";
+    }
     if (!note.empty()) B->cfg.warn.push_back(who.substr(8) + ": " + note);
+  }
+  // the dense systems' memory, estimated before they are allocated
+  const int nb = body.nface(), nl = lid.nface();
+  note = panelMemoryCheck(nb + nl, nb, int(omega.size()));
+  if (!note.empty()) {
+    *err = note + "; lower mjbuoy.radiation.panels (e.g. " + std::to_string(kDefaultPanels) +
+           ": a coarsened copy of the hull is solved) or mjbuoy.radiation.refine, or turn its "
+           "radiation off";
+    return false;
   }
   B->radcache.miss++;
   if (!panelSolve(body, lid, omega, head, c, err)) return false;
@@ -264,7 +301,7 @@ static double poseHeave(Buoy* B, const mjData* d, int root, const std::string& w
 // varies over d, and the diagonal fix (panel.cc rankineMatrices) carries
 // that error: the solution is not resolved (a 2 x 1 m box at 2.5 mm
 // draft gave A33 = -3.2e6 kg at rho 1e5)
-static std::string unresolved(const PanelMesh& p, const HydroCoef& c) {
+static std::string unresolved(const PanelMesh& p, const HydroCoef& c, const RadConfig& rc) {
   double zlo = 0, wide = 0;
   eachEdge(p, [&](const double* a, double l) {
     zlo = std::min(zlo, a[2]);
@@ -276,8 +313,7 @@ static std::string unresolved(const PanelMesh& p, const HydroCoef& c) {
          "(smallest diagonal entry " + fmt(lo) + "): its " + std::to_string(p.nface()) +
          " wet panels, up to " + fmt(wide) + " m wide, do not resolve its draft of " +
          fmt(-zlo) + " m (panels should be no wider than a few drafts); give the hull a "
-         "finer mesh below the waterline or raise mjbuoy.radiation.refine, or turn its "
-         "radiation off";
+         "finer mesh below the waterline or " + refineHint(rc) + ", or turn its radiation off";
 }
 
 // the wet panels counted against mjbuoy.radiation.panels: those of a
@@ -377,7 +413,7 @@ static std::string finishGroup(Buoy* B, const mjData* d, int root, const std::st
              "semi-definite; check its units (WAMIT: mjbuoy.radiation.ulen) and that it is "
              "for this body";
     // an unresolved wet surface, not a fault of the user's numbers
-    std::string why = unresolved(body, c);
+    std::string why = unresolved(body, c, rc);
     if (!(rc.given && rc.on) && !namedOn(*B, root))
       return skipGroup(B, root, who.substr(8) + " is off: " + why);
     return who + ": " + why;
@@ -534,7 +570,8 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   return finishGroup(B, d, root, who, body, dz, Rd, std::move(c), cx, false);
 }
 
-std::string attachRadiation(Buoy* B) {
+// attachRadiation's work, which may throw (std::bad_alloc)
+static std::string attachGroups(Buoy* B) {
   const mjModel* m = B->m;
   const RadConfig& rc = B->cfg.rad;
   for (int b : rc.onBody) {
@@ -615,6 +652,22 @@ std::string attachRadiation(Buoy* B) {
     for (size_t i = 0; i < B->rad.rb.size(); i++)
       if (B->rad.rb[i].body == db.body) db.ri = int(i);
   return "";
+}
+
+// no C++ exception leaves the attach: an allocation that fails despite
+// the estimate (panelMemoryCheck; another process took the memory
+// meanwhile) is an error naming the setting
+std::string attachRadiation(Buoy* B) {
+  try {
+    return attachGroups(B);
+  } catch (const std::bad_alloc&) {
+    return "mjbuoy: radiation: out of memory at attach; lower mjbuoy.radiation.panels or "
+           "mjbuoy.radiation.refine, or turn radiation off (<text name=\"mjbuoy.radiation\" "
+           "data=\"off\"/>)";
+  } catch (const std::exception& e) {
+    return std::string("mjbuoy: radiation: failed at attach (") + e.what() + "); turn radiation "
+           "off (<text name=\"mjbuoy.radiation\" data=\"off\"/>) and report the model";
+  }
 }
 
 }  // namespace mjb

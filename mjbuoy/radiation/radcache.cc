@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -209,6 +210,59 @@ bool radCacheLoad(const std::string& dir, const std::string& key, HydroCoef* c,
   }
   *c = std::move(t);
   return true;
+}
+
+std::string radCacheCheck(const PanelMesh& body, const std::vector<double>& omega,
+                          const std::vector<double>& heading, const HydroCoef& in,
+                          const HydroCoef& c) {
+  char b[300];
+  if (c.omega != omega) {
+    std::snprintf(b, sizeof b, "holds %zu frequencies from %g rad/s where its key asks %zu from "
+                  "%g rad/s", c.omega.size(), c.omega.empty() ? 0.0 : c.omega[0], omega.size(),
+                  omega.empty() ? 0.0 : omega[0]);
+    return b;
+  }
+  if (c.heading != heading) return "holds other headings than its key asks";
+  if (c.rho != in.rho || c.g != in.g || c.depth != in.depth)
+    return "holds another density, gravity or depth than its key asks";
+  if (c.ref[0] != in.ref[0] || c.ref[1] != in.ref[1] || c.ref[2] != in.ref[2]) {
+    std::snprintf(b, sizeof b, "holds the reference point (%g, %g, %g) m where its key asks "
+                  "(%g, %g, %g) m", c.ref[0], c.ref[1], c.ref[2], in.ref[0], in.ref[1], in.ref[2]);
+    return b;
+  }
+  const size_t nw = omega.size(), nx = 6 * nw * heading.size();
+  if (c.A.size() != 36 * nw || c.B.size() != 36 * nw || c.Xre.size() != nx ||
+      c.Xim.size() != nx || c.FKre.size() != nx || c.FKim.size() != nx)
+    return "holds arrays of other sizes than its frequencies and headings";
+  // the body's size: its farthest vertex from ref (at least 1 mm)
+  double L = 1e-3;
+  for (size_t v = 0; v + 2 < body.vert.size(); v += 3)
+    L = std::max(L, std::hypot(std::hypot(body.vert[v] - in.ref[0], body.vert[v + 1] - in.ref[1]),
+                               body.vert[v + 2] - in.ref[2]));
+  const double kMargin = 1e3, m0 = in.rho * L * L * L;
+  auto scale = [&](int i, int j) { return m0 * (i >= 3 ? L : 1) * (j >= 3 ? L : 1); };
+  auto over = [&](double v, double lim) { return !std::isfinite(v) || std::fabs(v) > kMargin * lim; };
+  for (int i = 0; i < 6; i++)
+    for (int j = 0; j < 6; j++) {
+      bool bad = over(c.Ainf[6 * i + j], scale(i, j));
+      for (size_t w = 0; w < nw && !bad; w++)
+        bad = over(c.A[36 * w + 6 * i + j], scale(i, j)) ||
+              over(c.B[36 * w + 6 * i + j], omega[w] * scale(i, j));
+      if (bad) {
+        std::snprintf(b, sizeof b, "holds an added mass or damping (entry %d%d) beyond %g times "
+                      "what a body %.3g m in size can have", i + 1, j + 1, kMargin, L);
+        return b;
+      }
+    }
+  for (size_t k = 0; k < nx; k++) {
+    const double lim = in.rho * in.g * L * L * (k % 6 >= 3 ? L : 1);
+    if (over(c.Xre[k], lim) || over(c.Xim[k], lim) || over(c.FKre[k], lim) || over(c.FKim[k], lim)) {
+      std::snprintf(b, sizeof b, "holds an exciting force beyond %g times what a body %.3g m in "
+                    "size can have", kMargin, L);
+      return b;
+    }
+  }
+  return "";
 }
 
 // mkdir -p; false with errno set

@@ -44,6 +44,16 @@ std::string radCachePath(const std::string& dir, const std::string& key);
 bool radCacheLoad(const std::string& dir, const std::string& key, HydroCoef* c,
                   std::string* note);
 
+// "" when c, loaded for the key of (body, omega, heading, in), holds what
+// that key asks and values a body of its size can have, else why not: its
+// frequencies, headings, rho, g, depth and reference point those of the
+// key; its coefficients finite and within 1e3 times the scale of a body of
+// the mesh's size L about ref (rho L^3, times L per rotation dof, and
+// omega for B; rho g L^2 for the exciting force)
+std::string radCacheCheck(const PanelMesh& body, const std::vector<double>& omega,
+                          const std::vector<double>& heading, const HydroCoef& in,
+                          const HydroCoef& c);
+
 // write c as the file of key in dir (made if missing), atomically (a
 // temporary file renamed into place); a file there that is not a cache
 // file is left alone. false with *note on failure

@@ -212,6 +212,7 @@ void SsModes::add(int i0, int j0, const KFit& f, double h) {
     j.push_back(j0);
     lam.push_back(std::exp(f.p[r] * h));
     c.push_back(f.c[r]);
+    p.push_back(f.p[r]);
   }
 }
 

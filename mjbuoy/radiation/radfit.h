@@ -45,10 +45,11 @@ bool fitKernel(const double* K, int n, double h, const std::vector<double>& w, d
 // of a fit, in closed form
 void fitTransform(const KFit& f, double w, double* B, double* dA);
 
-// a body's memory as modes: force row i, velocity dof j, lam = exp(p h), c
+// a body's memory as modes: force row i, velocity dof j, lam = exp(p h), c;
+// p the continuous poles [1/s], for another step h (a changed timestep)
 struct SsModes {
   std::vector<int> i, j;
-  std::vector<cplx> lam, c;
+  std::vector<cplx> lam, c, p;
   int size() const { return int(i.size()); }
   void add(int i0, int j0, const KFit& f, double h);
 };
@@ -66,11 +67,12 @@ struct SsState {
 // the memory's step clock (radstep.cc): restart (first sample nu), new step
 // (commits the newest sample, then nu is the newest), same time (nu
 // replaces the newest); then f = the trapezoid convolution of the fitted K
-// with the samples: -h Re sum c (lam X + nu_n / 2 - pw nu_first / 2)
+// with the samples: -h Re sum c (lam X + nu_n / 2 - pw nu_first / 2).
+// lam: the modes' exp(p h) at the step h in force (nullptr: sm.lam)
 void ssRestart(const SsModes& sm, SsState s, const double nu[6]);
-void ssNew(const SsModes& sm, SsState s, const double nu[6]);
+void ssNew(const SsModes& sm, SsState s, const double nu[6], const cplx* lam = nullptr);
 void ssSame(SsState s, const double nu[6], bool first);
-void ssForce(const SsModes& sm, SsState s, double h, double f[6]);
+void ssForce(const SsModes& sm, SsState s, double h, double f[6], const cplx* lam = nullptr);
 
 }  // namespace mjb
 

@@ -120,17 +120,35 @@ void steadyZero(double* K, int n) {
   for (int k = 0; k < n; k++) K[k] -= sk / sg * std::pow(std::sin(M_PI * k / (n - 1)), 2);
 }
 
-// rb's retardation functions over tmem seconds at step dt: one per pair
-// (i, j) whose B_ij is not zero
-void kernels(const HydroCoef& c, double tmem, double dt, RadBody* rb) {
+// the pairs (i, j) whose B_ij is not zero (within 1e-12 of the largest)
+std::vector<int> memoryPairs(const HydroCoef& c) {
   double bmax = 0;
   for (double b : c.B) bmax = std::max(bmax, std::fabs(b));
-  if (!(tmem > 0 && bmax > 0)) return;
-  rb->nk = int(std::ceil(tmem / dt)) + 1;
-  for (int i = 0; i < 6; i++) {
-    for (int j = 0; j < 6; j++) {
-      if (maxAbs(c.B, i, j) > 1e-12 * bmax) rb->pair.push_back(6 * i + j);
-    }
+  std::vector<int> pair;
+  for (int i = 0; i < 6; i++)
+    for (int j = 0; j < 6; j++)
+      if (bmax > 0 && maxAbs(c.B, i, j) > 1e-12 * bmax) pair.push_back(6 * i + j);
+  return pair;
+}
+
+// rb's retardation functions over tmem seconds, one per memoryPairs pair,
+// nk samples at step hk: the timestep dt, or, when that would pass
+// kMaxKernelSamples and resample is allowed (a state-space fit, whose
+// modes are continuous in time, follows), kFitKernelSamples over tmem
+void kernels(const HydroCoef& c, double tmem, double dt, bool resample, RadBody* rb,
+             double* hk) {
+  *hk = dt;
+  rb->pair = memoryPairs(c);
+  if (!(tmem > 0) || rb->pair.empty()) {
+    rb->pair.clear();
+    return;
+  }
+  const double nfull = std::ceil(tmem / dt) + 1;
+  if (nfull > kMaxKernelSamples && resample) {
+    rb->nk = kFitKernelSamples;
+    *hk = tmem / (rb->nk - 1);
+  } else {
+    rb->nk = int(std::min<double>(nfull, kMaxKernelSamples));
   }
   rb->K.resize(rb->pair.size() * rb->nk);
   double pd[6];  // the tail's exponents, fitted once for every pair
@@ -143,19 +161,39 @@ void kernels(const HydroCoef& c, double tmem, double dt, RadBody* rb) {
       std::copy_n(rb->K.begin() + (q - rb->pair.begin()) * rb->nk, rb->nk,
                   rb->K.begin() + p * rb->nk);
     } else {
-      retardationP(c, pd, i, j, dt, rb->nk, rb->K.data() + p * rb->nk);
+      retardationP(c, pd, i, j, *hk, rb->nk, rb->K.data() + p * rb->nk);
       steadyZero(rb->K.data() + p * rb->nk, rb->nk);
     }
   }
+}
+
+// why a convolution memory of tmem seconds at step dt cannot be had: its
+// samples pass kMaxKernelSamples; the cost and the settings that fix it
+std::string memoryCost(const HydroCoef& c, double tmem, double dt, const char* name,
+                       const std::string& why) {
+  const double n = std::ceil(tmem / dt) + 1, np = double(memoryPairs(c).size());
+  char e[900];
+  std::snprintf(e, sizeof e, "mjbuoy: radiation: body \"%s\": a memory of %.4g s at "
+                "opt.timestep = %.4g s is %.4g samples per pair (%d pairs: about %.4g MB of "
+                "kernels and history and %.4g multiply-adds per step), above the bound of %d "
+                "samples%s; raise opt.timestep, shorten mjbuoy.radiation.memory, or use "
+                "mjbuoy.radiation.memorymodel statespace (which samples the kernel at a "
+                "bounded rate)", name, tmem, dt, n, int(np), (2 * np + 6) * n * 8 / 1e6, n * np,
+                kMaxKernelSamples, why.c_str());
+  return e;
 }
 
 // rb's memory as a state-space model (docs/physics.md section 14,
 // "State-space memory"): each pair's K fitted, or copied from an identical
 // K fitted before (the transposed pair, another body with the same
 // coefficients). Any pair that misses the tolerance leaves rb on the
-// convolution, with a note naming the body and the error
-void fitMemory(const HydroCoef& c, double dt, const std::vector<RadBody>& done, const char* name,
-               RadBody* rb, std::vector<std::string>* note) {
+// convolution, with a note naming the body and the error. K is sampled at
+// hk, the modes step at dt; a kernel resampled for the fit (hk != dt: no
+// convolution to fall back on) keeps a best fit within 3 times the
+// tolerances, with a warning into warn
+void fitMemory(const HydroCoef& c, double hk, double dt, const std::vector<RadBody>& done,
+               const char* name, RadBody* rb, std::vector<std::string>* note,
+               std::vector<std::string>* warn) {
   rb->ss = SsModes();
   const int nk = rb->nk;
   auto same = [&](const RadBody& o, int p) {
@@ -214,8 +252,19 @@ void fitMemory(const HydroCoef& c, double dt, const std::vector<RadBody>& done, 
       sT = std::sqrt(E[0][0] * E[1][0]);
       sB = std::sqrt(E[0][1] * E[1][1]);
     }
-    if (!found && !fitKernel(rb->K.data() + p * nk, nk, dt, c.omega, sT, sB, &fit[p])) {
+    if (!found && !fitKernel(rb->K.data() + p * nk, nk, hk, c.omega, sT, sB, &fit[p])) {
       char e[512];
+      if (hk != dt && !fit[p].p.empty() && fit[p].errT <= 3 * kFitTolT &&
+          fit[p].errF <= 3 * kFitTolF) {
+        std::snprintf(e, sizeof(e), "radiation: body \"%s\": K_%d%d(t) fitted within %.3g%% "
+                      "(L2 in time) and %.3g%% (B, A), above the tolerances %g%% and %g%%; kept, "
+                      "since at opt.timestep = %g s the convolution would pass %d samples (docs/"
+                      "physics.md section 14, \"Small timesteps\")", name, i + 1, j + 1,
+                      100 * fit[p].errT, 100 * fit[p].errF, 100 * kFitTolT, 100 * kFitTolF, dt,
+                      kMaxKernelSamples);
+        warn->push_back(e);
+        continue;
+      }
       std::snprintf(e, sizeof(e), "radiation: body \"%s\": no fit of K_%d%d(t) by up to %d damped "
                     "exponentials within %g%% (L2 in time) and %g%% (B, A at the table's "
                     "frequencies); best %.3g%%, %.3g%%; its memory is the convolution (docs/physics.md "
@@ -383,11 +432,24 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
   rb.key = memoryKey(c, tmem, dt);
   if (!copyMemory(r->rb, r->conv || !r->ssAsked, &rb)) {
     if (tmem == 0) tmem = memoryLength(c);
-    kernels(c, tmem, dt, &rb);
+    // a convolution memory is bounded in samples (docs/physics.md section
+    // 14, "Small timesteps"): refused with its cost beyond
+    if (r->conv && tmem > 0 && std::ceil(tmem / dt) + 1 > kMaxKernelSamples &&
+        !memoryPairs(c).empty())
+      return memoryCost(c, tmem, dt, name, "");
+    double hk = dt;
+    kernels(c, tmem, dt, !r->conv, &rb, &hk);
     // a fallback to the exact convolution costs time, not accuracy: it is
     // noted (a warning) only when the state-space model was asked for
     std::vector<std::string> quiet;
-    if (rb.nk && !r->conv) fitMemory(c, dt, r->rb, name, &rb, r->ssAsked ? &r->note : &quiet);
+    if (rb.nk && !r->conv)
+      fitMemory(c, hk, dt, r->rb, name, &rb, r->ssAsked ? &r->note : &quiet, &r->note);
+    // a kernel resampled for the fit cannot serve the convolution
+    if (hk != dt && rb.ss.size() == 0) {
+      const std::vector<std::string>& fn = quiet.empty() ? r->note : quiet;
+      return memoryCost(c, tmem, dt, name, ", and its state-space fit failed" +
+                        (fn.empty() ? std::string() : " (" + fn.back() + ")"));
+    }
     // the convolution runs forward over the history (radstep.cc, radMemory)
     auto kr = std::make_shared<std::vector<double>>(rb.K.size());
     for (size_t p = 0; p < rb.pair.size(); p++)
@@ -410,7 +472,9 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
     x.soff = r->nmode;
     r->nmode += x.ss.size();
     r->maxdof = std::max(r->maxdof, int(x.dof.size()));
-    r->nh = std::max(r->nh, x.nk);
+    // the history ring serves the convolution; a state-space body needs
+    // only its first and newest samples (the clock counts to 2)
+    r->nh = std::max(r->nh, x.ss.size() ? std::min(x.nk, 2) : x.nk);
   }
   return "";
 }
@@ -428,6 +492,8 @@ void radMakeState(const Radiation& r, RadState* s) {
   s->told.assign(r.rb.size(), 0);
   s->ssX.assign(r.nmode, 0);
   s->ssPw.assign(r.nmode, 0);
+  s->ssLam.assign(r.nmode, 0);
+  s->ssDt = 0;
   s->ssNu.assign(12 * r.rb.size(), 0);
   s->imm.assign(r.rb.size(), 1.0);
   s->sstep.assign(2 * r.rb.size(), 1.0);
@@ -446,6 +512,7 @@ void radRestart(RadState* s) {
   std::fill(s->imm.begin(), s->imm.end(), 1.0);
   std::fill(s->sstep.begin(), s->sstep.end(), 1.0);
   s->head = s->count = 0;
+  s->dtTold = false;
   s->key = -1;
   s->tcur = 0;
   s->mstamp = -1;

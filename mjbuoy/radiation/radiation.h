@@ -61,7 +61,8 @@ struct Radiation {
   std::vector<RadBody> rb;
   double dt = 0;             // step of the memory samples [s] (opt.timestep at set time)
   int maxdof = 0;            // longest dof chain
-  int nh = 1;                // history ring length: the longest memory, >= 1
+  int nh = 1;                // history ring length: the longest convolution memory
+                             // (2 for state-space bodies), >= 1
   std::vector<int> simple0;  // m->dof_simplenum before the first body was set
   bool conv = false;         // mjbuoy.radiation.memorymodel = convolution: no fit
   bool ssAsked = false;      // statespace given explicitly: a fallback is noted
@@ -91,6 +92,12 @@ struct RadState {
   std::vector<double> ajac;  // scratch: A_inf times each column
   std::vector<char> told;    // per body: a non-finite force was named
   std::vector<cplx> ssX, ssPw;  // per mode: state-space sums (SsState)
+  // per mode: exp(p h) at the timestep h = ssDt in force when it is not
+  // Radiation::dt, the step of attach (opt.timestep changed since);
+  // dtTold: that change was noted
+  std::vector<cplx> ssLam;
+  double ssDt = 0;
+  bool dtTold = false;
   std::vector<double> ssNu;  // per body 12: first and newest velocity samples
   std::vector<double> imm;   // per body: immersion factor of this call, in [0, 1]
   std::vector<double> sstep; // per body 2: immersion factor at the last step's time, this step's
@@ -126,6 +133,15 @@ void retardationP(const HydroCoef& c, const double* p, int i, int j, double dt, 
 // |K_ij| stays below 1% of the largest |K| (at most kMaxMemory)
 double memoryLength(const HydroCoef& c);
 const double kMaxMemory = 60;
+
+// the most samples a retardation function keeps per pair: a convolution
+// memory longer than this many timesteps is refused with its cost; a
+// state-space memory samples its kernel at a coarser step for the fit
+// (whose modes are continuous in time) instead (docs/physics.md section
+// 14, "Small timesteps")
+const int kMaxKernelSamples = 1 << 17;
+// the samples of a kernel resampled for the state-space fit
+const int kFitKernelSamples = 8192;
 
 // true when A (6 x 6, row-major) is finite but not positive semi-definite
 // within round-off: the water it carries would have negative kinetic energy

@@ -222,6 +222,39 @@ double immRate(int tick, double si, double t, double tcur, double h, double* ss)
   return (ss[1] - ss[0]) / h;
 }
 
+// opt.timestep h differs from the step r.dt the memory was made at
+// (docs/physics.md section 14, "Changed timestep"): the state-space modes
+// step with exp(p h) (s->ssLam, computed once per new h, no allocation);
+// a convolution's samples are at r.dt, so its memory is left out. Noted
+// once per history
+void timestepMoved(const Radiation& r, const mjModel* m, double h, RadState* s,
+                   std::string* notices) {
+  if (s->ssDt != h) {
+    for (const RadBody& rb : r.rb)
+      for (int k = 0; k < rb.ss.size(); k++) s->ssLam[rb.soff + k] = std::exp(rb.ss.p[k] * h);
+    s->ssDt = h;
+  }
+  if (s->dtTold) return;
+  s->dtTold = true;
+  for (const RadBody& rb : r.rb) {
+    char line[512];
+    const char* name = m->names + m->name_bodyadr[rb.body];
+    if (rb.ss.size()) {
+      std::snprintf(line, sizeof line, "body \"%s\": opt.timestep is %g s, not the %g s of "
+                    "mjb_attach: its state-space radiation memory follows the new step\n",
+                    name, h, r.dt);
+    } else if (rb.nk) {
+      std::snprintf(line, sizeof line, "body \"%s\": opt.timestep is %g s, but its convolution "
+                    "radiation memory is sampled at the %g s of mjb_attach: the memory is left "
+                    "out; set opt.timestep before mjb_attach, or use "
+                    "mjbuoy.radiation.memorymodel statespace\n", name, h, r.dt);
+    } else {
+      continue;
+    }
+    if (notices->size() + std::strlen(line) < notices->capacity()) *notices += line;
+  }
+}
+
 // sum of qM's diagonal over the dofs that move rb
 double diagSum(const mjModel* m, const mjData* d, const RadBody& rb) {
   double q = 0;
@@ -259,6 +292,10 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
   const double cur[3] = {sea.current[0], sea.current[1], 0};
   if (r.rb.empty()) return;
   const int tick = clock(m, d, s);
+  // the step in force: another than at attach is followed or noted
+  const double h = m->opt.timestep;
+  const bool moved = h != r.dt;
+  if (moved) timestepMoved(r, m, h, s, notices);
   if (tick == kRestart) {
     s->head = 0;
     s->count = 0;
@@ -273,7 +310,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
   bool addM = pos != s->mstamp;
   for (size_t ib = 0; ib < r.rb.size() && !addM; ib++)
     addM = !(diagSum(m, d, r.rb[ib]) == s->mdiag[ib]);
-  if (tick != kMid) preParts(r, s, pool);
+  if (tick != kMid && !moved) preParts(r, s, pool);
   for (size_t ib = 0; ib < r.rb.size(); ib++) {
     const RadBody& rb = r.rb[ib];
     const int n = rb.dof.size();
@@ -313,7 +350,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
     // water entry: the hull takes up the momentum s A nu_w of the water
     // it wets as s rises, -ds/dt A nu_w; on exit the water keeps its own
     // (docs/physics.md section 14, "Water entry")
-    const double ds = immRate(tick, si, d->time, s->tcur, r.dt, s->sstep.data() + 2 * ib);
+    const double ds = immRate(tick, si, d->time, s->tcur, h, s->sstep.data() + 2 * ib);
     if (r.entry && ds > 0) {
       double P[6];
       mul6(rb.A, nw, P);
@@ -334,14 +371,17 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
       // state-space memory (radss.cc), on the same clock as the history
       SsState st{s->ssX.data() + rb.soff, s->ssPw.data() + rb.soff, s->ssNu.data() + 12 * ib,
                  s->ssNu.data() + 12 * ib + 6};
+      const cplx* lam = moved ? s->ssLam.data() + rb.soff : nullptr;
       if (tick == kRestart) {
         ssRestart(rb.ss, st, nu);
       } else if (tick == kNew) {
-        ssNew(rb.ss, st, nu);
+        ssNew(rb.ss, st, nu, lam);
       } else {
         ssSame(st, nu, s->count == 1);
       }
-      ssForce(rb.ss, st, r.dt, fm);
+      ssForce(rb.ss, st, h, fm, lam);
+    } else if (rb.nk && moved) {
+      std::memset(fm, 0, 6 * sizeof(double));
     } else if (rb.nk && tick != kMid) {
       for (int j = 0; j < 6; j++) hist[r.nh * j + s->head] = nu[j];
       memoryFrom(rb, hist, r.nh, s->head, convSamples(rb, s->count), r.dt,
