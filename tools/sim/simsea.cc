@@ -101,12 +101,9 @@ std::string parseEdits(const std::vector<std::string>& sets,
   return "";
 }
 
-mjModel* loadEdited(const std::string& model, const Edits& ed, std::string* err) {
-  tinyxml2::XMLDocument doc;
-  if (doc.LoadFile(model.c_str()) != tinyxml2::XML_SUCCESS) {
-    *err = "cannot read " + model + ": " + doc.ErrorStr();
-    return nullptr;
-  }
+// the edits applied to doc, the MJCF of model, compiled from memory
+static mjModel* editAndLoad(const std::string& model, tinyxml2::XMLDocument& doc,
+                            const Edits& ed, std::string* err) {
   tinyxml2::XMLElement* root = doc.RootElement();
   if (!root || std::string(root->Name()) != "mujoco") {
     *err = model + " is not MJCF (root element <mujoco>)";
@@ -132,6 +129,25 @@ mjModel* loadEdited(const std::string& model, const Edits& ed, std::string* err)
   mjModel* m = mjbtool::loadFromMemory(model, p.CStr(), "mjbuoy-sim", e, sizeof(e));
   if (!m) *err = "cannot load " + model + " with the entries set: " + e;
   return m;
+}
+
+mjModel* loadEdited(const std::string& model, const Edits& ed, std::string* err) {
+  tinyxml2::XMLDocument doc;
+  if (doc.LoadFile(model.c_str()) != tinyxml2::XML_SUCCESS) {
+    *err = "cannot read " + model + ": " + doc.ErrorStr();
+    return nullptr;
+  }
+  return editAndLoad(model, doc, ed, err);
+}
+
+mjModel* loadEditedText(const std::string& model, const std::string& xml, const Edits& ed,
+                        std::string* err) {
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS) {
+    *err = "cannot parse " + model + ": " + doc.ErrorStr();
+    return nullptr;
+  }
+  return editAndLoad(model, doc, ed, err);
 }
 
 std::string blame(const Edits& ed, const std::string& err) {

@@ -27,6 +27,11 @@ std::string parseEdits(const std::vector<std::string>& sets,
 // is only read); null with the reason in err
 mjModel* loadEdited(const std::string& model, const Edits& e, std::string* err);
 
+// the same for the MJCF text xml, compiled as if it were the file model
+// (its directory resolves mesh files and includes; mjbuoy's Python Sim)
+mjModel* loadEditedText(const std::string& model, const std::string& xml, const Edits& e,
+                        std::string* err);
+
 // an mjb_attach message about an entry the edits set, prefixed with the
 // option that set it
 std::string blame(const Edits& e, const std::string& err);
