@@ -37,6 +37,8 @@ SCENE = """
   <custom>
     <numeric name="mjbuoy.sea.density" data="1000"/>
     <text name="mjbuoy.hulls" data="hull"/>
+    <!-- no panel solution: the simple damping stands for the radiated waves -->
+    <text name="mjbuoy.radiation" data="off"/>
     <numeric name="mjbuoy.hull.damping" data="3000 300"/>
     <text name="mjbuoy.spectrum.sea.type" data="jonswap"/>
     <numeric name="mjbuoy.spectrum.sea.components" data="24"/>
