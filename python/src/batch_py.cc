@@ -111,9 +111,11 @@ void bindBatch(py::module_& mod) {
 Batch(source, n, seeds=None, backend=None, calm=False, threads=None, **overrides)
 
 seeds: None (every world as the model says), one int for all, or n ints:
-world i is then exactly mjbuoy.Sim(source, seed=seeds[i], ...) (spectrum k
-gets seeds[i] + k). threads: worker threads (None: one per core, at most n).
-overrides: as for mjbuoy.Sim, the same for every world.)");
+world i then steps exactly as mjbuoy.Sim(source, seed=seeds[i], ...), bit
+for bit (spectrum k gets seeds[i] + k). threads: worker threads (None: one
+per core, at most n). overrides: as for mjbuoy.Sim, the same for every
+world; mjbuoy.threads defaults to 1 (the worlds, not the hulls, run in
+parallel).)");
   c.def(py::init([](const std::string& source, int n, py::object seeds, py::object backend,
                     bool calm, py::object threads, py::kwargs kw) {
           if (n < 1 || n > 65536) {
@@ -121,6 +123,12 @@ overrides: as for mjbuoy.Sim, the same for every world.)");
           }
           py::dict overrides;
           for (auto kv : kw) overrides[kv.first] = kv.second;
+          // the pool runs the worlds in parallel: each world's cpu backend
+          // on one thread (its results do not depend on its thread count,
+          // docs/robustness.md), unless the caller says otherwise
+          if (!overrides.contains("threads") && !overrides.contains("mjbuoy.threads")) {
+            overrides["threads"] = 1;
+          }
           std::vector<py::object> seed(n, seeds);
           if (!seeds.is_none() && !py::isinstance<py::int_>(seeds)) {
             py::list l;
