@@ -62,7 +62,8 @@ def main():
     p.add_argument("--amplitude", type=float, default=0.02, help="wave amplitude [m]")
     p.add_argument("--cycles", type=int, default=12, help="wave periods simulated per point")
     args = p.parse_args()
-    sim = mjbuoy.Sim(str(ROOT / "models" / "buoy.xml"))
+    # the calm scene reserves no wave components: room for set_sea's one
+    sim = mjbuoy.Sim(str(ROOT / "models" / "buoy.xml"), sea__capacity=1)
     coef = sim.radiation("buoy")
     mass = 157.080
     periods = np.array([1.0, 1.4, 1.7, 2.0, 2.4, 3.0, 4.0])

@@ -150,15 +150,22 @@ py::dict radiationOf(const World& w, int body) {
     if (bc.first == body) {
       const mjb::HydroCoef& c = bc.second;
       py::dict d;
-      int nw = c.nw(), nh = c.nh();
+      int nw = c.nw();
       d["omega"] = py::array_t<double>(nw, c.omega.data());
       d["A"] = blocks(c.A.data(), nw);
       d["B"] = blocks(c.B.data(), nw);
       py::array a = blocks(c.Ainf, 1);
       d["Ainf"] = a.attr("reshape")(6, 6);
-      d["heading"] = py::array_t<double>(nh, c.heading.data());
-      d["X"] = complexOf(c.Xre, c.Xim, nw, nh);
-      d["FK"] = complexOf(c.FKre, c.FKim, nw, nh);
+      // the exciting force of the diffraction solution (mjbuoy.radiation.diffraction,
+      // on by default), as mjbuoy-hydro prints it: about the COM, world axes at qpos0
+      const mjb::HydroCoef* x = &c;
+      for (const mjb::DiffBody& db : B->diff.db) {
+        if (db.body == body) x = &db.c;
+      }
+      int nhx = x->nh(), nwx = x->nw();
+      d["heading"] = py::array_t<double>(nhx, x->heading.data());
+      d["X"] = complexOf(x->Xre, x->Xim, nwx, nhx);
+      d["FK"] = complexOf(x->FKre, x->FKim, nwx, nhx);
       d["ref"] = py::array_t<double>(3, c.ref);
       d["rho"] = c.rho;
       d["g"] = c.g;

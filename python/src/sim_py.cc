@@ -347,7 +347,8 @@ range (the sea is then unchanged).)");
         "the panel solver's coefficients of a body (name or id) about its centre of mass, body "
         "axes: dict of omega (nw,) [rad/s], A (nw, 6, 6) added mass, B (nw, 6, 6) radiation "
         "damping, Ainf (6, 6), heading (nh,) [rad], X (nw, nh, 6) complex exciting force per "
-        "unit amplitude [N/m, N m/m], FK (its Froude-Krylov part), rho, g, depth. Needs "
+        "unit amplitude [N/m, N m/m] about the COM in world axes at qpos0 (nh = 0 with "
+        "mjbuoy.radiation.diffraction off), FK (its Froude-Krylov part), rho, g, depth. Needs "
         "mjbuoy.radiation on.");
   c.def("render", &Sim::render, py::arg("width") = 640, py::arg("height") = 480,
         py::arg("camera") = "",

@@ -120,3 +120,11 @@ def test_radiation_coefficients_of_a_hemisphere():
     # added mass tends to A(inf) from above at high frequency (Hulme's curve)
     assert np.all(c["B"][:, 2, 2] > 0)
     assert c["A"][-1, 2, 2] < c["A"][0, 2, 2]
+    # long waves: the heave exciting force tends to the hydrostatic and
+    # inertial force of the undisturbed wave, |X3| = C33 - w^2 (rho V + A33)
+    # per unit amplitude (Newman, Marine Hydrodynamics, 1977, section 6.17),
+    # C33 = rho g pi R^2; at the lowest frequency (kR = 0.05) within 2 %
+    w0 = c["omega"][0]
+    long_wave = 1000 * 9.81 * np.pi * 0.25 - w0**2 * (m0 + c["A"][0, 2, 2])
+    assert c["X"].shape == (nw, len(c["heading"]), 6) and len(c["heading"]) > 0
+    assert abs(abs(c["X"][0, 0, 2]) / long_wave - 1) < 0.02
