@@ -10,7 +10,11 @@ transient fitted with a sinusoid at omega: RAO = heave amplitude / a.
 Frequency domain (linear seakeeping, docs/physics.md):
     RAO(w) = |X3(w)| / |C33 - w^2 (m + A33(w)) + i w (B33(w) + b)|
 with C33 = rho g A_wp (the sphere's waterplane pi (2 R h - h^2) at draft
-h = 0.363 m), b the scene's simple linear heave damping (1058 N s/m).
+h = 0.363 m), b the scene's simple linear damping C_lin r_s (docs/physics.md
+section 4.3: C_lin = 1058 N s/m times the wet fraction of the hull's area,
+r_s = h / (2 R) for a sphere). The time domain also has what the linear
+model leaves out (exact hydrostatics over the moving hull, quadratic drag),
+so the two differ most near resonance.
 """
 import argparse
 import math
@@ -25,7 +29,8 @@ import numpy as np  # noqa: E402
 import mjbuoy  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-G, RHO, R, H, DAMP = 9.81, 1000.0, 0.5, 0.363258, 1058.0
+G, RHO, R, H = 9.81, 1000.0, 0.5, 0.363258
+DAMP = 1058.0 * H / (2 * R)  # C_lin r_s [N s/m]
 
 
 def measured_rao(sim, period, amp, cycles):
