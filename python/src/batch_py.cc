@@ -129,8 +129,18 @@ parallel).)");
           if (!overrides.contains("threads") && !overrides.contains("mjbuoy.threads")) {
             overrides["threads"] = 1;
           }
+          // one int (Python's or a numpy scalar: __index__, not a sequence) for all
+          auto isInt = [](py::handle h) {
+            return PyIndex_Check(h.ptr()) && !PySequence_Check(h.ptr());
+          };
+          auto asInt = [](py::handle h) {
+            PyObject* i = PyNumber_Index(h.ptr());
+            if (!i) throw py::error_already_set();
+            return py::reinterpret_steal<py::object>(i);
+          };
           std::vector<py::object> seed(n, seeds);
-          if (!seeds.is_none() && !py::isinstance<py::int_>(seeds)) {
+          if (!seeds.is_none() && isInt(seeds)) seed.assign(n, asInt(seeds));
+          if (!seeds.is_none() && !isInt(seeds)) {
             py::list l;
             try {
               l = py::list(seeds);
@@ -142,10 +152,10 @@ parallel).)");
                                     std::to_string(n) + " worlds; give one seed per world");
             }
             for (int i = 0; i < n; i++) {
-              if (!py::isinstance<py::int_>(l[i])) {
+              if (!isInt(l[i])) {
                 throw py::type_error("seeds[" + std::to_string(i) + "] is not an int");
               }
-              seed[i] = l[i];
+              seed[i] = asInt(l[i]);
             }
           }
           std::vector<std::shared_ptr<World>> w;

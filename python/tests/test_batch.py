@@ -34,7 +34,7 @@ def test_identical_seeds_are_bit_identical_to_one_sim(wavy):
 
 def test_different_seeds_differ_and_each_matches_its_sim(wavy):
     model = wavy
-    batch = mjbuoy.Batch(model, 3, seeds=[1, 2, 3], threads=2)
+    batch = mjbuoy.Batch(model, 3, seeds=np.array([1, 2, 3]), threads=2)  # numpy ints too
     for _ in range(100):
         qpos, _, _ = batch.step(np.zeros((3, batch.nu)))
     # different random phases move the buoys differently
@@ -69,6 +69,8 @@ def test_actions_are_checked(models):
         batch.step(np.array([["a"], ["b"]]))
     with pytest.raises(ValueError, match="actions: element 1 is nan"):
         batch.step(np.array([[1.0], [np.nan]]))
+    with pytest.raises(TypeError, match=r"seeds\[1\] is not an int"):
+        mjbuoy.Batch(str(models / "motorboat.xml"), 2, seeds=[1, 2.5])
     with pytest.raises(ValueError, match="seeds has 3 values for n = 2"):
         mjbuoy.Batch(str(models / "motorboat.xml"), 2, seeds=[1, 2, 3])
     with pytest.raises(ValueError, match=r"mask: shape \(3,\), expected \(2,\)"):
