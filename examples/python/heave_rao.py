@@ -13,8 +13,9 @@ with C33 = rho g A_wp (the sphere's waterplane pi (2 R h - h^2) at draft
 h = 0.363 m), b the scene's simple linear damping C_lin r_s (docs/physics.md
 section 4.3: C_lin = 1058 N s/m times the wet fraction of the hull's area,
 r_s = h / (2 R) for a sphere). The time domain also has what the linear
-model leaves out (exact hydrostatics over the moving hull, quadratic drag),
-so the two differ most near resonance.
+model leaves out (exact hydrostatics over the moving hull, quadratic drag,
+the wave pressure over the instantaneous wet surface); the script prints
+both and their ratio.
 """
 import argparse
 import math
@@ -76,7 +77,8 @@ def main():
     omega = 2 * np.pi / periods
     pred = predicted_rao(coef, mass, omega)
     for T, m_, p_ in zip(periods, meas, pred):
-        print(f"T {T:4.1f} s  RAO time domain {m_:.3f}  frequency domain {p_:.3f}")
+        print(f"T {T:4.1f} s  RAO time domain {m_:.3f}  frequency domain {p_:.3f}  "
+              f"ratio {m_ / p_:.2f}")
     wf = np.linspace(omega.min(), omega.max(), 200)
     plt.figure(figsize=(6, 4))
     plt.plot(wf, predicted_rao(coef, mass, wf), label="frequency domain (panel coefficients)")
