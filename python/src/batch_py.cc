@@ -184,7 +184,9 @@ parallel).)");
           return t;
         }, "each world's simulated time (n,) [s]");
   c.def("step", [](Batch& b, py::object actions, int nstep, bool wrench) {
-          if (nstep < 1) throw py::value_error("nstep = " + std::to_string(nstep) + " must be >= 1");
+          if (nstep < 1) {
+            throw py::value_error("nstep = " + std::to_string(nstep) + " must be >= 1");
+          }
           int nu = b.m()->nu;
           py::array_t<double> a;
           if (!(actions.is_none() && nu == 0)) a = doubles(actions, "actions", {b.n(), nu});

@@ -92,8 +92,8 @@ int idOf(const mjModel* m, int type, int count, const char* kind, const char* ki
     list += std::string(i ? ", " : "") + (n ? n : "(unnamed)");
   }
   if (count > 20) list += ", ...";
-  throw py::key_error(std::string("no ") + kind + " named \"" + name + "\"; " + kinds + " in the model" +
-                      ": " + (count ? list : "none"));
+  throw py::key_error(std::string("no ") + kind + " named \"" + name + "\"; " + kinds +
+                      " in the model: " + (count ? list : "none"));
 }
 
 // a body given by name or id
@@ -230,7 +230,8 @@ pass **{"mjbuoy.spectrum.sea.hs": 1.5}, or spectrum__sea__hs=1.5 ("__" for
   c.def("body_id", [](Sim& s, const std::string& n) {
           const mjModel* m = s.world().m;
           return idOf(m, mjOBJ_BODY, m->nbody, "body", "bodies", n);
-        }, py::arg("name"), "index of a body in body_xpos, xfrc_applied, wrench(); KeyError if none");
+        }, py::arg("name"),
+        "index of a body in body_xpos, xfrc_applied, wrench(); KeyError if none");
   c.def("joint_id", [](Sim& s, const std::string& n) {
           const mjModel* m = s.world().m;
           return idOf(m, mjOBJ_JOINT, m->njnt, "joint", "joints", n);

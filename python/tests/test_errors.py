@@ -21,7 +21,8 @@ def test_missing_file_and_bad_mjcf():
 
 def test_bad_mjbuoy_entry_in_the_scene(wavy):
     # mjb_attach's validator: the entry, its value and the accepted range
-    bad = wavy.replace('name="mjbuoy.sea.density" data="1000"', 'name="mjbuoy.sea.density" data="-5"')
+    bad = wavy.replace('name="mjbuoy.sea.density" data="1000"',
+                       'name="mjbuoy.sea.density" data="-5"')
     with pytest.raises(mjbuoy.Error, match="mjbuoy.sea.density"):
         mjbuoy.Sim(bad)
 
