@@ -1,6 +1,6 @@
 # Embeds the compute shaders shaders/*.comp into the library as string
 # constants, at build time: writes OUT, a .cc with mjb::shaderSource(name)
-# and mjb::shaderName(i) (declared in mjbuoy/glprog.h). Run with cmake -P;
+# and mjb::shaderName(i) (declared in mjbuoy/gl/glprog.h). Run with cmake -P;
 # inputs: SRC (the shaders/ directory), OUT.
 #
 # A line '#include "file"' in a shader is replaced by shaders/file (one

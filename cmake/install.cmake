@@ -3,7 +3,7 @@
 #   include/mjbuoy/{mjbuoy.h,mjbuoy_version.h}   the public header only
 #   bin/mjbuoy-*                                   every tool target of tools/
 #   share/mjbuoy/models/                           the example scenes and meshes
-#   share/doc/mjbuoy/                              README and docs/
+#   share/doc/mjbuoy/                              README, CHANGELOG and docs/*.md
 #   lib/cmake/mjbuoy/                              find_package(mjbuoy CONFIG): mjbuoy::mjbuoy
 #   lib/pkgconfig/mjbuoy.pc                        pkg-config --cflags --libs mjbuoy
 include(CMakePackageConfigHelpers)
@@ -53,8 +53,12 @@ configure_file(${PROJECT_SOURCE_DIR}/cmake/mjbuoy.pc.in ${PROJECT_BINARY_DIR}/mj
 install(FILES ${PROJECT_BINARY_DIR}/mjbuoy.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/models/ DESTINATION ${CMAKE_INSTALL_DATADIR}/mjbuoy/models)
-install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
+# the README's links (docs/*.md, CHANGELOG.md) resolve in the installed tree:
+# docs/ keeps its name beside README.md (the Markdown sources of the site)
+install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CHANGELOG.md
+  DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs
+  FILES_MATCHING PATTERN "*.md")
 
 # every executable target of tools/ (so tools added later install too)
 if(MJBUOY_BUILD_TOOLS)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs, builds and runs the main job: the fleet demo scene on an
 # irregular sea with wind (models/jonswap.xml), then renders a short clip of
-# it (README "Clips").
+# it (docs/tools.md, mjbuoy-sim --render).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh

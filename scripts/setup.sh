@@ -9,8 +9,8 @@ pkgs=(
   cmake g++ make pkg-config
   libmujoco-dev libqhull-dev   # MuJoCo 2.2.2; its CMake config names qhull's include dir
   libc6-dev                    # libmvec: vector sin, cos, exp of the cpu backend (comes with g++)
-  libeigen3-dev                # the panel solver's dense complex LU (mjbuoy/panel.cc); small linear algebra in tests
-  libmeshoptimizer-dev         # quadric simplification of a hull too fine for the panel budget (mjbuoy/panelcoarse.cc)
+  libeigen3-dev                # the panel solver's dense complex LU (mjbuoy/radiation/panel.cc); small linear algebra in tests
+  libmeshoptimizer-dev         # quadric simplification of a hull too fine for the panel budget (mjbuoy/radiation/panelcoarse.cc)
   libgtest-dev                 # unit tests
   libcli11-dev                 # command-line parsing of the tools
   python3                      # CSV checks of the command-line tests
@@ -30,6 +30,7 @@ pkgs=(
   slurm-wlm munge              # mjbuoy-sweep slurm: sbatch; sweep.slurm starts a single-node Slurm (munged, slurmctld, slurmd)
   python3-dev pybind11-dev python3-pybind11 python3-numpy  # the Python module mjbuoy (python/, docs/python.md)
   python3-pytest python3-matplotlib  # its pytest suite; the plots of examples/python
+  python3-sphinx python3-sphinx-rtd-theme python3-myst-parser  # the documentation site (docs/, target docs, tests docs.*)
 )
 
 missing=()

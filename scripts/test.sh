@@ -28,7 +28,7 @@ for a in "$@"; do
   esac
 done
 
-# the 600 s soak runs (label soak, README "Long tests") and the converged
+# the 600 s soak runs (label soak, docs/testing.md "Long tests") and the converged
 # panel-solver validation (label panel) only when a label is asked for,
 # e.g. bash scripts/test.sh -L soak
 exclude=(-LE 'soak|panel')

@@ -97,7 +97,7 @@ struct GBody {
   int nt;          // triangles of the body
   int h0;          // first hull of the body
   int nh;          // hulls of the body
-  vec4 rig0;       // rigid group (mjbuoy/rigid.h): COM minus body COM (xyz) [m], w: 1 / mass [1/kg]
+  vec4 rig0;       // rigid group (mjbuoy/hull/rigid.h): COM minus body COM (xyz) [m], w: 1 / mass [1/kg]
   vec4 rig1;       // inverse inertia about the group COM, world: xx yy zz xy [1/(kg m^2)]
   vec4 rig2;       // xz yz (xy), 0 0
 };

@@ -1,5 +1,5 @@
 // sea.glsl: Gerstner and Airy surface in each body's frame (same maths as
-// mjbuoy/sea.cc, in positions relative to the body's COM; the per-body
+// mjbuoy/sea/sea.cc, in positions relative to the body's COM; the per-body
 // phases come from the CPU in double). Needs shared.h and buoy.h first.
 
 // B_WAVE and B_PHASE through buffer textures: llvmpipe gathers a texel in
@@ -81,7 +81,7 @@ vec2 seaResidual(int b, vec2 x, vec2 a, out vec3 J) {
 }
 
 // particle label (rel. COM) whose displaced position is x, Newton from a,
-// safeguarded as mjbuoy/sea.cc label(): J stays positive definite below
+// safeguarded as mjbuoy/sea/sea.cc label(): J stays positive definite below
 // folding, so the Newton step is a descent direction of |f|^2 and is
 // halved until |f| drops (near folding, sum Q k A -> 1, J is nearly
 // singular and full steps overshoot); stops when the step is below 0.1 mm
@@ -123,7 +123,7 @@ vec2 seaLabel(int b, vec2 x, vec2 a) {
   return a;
 }
 
-// Wheeler stretch (as mjbuoy/sea.cc): the profile height zs in [-h, 0] of a
+// Wheeler stretch (as mjbuoy/sea/sea.cc): the profile height zs in [-h, 0] of a
 // point z above the level under the surface eta
 float seaStretch(float z, float eta) {
   if (depth <= 0.0) return min(z - eta, 0.0);

@@ -1,11 +1,11 @@
 #version 430
 // stage 2, one workgroup per chunk of one hull's triangles (GChunk), each
 // invocation BUOY_PER of them: cut each triangle at the waterline and
-// integrate the pressure exactly (mjbuoy/pressure.cc; the linear dynamic
+// integrate the pressure exactly (mjbuoy/hull/pressure.cc; the linear dynamic
 // pressure and the water velocity per wave component in closed form,
 // waveint.glsl), then Kerner's viscous resistance, pressure/suction drag
 // and slamming at the wet centroid with the water velocity's mean over the
-// wet part (mjbuoy/hydro.cc, docs/physics.md); each invocation sums its triangles in a fixed order,
+// wet part (mjbuoy/hull/hydro.cc, docs/physics.md); each invocation sums its triangles in a fixed order,
 // so no per-triangle buffer. The viscous force needs the hull's wetted length and sbar, known
 // only after all its triangles: its per-triangle factor (1 + sbar - s_k),
 // s_k = (e_k - lo) / len, is linear in e_k, so the chunk keeps sum g and
@@ -51,7 +51,7 @@ uniform float rho;     // [kg/m^3]
 uniform int hasprev;   // slamming history exists
 uniform int first;     // first call of this step: record the history
 uniform float slamdt;  // time since the previous step's first call [s]
-uniform int linear;    // linear wave pressure (mjbuoy/wavepress.cc), else Kerner's
+uniform int linear;    // linear wave pressure (mjbuoy/hull/wavepress.cc), else Kerner's
 uniform int nfast;     // components integrated by one series per piece (gl.cc)
 
 // a NaN to add to a sum whose intermediate was not finite: the CPU side
@@ -76,7 +76,7 @@ void piece(vec3 q0, vec3 q1, vec3 q2, float d0, float d1, float d2, vec3 n, inou
 }
 
 // effective mass of body b's rigid group at cc (rel. body COM) along unit
-// u: 1 / (1/m + (r x u) . I^-1 (r x u)) (mjbuoy/rigid.cc effMass)
+// u: 1 / (1/m + (r x u) . I^-1 (r x u)) (mjbuoy/hull/rigid.cc effMass)
 float effMass(int b, vec3 cc, vec3 u) {
   vec4 r0 = body[b].rig0, r1 = body[b].rig1, r2 = body[b].rig2;
   vec3 w = cross(cc - r0.xyz, u);

@@ -21,6 +21,19 @@ check_tools.py BUILD_TOOLS_DIR MODELS_DIR CASE, CASE one of:
             from B, Haskind between X3 and B33); a second run reads the
             cache and prints the same tables; --plot writes a PNG (with
             gnuplot); no radiation and a full disk are refused (issue 16)
+  guard     every tool that writes refuses an output over the model, a file
+            the model reads (its hull mesh), a link to the model, ./model,
+            and two outputs naming one file (mjbuoy-hydro -o/--plot,
+            mjbuoy-sim, mjbuoy-view --screenshot, mjbuoy-scenario --junit),
+            before anything is computed; the files stay byte-identical
+  loadpath  a broken OBJ (face index past the vertices) is refused naming
+            the file and line by every tool that loads a model (hydro
+            crashed in MuJoCo's reader, exit 139); mjbuoy-view --exit-after
+            nan and inf are refused with a compact range
+  messages  usage errors exit with each tool's documented invalid-input
+            status (1: sim, hydro, bench, hullgen; 2: scenario, sweep,
+            view), not CLI11's 105/106; a run of 0 steps is refused;
+            --set NAME=nan is "not a finite number", not a "text field"
   render    (label render) a failing ffmpeg is reported with its own
             reason and a non-zero exit (not SIGPIPE), nothing is left
             behind; a video name that is not .mp4 is refused up front (12)
@@ -492,6 +505,103 @@ def hydro(tools, models, tmp):
     p = run([exe, box, "-o", "/dev/full"], cwd=tmp)
     refused(p, "mjbuoy-hydro -o /dev/full", "/dev/full", "No space left on device")
     no_temps(tmp, "hydro")
+
+
+def wigley(tmp, models, mesh="wigley_576.obj"):
+    """models/wigley.xml and its hull mesh copied into tmp (meshdir meshes)"""
+    os.makedirs(os.path.join(tmp, "meshes"), exist_ok=True)
+    shutil.copy(os.path.join(models, "meshes", "wigley_576.obj"), os.path.join(tmp, "meshes", mesh))
+    src = open(os.path.join(models, "wigley.xml")).read().replace("wigley_576.obj", mesh)
+    f = os.path.join(tmp, "wigley.xml")
+    open(f, "w").write(src)
+    return f, os.path.join(tmp, "meshes", mesh)
+
+
+def guard(tools, models, tmp):
+    exe = lambda n: os.path.join(tools, n)
+    model, mesh = wigley(tmp, models)
+    os.symlink("wigley.xml", os.path.join(tmp, "link.xml"))
+    h = (digest(model), digest(mesh))
+    env = dict(os.environ, MJBUOY_RADIATION_CACHE=os.path.join(tmp, "rc"))
+    for out, role in ((model, "model"), (os.path.join(tmp, "link.xml"), "model"),
+                      ("./wigley.xml", "model"), (mesh, "wigley_576.obj"),
+                      ("meshes/wigley_576.obj", "wigley_576.obj")):
+        for opt in ("-o", "--plot"):
+            p = run([exe("mjbuoy-hydro"), model, opt, out], cwd=tmp, env=env)
+            refused(p, "mjbuoy-hydro %s %s" % (opt, out), opt, role, "refusing to overwrite")
+            check((digest(model), digest(mesh)) == h, "model and mesh intact after hydro %s %s" % (opt, out))
+        p = run([exe("mjbuoy-sim"), model, "--duration", "0.01", "--csv", out], cwd=tmp)
+        refused(p, "mjbuoy-sim --csv %s" % out, "--csv", role, "refusing to overwrite")
+        p = run([exe("mjbuoy-view"), model, "--screenshot", "1:" + out], cwd=tmp)
+        refused(p, "mjbuoy-view --screenshot 1:%s" % out, "--screenshot", role, "refusing to overwrite")
+        check((digest(model), digest(mesh)) == h, "model and mesh intact after sim and view onto %s" % out)
+    p = run([exe("mjbuoy-hydro"), model, "-o", "same.txt", "--plot", "same.txt"], cwd=tmp, env=env)
+    refused(p, "mjbuoy-hydro -o and --plot to one file", "-o", "--plot", "same file")
+    check(not os.path.exists(os.path.join(tmp, "same.txt")), "nothing written to the shared name")
+    check(not os.path.exists(os.path.join(tmp, "rc")), "refused before anything is computed (no cache)")
+    sc = os.path.join(tmp, "sc.xml")
+    open(sc, "w").write('<scenario model="wigley.xml" duration="0.01"><check kind="finite"/></scenario>')
+    p = run([exe("mjbuoy-scenario"), sc, "--junit", mesh], cwd=tmp)
+    refused(p, "mjbuoy-scenario --junit onto the model's mesh", "--junit", "wigley_576.obj")
+    check((digest(model), digest(mesh)) == h, "model and mesh byte-identical at the end")
+    no_temps(tmp, "guard")
+
+
+def loadpath(tools, models, tmp):
+    exe = lambda n: os.path.join(tools, n)
+    model, mesh = wigley(tmp, models, "bad.obj")
+    lines = open(mesh).read().splitlines()
+    nv = sum(1 for l in lines if l.startswith("v "))
+    i = next(k for k, l in enumerate(lines) if l.startswith("f "))
+    lines[i] = "f 1 2 %d" % (nv + 1000)  # past the last vertex
+    open(mesh, "w").write("\n".join(lines) + "\n")
+    env = dict(os.environ, MJBUOY_RADIATION_CACHE=os.path.join(tmp, "rc"))
+    sc = os.path.join(tmp, "sc.xml")
+    open(sc, "w").write('<scenario model="wigley.xml" duration="0.01"><check kind="finite"/></scenario>')
+    for cmd in ([exe("mjbuoy-hydro"), model], [exe("mjbuoy-sim"), model, "--duration", "0.01"],
+                [exe("mjbuoy-view"), model, "--exit-after", "0"], [exe("mjbuoy-scenario"), sc]):
+        p = run(cmd, cwd=tmp, env=env)
+        refused(p, os.path.basename(cmd[0]) + " on a broken OBJ", "bad.obj", "line %d" % (i + 1),
+                "out of range")
+    check(not os.path.exists(os.path.join(tmp, "rc")), "hydro cached nothing of the broken hull")
+    for v in ("nan", "inf", "-1"):
+        p = run([exe("mjbuoy-view"), model, "--exit-after", v], cwd=tmp)
+        refused(p, "mjbuoy-view --exit-after " + v, "--exit-after", v, "[0, 1e+09]")
+        check(len(p.stderr.splitlines()[0]) < 100 if p.stderr else False,
+              "--exit-after %s: the message is short (CLI11's range printed DBL_MAX in 300 digits)" % v)
+
+
+def messages(tools, models, tmp):
+    exe = lambda n: os.path.join(tools, n)
+    model = barge(tmp, models)
+    # each tool's documented status for invalid input (docs/robustness.md,
+    # "Exit status"): a refused value and an unknown option alike
+    for tool, args, status in (("mjbuoy-sim", [model, "--duration", "nan"], 1),
+                               ("mjbuoy-sim", [], 1),
+                               ("mjbuoy-hydro", [model, "--kt-step", "nan"], 1),
+                               ("mjbuoy-bench", ["--boats", "0"], 1),
+                               ("mjbuoy-hullgen", ["--length", "nan"], 1),
+                               ("mjbuoy-scenario", ["--bogus"], 2),
+                               ("mjbuoy-sweep", ["run", "x.xml", "--out", "o", "--jobs", "-1"], 2),
+                               ("mjbuoy-view", [model, "--width", "nan"], 2)):
+        p = run([exe(tool)] + args, cwd=tmp)
+        check(p.returncode == status, "%s %s: exit %d (got %d)" % (tool, " ".join(args), status,
+                                                                 p.returncode))
+    for tool in ("mjbuoy-sim", "mjbuoy-sweep", "mjbuoy-scenario"):
+        p = run([exe(tool), "--help"], cwd=tmp)
+        check(p.returncode == 0, "%s --help: exit 0" % tool)
+    # 0 steps: a duration under half a 2 ms step rounds to none (guard.h stepsFor)
+    for d in ("0", "1e-9"):
+        p = run([exe("mjbuoy-sim"), model, "--duration", d], cwd=tmp)
+        refused(p, "mjbuoy-sim --duration %s" % d, "0 steps", "time step")
+    sc = os.path.join(tmp, "sc.xml")
+    open(sc, "w").write('<scenario model="barge.xml" duration="1e-9"><check kind="finite"/></scenario>')
+    p = run([exe("mjbuoy-scenario"), sc], cwd=tmp)
+    refused(p, "a scenario of duration 1e-9 s", "0 steps")
+    for v in ("nan", "inf", "1 nan"):
+        p = run([exe("mjbuoy-sim"), model, "--print-sea", "--set", "mjbuoy.wind.speed=" + v], cwd=tmp)
+        refused(p, "--set mjbuoy.wind.speed=" + v, "mjbuoy.wind.speed", "finite")
+        check("text" not in p.stderr, "--set mjbuoy.wind.speed=%s: not called a text entry" % v)
 
 
 def main():

@@ -12,6 +12,11 @@ check_view.py VIEW MODEL CASE, run inside xvfb-run (CTest does that), CASE:
               thread) and the window's GLX context (main thread) coexist
   errors      an unwritable or malformed --screenshot and a missing X server
               give clear errors before anything is written
+  guarded     the checks every tool runs: a scene that diverges in its first
+              step (barges of 1e-7 kg, tests/check_tools.py "diverge") makes
+              the viewer stop with exit 1 saying MuJoCo reset it (it exited
+              0); a screenshot that cannot be written (/dev/full) names
+              --screenshot once (it was printed twice)
   perturb     xdotool double-clicks the east barge (selects it) and
               ctrl + right-drags it to the right (mjPERT_TRANSLATE through
               xfrc_applied); compared with a run without interaction to the
@@ -211,6 +216,25 @@ def errors(view, model, tmp):
           "no X server: exit %d, says there is no display" % p.returncode)
 
 
+def guarded(view, model, tmp):
+    # 4905 N of buoyancy on 1e-7 kg: beyond MuJoCo's bound on qacc (1e10)
+    # in the first step, so MuJoCo resets the state (check_tools.py, diverge)
+    light = os.path.join(tmp, "light.xml")
+    open(light, "w").write(open(model).read().replace('mass="500"', 'mass="1e-7"'))
+    p = subprocess.run([view, light, "--exit-after", "1"], capture_output=True, text=True, timeout=300)
+    print(p.stderr)
+    check(p.returncode == 1 and "diverged" in p.stderr and "MuJoCo reset the state" in p.stderr,
+          "a diverging scene: exit %d (want 1), says diverged and MuJoCo reset it" % p.returncode)
+    check(not os.path.exists(os.path.join(tmp, "MUJOCO_LOG.TXT")) and
+          not os.path.exists("MUJOCO_LOG.TXT"), "MuJoCo's warnings on stderr, no MUJOCO_LOG.TXT")
+    p = subprocess.run([view, model, "--screenshot", "0.1:/dev/full", "--exit-after", "0.2"],
+                       capture_output=True, text=True, timeout=300, env=dict(os.environ, TMPDIR=tmp))
+    print(p.stderr)
+    check(p.returncode != 0 and "No space left on device" in p.stderr and
+          p.stderr.count("--screenshot") == 1,
+          "--screenshot to /dev/full: exit %d, names --screenshot once" % p.returncode)
+
+
 class Viewer:
     """mjbuoy-view in the background, its stdout read line by line"""
 
@@ -363,7 +387,8 @@ def main():
         return 1
     with tempfile.TemporaryDirectory() as tmp:
         {"screenshot": screenshot, "perturb": perturb, "close": close_case,
-         "screenshot_gl": lambda *a: screenshot(*a, backend="gl"), "errors": errors}[case](view, model, tmp)
+         "screenshot_gl": lambda *a: screenshot(*a, backend="gl"), "errors": errors,
+         "guarded": guarded}[case](view, model, tmp)
     print("FAILED" if failed else "PASSED")
     return 1 if failed else 0
 

@@ -554,7 +554,7 @@ TEST(Panel, AsymmetricHullHaskindAllDofs) {
 }
 
 // the time domain interpolates D = X - FK between the 36 headings solved
-// at attach (periodic Catmull-Rom, mjbuoy/diffract.cc): on the asymmetric
+// at attach (periodic Catmull-Rom, mjbuoy/radiation/diffract.cc): on the asymmetric
 // hull, from the even ones of 72 headings to the odd ones (5 deg off),
 // within 1% of the largest |D_j| over headings, each dof, at omega 1.5, 3
 // and 5 rad/s (k times the hull length 0.7, 2.8, 7.6; the Catmull-Rom

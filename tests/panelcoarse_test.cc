@@ -1,4 +1,4 @@
-// coarsened hulls for the panel solver (mjbuoy/panelcoarse.h,
+// coarsened hulls for the panel solver (mjbuoy/radiation/panelcoarse.h,
 // docs/physics.md section 13, "Coarsened hulls"): PanelCoarse.* (default
 // run, seconds) checks the coarse wet surface's hydrostatics against the
 // Wigley hull's closed form; PanelCoarseConverged.* (label panel, minutes)

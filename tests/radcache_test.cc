@@ -1,4 +1,4 @@
-// the panel solver's cache (mjbuoy/radcache.h; docs/mjcf.md section 11,
+// the panel solver's cache (mjbuoy/radiation/radcache.h; docs/mjcf.md section 11,
 // "Cache"): exact round trip, hits, misses, corrupt and foreign files
 #include <sys/stat.h>
 #include <unistd.h>

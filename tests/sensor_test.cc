@@ -1,4 +1,4 @@
-// user sensors that mjbuoy fills (mjbuoy/sensor.cc, docs/mjcf.md "Sensors",
+// user sensors that mjbuoy fills (mjbuoy/api/sensor.cc, docs/mjcf.md "Sensors",
 // docs/physics.md section 9), each against a hand value or an independent
 // formula
 #include <cmath>

@@ -1,4 +1,4 @@
-// test helper: the vector levels (mjbuoy/vmath.h) this cpu has, for tests
+// test helper: the vector levels (mjbuoy/util/vmath.h) this cpu has, for tests
 // that check each vector path against the scalar one (seavec_test.cc,
 // trivec_test.cc)
 #ifndef MJBUOY_TESTS_SIMDLEVELS_H_

@@ -500,7 +500,7 @@ std::vector<Case> matrix() {
   // boat rolls past the 75 deg bound there (75.9 deg at t = 445 s of 600;
   // 70.4 deg within 120 s), as on the steepest Gerstner sea it tilts most
   // (docs/scenarios.md): its faceted hull is too coarse for roll in a
-  // short-crested sea (README "Long tests")
+  // short-crested sea (docs/testing.md "Long tests")
   for (int n : {64, 256, 576}) {
     for (double s : {0.0, 10.0}) {
       if (n > 64 || s == 0) v.push_back({n, kJonswapHs / 2, 0, s});

@@ -1,4 +1,4 @@
-// mjbuoy-sweep statistics (tools/sweep_stats.cc) on synthetic records whose
+// mjbuoy-sweep statistics (tools/sweep/sweep_stats.cc) on synthetic records whose
 // statistics are known in closed form
 #include <cmath>
 #include <vector>

@@ -1,5 +1,5 @@
 // the closed-form wave pressure and velocity integrals (docs/physics.md,
-// "Pressure", "Cost"; mjbuoy/waveint.h) against independent references:
+// "Pressure", "Cost"; mjbuoy/sea/waveint.h) against independent references:
 // Gauss-Legendre quadrature in long double, the divided-difference
 // recursion, and Radon's degree-5 rule on fine subdivisions; the vector
 // paths against the scalar one

@@ -11,6 +11,7 @@
 
 #include "api/buoy.h"
 #include "hull/hull.h"
+#include "util/cpus.h"
 #include "util/pool.h"
 #include "radiation/radattach.h"
 #include "radiation/radiation.h"
@@ -223,7 +224,8 @@ void sensorcb(const mjModel* m, mjData* d, int stage) {
   mjb::fillSensors(b->b, m, d, state(b, d, false), stage);
 }
 
-// cpu threads: mjbuoy.threads, or with 0 (auto) every core (up to
+// cpu threads: mjbuoy.threads, or with 0 (auto) every CPU of the
+// process's allocation (util/cpus.h: affinity mask, Slurm's; up to
 // kMaxAuto) once the scene has kParMin triangles: below that the few us of
 // handing chunks to a worker are not repaid (docs/mjcf.md); never more
 // than the hulls' chunks (mjb::hullChunks). The hulls are cut at body
@@ -236,7 +238,7 @@ const int kParMin = 2000, kMaxAuto = 8, kChunks = 4;
 void threads(Buoy* B) {
   int n = B->cfg.threads;
   if (n == 0) {
-    n = int(B->face.size() / 3) >= kParMin ? int(std::thread::hardware_concurrency()) : 1;
+    n = int(B->face.size() / 3) >= kParMin ? mjb::usableCpus() : 1;
     n = std::max(1, std::min(n, kMaxAuto));
   }
   int parts = 0;

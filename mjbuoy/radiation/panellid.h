@@ -1,5 +1,5 @@
-// the interior lid's damping weight (docs/physics.md section 13, "The
-// damped lid"): how far each lid panel lies inside the waterline
+// the interior lid's damping weight (docs/physics.md section 13, "Irregular
+// frequencies and the damped lid"): how far each lid panel lies inside the waterline
 #ifndef MJBUOY_PANELLID_H_
 #define MJBUOY_PANELLID_H_
 

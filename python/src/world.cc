@@ -1,5 +1,5 @@
-// world: loading a scene the way mjbuoy-sim does (mjb_checkModelFile, then
-// mj_loadXML, or the --set edits of tools/sim/simsea.cc), attaching mjbuoy
+// world: loading a scene the way mjbuoy-sim does (the --set edits of
+// tools/sim/simsea.cc, tools/common/modelload.h), attaching mjbuoy
 #include "world.h"
 
 #include <unistd.h>
@@ -11,6 +11,8 @@
 
 #include <tinyxml2.h>
 
+#include "mjcfedit.h"
+#include "modelload.h"
 #include "simsea.h"
 
 namespace mjbpy {
@@ -124,9 +126,15 @@ static mjModel* compile(const LoadSpec& spec, const std::string& name, std::stri
   mjbsim::Edits edits;
   *err = mjbsim::parseEdits(sets, {}, spec.calm, &edits);
   if (!err->empty()) return nullptr;
+  std::string xml;
   if (isXmlText(spec.source)) {
     // compiled as a file in the working directory: mesh files resolve from there
-    return mjbsim::loadEditedText(cwd() + "/(MJCF text)", spec.source, edits, err);
+    std::string path = cwd() + "/(MJCF text)";
+    if (!mjbsim::editedText(path, spec.source, edits, &xml, err)) return nullptr;
+    char e[2048] = "";
+    mjModel* m = mjbtool::loadFromMemory(path, xml, "mjbuoy-python", e, sizeof(e));
+    if (!m) *err = "cannot load the MJCF text: " + std::string(e);
+    return m;
   }
   struct stat st;
   if (stat(spec.source.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
@@ -134,15 +142,9 @@ static mjModel* compile(const LoadSpec& spec, const std::string& name, std::stri
            "starting with '<'";
     return nullptr;
   }
-  char e[1024] = "";
-  if (!mjb_checkModelFile(spec.source.c_str(), e, sizeof(e))) {
-    *err = "cannot load " + spec.source + ": " + e;
-    return nullptr;
-  }
-  if (!edits.empty()) return mjbsim::loadEdited(spec.source, edits, err);
-  mjModel* m = mj_loadXML(spec.source.c_str(), nullptr, e, sizeof(e));
-  if (!m) *err = "cannot load " + spec.source + ": " + e;
-  return m;
+  // as mjbuoy-sim loads it: mesh files checked, then compiled (tools/common/modelload.h)
+  if (!edits.empty() && !mjbsim::editedModel(spec.source, edits, &xml, err)) return nullptr;
+  return mjbtool::loadModel(spec.source, edits.empty() ? nullptr : &xml, "mjbuoy-python", err);
 }
 
 std::unique_ptr<World> loadWorld(const LoadSpec& spec, std::string* err) {

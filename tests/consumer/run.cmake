@@ -8,6 +8,8 @@
 #   BUILD    mjbuoy's build tree; SRC: tests/consumer; WORK: scratch dir
 #   CC       C compiler; FLAGS: extra compile and link flags (sanitizers)
 #   VERSION  the project's version (the tools' --version)
+#   PYTHON, CHECK_LINKS  python3 and scripts/check_links.py: the installed
+#            README's and docs' local links resolve in share/doc/mjbuoy
 cmake_minimum_required(VERSION 3.16)
 set(P ${WORK}/prefix)
 
@@ -39,9 +41,11 @@ if(STEP STREQUAL "tree")
   if(NOT headers STREQUAL "mjbuoy;mjbuoy/mjbuoy.h;mjbuoy/mjbuoy_version.h")
     message(FATAL_ERROR "FAIL installed headers are ${headers}, want mjbuoy/mjbuoy.h and mjbuoy/mjbuoy_version.h")
   endif()
+  # the installed README links to docs/*.md and CHANGELOG.md beside it
+  run(${PYTHON} ${CHECK_LINKS} ${P}/share/doc/mjbuoy README.md CHANGELOG.md docs)
   set(tools mjbuoy-sim mjbuoy-scenario mjbuoy-bench mjbuoy-hullgen mjbuoy-view mjbuoy-sweep mjbuoy-hydro)
   foreach(f lib/cmake/mjbuoy/mjbuoyConfig.cmake lib/pkgconfig/mjbuoy.pc share/mjbuoy/models/barge.xml
-      share/doc/mjbuoy/README.md)
+      share/doc/mjbuoy/README.md share/doc/mjbuoy/CHANGELOG.md share/doc/mjbuoy/docs/index.md)
     if(NOT EXISTS ${P}/${f})
       message(FATAL_ERROR "FAIL ${f} is not installed")
     endif()

@@ -1,6 +1,6 @@
 // libFuzzer target: the scenario file parser of mjbuoy-scenario
-// (tools/scenario_parse.cc) and, for a valid scenario, the model edit and
-// load that follow (tools/scenario_model.cc; cpu backend, no simulation).
+// (tools/scenario/scenario_parse.cc) and, for a valid scenario, the model edit and
+// load that follow (tools/scenario/scenario_model.cc; cpu backend, no simulation).
 // Bytes -> scenario XML text, read as if it were the file
 // tests/scenarios/checks/fuzz.xml (model paths as in the seed corpus).
 // Must hold: every rejection is a scn::Invalid with a "FILE:LINE: reason"

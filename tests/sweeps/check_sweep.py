@@ -10,11 +10,26 @@ check_sweep.py MODE BIN [ARGS]; prints "FAIL ..." and exits 1 on a failure.
   rao BIN                 examples/rao/rao.xml against the hydrostatic heave prediction
   sensor BIN              statistics of sensors (sensors.xml) against Archimedes; an
                           unknown sensor makes the case invalid (sensor_unknown.xml)
+  stale BIN               a changed model (mass), hull mesh or included file reruns its
+                          cases and merge publishes no stale result; the heavier barge
+                          floats deeper by the Archimedes ratio of the masses
+  inject BIN              a newline or shell characters in the sweep's name or any
+                          sbatch option are refused naming the option and its form;
+                          nothing of them reaches a script; --shard 0/2/3 is refused
+  fifo BIN                a FIFO in the results folder is refused by run and merge
+                          (they blocked forever), naming it; run does not write its
+                          manifest over the sweep file
+  cluster BIN             the scripts run as they are on a cluster: --time and --mem
+                          from the measured case, --jobs 0 from the CPU allocation
+                          (taskset, SLURM_CPUS_PER_TASK), one shared radiation cache
+                          filled by a precompute job first, and a node that cannot
+                          run mjbuoy stops with what is missing
 """
 import json
 import math
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -150,6 +165,9 @@ def mode_slurm(bin_):
         t0 = time.time()
         with LocalSlurm(os.path.join(d, "cluster")) as env:
             print(f"slurm up in {time.time() - t0:.1f} s")
+            # sbatch passes the submitter's environment on: without a cache
+            # of the user's the scripts share DIR/radcache
+            env = {k: v for k, v in env.items() if k != "MJBUOY_RADIATION_CACHE"}
             r = run([bin_, "slurm", BARGE, "--out", remote, "--shards", "3", "--time", "5",
                      "--mem", "200M"], env=env, ok=(0,))
             print(r.stdout.strip())
@@ -167,7 +185,14 @@ def mode_slurm(bin_):
                 time.sleep(0.5)
             check(done, f"array finished within 90 s ({time.time() - t0:.1f} s)")
             logs = sorted(os.listdir(os.path.join(remote, "slurm")))
-            check(len(logs) == 3, f"3 array task logs: {logs}")
+            arr = [f for f in logs if re.match(r"^[0-9]+_[0-9]+\.out$", f)]
+            pre = [f for f in logs if f.startswith("precompute_")]
+            check(len(arr) == 3 and len(pre) == 1, f"3 array task logs and the precompute job's: {logs}")
+            if pre:
+                t = open(os.path.join(remote, "slurm", pre[0])).read()
+                check("mjbuoy-sweep: precompute barge: 6 case(s), radiation cache " +
+                      os.path.join(remote, "radcache") + ":" in t and " 0 computed" not in t,
+                      f"the precompute job filled the shared cache: {t.strip()}")
         run([bin_, "merge", remote])
         for f in ("sweep.csv", "junit.xml"):
             check(read(os.path.join(local, f)) == read(os.path.join(remote, f)), f"{f} identical locally and on Slurm")
@@ -243,11 +268,192 @@ def mode_sensor(bin_):
         check(re.search(want, case.get("error", "")) is not None, f"unknown sensor: {case.get('error')}")
 
 
+def small_sweep(d, model_xml, extra_files=()):
+    """a 2-case sweep in d of a 0.5 s drop of the model text model_xml"""
+    open(os.path.join(d, "model.xml"), "w").write(model_xml)
+    open(os.path.join(d, "base.xml"), "w").write(
+        '<scenario model="model.xml" duration="0.5">\n  <init body="barge" pos="0 0 0.3"/>\n'
+        '  <check kind="finite"/>\n</scenario>\n')
+    open(os.path.join(d, "s.xml"), "w").write(
+        '<sweep scenario="base.xml" name="s">\n'
+        '  <axis name="drop" set="init[body=barge]@pos" format="0 0 {}" values="0.25 0.3"/>\n'
+        '  <stat name="z_end" stat="mean" body="barge" quantity="z" from="0.45"/>\n</sweep>\n')
+    return os.path.join(d, "s.xml")
+
+
+def barge_text():
+    return open(os.path.join(ROOT, "models", "barge.xml")).read()
+
+
+def mode_stale(bin_):
+    with tempfile.TemporaryDirectory() as d:
+        sw, out = small_sweep(d, barge_text()), os.path.join(d, "out")
+        r = run([bin_, "run", sw, "--out", out], ok=(0,))
+        check("2 to run (0 complete)" in r.stdout, "first run runs both cases")
+        run([bin_, "merge", out], ok=(0,))
+        z500 = {k: float(v["z_end"]) for k, v in rows(out).items()}
+        # the model changes (500 -> 800 kg): merge does not publish the old results
+        m = os.path.join(d, "model.xml")
+        open(m, "w").write(barge_text().replace('mass="500"', 'mass="800"'))
+        r = run([bin_, "merge", out], ok=(1,))
+        st = {k: v["status"] for k, v in rows(out).items()}
+        check(set(st.values()) == {"stale"}, f"after the model changed, merge marks both stale ({st})")
+        check(all(v["z_end"] == "" for v in rows(out).values()), "and publishes no statistic of them")
+        r = run([bin_, "run", sw, "--out", out], ok=(0,))
+        check("2 to run (0 complete)" in r.stdout, f"the rerun runs both cases: {r.stdout.splitlines()[0]}")
+        run([bin_, "merge", out], ok=(0,))
+        z800 = {k: float(v["z_end"]) for k, v in rows(out).items()}
+        # a 2 x 1 m waterplane: the draft is m / (rho 2 m^2), 0.25 m at 500 kg and
+        # 0.4 m at 800 kg, so the centre 0.25 m above the bottom sits 0.15 m lower
+        # at rest (Archimedes); after 0.5 s of a heavily damped drop the barge is
+        # on its way down, heavier deeper: below the light one in both cases
+        check(all(z800[k] < z500[k] for k in z500), f"the heavier barge floats lower: {z500} -> {z800}")
+        r = run([bin_, "run", sw, "--out", out], ok=(0,))
+        check("0 to run (2 complete)" in r.stdout, "unchanged files: nothing reruns")
+        # an included file the model reads
+        open(os.path.join(d, "inc.xml"), "w").write('<mujoco><option timestep="0.002"/></mujoco>')
+        open(m, "w").write(barge_text().replace('<option timestep="0.002"/>', '<include file="inc.xml"/>'))
+        run([bin_, "run", sw, "--out", out], ok=(0,))
+        open(os.path.join(d, "inc.xml"), "w").write('<mujoco><option timestep="0.001"/></mujoco>')
+        r = run([bin_, "run", sw, "--out", out], ok=(0,))
+        check("2 to run (0 complete)" in r.stdout, "a changed included file reruns the cases")
+        # a hull mesh: a 2 x 1 x 0.5 m box as an OBJ, then moved 1 mm
+        box = ["v %g %g %g" % (x, y, z) for x in (-1, 1) for y in (-0.5, 0.5) for z in (-0.25, 0.25)]
+        faces = ["f 1 3 4 2", "f 5 6 8 7", "f 1 2 6 5", "f 3 7 8 4", "f 1 5 7 3", "f 2 4 8 6"]
+        os.mkdir(os.path.join(d, "meshes"))
+        obj = os.path.join(d, "meshes", "box.obj")
+        open(obj, "w").write("\n".join(box + faces) + "\n")
+        mesh_model = barge_text().replace('<worldbody>', '<asset><mesh name="box" file="box.obj"/></asset>'
+                                          '\n  <worldbody>').replace('<option', '<compiler meshdir="meshes"/>\n  <option')
+        mesh_model = mesh_model.replace('type="box" size="1 0.5 0.25"', 'type="mesh" mesh="box"')
+        open(m, "w").write(mesh_model)
+        r = run([bin_, "run", sw, "--out", out], ok=(0,))
+        check("2 to run" in r.stdout, "the mesh model runs")
+        open(obj, "w").write("\n".join(box + faces).replace("0.25\n", "0.251\n") + "\n")
+        r = run([bin_, "run", sw, "--out", out], ok=(0, 1))
+        check("2 to run (0 complete)" in r.stdout, f"a changed mesh reruns the cases: {r.stdout.splitlines()[0]}")
+
+
+def mode_inject(bin_):
+    with tempfile.TemporaryDirectory() as d:
+        sw = small_sweep(d, barge_text())
+        out = os.path.join(d, "out")
+        pwned = os.path.join(d, "PWNED")
+        base = [bin_, "slurm", sw, "--out", out, "--dry-run", "--time", "5", "--mem", "1G"]
+        for opt, val in (("--partition", "p\ntouch " + pwned), ("--partition", "a;touch " + pwned),
+                         ("--account", "a$(touch %s)" % pwned), ("--mem", "4G\ntouch " + pwned),
+                         ("--time", "5`touch %s`" % pwned), ("--sbatch", "--qos=long\ntouch " + pwned),
+                         ("--sbatch", "--x y")):
+            args = [a for a in base]
+            if opt in ("--time", "--mem"):
+                i = args.index(opt)
+                del args[i:i + 2]
+            r = subprocess.run(args + [opt, val], capture_output=True, text=True)
+            check(r.returncode == 2 and opt in r.stderr and "expected" in r.stderr and not r.stdout,
+                  f"{opt} {val!r} refused naming the option and the form: {r.returncode} {r.stderr.strip()}")
+        r = subprocess.run([bin_, "slurm", sw, "--out", os.path.join(d, "a\nb"), "--dry-run", "--time", "5",
+                            "--mem", "1G"], capture_output=True, text=True)
+        check(r.returncode == 2 and "--out" in r.stderr, f"--out with a newline refused: {r.stderr.strip()}")
+        bad = os.path.join(d, "bad.xml")
+        open(bad, "w").write(open(sw).read().replace('name="s"', 'name="x&#10;touch %s"' % pwned))
+        r = subprocess.run([bin_, "slurm", bad, "--out", out, "--dry-run", "--time", "5", "--mem", "1G"],
+                           capture_output=True, text=True)
+        check(r.returncode == 2 and "name=" in r.stderr and "letters, digits" in r.stderr,
+              f"a newline in the sweep's name refused: {r.stderr.strip()}")
+        # accepted values are written as given, and the script is bash that
+        # parses (bash -n)
+        r = run([bin_, "slurm", sw, "--out", out, "--dry-run", "--time", "1-12:00:00", "--mem", "4G",
+                 "--partition", "compute,long", "--account", "proj_1", "--sbatch=--qos=long"], ok=(0,))
+        for line in ("#SBATCH --time=1-12:00:00", "#SBATCH --mem=4G", "#SBATCH --partition=compute,long",
+                     "#SBATCH --account=proj_1", "#SBATCH --qos=long"):
+            check(line in r.stdout.splitlines(), f"the script holds {line}")
+        pre, arr = r.stdout.split("# ---- then")
+        for part in (pre, arr.split("\n", 1)[1]):
+            p = subprocess.run(["bash", "-n"], input=part, capture_output=True, text=True)
+            check(p.returncode == 0, f"bash -n accepts the script: {p.stderr.strip()}")
+        check(not os.path.exists(pwned), "nothing ran")
+        r = subprocess.run([bin_, "run", sw, "--out", out, "--shard", "0/2/3"], capture_output=True, text=True)
+        check(r.returncode == 2 and "0/2/3" in r.stderr, f"--shard 0/2/3 refused: {r.stderr.strip()}")
+
+
+def mode_fifo(bin_):
+    with tempfile.TemporaryDirectory() as d:
+        sw, out = small_sweep(d, barge_text()), os.path.join(d, "out")
+        run([bin_, "run", sw, "--out", out], ok=(0,))
+        f = os.path.join(out, "cases", "drop-1.json")
+        os.remove(f)
+        os.mkfifo(f)
+        for cmd in (["merge", out], ["run", sw, "--out", out]):
+            try:
+                r = subprocess.run([bin_] + cmd, capture_output=True, text=True, timeout=30)
+                check(r.returncode == 2 and "drop-1.json is a FIFO" in r.stderr,
+                      f"{cmd[0]}: refused naming the FIFO: {r.returncode} {r.stderr.strip()}")
+            except subprocess.TimeoutExpired:
+                check(False, f"{cmd[0]} with a FIFO in cases/ finished within 30 s")
+        # outputs never replace inputs: a sweep file where run writes its manifest
+        o = os.path.join(d, "o")
+        os.mkdir(o)
+        sj = os.path.join(o, "sweep.json")
+        open(sj, "w").write(open(sw).read().replace('scenario="base.xml"', 'scenario="../base.xml"'))
+        before = read(sj)
+        r = subprocess.run([bin_, "run", sj, "--out", o], capture_output=True, text=True)
+        check(r.returncode == 2 and "same file as the sweep file" in r.stderr and read(sj) == before,
+              f"run --out onto the sweep file's directory refused, the file intact: {r.stderr.strip()}")
+
+
+def mode_cluster(bin_):
+    with tempfile.TemporaryDirectory() as d:
+        sw, out = small_sweep(d, barge_text()), os.path.join(d, "out")
+        # --time and --mem from case 0's measured cost, as estimate suggests:
+        # time 2 x (cases per task / jobs) x wall + 1 min, memory 1.5 x peak x jobs in 64 MiB steps
+        r = run([bin_, "slurm", sw, "--out", out, "--dry-run", "--shards", "1"], ok=(0,))
+        m = re.search(r"wall ([0-9.]+) s, peak RSS ([0-9.]+) MiB", r.stderr)
+        check(m is not None, f"the measurement is printed: {r.stderr.strip()}")
+        if m:
+            wall, rss = float(m.group(1)), float(m.group(2))
+            minutes = math.ceil((2 * 2 * wall + 60) / 60)
+            mem = math.ceil(1.5 * rss / 64) * 64
+            for line in (f"#SBATCH --time={minutes}", f"#SBATCH --mem={mem}M"):
+                check(line in r.stdout.splitlines(), f"{line} from wall {wall} s and {rss} MiB")
+        check(r.stdout.count("if [ -z \"${MJBUOY_RADIATION_CACHE:-}\" ]") == 2 and
+              r.stdout.count("export MJBUOY_RADIATION_CACHE='%s/radcache'" % out) == 2,
+              "both scripts share one radiation cache in the output directory")
+        check(" precompute '%s'" % sw in r.stdout, "the first job precomputes the radiation")
+        check("--jobs 0 --shard" in r.stdout, "the array's tasks run one case per allocated CPU")
+        # --jobs 0: the CPUs of the allocation, not the node's
+        ncpu = len(os.sched_getaffinity(0))
+        r = run([bin_, "run", sw, "--out", os.path.join(d, "o1"), "--jobs", "0"], ok=(0,))
+        check(f"{min(ncpu, 1000)} job(s)" in r.stdout.splitlines()[0], f"--jobs 0: {ncpu} CPU(s): {r.stdout.splitlines()[0]}")
+        if shutil.which("taskset") and ncpu > 1:
+            r = run(["taskset", "-c", "0", bin_, "run", sw, "--out", os.path.join(d, "o2"), "--jobs", "0"], ok=(0,))
+            check(", 1 job(s)" in r.stdout.splitlines()[0], f"taskset -c 0: 1 job: {r.stdout.splitlines()[0]}")
+        r = run([bin_, "run", sw, "--out", os.path.join(d, "o3"), "--jobs", "0"],
+                env=dict(os.environ, SLURM_CPUS_PER_TASK="1"), ok=(0,))
+        check(", 1 job(s)" in r.stdout.splitlines()[0], f"SLURM_CPUS_PER_TASK=1: 1 job: {r.stdout.splitlines()[0]}")
+        # precompute attaches every case: the second run reads the cache
+        env = dict(os.environ, MJBUOY_RADIATION_CACHE=os.path.join(d, "rc"))
+        p1 = run([bin_, "precompute", sw], env=env, ok=(0,))
+        check("2 case(s)" in p1.stdout and os.path.join(d, "rc") in p1.stdout, f"precompute: {p1.stdout.strip()}")
+        # a node that cannot run mjbuoy: the script stops before running, saying what is missing
+        r = run([bin_, "slurm", sw, "--out", out, "--dry-run", "--time", "5", "--mem", "1G"], ok=(0,))
+        fake = os.path.join(d, "fake-sweep")
+        open(fake, "w").write("#!/bin/sh\necho '%s: error while loading shared libraries: libmujoco.so.2.2.2: "
+                              "cannot open shared object file' >&2\nexit 127\n" % fake)
+        os.chmod(fake, 0o755)
+        arr = r.stdout.split("# ---- then")[1].split("\n", 1)[1].replace(bin_, fake)
+        p = subprocess.run(["bash", "-s"], input=arr, capture_output=True, text=True,
+                           env=dict(os.environ, SLURM_ARRAY_TASK_ID="0"))
+        check(p.returncode == 2 and "does not run on" in p.stderr and "libmujoco.so.2.2.2" in p.stderr and
+              "install the runtime libraries" in p.stderr, f"a node without the libraries: {p.stderr.strip()}")
+
+
 if __name__ == "__main__":
     mode, bin_ = sys.argv[1], os.path.abspath(sys.argv[2])
     {"list": lambda: mode_list(bin_), "invalid": lambda: mode_invalid(bin_, sys.argv[3]),
      "local": lambda: mode_local(bin_), "slurm": lambda: mode_slurm(bin_),
-     "rao": lambda: mode_rao(bin_), "sensor": lambda: mode_sensor(bin_)}[mode]()
+     "rao": lambda: mode_rao(bin_), "sensor": lambda: mode_sensor(bin_),
+     "stale": lambda: mode_stale(bin_), "inject": lambda: mode_inject(bin_),
+     "fifo": lambda: mode_fifo(bin_), "cluster": lambda: mode_cluster(bin_)}[mode]()
     if failures:
         print(f"FAIL {len(failures)} check(s) failed")
         sys.exit(1)

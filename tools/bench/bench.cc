@@ -505,7 +505,10 @@ int main(int argc, char** argv) {
                  "print each cell's times and the ratio baseline/this");
   app.add_option("--meshes", meshes, "directory of wigley_N.obj (default: the installed "
                  "share/mjbuoy/models/meshes beside this executable, else the source tree's)");
-  CLI11_PARSE(app, argc, argv);
+  {
+    int rc = mjbtool::parseArgs(app, argc, argv, 1);  // docs: invalid input exits 1
+    if (rc >= 0) return rc;
+  }
   if (boats.empty()) boats = grid == "full" ? std::vector<int>{1, 50, 100, 200, 400, 800}
                                             : std::vector<int>{1, 50};
   if (tris.empty()) tris = grid == "full" ? std::vector<int>{64, 256, 576, 2800, 7744}

@@ -1,5 +1,5 @@
 // mjbuoy-sweep's output files, through the tools' shared atomic output
-// (tools/outfile.h): temporary file beside the target, every write checked,
+// (tools/common/outfile.h): temporary file beside the target, every write checked,
 // renamed into place only when complete
 #include "atomic.h"
 

@@ -1,4 +1,4 @@
-// mjbuoy-sweep: atomic output files, a thin layer over tools/outfile.h for
+// mjbuoy-sweep: atomic output files, a thin layer over tools/common/outfile.h for
 // whole strings and for programs that write a file by name (gnuplot). A
 // reader (or a resumed sweep) sees the old file or the complete new one.
 #ifndef MJBUOY_TOOLS_ATOMIC_H_

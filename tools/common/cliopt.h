@@ -48,6 +48,20 @@ inline CLI::Validator Finite(double lo, double hi, bool loOpen = false, bool hiO
       "in " + range, "finite in " + range);
 }
 
+// parse the command line: -1 to go on, else the exit status. --help and
+// --version exit 0; a usage error (unknown option, missing or refused
+// value) prints CLI11's message and exits with usage, the status the tool
+// documents for invalid input (CLI11's own codes, 105 or 106, are not in
+// any tool's documentation)
+inline int parseArgs(CLI::App& app, int argc, char** argv, int usage) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : usage;
+  }
+  return -1;
+}
+
 }  // namespace mjbtool
 
 #endif  // MJBUOY_TOOLS_CLIOPT_H_

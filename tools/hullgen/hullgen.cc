@@ -201,7 +201,10 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output", file, "OBJ file to write, replaced only when complete "
                  "(default: stdout)");
   app.add_flag("--print", print, "print grid, triangle count and volumes to stderr");
-  CLI11_PARSE(app, argc, argv);
+  {
+    int rc = mjbtool::parseArgs(app, argc, argv, 1);  // docs: invalid input exits 1
+    if (rc >= 0) return rc;
+  }
 
   int nx = 0, nz = 0;
   pickGrid(n, &nx, &nz);

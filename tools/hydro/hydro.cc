@@ -15,6 +15,7 @@
 #include "cliopt.h"
 #include "hydroplot.h"
 #include "mjbuoy.h"
+#include "modelload.h"
 #include "outfile.h"
 #include "radiation/radiation.h"
 #include "radiation/radtail.h"
@@ -110,7 +111,8 @@ int main(int argc, char** argv) {
   std::string model, file;
   double dt = 0.05, tk = 0;
   using mjbtool::Finite;
-  app.add_option("model", model, "MJCF model with mjbuoy.radiation on")->required();
+  app.add_option("model", model, "MJCF model with mjbuoy.radiation on")->required()
+      ->check(CLI::ExistingFile);
   app.add_option("--kt-step", dt, "time step of the K(t) table [s]")->check(Finite(1e-4, 10));
   app.add_option("--kt-length", tk, "length of the K(t) table [s]; 0: the automatic memory "
                  "length")->check(Finite(0, mjb::kMaxMemory));
@@ -121,12 +123,27 @@ int main(int argc, char** argv) {
                  "into this PNG with gnuplot (package gnuplot-nox)");
   app.add_option("--plot-body", pbody, "the body --plot draws (default: the first with "
                  "radiation)");
-  CLI11_PARSE(app, argc, argv);
+  {
+    int rc = mjbtool::parseArgs(app, argc, argv, 1);  // docs: invalid input exits 1
+    if (rc >= 0) return rc;
+  }
 
+  {
+    // outputs never replace the model, its files or each other (before anything is computed)
+    std::vector<mjbtool::PathUse> uses;
+    if (!file.empty()) uses.push_back({file, "-o", true});
+    if (!png.empty()) uses.push_back({png, "--plot", true});
+    std::string e;
+    if (!mjbtool::checkOutputs(model, uses, &e)) {
+      std::fprintf(stderr, "mjbuoy-hydro: %s\n", e.c_str());
+      return 1;
+    }
+  }
   char err[1024] = "";
-  mjModel* m = mj_loadXML(model.c_str(), nullptr, err, sizeof err);
+  std::string lerr;
+  mjModel* m = mjbtool::loadModel(model, nullptr, "", &lerr);
   if (!m) {
-    std::fprintf(stderr, "mjbuoy-hydro: %s: %s\n", model.c_str(), err);
+    std::fprintf(stderr, "mjbuoy-hydro: %s\n", lerr.c_str());
     return 1;
   }
   mjbBuoy* b = mjb_attach(m, "cpu", err, sizeof err);

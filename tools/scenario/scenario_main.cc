@@ -10,7 +10,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cliopt.h"
+
 #include "guard.h"
+#include "modelload.h"
 #include "outfile.h"
 #include "mjbuoy_version.h"
 #include "scenario.h"
@@ -23,7 +26,11 @@ static std::vector<mjbtool::PathUse> inputs(const std::vector<std::string>& file
     uses.push_back({f, "scenario", false});
     try {
       scn::Scenario s = scn::parseScenario(f);
-      uses.push_back({s.model, "model of " + f + ":", false});
+      for (const std::string& mf : mjbtool::modelFiles(s.model)) {
+        std::string what = mf == s.model ? "model of " + f + ":"
+                                         : "file that the model of " + f + " reads:";
+        uses.push_back({mf, what, false});
+      }
       for (const scn::MeshFile& mf : s.meshes) uses.push_back({mf.file, "mesh of " + f + ":", false});
     } catch (const scn::Invalid&) {
       // reported when the scenario runs
@@ -66,7 +73,10 @@ int main(int argc, char** argv) {
   app.add_option("--backend", backend, "override the scenario's and the model's backend");
   app.add_option("--print-model", print,
                  "write the edited model MJCF of the (single) scenario here and exit");
-  CLI11_PARSE(app, argc, argv);
+  {
+    int rc = mjbtool::parseArgs(app, argc, argv, 2);  // docs: invalid input exits 2
+    if (rc >= 0) return rc;
+  }
 
   if (!print.empty() && files.size() != 1) {
     std::fprintf(stderr, "mjbuoy-scenario: --print-model writes the model of one scenario, "

@@ -12,7 +12,9 @@
 
 #include <tinyxml2.h>
 
+#include "guard.h"
 #include "mjcfedit.h"
+#include "modelload.h"
 #include "scenario.h"
 
 namespace scn {
@@ -206,18 +208,21 @@ std::unique_ptr<Sim> loadScenario(Scenario& s, const std::string& backend) {
   // mesh files MuJoCo 2.2 would load broken (mjbuoy.h): the model's own,
   // and those the scenario puts in their place
   char cerr[1024] = "";
-  if (!mjb_checkModelFile(s.model.c_str(), cerr, sizeof(cerr))) {
-    throw Invalid(s.file, s.line, "cannot load model " + s.model_attr + ": " + cerr);
-  }
   for (const MeshFile& mf : s.meshes) {
     if (!mjb_checkMeshFile(mf.file.c_str(), cerr, sizeof(cerr))) throw Invalid(s.file, mf.line, cerr);
   }
-  // compile from memory under a name in the model's directory
+  // compile from memory under a name in the model's directory, through the
+  // tools' one loading path (its own mesh files checked first)
   auto sim = std::make_unique<Sim>();
   char err[2048] = "";
-  sim->m = mjbtool::loadFromMemory(s.model, xml, "mjbuoy-scenario", err, sizeof(err));
-  if (!sim->m) throw Invalid(s.file, s.line, "cannot load model " + s.model_attr + ": " + err);
+  std::string lerr;
+  sim->m = mjbtool::loadModel(s.model, &xml, "mjbuoy-scenario", &lerr);
+  if (!sim->m) throw Invalid(s.file, s.line, lerr);  // "cannot load MODEL: reason"
   if (s.timestep > 0) sim->m->opt.timestep = s.timestep;
+  if (mjbtool::stepsFor(s.duration, sim->m->opt.timestep) < 1) {
+    throw Invalid(s.file, s.line, "duration = " + num(s.duration) + " s is less than one time "
+                  "step (" + num(sim->m->opt.timestep) + " s): the run would take 0 steps");
+  }
   bool energy = false;
   for (const Check& c : s.checks) energy = energy || c.kind == Kind::ENERGY;
   if (energy) sim->m->opt.enableflags |= mjENBL_ENERGY;

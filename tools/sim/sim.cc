@@ -21,6 +21,7 @@
 #include "cliopt.h"
 #include "guard.h"
 #include "mjbuoy.h"  // and mjbuoy_version.h
+#include "modelload.h"
 #include "outfile.h"
 #include "plot.h"
 #include "render.h"
@@ -192,7 +193,10 @@ int main(int argc, char** argv) {
                  "progress on stderr: auto (bar on a terminal, lines when rendering), bar, "
                  "lines or off")
       ->check(CLI::IsMember({"auto", "bar", "lines", "off"}));
-  CLI11_PARSE(app, argc, argv);
+  {
+    int rc = mjbtool::parseArgs(app, argc, argv, 1);  // docs: invalid input exits 1
+    if (rc >= 0) return rc;
+  }
 
   // everything that can fail before simulating, nothing written yet
   std::vector<Snap> snaps;
@@ -215,19 +219,13 @@ int main(int argc, char** argv) {
     snaps.back().file = s.substr(c + 1);
   }
   {
-    std::vector<mjbtool::PathUse> uses = {{model, "model", false}};
+    std::vector<mjbtool::PathUse> uses;
     if (!csv.empty()) uses.push_back({csv, "--csv", true});
     if (!plot.empty()) uses.push_back({plot, "--plot", true});
     if (!video.empty()) uses.push_back({video, "--render", true});
     for (const Snap& s : snaps) uses.push_back({s.file, "--snapshot", true});
     std::string e;
-    for (const mjbtool::PathUse& u : uses) {
-      if (u.output && !mjbtool::checkWritable(u.path, u.what, &e)) {
-        std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
-        return 1;
-      }
-    }
-    if (!mjbtool::checkDistinct(uses, &e)) {
+    if (!mjbtool::checkOutputs(model, uses, &e)) {
       std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
       return 1;
     }
@@ -270,26 +268,26 @@ int main(int argc, char** argv) {
 
   Scene sc;
   char err[1024] = "";
-  // mesh files MuJoCo 2.2 would load broken (mjbuoy.h)
-  if (!mjb_checkModelFile(model.c_str(), err, sizeof(err))) {
-    std::fprintf(stderr, "mjbuoy-sim: cannot load %s: %s\n", model.c_str(), err);
-    return 1;
-  }
-  if (edits.empty()) {
-    sc.m = mj_loadXML(model.c_str(), nullptr, err, sizeof(err));
-    if (!sc.m) {
-      std::fprintf(stderr, "mjbuoy-sim: cannot load %s: %s\n", model.c_str(), err);
+  {
+    // the edited model from memory: the file is only read
+    std::string xml, e;
+    if (!edits.empty() && !mjbsim::editedModel(model, edits, &xml, &e)) {
+      std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
       return 1;
     }
-  } else {  // the edited model from memory: the file is only read
-    std::string e;
-    sc.m = mjbsim::loadEdited(model, edits, &e);
+    sc.m = mjbtool::loadModel(model, edits.empty() ? nullptr : &xml, "mjbuoy-sim", &e);
     if (!sc.m) {
       std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
       return 1;
     }
   }
   mjModel* m = sc.m;
+  if (mjbtool::stepsFor(duration, m->opt.timestep) < 1) {
+    std::fprintf(stderr, "mjbuoy-sim: --duration %s s is less than one time step (%s s): the run "
+                 "would take 0 steps; give a duration of at least one time step\n",
+                 mjbtool::bound(duration).c_str(), mjbtool::bound(m->opt.timestep).c_str());
+    return 1;
+  }
   sc.b = mjb_attach(m, backend.empty() ? nullptr : backend.c_str(), err, sizeof(err));
   if (!sc.b) {
     std::fprintf(stderr, "mjbuoy-sim: %s: %s\n", model.c_str(), mjbsim::blame(edits, err).c_str());
@@ -361,7 +359,7 @@ int main(int argc, char** argv) {
         std::fprintf(out, ",%s.%s", n, c);
       }
     }
-    // every other joint by name (README "Use"): slide [m], hinge [deg],
+    // every other joint by name (docs/tools.md, mjbuoy-sim): slide [m], hinge [deg],
     // ball as its quaternion w, x, y, z; then every sensor by name, one
     // column per value (<sensor>.<i> when it has several)
     for (int j = 0; j < m->njnt; j++) {

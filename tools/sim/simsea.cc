@@ -29,6 +29,21 @@ static bool numbers(const std::string& v) {
   return n > 0;
 }
 
+// every token a number as strtod reads it, NaN and infinities included: the
+// value was meant as numbers (a <numeric> entry), finite or not
+static bool looksNumeric(const std::string& v) {
+  std::istringstream in(v);
+  std::string tok;
+  int n = 0;
+  while (in >> tok) {
+    char* end = nullptr;
+    std::strtod(tok.c_str(), &end);
+    if (end == tok.c_str() || *end) return false;
+    n++;
+  }
+  return n > 0;
+}
+
 static std::string add(Edits* out, const std::string& name, const std::string& data,
                        const std::string& given) {
   if (name.rfind("mjbuoy.", 0) != 0 || name.size() == 7) {
@@ -101,13 +116,13 @@ std::string parseEdits(const std::vector<std::string>& sets,
   return "";
 }
 
-// the edits applied to doc, the MJCF of model, compiled from memory
-static mjModel* editAndLoad(const std::string& model, tinyxml2::XMLDocument& doc,
-                            const Edits& ed, std::string* err) {
+// the edits applied to doc, the MJCF of model, printed into xml
+static bool editDoc(const std::string& model, tinyxml2::XMLDocument& doc, const Edits& ed,
+                    std::string* xml, std::string* err) {
   tinyxml2::XMLElement* root = doc.RootElement();
   if (!root || std::string(root->Name()) != "mujoco") {
     *err = model + " is not MJCF (root element <mujoco>)";
-    return nullptr;
+    return false;
   }
   if (ed.calm) mjbtool::removeSea(root);
   for (size_t i = 0; i < ed.set.size(); i++) {
@@ -115,39 +130,38 @@ static mjModel* editAndLoad(const std::string& model, tinyxml2::XMLDocument& doc
     const std::string& data = ed.set[i].second;
     // the kind the model gives the entry, else numeric when the value is numbers
     tinyxml2::XMLElement* old = mjbtool::findEntry(root, name);
-    bool text = old ? std::string(old->Name()) == "text" : !numbers(data);
+    bool text = old ? std::string(old->Name()) == "text" : !looksNumeric(data);
     if (!text && !numbers(data)) {
-      *err = ed.given[i] + ": " + name + " is a <numeric> entry of " + model + " and \"" +
-             data + "\" is not a list of finite numbers";
-      return nullptr;
+      *err = ed.given[i] + ": " + name + (old ? " is a <numeric> entry of " + model + " and" : "") +
+             " \"" + data + "\" is not a list of finite numbers; mjbuoy's numbers are finite";
+      return false;
     }
     mjbtool::setEntry(doc, root, name, data, text);
   }
   tinyxml2::XMLPrinter p;
   doc.Print(&p);
-  char e[2048] = "";
-  mjModel* m = mjbtool::loadFromMemory(model, p.CStr(), "mjbuoy-sim", e, sizeof(e));
-  if (!m) *err = "cannot load " + model + " with the entries set: " + e;
-  return m;
+  *xml = p.CStr();
+  return true;
 }
 
-mjModel* loadEdited(const std::string& model, const Edits& ed, std::string* err) {
+bool editedModel(const std::string& model, const Edits& ed, std::string* xml,
+                 std::string* err) {
   tinyxml2::XMLDocument doc;
   if (doc.LoadFile(model.c_str()) != tinyxml2::XML_SUCCESS) {
     *err = "cannot read " + model + ": " + doc.ErrorStr();
-    return nullptr;
+    return false;
   }
-  return editAndLoad(model, doc, ed, err);
+  return editDoc(model, doc, ed, xml, err);
 }
 
-mjModel* loadEditedText(const std::string& model, const std::string& xml, const Edits& ed,
-                        std::string* err) {
+bool editedText(const std::string& model, const std::string& text, const Edits& ed,
+                std::string* xml, std::string* err) {
   tinyxml2::XMLDocument doc;
-  if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS) {
+  if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS) {
     *err = "cannot parse " + model + ": " + doc.ErrorStr();
-    return nullptr;
+    return false;
   }
-  return editAndLoad(model, doc, ed, err);
+  return editDoc(model, doc, ed, xml, err);
 }
 
 std::string blame(const Edits& ed, const std::string& err) {

@@ -23,9 +23,14 @@ struct Edits {
 std::string parseEdits(const std::vector<std::string>& sets,
                        const std::vector<std::string>& spectra, bool calm, Edits* out);
 
-// the model file with the edits applied, compiled from memory (the file
-// is only read); null with the reason in err
-mjModel* loadEdited(const std::string& model, const Edits& e, std::string* err);
+// the MJCF text of the model file with the edits applied (the file is only
+// read; mjbtool::loadModel compiles it); false with the reason in err
+bool editedModel(const std::string& model, const Edits& e, std::string* xml, std::string* err);
+
+// the same for the MJCF text of model (mjbuoy's Python Sim, which takes
+// MJCF text too)
+bool editedText(const std::string& model, const std::string& text, const Edits& e,
+                std::string* xml, std::string* err);
 
 // the same for the MJCF text xml, compiled as if it were the file model
 // (its directory resolves mesh files and includes; mjbuoy's Python Sim)

@@ -8,6 +8,7 @@
 #ifndef MJBUOY_TOOLS_SWEEP_H_
 #define MJBUOY_TOOLS_SWEEP_H_
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -97,9 +98,14 @@ Case caseAt(const Sweep& s, long index);
 // xml: the edited scenario text, hashed to tell a result's case
 scn::Scenario caseScenario(const Sweep& s, const Case& c, std::string* xml);
 
-// a hash of everything that decides a case's result: its scenario text and
-// the statistics (hex, 16 digits)
-std::string caseHash(const Sweep& s, const std::string& xml);
+// the files a case reads: its model and every file the model reads
+// (mjbtool::modelFiles), and the scenario's <mesh file>s
+std::vector<std::string> caseFiles(const scn::Scenario& sc);
+
+// a hash of everything that decides a case's result: its scenario text (the
+// overrides), the statistics, the mjbuoy version and the content of files
+// (caseFiles) (hex, 16 digits)
+std::string caseHash(const Sweep& s, const std::string& xml, const std::vector<std::string>& files);
 
 // evaluates the statistics of a case from the samples of its run
 class Stats {
@@ -132,6 +138,21 @@ int runSweep(const std::string& file, const std::string& out, int jobs, int shar
 int estimate(const std::string& file, long index, int shards, int jobs,
              const std::string& self);
 int merge(const std::string& dir);
+// attach every case's model once, filling the radiation cache (run before
+// a Slurm array so that its tasks read instead of solving)
+int precompute(const std::string& file);
+// one case run in a temporary directory: its cost
+struct Cost {
+  std::string id;
+  double wall = 0, cpu = 0, rss = 0;  // s, s, MiB (peak)
+  uintmax_t bytes = 0, logb = 0;      // result and log
+};
+// 0, else the exit status (the reason printed)
+int measureCase(const Sweep& s, long index, const std::string& self, Cost* cost);
+// sbatch --time [min] and --mem [MiB] for a task of ceil(ncases / shards)
+// cases, jobs at once: twice the measured time plus a minute, 1.5 times the
+// peak memory of jobs cases
+void suggest(const Sweep& s, const Cost& c, int shards, int jobs, long* minutes, long* mem);
 int list(const std::string& file);
 struct SlurmOptions {
   int shards = 1, jobs = 1;
@@ -141,9 +162,24 @@ struct SlurmOptions {
 };
 int slurm(const std::string& file, const std::string& out, const SlurmOptions& o,
           const std::string& self);
+// "" when every value the scripts hold has the form sbatch takes, else a
+// message naming the option and the form (sweep_slurm.cc)
+std::string checkSlurmOptions(const SlurmOptions& o, const std::string& out);
 
 // where a case's result lives
 std::string resultPath(const std::string& dir, const std::string& id);
+
+// outs (files the command writes) are none of the sweep's inputs: the sweep
+// file, the base scenario, the model and the files it reads (case 0's);
+// false with the message printed
+bool checkSweepOutputs(const Sweep& s, const std::vector<std::string>& outs);
+
+// "" when path is a regular file or absent, else why it cannot be a result,
+// log or manifest (a FIFO would block the reader forever)
+std::string notRegular(const std::string& path);
+
+// the hash of every case (the manifest's "cases"), from the files as they are now
+std::vector<std::string> caseHashes(const Sweep& s);
 
 // a case's result without its outcome: sweep, id, index, axis values
 nlohmann::json caseHeader(const Sweep& s, const Case& c);

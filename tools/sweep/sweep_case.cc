@@ -47,7 +47,7 @@ int runCase(const std::string& file, long index, const std::string& out) {
   int status = 0;
   try {
     scn::Scenario sc = caseScenario(s, c, &xml);
-    j["hash"] = caseHash(s, xml);
+    j["hash"] = caseHash(s, xml, caseFiles(sc));
     // test hook (tests/sweeps): this case's process dies as if killed (OOM, node failure)
     const char* crash = std::getenv("MJBUOY_SWEEP_TEST_CRASH");
     if (crash && c.id == crash) std::raise(SIGKILL);
@@ -74,7 +74,7 @@ int runCase(const std::string& file, long index, const std::string& out) {
     status = r.passed() ? 0 : 1;
   } catch (const scn::Invalid& e) {
     std::fprintf(stderr, "mjbuoy-sweep: %s\n", e.what());
-    if (!j.contains("hash")) j["hash"] = caseHash(s, xml);
+    if (!j.contains("hash")) j["hash"] = caseHash(s, xml, {});
     j["status"] = "invalid";
     j["error"] = e.what();
     status = 2;

@@ -21,6 +21,7 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 
 static bool load(const std::string& path, json* j) {
+  if (!notRegular(path).empty()) return false;
   std::ifstream in(path);
   if (!in) return false;
   try { in >> *j; return true; } catch (...) { return false; }
@@ -46,12 +47,12 @@ static scn::Report report(const json& man, const json& r, const std::string& id)
   if (st == "invalid") {
     rep.invalid = true;
     rep.error = r.value("error", "");
-  } else if (st == "crash" || st == "missing") {
+  } else if (st == "crash" || st == "missing" || st == "stale") {
     scn::Result x;
     x.label = st == "crash" ? "case process" : "result";
     x.kind = st;
     x.pass = false;
-    x.detail = st == "crash" ? r.value("error", "") : "no result for this case (not run yet?)";
+    x.detail = st != "missing" ? r.value("error", "") : "no result for this case (not run yet?)";
     rep.results.push_back(x);
   } else {
     rep.header = r.value("header", "");
@@ -127,7 +128,7 @@ static bool plot(const std::string& dir, const json& man, const json& p,
 
 // the default plots: every statistic against the first axis, a curve per
 // value of the second
-// the JUnit report, written atomically (tools/outfile.h)
+// the JUnit report, written atomically (tools/common/outfile.h)
 static bool writeJUnitFile(const std::vector<scn::Report>& reps, const std::string& path,
                            std::string* err) {
   mjbtool::OutFile o;
@@ -158,8 +159,30 @@ int merge(const std::string& dir) {
                  dir.c_str(), mpath.c_str());
     return 2;
   }
+  for (const json& c : man["cases"]) {
+    std::string why = notRegular(resultPath(dir, c["id"]));
+    if (!why.empty()) {
+      std::fprintf(stderr, "mjbuoy-sweep: %s\n", why.c_str());
+      return 2;
+    }
+  }
+  // results of files that changed since the run are stale: the hashes as
+  // the files are now (the sweep file must still parse to tell)
+  std::vector<std::string> now;
+  try {
+    Sweep s = parseSweep(man.value("file", ""));
+    if (!checkSweepOutputs(s, {(fs::path(dir) / "sweep.csv").string(),
+                               (fs::path(dir) / "junit.xml").string()})) {
+      return 2;
+    }
+    if (s.ncases == (long)man["cases"].size()) now = caseHashes(s);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "mjbuoy-sweep: warning: cannot tell whether the results are current "
+                 "(the sweep file does not load: %s)\n", e.what());
+  }
   std::vector<json> res;
   std::map<std::string, int> count;
+  size_t ci = 0;
   double wall = 0, maxwall = 0;
   long maxrss = 0;
   std::string csv = "id";
@@ -175,7 +198,16 @@ int merge(const std::string& dir) {
     if (!load(resultPath(dir, id), &r) || r.value("hash", "") != c["hash"].get<std::string>()) {
       r = json::object();
       r["status"] = "missing";
+    } else if (!now.empty() && now[ci] != c["hash"].get<std::string>()) {
+      // the model, a mesh, an include or mjbuoy changed since: not published
+      json h = json::object();
+      h["status"] = "stale";
+      h["error"] = "a file the case reads (model, mesh, include) or mjbuoy changed since it ran; "
+                   "run the sweep again to update it";
+      if (r.contains("axes")) h["axes"] = r["axes"];
+      r = h;
     }
+    ci++;
     std::string st = r.value("status", "missing");
     count[st]++;
     if (st != "pass") bad.push_back(id + ": " + st);

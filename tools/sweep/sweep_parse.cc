@@ -11,6 +11,8 @@
 
 #include <tinyxml2.h>
 
+#include "modelload.h"
+#include "mjbuoy_version.h"
 #include "pathcheck.h"
 #include "scenario_xml.h"
 #include "sweep.h"
@@ -292,6 +294,15 @@ Sweep parseSweep(const std::string& path) {
   El r(root, file, {"scenario", "name"});
   s.line = r.line();
   s.name = r.str("name", fs::path(path).stem().string());
+  // the name goes into job names, script comments and file names: no
+  // spaces, newlines or shell characters
+  if (!std::regex_match(s.name, std::regex(R"(^[A-Za-z0-9][A-Za-z0-9_.+-]{0,99}$)"))) {
+    std::string shown;
+    for (char c : s.name) shown += (unsigned char)c < 32 ? std::string("\\x") + "0123456789abcdef"[c >> 4] + "0123456789abcdef"[c & 15] : std::string(1, c);
+    r.fail("name=\"" + shown + "\"" + (root->Attribute("name") ? "" : " (the file's stem)") +
+           " must be a letter or digit then up to 99 letters, digits or _.+- (it names the Slurm "
+           "job and the results); give <sweep name=\"...\">", "name");
+  }
   fs::path bp = fs::path(path).parent_path() / r.str("scenario");
   s.base_line = r.line("scenario");
   if (std::string why = pathcheck::whyNotAFile(bp); !why.empty()) {
@@ -426,16 +437,46 @@ scn::Scenario caseScenario(const Sweep& s, const Case& c, std::string* xml) {
   }
 }
 
-std::string caseHash(const Sweep& s, const std::string& xml) {
-  std::string all = xml;
+// FNV-1a, 64 bit, continued from h
+static unsigned long long fnv(const std::string& bytes, unsigned long long h) {
+  for (unsigned char ch : bytes) { h ^= ch; h *= 1099511628211ull; }
+  return h;
+}
+
+// the content of a file a case reads, as a hash (hex): its bytes, or
+// "missing". Each file is read once per process (a run hashes every case)
+static std::string fileDigest(const std::string& path) {
+  static std::map<std::string, std::string> memo;
+  auto it = memo.find(path);
+  if (it != memo.end()) return it->second;
+  std::string why = pathcheck::whyNotAFile(path), d = "missing";
+  if (why.empty()) {
+    std::ifstream in(path, std::ios::binary);
+    std::string b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    char buf[20];
+    std::snprintf(buf, sizeof(buf), "%016llx", fnv(b, 1469598103934665603ull));
+    d = buf;
+  }
+  return memo[path] = d;
+}
+
+std::vector<std::string> caseFiles(const scn::Scenario& sc) {
+  std::vector<std::string> f = mjbtool::modelFiles(sc.model);
+  for (const scn::MeshFile& m : sc.meshes) f.push_back(m.file);
+  return f;
+}
+
+std::string caseHash(const Sweep& s, const std::string& xml, const std::vector<std::string>& files) {
+  // what the case reads besides its scenario text: the mjbuoy that runs it,
+  // and the content of the model, its includes and meshes
+  std::string all = xml + "\nmjbuoy " + MJBUOY_VERSION_STRING;
+  for (const std::string& f : files) all += "\n" + f + " " + fileDigest(f);
   for (const Stat& t : s.stats) {
     all += "\n" + t.name + " " + t.kind_name + " " + t.body + " " + t.quantity_name + " " +
            t.part_name + " " + scn::exact(t.from) + " " + (t.has_to ? scn::exact(t.to) : "end") +
            " " + scn::exact(t.period) + " " + t.wave;
   }
-  // FNV-1a, 64 bit
-  unsigned long long h = 1469598103934665603ull;
-  for (unsigned char ch : all) { h ^= ch; h *= 1099511628211ull; }
+  unsigned long long h = fnv(all, 1469598103934665603ull);
   char buf[20];
   std::snprintf(buf, sizeof(buf), "%016llx", h);
   return buf;

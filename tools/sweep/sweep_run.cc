@@ -12,12 +12,16 @@
 #include <fstream>
 #include <map>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
+#include "api/buoy.h"
 #include "atomic.h"
+#include "outfile.h"
+#include "radiation/radcache.h"
 #include "sweep.h"
 
 namespace swp {
@@ -25,7 +29,19 @@ namespace swp {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
+std::string notRegular(const std::string& path) {
+  struct stat st;
+  if (::lstat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return "";
+  if (S_ISLNK(st.st_mode) && ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) return "";
+  const char* kind = S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISDIR(st.st_mode) ? "a directory" :
+                     S_ISSOCK(st.st_mode) ? "a socket" : S_ISLNK(st.st_mode) ? "a broken link" :
+                     "not a regular file";
+  return path + " is " + kind + ", not a regular file; remove it (mjbuoy-sweep writes and reads "
+         "only regular files there)";
+}
+
 static bool readJson(const std::string& path, json* j) {
+  if (!notRegular(path).empty()) return false;
   std::ifstream in(path);
   if (!in) return false;
   try {
@@ -56,14 +72,49 @@ static json manifest(const Sweep& s) {
   }
   j["plots"] = plots;
   json cases = json::array();
-  for (long i = 0; i < s.ncases; i++) {
-    Case c = caseAt(s, i);
-    std::string xml;
-    caseScenario(s, c, &xml);
-    cases.push_back({{"id", c.id}, {"hash", caseHash(s, xml)}});
-  }
+  std::vector<std::string> h = caseHashes(s);
+  for (long i = 0; i < s.ncases; i++) cases.push_back({{"id", caseAt(s, i).id}, {"hash", h[i]}});
   j["cases"] = cases;
   return j;
+}
+
+std::vector<std::string> caseHashes(const Sweep& s) {
+  std::vector<std::string> h;
+  for (long i = 0; i < s.ncases; i++) {
+    std::string xml;
+    scn::Scenario sc = caseScenario(s, caseAt(s, i), &xml);
+    h.push_back(caseHash(s, xml, caseFiles(sc)));
+  }
+  return h;
+}
+
+bool checkSweepOutputs(const Sweep& s, const std::vector<std::string>& outs) {
+  std::vector<mjbtool::PathUse> uses = {{s.file, "sweep file", false}, {s.base, "base scenario", false}};
+  try {
+    std::string xml;
+    for (const std::string& f : caseFiles(caseScenario(s, caseAt(s, 0), &xml))) {
+      uses.push_back({f, "file the sweep's model reads:", false});
+    }
+  } catch (const std::exception&) {
+    // an invalid case is reported where the cases are built
+  }
+  for (const std::string& o : outs) uses.push_back({o, "output", true});
+  std::string err;
+  if (mjbtool::checkDistinct(uses, &err)) return true;
+  std::fprintf(stderr, "mjbuoy-sweep: %s\n", err.c_str());
+  return false;
+}
+
+// the first result, log or manifest path of this shard that is not a
+// regular file ("" if none)
+static std::string blocked(const Sweep& s, const std::string& out, int shard, int nshards) {
+  std::string why = notRegular((fs::path(out) / "sweep.json").string());
+  for (long i = shard; why.empty() && i < s.ncases; i += nshards) {
+    std::string id = caseAt(s, i).id;
+    why = notRegular(resultPath(out, id));
+    if (why.empty()) why = notRegular((fs::path(out) / "logs" / (id + ".log")).string());
+  }
+  return why;
 }
 
 // a result that needs no re-run: the same case definition, and not a crash
@@ -125,6 +176,11 @@ int runSweep(const std::string& file, const std::string& out, int jobs, int shar
              const std::string& self) {
   Sweep s = parseSweep(file);
   json man = manifest(s);  // builds every case's scenario: a bad value stops here (exit 2)
+  if (!checkSweepOutputs(s, {(fs::path(out) / "sweep.json").string()})) return 2;
+  if (std::string why = blocked(s, out, shard, nshards); !why.empty()) {
+    std::fprintf(stderr, "mjbuoy-sweep: %s\n", why.c_str());
+    return 2;
+  }
   json prev;
   std::string mpath = (fs::path(out) / "sweep.json").string();
   if (readJson(mpath, &prev) && prev.value("file", "") != s.file) {
@@ -213,8 +269,7 @@ int list(const std::string& file) {
   return 0;
 }
 
-int estimate(const std::string& file, long index, int shards, int jobs, const std::string& self) {
-  Sweep s = parseSweep(file);
+int measureCase(const Sweep& s, long index, const std::string& self, Cost* cost) {
   if (index < 0 || index >= s.ncases) {
     std::fprintf(stderr, "mjbuoy-sweep: case %ld is not in 0 .. %ld\n", index, s.ncases - 1);
     return 2;
@@ -251,20 +306,59 @@ int estimate(const std::string& file, long index, int shards, int jobs, const st
     std::fprintf(stderr, "mjbuoy-sweep: case %s did not finish (status %d)\n", c.id.c_str(), status);
     return 1;
   }
-  double rss = ru.ru_maxrss / 1024.0;  // MiB
+  cost->wall = wall;
+  cost->cpu = ru.ru_utime.tv_sec + ru.ru_stime.tv_sec + 1e-6 * (ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+  cost->rss = ru.ru_maxrss / 1024.0;  // MiB
+  cost->bytes = bytes;
+  cost->logb = logb;
+  cost->id = c.id;
+  return 0;
+}
+
+void suggest(const Sweep& s, const Cost& c, int shards, int jobs, long* minutes, long* mem) {
   long per = (s.ncases + shards - 1) / shards;
-  double task = std::ceil((double)per / jobs) * wall;
+  double task = std::ceil((double)per / jobs) * c.wall;
   // twice the measured time plus a minute: machines and cases vary
-  long minutes = (long)std::ceil((2 * task + 60) / 60);
-  long mem = (long)std::ceil(1.5 * rss * jobs / 64) * 64;
+  *minutes = (long)std::ceil((2 * task + 60) / 60);
+  // half again the peak of jobs cases at once, in 64 MiB steps
+  *mem = (long)std::ceil(1.5 * c.rss * jobs / 64) * 64;
+}
+
+int estimate(const std::string& file, long index, int shards, int jobs, const std::string& self) {
+  Sweep s = parseSweep(file);
+  Cost c;
+  if (int st = measureCase(s, index, self, &c)) return st;
+  long minutes, mem;
+  suggest(s, c, shards, jobs, &minutes, &mem);
+  long per = (s.ncases + shards - 1) / shards;
   std::printf("case %s: wall %.3f s, cpu %.3f s, peak RSS %.1f MiB, result %ju B, log %ju B\n",
-              c.id.c_str(), wall, ru.ru_utime.tv_sec + ru.ru_stime.tv_sec +
-              1e-6 * (ru.ru_utime.tv_usec + ru.ru_stime.tv_usec), rss, bytes, logb);
+              c.id.c_str(), c.wall, c.cpu, c.rss, c.bytes, c.logb);
   std::printf("sweep %s: %ld case(s): about %.1f core-hours, output about %.1f MB (results and logs)\n",
-              s.name.c_str(), s.ncases, wall * s.ncases / 3600, (bytes + logb) * (double)s.ncases / 1e6);
+              s.name.c_str(), s.ncases, c.wall * s.ncases / 3600,
+              (c.bytes + c.logb) * (double)s.ncases / 1e6);
   std::printf("with --shards %d and --jobs %d: %ld case(s) per task, about %.0f s each\n", shards,
-              jobs, per, task);
+              jobs, per, std::ceil((double)per / jobs) * c.wall);
   std::printf("suggested: --time %ld --mem %ldM --jobs %d (time in minutes)\n", minutes, mem, jobs);
+  return 0;
+}
+
+int precompute(const std::string& file) {
+  Sweep s = parseSweep(file);
+  manifest(s);  // every case must be valid
+  long hit = 0, miss = 0;
+  std::string dir;
+  for (long i = 0; i < s.ncases; i++) {
+    std::string xml;
+    scn::Scenario sc = caseScenario(s, caseAt(s, i), &xml);
+    std::unique_ptr<scn::Sim> sim = scn::loadScenario(sc, "");  // attach: solves or reads
+    const mjb::Buoy* B = mjb::buoyOf(sim->b);
+    hit += B->radcache.hit;
+    miss += B->radcache.miss;
+    dir = mjb::radCacheDir(B->cfg.rad.cache);
+  }
+  std::printf("mjbuoy-sweep: precompute %s: %ld case(s), radiation cache %s: %ld body(ies) read, "
+              "%ld computed\n", s.name.c_str(), s.ncases, dir.empty() ? "off" : dir.c_str(), hit,
+              miss);
   return 0;
 }
 

@@ -15,6 +15,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cliopt.h"
+#include "guard.h"
+#include "modelload.h"
 #include "mjbuoy_version.h"
 #include "outfile.h"
 #include "render.h"
@@ -37,7 +40,7 @@ bool parseShot(const std::string& s, Options* o) {
   return true;
 }
 
-// the window's picture to o.shotFile, atomically (tools/outfile.h)
+// the window's picture to o.shotFile, atomically (tools/common/outfile.h)
 bool screenshot(View* v, mjrRect vp, double t) {
   std::vector<unsigned char> rgb((size_t)3 * vp.width * vp.height);
   mjr_readPixels(rgb.data(), nullptr, vp, &v->con);
@@ -46,7 +49,7 @@ bool screenshot(View* v, mjrRect vp, double t) {
   if (!out.open(v->o.shotFile, "--screenshot", &e) ||
       !mjbsim::writePng(out.file(), v->o.shotFile, rgb, vp.width, vp.height, &e) ||
       !out.commit(&e)) {
-    std::fprintf(stderr, "mjbuoy-view: --screenshot: %s\n", e.c_str());
+    std::fprintf(stderr, "mjbuoy-view: %s\n", e.c_str());  // e names --screenshot
     return false;
   }
   std::printf("mjbuoy-view: wrote %s (%dx%d, t = %.6g s)\n", v->o.shotFile.c_str(), vp.width,
@@ -151,8 +154,9 @@ int run(View* v) {
     if (!shotPending && v->o.exitAfter >= 0 && t >= v->o.exitAfter - 1e-9 * std::fmax(1.0, t)) {
       break;
     }
+    if (v->o.exitAfter >= 0 && v->everDiverged) break;  // unattended: stop at the reset
   }
-  return failed ? 1 : 0;
+  return failed || v->everDiverged ? 1 : 0;
 }
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -205,19 +209,16 @@ int parse(int argc, char** argv, Options* o) {
   app.add_option("--screenshot", shot, "T:FILE.png: write the window's picture at simulated "
                  "time T (atomically)");
   app.add_option("--exit-after", o->exitAfter, "close after simulated time T [s]")
-      ->check(CLI::NonNegativeNumber);
+      ->check(mjbtool::Finite(0, 1e9));
   app.add_flag("--print-final", o->printFinal,
                "print the camera and every body's position and orientation at start and exit");
   app.add_flag("--show-forces", o->forces, "start with force arrows on (key F)");
   app.add_flag("--show-wet", o->wet, "start with the wet hull parts coloured (key W)");
   app.add_flag("--paused", o->paused, "start paused (key Space)");
-  app.add_option("--width", o->width, "window width [pixels]")->check(CLI::Range(64, 8192));
-  app.add_option("--height", o->height, "window height [pixels]")->check(CLI::Range(64, 8192));
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
+  app.add_option("--width", o->width, "window width [pixels]")->check(mjbtool::Finite(64, 8192));
+  app.add_option("--height", o->height, "window height [pixels]")->check(mjbtool::Finite(64, 8192));
+  int rc = mjbtool::parseArgs(app, argc, argv, 2);  // docs: invalid input exits 2
+  if (rc >= 0) return rc;
   if (!shot.empty() && !parseShot(shot, o)) return 2;
   if (o->shotTime >= 0 && o->exitAfter >= 0 && o->shotTime > o->exitAfter + 1e-9) {
     std::fprintf(stderr, "mjbuoy-view: --screenshot at %g s is after --exit-after %g s\n",
@@ -233,25 +234,25 @@ int parse(int argc, char** argv, Options* o) {
 using mjbview::View;
 
 int main(int argc, char** argv) {
+  mjbtool::installMujocoHandlers("mjbuoy-view");
   View v;
   int rc = mjbview::parse(argc, argv, &v.o);
   if (rc >= 0) return rc;
   if (!v.o.shotFile.empty()) {
     std::string e;  // check before simulating, touching nothing
-    std::vector<mjbtool::PathUse> uses(2);
-    uses[0] = {v.o.model, "model", false};
-    uses[1] = {v.o.shotFile, "--screenshot", true};
-    if (!mjbtool::checkWritable(v.o.shotFile, "--screenshot", &e) ||
-        !mjbtool::checkDistinct(uses, &e)) {
+    if (!mjbtool::checkOutputs(v.o.model, {{v.o.shotFile, "--screenshot", true}}, &e)) {
       std::fprintf(stderr, "mjbuoy-view: %s\n", e.c_str());
       return 1;
     }
   }
   char err[1024] = "";
-  v.m = mj_loadXML(v.o.model.c_str(), nullptr, err, sizeof(err));
-  if (!v.m) {
-    std::fprintf(stderr, "mjbuoy-view: cannot load %s: %s\n", v.o.model.c_str(), err);
-    return 1;
+  {
+    std::string e;
+    v.m = mjbtool::loadModel(v.o.model, nullptr, "", &e);
+    if (!v.m) {
+      std::fprintf(stderr, "mjbuoy-view: %s\n", e.c_str());
+      return 1;
+    }
   }
   v.b = mjb_attach(v.m, v.o.backend.empty() ? nullptr : v.o.backend.c_str(), err, sizeof(err));
   if (!v.b) {

@@ -61,6 +61,7 @@ struct View {
   int slow = 0;             // index into kSlow
   double stopAt = 1e300;    // physics holds at this simulated time (screenshot, exit)
   bool diverged = false;    // MuJoCo reset a diverging state
+  bool everDiverged = false;  // ... at any time of the run: exit status 1
   std::atomic<bool> quit{false};
 
   // main thread only

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "api/config.h"
+#include "guard.h"
 #include "view.h"
 
 namespace mjbview {
@@ -23,10 +24,12 @@ void stepOnce(View* v) {
   mjv_applyPerturbForce(v->m, v->d, &v->pert);
   double before = v->d->time;
   mj_step(v->m, v->d);
-  if (v->d->time < before && !v->diverged) {
-    v->diverged = true;
-    std::fprintf(stderr, "mjbuoy-view: the simulation diverged at t = %g s and MuJoCo reset it "
-                 "(NaN, Inf or huge value in the state)\n", before);
+  std::string why;
+  // MuJoCo's reset, as every tool tells it (guard.h)
+  if ((v->d->time < before || mjbtool::diverged(v->d, &why)) && !v->diverged) {
+    v->diverged = v->everDiverged = true;
+    std::fprintf(stderr, "mjbuoy-view: the simulation diverged at t = %g s: %s; the exit status "
+                 "will be 1\n", before, why.empty() ? "MuJoCo reset the state" : why.c_str());
   }
 }
 
