@@ -29,6 +29,8 @@ pkgs=(
   clang libclang-rt-14-dev     # libFuzzer (-fsanitize=fuzzer) for tests/fuzz, run by scripts/test.sh
   nlohmann-json3-dev           # mjbuoy-sweep: JSON result files (header-only)
   slurm-wlm munge              # mjbuoy-sweep slurm: sbatch; sweep.slurm starts a single-node Slurm (munged, slurmctld, slurmd)
+  python3-dev pybind11-dev python3-pybind11 python3-numpy  # the Python module mjbuoy (python/, docs/python.md)
+  python3-pytest python3-matplotlib  # its pytest suite; the plots of examples/python
   python3-sphinx python3-sphinx-rtd-theme python3-myst-parser  # the documentation site (docs/, target docs, tests docs.*)
 )
 

@@ -116,13 +116,9 @@ std::string parseEdits(const std::vector<std::string>& sets,
   return "";
 }
 
-bool editedModel(const std::string& model, const Edits& ed, std::string* xml,
-                 std::string* err) {
-  tinyxml2::XMLDocument doc;
-  if (doc.LoadFile(model.c_str()) != tinyxml2::XML_SUCCESS) {
-    *err = "cannot read " + model + ": " + doc.ErrorStr();
-    return false;
-  }
+// the edits applied to doc, the MJCF of model, printed into xml
+static bool editDoc(const std::string& model, tinyxml2::XMLDocument& doc, const Edits& ed,
+                    std::string* xml, std::string* err) {
   tinyxml2::XMLElement* root = doc.RootElement();
   if (!root || std::string(root->Name()) != "mujoco") {
     *err = model + " is not MJCF (root element <mujoco>)";
@@ -146,6 +142,26 @@ bool editedModel(const std::string& model, const Edits& ed, std::string* xml,
   doc.Print(&p);
   *xml = p.CStr();
   return true;
+}
+
+bool editedModel(const std::string& model, const Edits& ed, std::string* xml,
+                 std::string* err) {
+  tinyxml2::XMLDocument doc;
+  if (doc.LoadFile(model.c_str()) != tinyxml2::XML_SUCCESS) {
+    *err = "cannot read " + model + ": " + doc.ErrorStr();
+    return false;
+  }
+  return editDoc(model, doc, ed, xml, err);
+}
+
+bool editedText(const std::string& model, const std::string& text, const Edits& ed,
+                std::string* xml, std::string* err) {
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS) {
+    *err = "cannot parse " + model + ": " + doc.ErrorStr();
+    return false;
+  }
+  return editDoc(model, doc, ed, xml, err);
 }
 
 std::string blame(const Edits& ed, const std::string& err) {

@@ -27,6 +27,16 @@ std::string parseEdits(const std::vector<std::string>& sets,
 // read; mjbtool::loadModel compiles it); false with the reason in err
 bool editedModel(const std::string& model, const Edits& e, std::string* xml, std::string* err);
 
+// the same for the MJCF text of model (mjbuoy's Python Sim, which takes
+// MJCF text too)
+bool editedText(const std::string& model, const std::string& text, const Edits& e,
+                std::string* xml, std::string* err);
+
+// the same for the MJCF text xml, compiled as if it were the file model
+// (its directory resolves mesh files and includes; mjbuoy's Python Sim)
+mjModel* loadEditedText(const std::string& model, const std::string& xml, const Edits& e,
+                        std::string* err);
+
 // an mjb_attach message about an entry the edits set, prefixed with the
 // option that set it
 std::string blame(const Edits& e, const std::string& err);
