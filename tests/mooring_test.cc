@@ -38,7 +38,7 @@ struct Rig {
     l.t = type;
     l.len = len;
     l.nseg = nseg;
-    w = {&sea, &bed, crest};
+    w = {&sea, &bed, crest, 0};
     EXPECT_EQ(mjb::lineDerive(w, &l), "");
     mjb::lineMake(l, &s);
   }

@@ -318,7 +318,7 @@ std::string parseMooring(const mjModel* m, const Sea& sea, Mooring* mo,
   }
   std::sort(mo->body.begin(), mo->body.end());
   mo->body.erase(std::unique(mo->body.begin(), mo->body.end()), mo->body.end());
-  LineWater w = {&sea, &mo->bed, sea.level};
+  LineWater w = {&sea, &mo->bed, sea.level, 0};
   for (MoorLine& L : mo->line) {
     Line& l = L.line;
     for (int k = 0; k < 2; k++) {

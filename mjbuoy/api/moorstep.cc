@@ -76,9 +76,11 @@ void moorStep(const Mooring& mo, const Sea& sea, const mjModel* m, const mjData*
               MoorState* s, std::string* notices) {
   const double t0 = s->tcur;
   const int r = clock(m, d, s);
-  double crest = sea.level;
-  for (const Wave& w : sea.waves) crest += w.amp;
-  const LineWater w = {&sea, &mo.bed, crest};
+  // the water at the nodes is taken 32 times per period of the shortest
+  // wave and carried on by its acceleration in between (docs/mooring.md)
+  double crest = sea.level, omax = 0;
+  for (const Wave& w : sea.waves) crest += w.amp, omax = std::max(omax, w.omega);
+  const LineWater w = {&sea, &mo.bed, crest, omax > 0 ? 2 * M_PI / omax / 32 : 0};
   for (int b : mo.body) std::fill(&s->wrench[6 * b], &s->wrench[6 * b] + 6, 0.0);
   for (size_t i = 0; i < mo.line.size(); i++) {
     const MoorLine& L = mo.line[i];

@@ -27,7 +27,8 @@ void waterAt(const LineWater& w, const Line& l, double t, LineState* s) {
   const Sea& sea = *w.sea;
   double amp = 0;
   for (const Wave& wv : sea.waves) amp += wv.amp;
-  for (int j = 1; j < l.nseg; j++) {
+  s->tw = t;
+  for (int j = 0; j <= l.nseg; j++) {
     const double* p = &s->r[3 * j];
     double* u = &s->uw[3 * j];
     double* a = &s->aw[3 * j];
@@ -49,7 +50,7 @@ void waterAt(const LineWater& w, const Line& l, double t, LineState* s) {
 
 // the forces on every inner node but seabed friction (f), segment tensions
 // (s->tseg), with the nodes at s->r, s->v
-void nodeForces(const LineWater& w, const Line& l, LineState* s) {
+void nodeForces(const LineWater& w, const Line& l, double tau, LineState* s) {
   const Sea& sea = *w.sea;
   const Seabed& bed = *w.bed;
   const int n = l.nseg;
@@ -78,17 +79,19 @@ void nodeForces(const LineWater& w, const Line& l, LineState* s) {
   const double dn = 0.5 * rho * l.t.cdn * dia, dt = 0.5 * rho * l.t.cdt * M_PI * dia;
   for (int j = 1; j < n; j++) {
     double* fj = f + 3 * j;
+    double* q = &s->q[3 * j];
+    const double ls = 0.5 * lineTangent(s->r.data(), j, q);
     fj[2] -= l.mnode * g;
     const double* v = &s->v[3 * j];
     double pen = bed.z - s->r[3 * j + 2];
     if (pen > 0) fj[2] += std::max(bed.k * pen - bed.c * v[2], 0.0) * dia * l0;
     if (!s->wet[j]) continue;
     fj[2] += rho * l.vnode * g;
-    double q[3];
-    const double ls = 0.5 * lineTangent(s->r.data(), j, q);
     const double* u = &s->uw[3 * j];
     const double* aw = &s->aw[3 * j];
-    double vr[3] = {u[0] - v[0], u[1] - v[1], u[2] - v[2]};
+    // the water's velocity carried on by its acceleration since it was taken
+    double vr[3] = {u[0] + tau * aw[0] - v[0], u[1] + tau * aw[1] - v[1],
+                    u[2] + tau * aw[2] - v[2]};
     double vq = dot3(vr, q), aq = dot3(aw, q);
     double vn[3], an[3];
     for (int k = 0; k < 3; k++) {
@@ -124,6 +127,10 @@ double lineWetWeight(const Sea& sea, const LineType& t) {
   return (t.mass - sea.rho * M_PI * t.diam * t.diam / 4) * sea.g;
 }
 
+// the fraction of the linear bound taken: room for the geometric
+// nonlinearity and the drag the bound leaves out
+static const double kSafety = 0.8;
+
 double lineStableStep(const LineWater& w, const Line& l) {
   // the highest mode of a chain of masses m and springs k, c moves
   // neighbours against each other: stiffness 4k and damping 4c on each
@@ -132,7 +139,7 @@ double lineStableStep(const LineWater& w, const Line& l) {
   const double m = l.mnode, k = l.t.ea / l.l0, c = l.t.ba / l.l0;
   const double kb = w.bed->k * l.t.diam * l.l0, cb = w.bed->c * l.t.diam * l.l0;
   const double om = std::sqrt((4 * k + kb) / m), z = (4 * c + cb) / (2 * m * om);
-  return 0.5 * 2 / om * (std::sqrt(1 + z * z) - z);
+  return kSafety * 2 / om * (std::sqrt(1 + z * z) - z);
 }
 
 std::string lineDerive(const LineWater& w, Line* l) {
@@ -156,8 +163,10 @@ void lineMake(const Line& l, LineState* s) {
   s->uw.assign(n3, 0.0);
   s->aw.assign(n3, 0.0);
   s->f.assign(n3, 0.0);
+  s->q.assign(n3, 0.0);
   s->tseg.assign(l.nseg, 0.0);
   s->wet.assign(l.nseg + 1, 1);
+  s->tw = -1;
 }
 
 // set the end nodes at fraction a of the way from the last step's ends to e0, e1
@@ -176,15 +185,14 @@ static void setEnds(const Line& l, double a, const double e0[6], const double e1
 // the forces at (r, v), then r from the new v. Seabed friction is a
 // damper of coefficient mu N / max(|v|, vs) along and across the line,
 // taken implicitly so its stiffness sets no step limit (docs/mooring.md)
-static void subStep(const LineWater& w, const Line& l, double h, LineState* s) {
-  nodeForces(w, l, s);
+static void subStep(const LineWater& w, const Line& l, double h, double tau, LineState* s) {
+  nodeForces(w, l, tau, s);
   const Seabed& bed = *w.bed;
   const double rv = w.sea->rho * l.vnode;
   for (int j = 1; j < l.nseg; j++) {
     double* v = &s->v[3 * j];
     double* fj = &s->f[3 * j];
-    double q[3];
-    lineTangent(s->r.data(), j, q);
+    const double* q = &s->q[3 * j];
     const bool wet = s->wet[j];
     const double mn = l.mnode + (wet ? rv * l.t.can : 0), mt = l.mnode + (wet ? rv * l.t.cat : 0);
     double fq = dot3(fj, q);
@@ -192,7 +200,7 @@ static void subStep(const LineWater& w, const Line& l, double h, LineState* s) {
     double pen = bed.z - s->r[3 * j + 2];
     if (pen > 0) {
       double fn = std::max(bed.k * pen - bed.c * v[2], 0.0) * l.t.diam * l.l0;
-      double ax[2] = {q[0], q[1]}, an = std::hypot(q[0], q[1]);
+      double ax[2] = {q[0], q[1]}, an = std::sqrt(q[0] * q[0] + q[1] * q[1]);
       if (an > 1e-9) {
         ax[0] /= an;
         ax[1] /= an;
@@ -214,11 +222,11 @@ static void subStep(const LineWater& w, const Line& l, double h, LineState* s) {
 void lineStep(const LineWater& w, const Line& l, double t, double dt, const double e0[6],
               const double e1[6], LineState* s) {
   setEnds(l, 0, e0, e1, s);
-  waterAt(w, l, t, s);
+  if (!(s->tw >= 0) || t < s->tw || t - s->tw >= w.refresh) waterAt(w, l, t, s);
   int nsub = std::max(1, int(std::ceil(dt / l.hmax)));
   const double h = dt / nsub;
   for (int i = 0; i < nsub; i++) {
-    subStep(w, l, h, s);
+    subStep(w, l, h, t + i * h - s->tw, s);
     setEnds(l, double(i + 1) / nsub, e0, e1, s);
   }
   std::copy(e0, e0 + 6, s->end0);
@@ -255,13 +263,21 @@ double lineEndForce(const LineWater& w, const Line& l, const LineState& s, int e
   }
   // the end node's half segment: its weight, and when wet its buoyancy
   // and drag (the same Morison terms as an inner node's, on l0 / 2)
+  // (the water as the last step took it at the end node, else now)
   const Sea& sea = *w.sea;
-  const bool wet = e[2] < w.crest && (sea.waves.empty() ? e[2] < sea.level
-                                                        : e[2] < sea.height(e[0], e[1], t));
+  const int en = end ? l.nseg : 0;
+  double u[3] = {sea.current[0], sea.current[1], 0};
+  bool wet;
+  if (s.tw >= 0) {
+    wet = s.wet[en];
+    for (int k = 0; k < 3; k++) u[k] = s.uw[3 * en + k] + (t - s.tw) * s.aw[3 * en + k];
+  } else {
+    wet = e[2] < w.crest && (sea.waves.empty() ? e[2] < sea.level
+                                               : e[2] < sea.height(e[0], e[1], t));
+    if (wet && !sea.waves.empty()) sea.velocity(e, t, u);
+  }
   f[2] -= 0.5 * l.l0 * (wet ? lineWetWeight(sea, l.t) : l.t.mass * sea.g);
   if (!wet) return T;
-  double u[3] = {sea.current[0], sea.current[1], 0};
-  if (!sea.waves.empty()) sea.velocity(e, t, u);
   double vr[3] = {u[0] - e[3], u[1] - e[4], u[2] - e[5]}, vq = dot3(vr, q), vn[3];
   for (int k = 0; k < 3; k++) vn[k] = vr[k] - vq * q[k];
   const double nn = std::sqrt(dot3(vn, vn)), h = 0.5 * 0.5 * sea.rho * l.t.diam * len;
@@ -308,6 +324,7 @@ bool lineRest(const LineWater& w, const Line& l, const double e0[3], const doubl
     s->end0[3 + k] = s->end1[3 + k] = 0;
   }
   s->bedlen = ok ? c.lb : 0;
+  s->tw = -1;
   return ok;
 }
 

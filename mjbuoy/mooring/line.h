@@ -52,6 +52,9 @@ struct LineWater {
   const Sea* sea;      // density, level, waves, current, g
   const Seabed* bed;
   double crest;        // highest possible surface height [m]: above it a node is dry
+  // the longest the water's kinematics at the nodes are kept [s]: between
+  // evaluations a node sees u + a (t - tw), u and a taken at tw
+  double refresh;
 };
 
 // one line's state: positions and velocities of all N + 1 nodes (the
@@ -61,8 +64,10 @@ struct LineState {
   std::vector<double> r, v;      // 3 per node [m, m/s]
   std::vector<double> uw, aw;    // water velocity, acceleration, 3 per node
   std::vector<double> f;         // scratch: force per node [N]
+  std::vector<double> q;         // scratch: unit tangent per node
   std::vector<double> tseg;      // tension of each segment after the last step [N]
-  std::vector<char> wet;         // per node: below the surface at the step's start
+  std::vector<char> wet;         // per node: below the surface at tw
+  double tw = -1;                // time the water's kinematics were taken [s]; < 0: none
   double end0[6] = {0}, end1[6] = {0};  // ends at the last step: position, velocity
   double bedlen = 0;             // unstretched length resting on the bed [m]
   int over = 0;                  // segments past kOverStrain in the last step
@@ -76,7 +81,7 @@ std::string lineDerive(const LineWater& w, Line* l);
 
 // the largest sub-step [s] at which the explicit scheme is stable for the
 // stiffest motions of l (axial waves, the seabed spring, internal damping):
-// 0.5 of the central-difference bound (2 / omega)(sqrt(1 + z^2) - z) on the
+// 0.8 of the central-difference bound (2 / omega)(sqrt(1 + z^2) - z) on the
 // highest mode (docs/mooring.md "Stability")
 double lineStableStep(const LineWater& w, const Line& l);
 
@@ -86,7 +91,7 @@ void lineMake(const Line& l, LineState* s);
 // move l over [t, t + dt]: its ends go linearly from s->end0 to e0 (node 0)
 // and from s->end1 to e1 (node N), 6 values each (position, velocity);
 // inner nodes take semi-implicit Euler sub-steps of at most hmax. The
-// water's kinematics are taken once at t
+// water's kinematics are taken at t when those held are w.refresh old
 void lineStep(const LineWater& w, const Line& l, double t, double dt, const double e0[6],
               const double e1[6], LineState* s);
 
