@@ -131,6 +131,43 @@ TEST(MooringLine, StaticCatenary) {
   }
 }
 
+// the horizontal restoring force of three lines at 120 degrees on a
+// fairlead ring offset by dx: the sum over lines of the catenary's H along
+// each line's horizontal direction (Irvine 1981; Faltinsen 1990, Sea Loads,
+// sec. 8.2), within 0.5% of the largest line's tension; the settled
+// lumped-mass lines in 3-D directions
+TEST(MooringLine, ThreeLineRestoringForce) {
+  const double depth = 100, L = 300, R = 10, X = 260;
+  for (double dx : {2.0, 8.0}) {
+    double F[2] = {0, 0}, Fa[2] = {0, 0}, Tmax = 0;
+    for (int i = 0; i < 3; i++) {
+      const double a = 2 * M_PI * i / 3;
+      Rig r(chain(), L, 40, -depth, 0);
+      double an[3] = {(R + X) * std::cos(a), (R + X) * std::sin(a), -depth};
+      double fl[3] = {R * std::cos(a) + dx, R * std::sin(a), -5};
+      r.ends(an, fl);
+      mjb::lineRest(r.w, r.l, an, fl, &r.s);
+      r.run(100, 0.05);
+      double f[3];
+      r.force(1, f);
+      F[0] += f[0];
+      F[1] += f[1];
+      const double hx = an[0] - fl[0], hy = an[1] - fl[1], span = std::hypot(hx, hy);
+      Catenary c;
+      ASSERT_TRUE(mjb::catenarySolve(span, depth - 5, L, r.l.t.ea,
+                                     mjb::lineWetWeight(r.sea, r.l.t), true, &c));
+      Fa[0] += c.hf * hx / span;
+      Fa[1] += c.hf * hy / span;
+      Tmax = std::max(Tmax, std::hypot(c.hf, c.vf));
+    }
+    EXPECT_NEAR(F[0], Fa[0], 0.005 * Tmax) << dx;
+    EXPECT_NEAR(F[1], Fa[1], 0.005 * Tmax) << dx;
+    EXPECT_LT(Fa[0], 0);  // it pulls back
+    std::printf("offset %g m: restoring %.6g N, catenary %.6g N (%+.3f%%)\n", dx, F[0], Fa[0],
+                100 * (F[0] / Fa[0] - 1));
+  }
+}
+
 // energy of a line in air with both ends fixed: kinetic, gravity and
 // spring (1/2 EA / l0 e^2 l0^2 per stretched segment)
 double energy(const Rig& r, double* power) {
