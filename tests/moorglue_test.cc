@@ -282,3 +282,37 @@ TEST(MooredBuoy, JonswapStaysBounded) {
 }
 
 }  // namespace
+
+namespace {
+
+// the shipped taut-moored wave-energy float (models/wec_taut.xml): its
+// tether starts at the design pretension EA (26.45 / 26.406 - 1) = 50 kN
+// (Hooke, the rope's weight, 18 N/m, aside) and stays taut and finite in
+// 20 s of its JONSWAP sea, the power take-off moving
+TEST(MooredBuoy, TautWecFloat) {
+  mjModel* m = mj_loadXML(MJB_MODELS "/wec_taut.xml", nullptr, nullptr, 0);
+  ASSERT_TRUE(m);
+  char err[1024];
+  mjbBuoy* b = mjb_attach(m, nullptr, err, sizeof(err));
+  ASSERT_TRUE(b) << err;
+  mjData* d = mj_makeData(m);
+  const int ten = m->sensor_adr[mj_name2id(m, mjOBJ_SENSOR, "tether_tension")];
+  mj_forward(m, d);
+  const double T0 = 3e7 * (26.45 / 26.406 - 1);
+  EXPECT_NEAR(d->sensordata[ten], T0, 0.01 * T0);
+  double qmin = 0, qmax = 0;
+  for (int i = 0; i < 4000; i++) {
+    mj_step(m, d);
+    ASSERT_TRUE(std::isfinite(d->qpos[0]) && std::isfinite(d->sensordata[ten])) << d->time;
+    ASSERT_GT(d->sensordata[ten], 0) << d->time;  // taut
+    qmin = std::min(qmin, d->qpos[7]);
+    qmax = std::max(qmax, d->qpos[7]);
+  }
+  EXPECT_GT(qmax - qmin, 0.05);  // the take-off strokes
+  EXPECT_STREQ(mjb_notices(b, d), "");
+  mj_deleteData(d);
+  mjb_detach(b);
+  mj_deleteModel(m);
+}
+
+}  // namespace
