@@ -220,6 +220,18 @@ MJB_API int mjb_waves(const mjbBuoy* b, double* out, int max);
 // wind speed vector at 10 m at time t [m/s] (mean plus gusts), 2 values
 MJB_API void mjb_windVelocity(const mjbBuoy* b, mjtNum t, mjtNum v[2]);
 
+// ---- mooring lines (docs/mooring.md) ----
+
+// number of mooring lines of an attached model (its mjbuoy.line.<line>
+// entries, in the order of their first entry)
+MJB_API int mjb_lineCount(const mjbBuoy* b);
+
+// node positions of line `line` in d, world frame [m], 3 values per node
+// from the anchor (node 0) to the fairlead: fills up to max nodes into pos
+// (may be NULL) and returns the line's node count, segments + 1. 0 when
+// there is no such line or d has not been stepped
+MJB_API int mjb_lineNodes(const mjbBuoy* b, const mjData* d, int line, mjtNum* pos, int max);
+
 #ifdef __cplusplus
 }
 #endif

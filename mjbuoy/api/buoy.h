@@ -11,6 +11,7 @@
 #include "api/config.h"
 #include "radiation/diffract.h"
 #include "mjbuoy.h"
+#include "mooring/mooring.h"
 #include "radiation/radcache.h"
 #include "radiation/radiation.h"
 #include "api/sensor.h"
@@ -62,6 +63,7 @@ struct Buoy {
   std::vector<std::pair<int, HydroCoef>> coef;
   Diffraction diff;            // diffract.h: diffraction excitation of those bodies
   RadCacheStats radcache;      // the panel solver's cache at attach (radcache.h)
+  Mooring moor;                // mooring lines and the seabed (moorconfig.h)
 };
 
 // the static data of an attached model (glue.cc; tools only)
@@ -166,6 +168,7 @@ struct State {
   // the COM, and whether a non-finite one was named
   std::vector<double> dwrench;
   std::vector<char> dtold;
+  MoorState moor;              // mooring lines (moorstep.h)
 };
 
 // slamming clock (cpustate.cc): kSameStep for another call at the current step's

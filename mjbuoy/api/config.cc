@@ -2,6 +2,7 @@
 #include "api/config.h"
 #include "api/radconfig.h"
 #include "api/seaconfig.h"
+#include "api/moorconfig.h"
 
 #include <fnmatch.h>
 
@@ -270,7 +271,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
     if (!has(name)) continue;
     const char* key = name + np;
     const char* text = m->text_data + m->text_adr[i];
-    if (isSeaExtra(key) || isRadEntry(key)) continue;  // seaconfig.cc, radconfig.cc
+    if (isSeaExtra(key) || isRadEntry(key) || isMoorEntry(key)) continue;  // *config.cc
     if (!std::strcmp(key, "hulls")) {
       anyHullList = true;
       std::string e = parseHulls(m, name, text, &is);
@@ -331,7 +332,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
     any = true;
     const char* key = name + np;
     const mjtNum* v = m->numeric_data + m->numeric_adr[i];
-    if (isSeaExtra(key) || isRadEntry(key)) continue;  // seaconfig.cc, radconfig.cc
+    if (isSeaExtra(key) || isRadEntry(key) || isMoorEntry(key)) continue;  // *config.cc
     if (!std::strncmp(key, "sea.", 4)) {
       const Field* f = findField(kSeaFields, nsf, key + 4);
       if (!f) {
@@ -444,7 +445,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
     c->warn.push_back("<option density/viscosity> is nonzero: MuJoCo's own fluid forces act "
                       "on every body as well as mjbuoy's (double counting); set them to 0");
   }
-  if (gid.empty()) {
+  if (gid.empty() && !hasLines(m)) {
     c->warn.push_back(any ? "no hull geoms: mjbuoy adds no force"
                           : "the model has no mjbuoy.* entries: mjbuoy adds no force");
   }

@@ -19,6 +19,8 @@
 #include "radiation/radiation.h"
 #include "mjbuoy.h"
 #include "api/seasetter.h"
+#include "api/moorconfig.h"
+#include "api/moorstep.h"
 #include "sea/wind.h"
 
 using mjb::Buoy;
@@ -103,6 +105,7 @@ void renew(State* s, const mjData* d) {
   s->buf = d->buffer;
   s->vcount = -1;
   mjb::radRestart(&s->rad);
+  mjb::moorRestart(&s->moor);
 }
 
 // the state of d, renewed if it is stale; fresh says the state was created
@@ -121,6 +124,7 @@ State* state(mjbBuoy* b, const mjData* d, bool create) {
       u = std::make_unique<State>();
       mjb::makeState(b->b, u.get());
       mjb::radMakeState(b->b.rad, &u->rad);
+      mjb::moorMakeState(b->b.moor, b->b.m->nbody, &u->moor);
       u->buf = d->buffer;
     }
     s = u.get();
@@ -187,6 +191,14 @@ void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
       applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
     }
   }
+  // mooring lines: one wrench per body at their ends (moorstep.cc)
+  if (!b->b.moor.line.empty()) {
+    mjb::moorStep(b->b.moor, b->b.cfg.sea, m, d, &s->moor, &s->notices);
+    for (int bd : b->b.moor.body) {
+      const mjtNum* w = s->moor.wrench.data() + 6 * bd;
+      applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
+    }
+  }
   s->vcount = d->timer[mjTIMER_VELOCITY].number;
 }
 
@@ -210,7 +222,10 @@ void passive(const mjModel* m, mjData* d) {
     warnUnknown(m, d);
     return;
   }
-  if (!b->b.hull.empty() || !b->b.wind.body.empty() || !b->b.rad.rb.empty()) compute(b, m, d);
+  if (!b->b.hull.empty() || !b->b.wind.body.empty() || !b->b.rad.rb.empty() ||
+      !b->b.moor.line.empty()) {
+    compute(b, m, d);
+  }
 }
 
 // user sensors: the user's callback first, then the ones mjbuoy binds
@@ -366,6 +381,11 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
   // docs/mjcf.md section 11), before the backend: a group it skips takes
   // back its linear drag terms (radattach.cc skipGroup), which the gl
   // backend copies at setup
+  e = mjb::parseMooring(m, B.cfg.sea, &B.moor, &warn);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    return nullptr;
+  }
   e = mjb::attachRadiation(&B);
   if (!e.empty()) {
     copyError(e, error, error_sz);
@@ -598,4 +618,18 @@ bool mjb::newtonStats(const mjbBuoy* b, const mjData* d, long* solves, long* ste
     *steps += s->niter[i];
   }
   return true;
+}
+
+int mjb_lineCount(const mjbBuoy* b) { return b ? int(b->b.moor.line.size()) : 0; }
+
+int mjb_lineNodes(const mjbBuoy* b, const mjData* d, int line, mjtNum* pos, int max) {
+  if (!b || !d || line < 0 || line >= int(b->b.moor.line.size())) return 0;
+  State* s = state(const_cast<mjbBuoy*>(b), d, false);
+  if (!s || s->moor.key < 0) return 0;
+  const std::vector<double>& r = s->moor.ls[line].r;
+  const int n = r.size() / 3;
+  for (int i = 0; pos && i < std::min(n, max); i++) {
+    for (int k = 0; k < 3; k++) pos[3 * i + k] = r[3 * i + k];
+  }
+  return n;
 }

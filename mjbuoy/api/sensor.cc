@@ -9,6 +9,7 @@
 // volume, area and wrench need stage vel or acc to be of this mj_forward.
 #include "api/sensor.h"
 
+#include <cmath>
 #include <cstring>
 
 #include "api/buoy.h"
@@ -39,7 +40,41 @@ const char* const kFamily[mjbNPART] = {"pressure", "viscous", "drag", "slam", "d
 
 const char kWords[] =
     "elevation, relative_elevation, submerged_volume, wetted_area, wrench, "
-    "wrench pressure|viscous|drag|slam|damping|wind";
+    "wrench pressure|viscous|drag|slam|damping|wind, fairlead_tension <line>, "
+    "anchor_tension <line>, seabed_length <line>";
+
+// a mooring line quantity: "fairlead_tension <line>", "anchor_tension
+// <line>" (dim 1: magnitude, dim 3: the force on the end, world frame) or
+// "seabed_length <line>" (docs/mooring.md "Sensors"); false if w[0] is none
+bool bindLine(const Buoy& b, int id, const std::string& at, const std::string w[3], int nw,
+              Sensor* out, std::string* err) {
+  const bool fl = w[0] == "fairlead_tension", an = w[0] == "anchor_tension";
+  if (!fl && !an && w[0] != "seabed_length") return false;
+  const mjModel* m = b.m;
+  out->id = id;
+  out->kind = fl || an ? kSensTension : kSensBedLength;
+  out->part = fl ? 1 : 0;
+  out->obj = -1;
+  for (size_t i = 0; nw == 2 && i < b.moor.line.size(); i++) {
+    if (b.moor.line[i].line.name == w[1]) out->obj = i;
+  }
+  if (out->obj < 0) {
+    *err = at + ": " + w[0] + " needs the name of a mooring line (mjbuoy.line.<line>.*), "
+           "e.g. data=\"" + w[0] + " <line>\"";
+    return true;
+  }
+  const int dim = m->sensor_dim[id];
+  if (out->kind == kSensTension ? dim != 1 && dim != 3 : dim != 1) {
+    *err = at + ": " + w[0] + " has dim=\"" + std::to_string(dim) + "\"; set dim=\"1\"" +
+           (out->kind == kSensTension ? " (the tension) or dim=\"3\" (the force vector)" : "");
+    return true;
+  }
+  if (m->sensor_needstage[id] == mjSTAGE_POS) {
+    *err = at + ": " + w[0] + " is computed with the forces, after the position stage; set "
+           "needstage=\"vel\" or \"acc\" on the user sensor";
+  }
+  return true;
+}
 
 std::string where(const char* sensor) {
   return std::string("mjbuoy: sensor \"") + sensor + "\" (<text name=\"" + kPre + sensor + "\">)";
@@ -74,6 +109,8 @@ std::string bind(const Buoy& b, const char* name, const char* text, Sensor* out)
   }
   std::string w[3];
   int nw = words(text, w);
+  std::string lerr;
+  if (nw >= 1 && bindLine(b, id, at, w, nw, out, &lerr)) return lerr;
   const Quantity* q = nullptr;
   for (const Quantity& k : kQuantity) {
     if (nw >= 1 && w[0] == k.word) q = &k;
@@ -175,6 +212,19 @@ void fillSensors(const Buoy& b, const mjModel* m, mjData* d, const State* s, int
           for (int h = q.h0; h < q.h1; h++) a += s->hwet[h];
           out[0] = a;
         }
+        break;
+      case kSensTension:
+        if (s && s->moor.key >= 0) {
+          const double* f = &s->moor.fend[6 * q.obj + 3 * q.part];
+          if (m->sensor_dim[q.id] == 1) {
+            out[0] = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+          } else {
+            for (int j = 0; j < 3; j++) out[j] = f[j];
+          }
+        }
+        break;
+      case kSensBedLength:
+        if (s && s->moor.key >= 0) out[0] = s->moor.ls[q.obj].bedlen;
         break;
       case kSensWrench:
         if (s) {

@@ -20,13 +20,16 @@ enum SensorKind {
   kSensVolume,          // body's submerged volume [m^3]
   kSensArea,            // body's wetted area [m^2]
   kSensWrench,          // body's mjbuoy wrench, total or one force family [N, N m]
+  kSensTension,         // a line's tension at an end [N] (dim 1), or the end's force (dim 3)
+  kSensBedLength,       // length of a line resting on the seabed [m]
 };
 
 struct Sensor {
   int id;      // MuJoCo sensor id
   int kind;    // SensorKind
-  int obj;     // site id (elevations) or body id
-  int part;    // kSensWrench: force family (mjbPart), mjbNPART for the total
+  int obj;     // site id (elevations), body id, or line index (line quantities)
+  int part;    // kSensWrench: force family (mjbPart), mjbNPART for the total;
+               // kSensTension: the end, 0 anchor, 1 fairlead
   int h0, h1;  // hulls [h0, h1) of the body (they are contiguous)
 };
 

@@ -63,6 +63,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       "<body name=\"barge\" pos=\"0 0 0.1\"><freejoint/>\n"
       "<geom name=\"hull\" type=\"box\" size=\"1 0.5 0.25\" mass=\"500\"/>\n"
       "<geom name=\"mesh\" type=\"mesh\" mesh=\"tet\" pos=\"0 0 -0.5\" mass=\"10\"/>\n"
+      "<site name=\"fair\" pos=\"1 0 -0.25\"/>\n"
       "</body>\n</worldbody>\n</mujoco>\n";
 
   static mjVFS vfs;  // 2 MB of names: once

@@ -170,6 +170,7 @@ bool Renderer::render(const mjData* d0, std::vector<unsigned char>* rgb, std::st
   if (p.o.camera.empty()) p.framer.update(p.m, p.b, d, (double)p.o.width / p.o.height, &p.cam);
   mjv_updateScene(p.m, d, &p.opt, nullptr, &p.cam, mjCAT_ALL, &p.scn);
   if (p.o.showForces) addForceArrows(p.m, p.b, d, &p.scn);
+  addLines(p.b, d, &p.scn);
   mjrRect vp = {0, 0, p.o.width, p.o.height};
   mjr_setBuffer(mjFB_OFFSCREEN, &p.con);
   mjr_render(vp, &p.scn, &p.con);

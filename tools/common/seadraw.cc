@@ -341,6 +341,26 @@ void addForceArrows(const mjModel* m, const mjbBuoy* b, const mjData* d, mjvScen
   }
 }
 
+void addLines(const mjbBuoy* b, const mjData* d, mjvScene* scn) {
+  const int kMaxNodes = 1001;  // segments are at most 1000 (docs/mooring.md)
+  static thread_local std::vector<mjtNum> p(3 * kMaxNodes);
+  for (int i = 0; i < mjb_lineCount(b); i++) {
+    const int n = std::min(mjb_lineNodes(b, d, i, p.data(), kMaxNodes), kMaxNodes);
+    double len = 0;
+    for (int j = 1; j < n; j++) len += mju_dist3(&p[3 * j], &p[3 * j - 3]);
+    const double r = std::max(0.05, 1e-3 * len);
+    for (int j = 1; j < n && scn->ngeom < scn->maxgeom; j++) {
+      const mjtNum* a = &p[3 * j - 3];
+      const mjtNum* c = &p[3 * j];
+      mjvGeom* g = scn->geoms + scn->ngeom++;
+      const float rgba[4] = {0.15f, 0.15f, 0.17f, 1};
+      mjv_initGeom(g, mjGEOM_CAPSULE, nullptr, nullptr, nullptr, rgba);
+      mjv_makeConnector(g, mjGEOM_CAPSULE, r, a[0], a[1], a[2], c[0], c[1], c[2]);
+      g->category = mjCAT_DECOR;
+    }
+  }
+}
+
 // the bodies to frame: those mjbuoy pushes on (hull bodies, wet at the
 // start) and those with a free joint; all if there are none
 void HullFramer::choose(const mjModel* m, const mjbBuoy* b, const mjData* d) {

@@ -72,6 +72,11 @@ class SeaPainter {
 // radius
 void addForceArrows(const mjModel* m, const mjbBuoy* b, const mjData* d, mjvScene* scn);
 
+// the mooring lines of d (mjb_lineNodes) added to scn: a dark capsule per
+// segment, as thick as a thousandth of the line's length (at least 5 cm)
+// so a chain shows at any zoom
+void addLines(const mjbBuoy* b, const mjData* d, mjvScene* scn);
+
 // a free camera that frames all hull bodies from the south, 25 degrees
 // above the horizon, and follows them smoothly (update on every picture)
 class HullFramer {

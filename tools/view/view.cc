@@ -124,6 +124,7 @@ int run(View* v) {
       }
       mjv_updateScene(v->m, v->d, &v->opt, &v->pert, &v->cam, mjCAT_ALL, &v->scn);
       if (v->forces) mjbsim::addForceArrows(v->m, v->b, v->d, &v->scn);
+      mjbsim::addLines(v->b, v->d, &v->scn);
       v->sea.capture(v->d);
       t = v->d->time;
       paused = v->paused;

@@ -1,0 +1,318 @@
+// mooring lines in a model: MJCF, the step clock under RK4 and
+// mj_forward, reset and copy, faults, and a moored body's surge period
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <mujoco/mujoco.h>
+
+#include "mjbuoy.h"
+#include "mooring/catenary.h"
+#include "testutil.h"
+
+namespace {
+
+using mjbt::Scene;
+
+const double kDepth = 100, kLen = 300, kMass = 100, kDiam = 0.12, kEA = 5e8;
+
+std::string chainType() {
+  std::ostringstream s;
+  s << "<numeric name=\"mjbuoy.linetype.chain.mass\" data=\"" << kMass << "\"/>"
+    << "<numeric name=\"mjbuoy.linetype.chain.diameter\" data=\"" << kDiam << "\"/>"
+    << "<numeric name=\"mjbuoy.linetype.chain.ea\" data=\"" << kEA << "\"/>";
+  return s.str();
+}
+
+std::string line(const std::string& name, double ax, double ay, double az,
+                 const std::string& site, double len = kLen, int nseg = 20) {
+  std::ostringstream s;
+  s << "<text name=\"mjbuoy.line." << name << ".type\" data=\"chain\"/>"
+    << "<numeric name=\"mjbuoy.line." << name << ".length\" data=\"" << len << "\"/>"
+    << "<numeric name=\"mjbuoy.line." << name << ".segments\" data=\"" << nseg << "\"/>"
+    << "<numeric name=\"mjbuoy.line." << name << ".anchor\" data=\"" << ax << " " << ay << " "
+    << az << "\"/>"
+    << "<text name=\"mjbuoy.line." << name << ".fairlead\" data=\"" << site << "\"/>";
+  return s.str();
+}
+
+// a body of mass M on a surge slide at z = -5, held by three lines at
+// 120 degrees: fairleads at radius 10 m, anchors at radius 10 + X on a
+// 100 m deep bed
+std::string threeLines(double M, double X, const char* integrator = "Euler",
+                       double friction = 0.5) {
+  std::ostringstream s;
+  s << "<mujoco><option timestep=\"0.05\" integrator=\"" << integrator << "\"/><custom>"
+    << "<numeric name=\"mjbuoy.sea.depth\" data=\"" << kDepth << "\"/>" << chainType()
+    << "<numeric name=\"mjbuoy.seabed.friction\" data=\"" << friction << " " << 2 * friction
+    << "\"/>";
+  for (int i = 0; i < 3; i++) {
+    double a = 2 * M_PI * i / 3, R = 10 + X;
+    s << line("l" + std::to_string(i), R * std::cos(a), R * std::sin(a), -kDepth,
+              "f" + std::to_string(i));
+  }
+  s << "</custom><worldbody><body name=\"buoy\" pos=\"0 0 -5\">"
+    << "<joint name=\"surge\" type=\"slide\" axis=\"1 0 0\"/>"
+    << "<inertial pos=\"0 0 0\" mass=\"" << M << "\" diaginertia=\"1 1 1\"/>";
+  for (int i = 0; i < 3; i++) {
+    double a = 2 * M_PI * i / 3;
+    s << "<site name=\"f" << i << "\" pos=\"" << 10 * std::cos(a) << " " << 10 * std::sin(a)
+      << " 0\"/>";
+  }
+  s << "</body></worldbody></mujoco>";
+  return s.str();
+}
+
+// surge period of the body released 0.5 m off: upward zero crossings
+double surgePeriod(Scene* sc, double T) {
+  sc->d->qpos[0] = 0.5;
+  std::vector<double> up;
+  double prev = 0.5;
+  const double dt = sc->m->opt.timestep;
+  for (long i = 0; i < std::lround(T / dt); i++) {
+    mj_step(sc->m, sc->d);
+    double x = sc->d->qpos[0];
+    if (!std::isfinite(x)) {
+      std::printf("not finite at t = %g: %s\n", sc->d->time, mjb_notices(sc->b, sc->d));
+      return NAN;
+    }
+    if (prev < 0 && x >= 0) up.push_back(sc->d->time - dt * x / (x - prev));
+    prev = x;
+  }
+  if (up.size() < 2) return NAN;
+  return (up.back() - up.front()) / (up.size() - 1);
+}
+
+// the linear surge period 2 pi sqrt((m + a11) / k) of a body on three
+// catenary lines: k = sum_i (dH/dX cos^2 b_i + H / X sin^2 b_i) = 1.5
+// (dH/dX + H / X) for lines at 120 degrees (Faltinsen 1990, Sea Loads,
+// sec. 8.2: a line's axial stiffness dH/dX and its transverse stiffness
+// H / X, X the horizontal fairlead-anchor distance); dH/dX by central
+// differences of the elastic catenary (catenary.h, checked against the
+// closed-form equations in mooring_test.cc), for small motion (0.5 m) and
+// no bed friction, as the catenary has none. The body has no hull: a11 =
+// 0; the lines' own mass (3 x 30 t against 5000 t) and drag stay within 5%
+TEST(MooringGlue, SurgeDecayPeriod) {
+  const double M = 5e6, X = 270;
+  const double W = (kMass - 1000 * M_PI * kDiam * kDiam / 4) * 9.81;
+  mjb::Catenary a, b, c;
+  ASSERT_TRUE(mjb::catenarySolve(X, kDepth - 5, kLen, kEA, W, true, &c));
+  ASSERT_TRUE(mjb::catenarySolve(X + 0.1, kDepth - 5, kLen, kEA, W, true, &a));
+  ASSERT_TRUE(mjb::catenarySolve(X - 0.1, kDepth - 5, kLen, kEA, W, true, &b));
+  const double k = 1.5 * ((a.hf - b.hf) / 0.2 + c.hf / X);
+  const double Tn = 2 * M_PI * std::sqrt(M / k);
+  for (const char* integ : {"Euler", "RK4"}) {
+    Scene sc(threeLines(M, X, integ, 0));
+    ASSERT_TRUE(sc.ok()) << sc.err;
+    double T = surgePeriod(&sc, 3.2 * Tn);
+    EXPECT_NEAR(T, Tn, 0.05 * Tn) << integ;
+    EXPECT_STREQ(mjb_notices(sc.b, sc.d), "");
+    std::printf("surge (%s): period %.4g s, linear %.4g s (%+.2f%%), k %.4g N/m\n", integ, T, Tn,
+                100 * (T / Tn - 1), k);
+  }
+}
+
+// the body starts at rest: the lines start on their equilibrium, so it
+// moves by far less than the 3 m of the decay test in 20 s
+TEST(MooringGlue, StartsAtRest) {
+  Scene sc(threeLines(5e6, 250));
+  ASSERT_TRUE(sc.ok()) << sc.err;
+  for (int i = 0; i < 400; i++) mj_step(sc.m, sc.d);
+  EXPECT_LT(std::fabs(sc.d->qpos[0]), 0.01);
+}
+
+std::vector<double> nodes(const Scene& sc, int line) {
+  int n = mjb_lineNodes(sc.b, sc.d, line, nullptr, 0);
+  std::vector<double> p(3 * n);
+  mjb_lineNodes(sc.b, sc.d, line, p.data(), n);
+  return p;
+}
+
+// mj_forward alone does not step the lines; mj_resetData puts them back
+// on their rest shape; mjb_copyData carries them so a copy continues the
+// same to the bit
+TEST(MooringGlue, ClockResetCopy) {
+  Scene sc(threeLines(5e6, 250));
+  ASSERT_TRUE(sc.ok()) << sc.err;
+  EXPECT_EQ(mjb_lineCount(sc.b), 3);
+  sc.d->qpos[0] = 2;
+  mj_forward(sc.m, sc.d);
+  std::vector<double> rest = nodes(sc, 0);
+  ASSERT_EQ(rest.size(), 63u);
+  for (int i = 0; i < 5; i++) mj_forward(sc.m, sc.d);
+  EXPECT_EQ(nodes(sc, 0), rest);
+  for (int i = 0; i < 50; i++) mj_step(sc.m, sc.d);
+  EXPECT_NE(nodes(sc, 0), rest);
+  mjData* d2 = mj_makeData(sc.m);
+  mj_copyData(d2, sc.m, sc.d);
+  ASSERT_EQ(mjb_copyData(sc.b, d2, sc.d), 1);
+  for (int i = 0; i < 50; i++) {
+    mj_step(sc.m, sc.d);
+    mj_step(sc.m, d2);
+  }
+  int n = mjb_lineNodes(sc.b, d2, 0, nullptr, 0);
+  std::vector<double> p2(3 * n);
+  mjb_lineNodes(sc.b, d2, 0, p2.data(), n);
+  EXPECT_EQ(p2, nodes(sc, 0));
+  EXPECT_EQ(d2->qpos[0], sc.d->qpos[0]);
+  mj_deleteData(d2);
+  mj_resetData(sc.m, sc.d);
+  sc.d->qpos[0] = 2;
+  mj_forward(sc.m, sc.d);
+  EXPECT_EQ(nodes(sc, 0), rest);
+}
+
+std::string attachError(const std::string& custom, const std::string& body) {
+  std::string xml = "<mujoco><custom><numeric name=\"mjbuoy.sea.depth\" data=\"100\"/>" +
+                    chainType() + custom + "</custom><worldbody>" + body +
+                    "</worldbody></mujoco>";
+  Scene sc(xml);
+  return sc.ok() ? "" : sc.err;
+}
+
+// bad lines are refused with the line, the field and the range named
+TEST(MooringGlue, RefusesBadLines) {
+  const std::string site = "<site name=\"s\" pos=\"50 0 -5\"/>";
+  std::string e = attachError(line("a", 0, 0, -100, "s", 0), site);
+  EXPECT_NE(e.find("line \"a\""), std::string::npos) << e;
+  EXPECT_NE(e.find("length"), std::string::npos) << e;
+  EXPECT_NE(e.find("> 0"), std::string::npos) << e;
+  e = attachError("<numeric name=\"mjbuoy.linetype.soft.ea\" data=\"0\"/>", site);
+  EXPECT_NE(e.find("line type \"soft\""), std::string::npos) << e;
+  EXPECT_NE(e.find("ea"), std::string::npos) << e;
+  e = attachError(line("a", 0, 0, -100, "nosuch"), site);
+  EXPECT_NE(e.find("site \"nosuch\""), std::string::npos) << e;
+  e = attachError(line("a", 0, 0, -150, "s"), site);
+  EXPECT_NE(e.find("below the seabed"), std::string::npos) << e;
+  e = attachError(line("a", 0, 0, -100, "s", 300, 0), site);
+  EXPECT_NE(e.find("segments"), std::string::npos) << e;
+  e = attachError(line("a", 0, 0, -100, "s") +
+                      "<numeric name=\"mjbuoy.line.a.colour\" data=\"1\"/>", site);
+  EXPECT_NE(e.find("length, segments, anchor"), std::string::npos) << e;
+}
+
+// a line pulled past its length reports its overload once and stays finite
+TEST(MooringGlue, TautOverloadNotice) {
+  Scene sc(threeLines(5e6, 250));
+  ASSERT_TRUE(sc.ok()) << sc.err;
+  sc.d->xfrc_applied[6 * sc.body("buoy")] = -2e9;  // away from line 0's anchor
+  for (int i = 0; i < 400; i++) mj_step(sc.m, sc.d);
+  std::string n = mjb_notices(sc.b, sc.d);
+  EXPECT_NE(n.find("line \"l0\""), std::string::npos) << n;
+  EXPECT_NE(n.find("overloaded"), std::string::npos) << n;
+  EXPECT_TRUE(std::isfinite(sc.d->qpos[0]));
+  for (double x : nodes(sc, 0)) ASSERT_TRUE(std::isfinite(x));
+}
+
+// a line lying wholly on the bed (both ends on it, closer than its
+// length) stays there, slack: the fairlead feels only its half segment
+TEST(MooringGlue, LineOnSeabed) {
+  std::string xml = "<mujoco><option timestep=\"0.05\"/><custom>"
+                    "<numeric name=\"mjbuoy.sea.depth\" data=\"100\"/>" + chainType() +
+                    line("a", 0, 0, -100, "s") + "</custom><worldbody>"
+                    "<site name=\"s\" pos=\"100 0 -100\"/></worldbody></mujoco>";
+  Scene sc(xml);
+  ASSERT_TRUE(sc.ok()) << sc.err;
+  for (int i = 0; i < 400; i++) mj_step(sc.m, sc.d);
+  for (size_t i = 2; i < 63; i += 3) {
+    std::vector<double> p = nodes(sc, 0);
+    ASSERT_TRUE(std::isfinite(p[i]));
+    EXPECT_NEAR(p[i], -100, 0.05);
+  }
+}
+
+// a seabed deeper than the line reaches: the line hangs free from an
+// anchor above the bed, touching nothing
+TEST(MooringGlue, BedBeyondReach) {
+  std::string xml = "<mujoco><option timestep=\"0.05\"/><custom>"
+                    "<numeric name=\"mjbuoy.sea.depth\" data=\"1000\"/>" + chainType() +
+                    line("a", 0, 0, -100, "s", 150) + "</custom><worldbody>"
+                    "<site name=\"s\" pos=\"100 0 -5\"/></worldbody></mujoco>";
+  Scene sc(xml);
+  ASSERT_TRUE(sc.ok()) << sc.err;
+  for (int i = 0; i < 400; i++) mj_step(sc.m, sc.d);
+  std::vector<double> p = nodes(sc, 0);
+  for (size_t i = 2; i < p.size(); i += 3) {
+    ASSERT_TRUE(std::isfinite(p[i]));
+    EXPECT_GT(p[i], -400);
+  }
+  EXPECT_STREQ(mjb_notices(sc.b, sc.d), "");
+}
+
+}  // namespace
+
+namespace {
+
+// the shipped moored buoy (models/moored_buoy.xml) in its JONSWAP sea
+// (Hs 2 m) stays finite, held near its anchors' centre, its lines taut
+// but far from overload: 20 s by default, MJBUOY_SOAK_SECONDS under the
+// soak label (600 s, tests/CMakeLists.txt)
+TEST(MooredBuoy, JonswapStaysBounded) {
+  double T = 20;
+  if (const char* e = std::getenv("MJBUOY_SOAK_SECONDS")) T = std::atof(e);
+  ASSERT_GT(T, 0);
+  mjModel* m = mj_loadXML(MJB_MODELS "/moored_buoy.xml", nullptr, nullptr, 0);
+  ASSERT_TRUE(m);
+  char err[1024];
+  mjbBuoy* b = mjb_attach(m, nullptr, err, sizeof(err));
+  ASSERT_TRUE(b) << err;
+  mjData* d = mj_makeData(m);
+  const int ten = m->sensor_adr[mj_name2id(m, mjOBJ_SENSOR, "tension_a")];
+  double tmax = 0;
+  for (long i = 0; i < std::lround(T / m->opt.timestep); i++) {
+    mj_step(m, d);
+    ASSERT_TRUE(std::isfinite(d->qpos[0]) && std::isfinite(d->sensordata[ten])) << d->time;
+    tmax = std::max(tmax, d->sensordata[ten]);
+    // a chain of 130 m on anchors 100 m out lets the buoy drift a few metres
+    ASSERT_LT(std::hypot(d->qpos[0], d->qpos[1]), 15) << d->time;
+  }
+  // the fairlead carries at least its hanging chain (about 45 m of 256 N/m)
+  // and stays far below the 10% strain overload, EA / 10 = 1.2e7 N
+  EXPECT_GT(d->sensordata[ten], 5e3);
+  EXPECT_LT(tmax, 1.2e7);
+  EXPECT_STREQ(mjb_notices(b, d), "");
+  std::printf("moored buoy %g s: max fairlead tension %.4g N\n", T, tmax);
+  mj_deleteData(d);
+  mjb_detach(b);
+  mj_deleteModel(m);
+}
+
+}  // namespace
+
+namespace {
+
+// the shipped taut-moored wave-energy float (models/wec_taut.xml): its
+// tether starts at the design pretension EA (26.45 / 26.406 - 1) = 50 kN
+// (Hooke, the rope's weight, 18 N/m, aside) and stays taut and finite in
+// 20 s of its JONSWAP sea, the power take-off moving
+TEST(MooredBuoy, TautWecFloat) {
+  mjModel* m = mj_loadXML(MJB_MODELS "/wec_taut.xml", nullptr, nullptr, 0);
+  ASSERT_TRUE(m);
+  char err[1024];
+  mjbBuoy* b = mjb_attach(m, nullptr, err, sizeof(err));
+  ASSERT_TRUE(b) << err;
+  mjData* d = mj_makeData(m);
+  const int ten = m->sensor_adr[mj_name2id(m, mjOBJ_SENSOR, "tether_tension")];
+  mj_forward(m, d);
+  const double T0 = 3e7 * (26.45 / 26.406 - 1);
+  EXPECT_NEAR(d->sensordata[ten], T0, 0.01 * T0);
+  double qmin = 0, qmax = 0;
+  for (int i = 0; i < 4000; i++) {
+    mj_step(m, d);
+    ASSERT_TRUE(std::isfinite(d->qpos[0]) && std::isfinite(d->sensordata[ten])) << d->time;
+    ASSERT_GT(d->sensordata[ten], 0) << d->time;  // taut
+    qmin = std::min(qmin, d->qpos[7]);
+    qmax = std::max(qmax, d->qpos[7]);
+  }
+  EXPECT_GT(qmax - qmin, 0.05);  // the take-off strokes
+  EXPECT_STREQ(mjb_notices(b, d), "");
+  mj_deleteData(d);
+  mjb_detach(b);
+  mj_deleteModel(m);
+}
+
+}  // namespace

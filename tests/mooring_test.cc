@@ -1,0 +1,311 @@
+// mooring lines: the lumped-mass line against the elastic catenary, string
+// and drag formulas, energy conservation, and a moored body's surge period
+// (docs/mooring.md)
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <mujoco/mujoco.h>
+
+#include "mjbuoy.h"
+#include "mooring/catenary.h"
+#include "mooring/line.h"
+#include "testutil.h"
+
+namespace {
+
+using mjb::Catenary;
+using mjb::Line;
+using mjb::LineState;
+using mjb::LineWater;
+using mjb::Sea;
+using mjb::Seabed;
+
+// a line alone in a sea, stepped by hand with fixed ends
+struct Rig {
+  Sea sea;
+  Seabed bed;
+  Line l;
+  LineState s;
+  LineWater w;
+  double e0[6] = {0}, e1[6] = {0};
+  double t = 0;
+  Rig(const mjb::LineType& type, double len, int nseg, double bedz, double crest) {
+    bed.z = bedz;
+    l.name = "test";
+    l.t = type;
+    l.len = len;
+    l.nseg = nseg;
+    w = {&sea, &bed, crest, 0};
+    EXPECT_EQ(mjb::lineDerive(w, &l), "");
+    mjb::lineMake(l, &s);
+  }
+  void ends(const double a[3], const double b[3]) {
+    for (int k = 0; k < 3; k++) e0[k] = a[k], e1[k] = b[k];
+  }
+  void run(double T, double dt) {
+    long n = std::lround(T / dt);
+    for (long i = 0; i < n; i++, t += dt) mjb::lineStep(w, l, t, dt, e0, e1, &s);
+  }
+  // force on the end (0 anchor, 1 fairlead) [N]
+  void force(int end, double f[3]) { mjb::lineEndForce(w, l, s, end, end ? e1 : e0, t, 0, f); }
+};
+
+// studless chain, about 100 kg/m: d is the volume-equivalent diameter
+mjb::LineType chain() {
+  mjb::LineType t;
+  t.mass = 100;
+  t.diam = 0.12;
+  t.ea = 5e8;
+  return t;
+}
+
+// the elastic catenary with seabed contact and no bed friction, written
+// out here from Jonkman 2007 (NREL/TP-500-41958) eqs. 4-1 to 4-4 (C_B = 0),
+// which are Irvine 1981 sec. 2.2 with an elastic line: the fairlead span
+// and height for fairlead tension H, V
+void irvine(double H, double V, double L, double EA, double W, bool bed, double* x, double* z) {
+  if (bed && V < W * L) {
+    *x = L - V / W + H / W * std::asinh(V / H) + H * L / EA;
+    *z = H / W * (std::sqrt(1 + V * V / (H * H)) - 1) + V * V / (2 * EA * W);
+  } else {
+    double Va = V - W * L;
+    *x = H / W * (std::asinh(V / H) - std::asinh(Va / H)) + H * L / EA;
+    *z = H / W * (std::sqrt(1 + V * V / (H * H)) - std::sqrt(1 + Va * Va / (H * H))) +
+         (V * L - W * L * L / 2) / EA;
+  }
+}
+
+// the solver returns H, V that put the fairlead where asked, by the
+// closed-form equations above (residual far below the tests' 0.5%)
+TEST(Catenary, SolverMeetsIrvineEquations) {
+  const double L = 300, EA = 5e8, W = 850;
+  for (double X : {220.0, 250.0, 283.0, 290.0}) {
+    Catenary c;
+    ASSERT_TRUE(mjb::catenarySolve(X, 95, L, EA, W, true, &c)) << X;
+    double x, z;
+    irvine(c.hf, c.vf, L, EA, W, true, &x, &z);
+    EXPECT_NEAR(x, X, 1e-6 * L) << X;
+    EXPECT_NEAR(z, 95, 1e-6 * L) << X;
+  }
+  // the grounded and suspended regimes both appear
+  Catenary a, b;
+  mjb::catenarySolve(220, 95, L, EA, W, true, &a);
+  mjb::catenarySolve(290, 95, L, EA, W, true, &b);
+  EXPECT_GT(a.lb, 50);
+  EXPECT_EQ(b.lb, 0);
+  EXPECT_GT(b.vf, W * L);  // the anchor pulls up: taut
+}
+
+// a settled lumped-mass line matches the continuous elastic catenary: the
+// fairlead tension within 0.5% (Irvine 1981; Jonkman 2007 eqs. 4-1 to
+// 4-4, checked above), and the touchdown point within one segment, at
+// spans from mostly grounded to taut (a span below L - depth = 205 m has
+// no catenary: the line would have to fold on the bed; near it the
+// radius H / w at touchdown falls below the 7.5 m segments)
+TEST(MooringLine, StaticCatenary) {
+  const double depth = 100, L = 300;
+  for (double X : {235.0, 250.0, 280.0, 287.0}) {
+    Rig r(chain(), L, 40, -depth, 0);
+    double a[3] = {0, 0, -depth}, b[3] = {X, 0, -5};
+    r.ends(a, b);
+    mjb::lineRest(r.w, r.l, a, b, &r.s);
+    // shake it off its start: every inner node 2 m sideways
+    for (int j = 1; j < r.l.nseg; j++) r.s.r[3 * j + 1] += 2;
+    r.run(150, 0.05);
+    const double W = mjb::lineWetWeight(r.sea, r.l.t);
+    Catenary c;
+    ASSERT_TRUE(mjb::catenarySolve(X, depth - 5, L, r.l.t.ea, W, true, &c));
+    double f[3];
+    r.force(1, f);
+    const double T = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    const double Ta = std::hypot(c.hf, c.vf);
+    EXPECT_NEAR(T, Ta, 0.005 * Ta) << "span " << X;
+    EXPECT_NEAR(-f[0], c.hf, 0.005 * Ta) << "span " << X;
+    EXPECT_NEAR(-f[2], c.vf, 0.005 * Ta) << "span " << X;
+    EXPECT_NEAR(r.s.bedlen, c.lb, r.l.l0 + 1e-9) << "span " << X;
+    std::printf("span %g m: T %.6g N (catenary %.6g, %+.3f%%), on bed %.4g m (catenary %.4g)\n",
+                X, T, Ta, 100 * (T / Ta - 1), r.s.bedlen, c.lb);
+  }
+}
+
+// the horizontal restoring force of three lines at 120 degrees on a
+// fairlead ring offset by dx: the sum over lines of the catenary's H along
+// each line's horizontal direction (Irvine 1981; Faltinsen 1990, Sea Loads,
+// sec. 8.2), within 0.5% of the largest line's tension; the settled
+// lumped-mass lines in 3-D directions
+TEST(MooringLine, ThreeLineRestoringForce) {
+  const double depth = 100, L = 300, R = 10, X = 260;
+  for (double dx : {2.0, 8.0}) {
+    double F[2] = {0, 0}, Fa[2] = {0, 0}, Tmax = 0;
+    for (int i = 0; i < 3; i++) {
+      const double a = 2 * M_PI * i / 3;
+      Rig r(chain(), L, 40, -depth, 0);
+      double an[3] = {(R + X) * std::cos(a), (R + X) * std::sin(a), -depth};
+      double fl[3] = {R * std::cos(a) + dx, R * std::sin(a), -5};
+      r.ends(an, fl);
+      mjb::lineRest(r.w, r.l, an, fl, &r.s);
+      r.run(100, 0.05);
+      double f[3];
+      r.force(1, f);
+      F[0] += f[0];
+      F[1] += f[1];
+      const double hx = an[0] - fl[0], hy = an[1] - fl[1], span = std::hypot(hx, hy);
+      Catenary c;
+      ASSERT_TRUE(mjb::catenarySolve(span, depth - 5, L, r.l.t.ea,
+                                     mjb::lineWetWeight(r.sea, r.l.t), true, &c));
+      Fa[0] += c.hf * hx / span;
+      Fa[1] += c.hf * hy / span;
+      Tmax = std::max(Tmax, std::hypot(c.hf, c.vf));
+    }
+    EXPECT_NEAR(F[0], Fa[0], 0.005 * Tmax) << dx;
+    EXPECT_NEAR(F[1], Fa[1], 0.005 * Tmax) << dx;
+    EXPECT_LT(Fa[0], 0);  // it pulls back
+    std::printf("offset %g m: restoring %.6g N, catenary %.6g N (%+.3f%%)\n", dx, F[0], Fa[0],
+                100 * (F[0] / Fa[0] - 1));
+  }
+}
+
+// energy of a line in air with both ends fixed: kinetic, gravity and
+// spring (1/2 EA / l0 e^2 l0^2 per stretched segment)
+double energy(const Rig& r, double* power) {
+  const Line& l = r.l;
+  const double m = l.mnode, g = r.sea.g, k = l.t.ea / l.l0;
+  double E = 0;
+  std::vector<double> F(r.s.r.size(), 0.0);
+  for (int j = 1; j < l.nseg; j++) {
+    const double* v = &r.s.v[3 * j];
+    E += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + m * g * r.s.r[3 * j + 2];
+    F[3 * j + 2] -= m * g;
+  }
+  for (int i = 0; i < l.nseg; i++) {
+    double d[3], n = 0;
+    for (int q = 0; q < 3; q++) d[q] = r.s.r[3 * i + 3 + q] - r.s.r[3 * i + q], n += d[q] * d[q];
+    n = std::sqrt(n);
+    double e = std::max(n - l.l0, 0.0);
+    E += 0.5 * k * e * e;
+    for (int q = 0; q < 3; q++) F[3 * i + q] += k * e * d[q] / n, F[3 * i + 3 + q] -= k * e * d[q] / n;
+  }
+  *power = 0;
+  for (int j = 1; j < l.nseg; j++) {
+    for (int q = 0; q < 3; q++) *power += F[3 * j + q] * r.s.v[3 * j + q];
+  }
+  return E;
+}
+
+// an undamped line released from a straight, non-equilibrium shape in air
+// keeps its energy. Bound: semi-implicit (symplectic) Euler of step h keeps
+// a mode of frequency w on the invariant v^2 + w^2 x^2 - h w^2 x v (Hairer,
+// Lubich & Wanner 2006, Geometric Numerical Integration, sec. I.1), so the
+// mode's energy stays within a factor 1 +- (h w / 2) / (1 - h w / 2) of
+// its start; summed over the modes, with w the highest, 2 sqrt(k / m), and
+// the energy in motion at most E(0) - E(rest), |E(t) - E(0)| is at most
+// (h w / 2) / (1 - h w / 2) (E(0) - E(rest)). No drift: the bound holds
+// over 20 s, 10^5 steps
+TEST(MooringLine, EnergyConservedInAir) {
+  mjb::LineType t;
+  t.mass = 10;
+  t.diam = 0.03;
+  t.ea = 2e6;
+  t.ba = 0;
+  Rig r(t, 50, 20, -1e9, 0);  // 100 m above a calm sea: dry
+  double a[3] = {0, 0, 100}, b[3] = {45, 0, 100};
+  r.ends(a, b);
+  double P, Erest;
+  mjb::lineRest(r.w, r.l, a, b, &r.s);
+  Erest = energy(r, &P);
+  for (int j = 0; j <= 20; j++) {
+    for (int k = 0; k < 3; k++) r.s.r[3 * j + k] = a[k] + (b[k] - a[k]) * j / 20.0;
+  }
+  std::fill(r.s.v.begin(), r.s.v.end(), 0.0);
+  double E0 = energy(r, &P), worst = 0;
+  const double h = 2e-4, om = 2 * std::sqrt(t.ea / r.l.l0 / r.l.mnode);
+  ASSERT_LT(h, r.l.hmax);
+  const double bound = (h * om / 2) / (1 - h * om / 2) * (E0 - Erest);
+  ASSERT_GT(E0 - Erest, 0);
+  for (int i = 0; i < 100000; i++) {
+    r.run(h, h);
+    double E = energy(r, &P);
+    worst = std::max(worst, std::fabs(E - E0));
+    ASSERT_LE(std::fabs(E - E0), bound) << "t = " << r.t;
+  }
+  std::printf("energy: max |dE| %.3g J, bound %.3g J, E(0) - E(rest) %.6g J\n", worst, bound,
+              E0 - Erest);
+}
+
+// first transverse mode of a taut weightless line: the string frequency
+// f1 = (1 / 2S) sqrt(T / mu), S the stretched span, mu the mass per
+// stretched length, T = EA (S / L - 1) (Rao 2007, Vibration of Continuous
+// Systems, sec. 8.5), within 0.5% (the 40-node chain is off by
+// (pi / 2N)^2 / 6 = 1e-4, Rayleigh's beaded string)
+TEST(MooringLine, TautStringFrequency) {
+  mjb::LineType t;
+  t.mass = 2;
+  t.diam = 0.02;
+  t.ea = 1e6;
+  t.ba = 0;
+  Rig r(t, 50, 40, -1e9, 0);
+  r.sea.g = 0;  // weightless: no sag
+  double a[3] = {0, 0, 10}, b[3] = {50.5, 0, 10};
+  r.ends(a, b);
+  const int n = 40;
+  for (int j = 0; j <= n; j++) {
+    r.s.r[3 * j] = 50.5 * j / n;
+    r.s.r[3 * j + 1] = 0.01 * std::sin(M_PI * j / n);
+    r.s.r[3 * j + 2] = 10;
+  }
+  std::copy(a, a + 3, r.s.end0);
+  std::copy(b, b + 3, r.s.end1);
+  const double T = t.ea * (50.5 / 50 - 1), mu = t.mass * 50 / 50.5;
+  const double f1 = 1 / (2 * 50.5) * std::sqrt(T / mu);
+  // upward zero crossings of the middle node over 20 periods
+  std::vector<double> up;
+  double prev = r.s.r[3 * (n / 2) + 1];
+  const double dt = 1e-3;
+  for (int i = 0; i < std::lround(21 / f1 / dt); i++) {
+    r.run(dt, dt);
+    double y = r.s.r[3 * (n / 2) + 1];
+    if (prev < 0 && y >= 0) up.push_back(r.t - dt * y / (y - prev));
+    prev = y;
+  }
+  ASSERT_GE(up.size(), 10u);
+  double f = (up.size() - 1) / (up.back() - up.front());
+  EXPECT_NEAR(f, f1, 0.005 * f1);
+  std::printf("string: f %.6g Hz, analytic %.6g Hz (%+.3f%%)\n", f, f1, 100 * (f / f1 - 1));
+}
+
+// a taut, neutrally buoyant line across a uniform current carries the
+// normal drag 0.5 rho C_dn d S U^2 (Morison; DNV-RP-C205 sec. 6.2), S its
+// stretched length: the two ends together take it, within 1% (the line
+// bows by 2 cm on 50 m, so the flow meets it square)
+TEST(MooringLine, DragInCurrent) {
+  mjb::LineType t;
+  t.diam = 0.1;
+  t.mass = 1000 * M_PI * 0.01 / 4;  // displaced water: no net weight
+  t.ea = 1e8;
+  t.cdn = 1.2;
+  Rig r(t, 49.5, 20, -1e9, 0);
+  r.sea.current[0] = 1.0;
+  double a[3] = {0, -25, -50}, b[3] = {0, 25, -50};
+  r.ends(a, b);
+  mjb::lineRest(r.w, r.l, a, b, &r.s);
+  r.run(60, 0.01);
+  double fa[3], fb[3];
+  r.force(0, fa);
+  r.force(1, fb);
+  double S = 0;
+  for (int i = 0; i < r.l.nseg; i++) {
+    double d2 = 0;
+    for (int k = 0; k < 3; k++) d2 += std::pow(r.s.r[3 * i + 3 + k] - r.s.r[3 * i + k], 2);
+    S += std::sqrt(d2);
+  }
+  const double D = 0.5 * 1000 * 1.2 * 0.1 * S * 1.0;
+  EXPECT_NEAR(fa[0] + fb[0], D, 0.01 * D);
+  EXPECT_NEAR(fa[2] + fb[2], 0, 0.01 * D);  // no net weight
+  std::printf("drag: %.6g N, formula %.6g N (%+.3f%%)\n", fa[0] + fb[0], D,
+              100 * ((fa[0] + fb[0]) / D - 1));
+}
+
+}  // namespace
