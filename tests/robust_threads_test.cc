@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "radiation/radiation.h"
 #include "testutil.h"
 
 namespace mjbt {
@@ -97,6 +98,24 @@ TEST(RobustThreads, DetachWaitsForACallbackRunningOnAnotherThread) {
   EXPECT_NEAR(d->qfrc_passive[2], kBuoy, 1e-9 * kBuoy);
   mj_deleteData(d);
   mj_deleteModel(m);
+}
+
+// replacing the radiation coefficients (mjb::setHydroCoef, used by the
+// tools) frees and reallocates what a running callback reads: it waits too
+TEST(RobustThreads, NewCoefficientsWaitForACallbackRunningOnAnotherThread) {
+  Held h;
+  Scene s(kBox);
+  ASSERT_TRUE(s.ok()) << s.err;
+  ghold = true;
+  std::thread stepper([&] { mj_forward(s.m, s.d); });
+  waitInside();
+  mjb::HydroCoef c;
+  c.Ainf[14] = 100;  // heave added mass [kg]
+  std::string e = mjb::setHydroCoef(s.b, s.body("box"), c, -1);
+  gdone = true;
+  stepper.join();
+  EXPECT_EQ(e, "");
+  EXPECT_FALSE(gsawDone) << "setHydroCoef returned while a callback of the model was running";
 }
 
 // the user calls mjb_setSea from its own passive callback, which mjbuoy's
