@@ -6,7 +6,21 @@
 // model adds one wrench per hull body to d->qfrc_passive. d->xfrc_applied is
 // never written: it stays the user's.
 //
-// Units: SI (m, kg, s, N). Frames: world frame, z up.
+// Units: SI (m, kg, s, N). Frames: world frame, z up. Angles in mjbuoy's
+// MJCF entries and structs are degrees, whatever <compiler angle> says:
+// MuJoCo passes <custom> data through unconverted (docs/mjcf.md).
+//
+// Threads: several mjData of one model may be stepped at once on different
+// threads. mjbuoy's callbacks (mjcb_passive, mjcb_sensor) hold a model's
+// lock shared for their whole run; mjb_setSea and mjb_detach take it
+// exclusively, so they wait for callbacks of that model running on other
+// threads, and no callback starts until they return. Called from inside a
+// callback (mjbuoy's, or one it chains to) they would wait for themselves:
+// they are refused instead (mjb_setSea returns 0 with the reason, mjb_detach
+// warns and does nothing). mjb_bindData, mjb_copyData and mjb_unbindData of
+// an mjData must not overlap a step of that same mjData; the read-only
+// queries (mjb_wrench, mjb_notices, ...) of an mjData read what its last
+// step left and belong on the thread that steps it.
 #ifndef MJBUOY_MJBUOY_H_
 #define MJBUOY_MJBUOY_H_
 
@@ -51,6 +65,8 @@ typedef struct mjbInfo_ {
 // vertices finite). Returns 1 if nothing is wrong (a missing or malformed
 // file is left to MuJoCo's loader), else 0 with the file, line and fix in
 // error (error_sz bytes). Every mjbuoy tool calls it before mj_loadXML.
+// It also warns (mju_warning) when the model sets <compiler angle="radian">
+// and has mjbuoy entries with angles, which are degrees regardless.
 MJB_API int mjb_checkModelFile(const char* xmlpath, char* error, int error_sz);
 
 // the same check of one .obj or .stl mesh file (other extensions: 1)
@@ -82,7 +98,9 @@ MJB_API void mjb_detach(mjbBuoy* b);
 // mju_warning saying so
 
 // per-mjData state is created on the first callback for d; call this right
-// after mj_makeData to allocate it up front instead (0 on failure).
+// after mj_makeData to allocate it up front instead (0 on failure: out of
+// memory; a failure in a callback gives d no force and one mju_warning).
+// Its size is bounded at attach (docs/robustness.md, "State").
 // The state knows its mjData by address plus a stamp: d->buffer, the
 // fwdVelocity count d->timer[mjTIMER_VELOCITY].number at the last callback
 // and d->time at the first callback of the last step. A new mjData at a recycled address, or d after
@@ -95,6 +113,23 @@ MJB_API int mjb_bindData(mjbBuoy* b, const mjData* d);
 // call right after mj_copyData(dst, m, src), which does not carry it, so
 // that dst continues exactly like src (1 on success, 0 on failure)
 MJB_API int mjb_copyData(mjbBuoy* b, mjData* dst, const mjData* src);
+
+// finite-difference derivatives: mjd_transitionFD steps one mjData again
+// and again from one state, and MuJoCo 2.2 does not put d->time back
+// between (or after) those steps, so each would see the waves later and
+// move mjbuoy's histories on (slamming, radiation memory, label guesses).
+// Between mjb_freezeData(b, d, 1) and mjb_freezeData(b, d, 0) every
+// callback for d computes from the state d had at the freeze, at the time
+// it had then, and leaves that state as it was: each perturbed step gives
+// what a fresh copy of d (mj_copyData + mjb_copyData) would. Unfreezing
+// continues from that state; set d->time back yourself. cpu backend only
+// (gl: 0). Returns 1, or 0 on failure. Usage:
+//   double t = d->time;
+//   mjb_freezeData(b, d, 1);
+//   mjd_transitionFD(m, d, eps, centered, A, B, C, D);
+//   mjb_freezeData(b, d, 0);
+//   d->time = t;
+MJB_API int mjb_freezeData(mjbBuoy* b, const mjData* d, int freeze);
 
 // forget d's state; call before mj_deleteData if the process will keep
 // stepping other mjData of the same model
@@ -203,8 +238,13 @@ typedef struct mjbSea_ {
   mjbWind wind;
 } mjbSea;
 
-// replace the sea state of an attached model between steps (not during
-// one): components, current and wind take effect in the next callback.
+// replace the sea state of an attached model between steps: it waits for
+// a callback of the model running on another thread, and is refused from
+// inside a callback (threads, above); components, current and wind take
+// effect in the next callback. Every value is checked against the ranges
+// the model file's entries have (docs/mjcf.md), and each spectrum against
+// the bounds of the sea it makes (Hs <= 50 m, Hs / Lp <= 1/7, no component
+// shorter than 5 cm: docs/robustness.md).
 // Density, level and depth stay the model's. Allocates nothing as long as
 // the total component count stays within the capacity reserved at attach
 // (the model's count, or mjbuoy.sea.capacity); more is an error. Returns 1,
@@ -218,6 +258,7 @@ MJB_API int mjb_setSea(mjbBuoy* b, const mjbSea* sea, char* error, int error_sz)
 MJB_API int mjb_waves(const mjbBuoy* b, double* out, int max);
 
 // wind speed vector at 10 m at time t [m/s] (mean plus gusts), 2 values
+// (v NULL: nothing; b NULL: zero)
 MJB_API void mjb_windVelocity(const mjbBuoy* b, mjtNum t, mjtNum v[2]);
 
 // ---- mooring lines (docs/mooring.md) ----

@@ -334,7 +334,7 @@ TEST(Spectra, TableSpectrum) {
   s.table = tab;
   s.ntable = 3;
   s.n = 128;
-  EXPECT_EQ(mjb::specCheck(s, ""), "");
+  EXPECT_EQ(mjb::specCheck(s, 9.81, ""), "");
   EXPECT_DOUBLE_EQ(mjb::specDensity(s, 0.75, kG), 1.0);
   std::vector<Wave> w = expand(s);
   double m0 = 0;

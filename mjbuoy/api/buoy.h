@@ -189,6 +189,8 @@ void guessWeights(double t, const double tk[3], int n, double L[3]);
 
 // allocate s for b
 void makeState(const Buoy& b, State* s);
+// about the bytes makeState allocates with nthreads cpu threads (cpustate.cc)
+size_t stateBytes(const Buoy& b, int nthreads);
 
 // the chunks the cpu backend cuts a hull of nt triangles into (cpu.cc):
 // fixed by nt alone, so results keep their bits for any thread count

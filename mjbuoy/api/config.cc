@@ -3,6 +3,7 @@
 #include "api/radconfig.h"
 #include "api/seaconfig.h"
 #include "api/moorconfig.h"
+#include "sea/seacheck.h"
 
 #include <fnmatch.h>
 
@@ -15,8 +16,8 @@ namespace mjb {
 
 static const char kPre[] = "mjbuoy.";
 
-// gravity magnitude [m/s^2] and the sum of the wave amplitudes [m] accepted
-static const double kMinG = 0.1, kMaxG = 100, kMaxAmp = 30;
+// gravity magnitude [m/s^2] accepted
+static const double kMinG = 0.1, kMaxG = 100;
 
 // one numeric field: name, value count, accepted range, unit, example
 struct Field {
@@ -56,16 +57,14 @@ static const Field kSlamParts[3] = {
   PART("gamma_max", 0.01, 1e6, false, "m/s^2"),
   PART("power", 0, 16, true, "dimensionless"),
 };
-static const Field kWaveParts[5] = {
-  PART("amplitude", 0, kMaxAmp, false, "m"),
-  PART("wavelength", 0.05, 1e6, false, "m"),
-  PART("direction", -360, 360, false, "deg"),
-  PART("phase", -360, 360, false, "deg"),
-  PART("steepness", 0, 1, false, "dimensionless"),
-};
+// waves and current: the ranges every entry shares (sea/seacheck.h)
+#define WPART(j) PART(kWaveRange[j].name, kWaveRange[j].lo, kWaveRange[j].hi, false, \
+                      kWaveRange[j].unit)
+static const Field kWaveParts[5] = {WPART(0), WPART(1), WPART(2), WPART(3), WPART(4)};
+#undef WPART
 static const Field kCurrentParts[2] = {
-  PART("x", -50, 50, false, "m/s"),
-  PART("y", -50, 50, false, "m/s"),
+  PART("x", kCurrentRange.lo, kCurrentRange.hi, false, "m/s"),
+  PART("y", kCurrentRange.lo, kCurrentRange.hi, false, "m/s"),
 };
 #undef PART
 
@@ -422,25 +421,19 @@ std::string parseConfig(const mjModel* m, Config* c) {
     }
   }
 
-  // the highest crest above level, level + sum A, stays a height a sea can have
-  double sumA = 0;
-  for (const Wave& w : c->sea.waves) sumA += w.amp;
-  if (sumA > kMaxAmp) {
-    return "mjbuoy: the waves' amplitudes add up to " + fmt(sumA) + " m, above " +
-           fmt(kMaxAmp) + " m (twice the amplitude of the highest ocean waves measured, about 15 m); lower the "
-           "amplitudes of the mjbuoy.wave.* and mjbuoy.airy.* entries";
-  }
-  std::string ex = parseSeaExtra(m, gid, c);
+  // the listed waves together: the highest crest above level, level + sum
+  // A, stays a height a sea can have, and the surface does not fold
+  double sum = 0, fold = 0;
+  for (const Wave& w : c->sea.waves) waveSums(w.amp, w.len, w.steep, &sum, &fold);
+  std::string ex = wavesCheck(sum, fold, "mjbuoy: ", "the mjbuoy.wave.* and mjbuoy.airy.* "
+                              "entries", "mjbuoy.wave.*");
+  if (!ex.empty()) return ex;
+  ex = parseSeaExtra(m, gid, c);
   if (!ex.empty()) return ex;
   ex = parseRadConfig(m, &c->rad);
   if (!ex.empty()) return ex;
   radiationDragDefaults(m, gid, c->rad, set, defSet, &par, &c->radDrag);
   c->sea.derive();
-  double q = c->sea.fold();
-  if (!(q < 1)) {
-    return "mjbuoy: the waves fold: sum over mjbuoy.wave.* of steepness * k * amplitude = " +
-           fmt(q) + " must be < 1 (k = 2 pi / wavelength); lower steepness or amplitude";
-  }
   if (m->opt.density > 0 || m->opt.viscosity > 0) {
     c->warn.push_back("<option density/viscosity> is nonzero: MuJoCo's own fluid forces act "
                       "on every body as well as mjbuoy's (double counting); set them to 0");

@@ -1,5 +1,6 @@
 // MuJoCo glue: public API, registry of attached models, mjcb_passive
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -22,6 +23,7 @@
 #include "api/moorconfig.h"
 #include "api/moorstep.h"
 #include "sea/wind.h"
+#include "util/fmt.h"
 
 using mjb::Buoy;
 using mjb::State;
@@ -29,6 +31,17 @@ using mjb::State;
 struct mjbBuoy_ {
   Buoy b;
   std::shared_mutex mu;                               // guards data
+  // held shared by each callback for its whole run, exclusive by what
+  // replaces or frees what a callback reads (mjb_setSea, setHydroCoef,
+  // mjb_detach): the threading contract of mjbuoy.h
+  std::shared_mutex run;
+  std::atomic<bool> toldAlloc{false};  // a state could not be allocated: warned
+  // mjData frozen by mjb_freezeData: their state and time then (guarded by mu)
+  struct Frozen {
+    State snap;
+    double t;
+  };
+  std::map<const mjData*, Frozen> frozen;
   std::map<const mjData*, std::unique_ptr<State>> data;
 };
 
@@ -50,7 +63,10 @@ std::vector<mjbBuoy*> gattached;
 // callback runs once per evaluation.
 std::vector<mjfGeneric> gchain;
 thread_local int gdepth = 0;
-mjfSensor gprevSensor = nullptr;  // mjcb_sensor found then, chained too
+// the mjcb_sensor chain, kept the same way: a user's sensor callback that
+// chains to mjbuoy's across detach and re-attach must not recurse
+std::vector<mjfSensor> gschain;
+thread_local int gsdepth = 0;
 
 mjbBuoy* find(const mjModel* m) {
   for (mjbBuoy* b : gattached) if (b->b.m == m) return b;
@@ -119,15 +135,22 @@ State* state(mjbBuoy* b, const mjData* d, bool create) {
   if (!s) {
     if (!create) return nullptr;
     std::unique_lock<std::shared_mutex> lk(b->mu);
-    auto& u = b->data[d];
-    if (!u) {
-      u = std::make_unique<State>();
-      mjb::makeState(b->b, u.get());
-      mjb::radMakeState(b->b.rad, &u->rad);
-      mjb::moorMakeState(b->b.moor, b->b.m->nbody, &u->moor);
-      u->buf = d->buffer;
+    // attach bounded its size (kMaxState); the allocation can still fail,
+    // here and not in MuJoCo's C frames: nullptr, which the callers report
+    try {
+      auto& u = b->data[d];
+      if (!u) {
+        u = std::make_unique<State>();
+        mjb::makeState(b->b, u.get());
+        mjb::radMakeState(b->b.rad, &u->rad);
+        mjb::moorMakeState(b->b.moor, b->b.m->nbody, &u->moor);
+        u->buf = d->buffer;
+      }
+      s = u.get();
+    } catch (const std::exception&) {
+      b->data.erase(d);
+      return nullptr;
     }
-    s = u.get();
   }
   if (stale(s, d)) renew(s, d);
   return s;
@@ -151,9 +174,45 @@ void applyFT(const mjModel* m, mjData* d, const mjtNum f[3], const mjtNum tq[3],
   }
 }
 
+// the frozen state back into s (same sizes: no allocation), but for what
+// describes d's qM as it is now, not history: radiation's stamp of the
+// added mass in it (radstep.cc), which a step from the velocity stage
+// (finite differences) would otherwise add a second time
+void thaw(State* s, State* snap) {
+  const long ms = s->rad.mstamp;
+  s->rad.mdiag.swap(snap->rad.mdiag);
+  *s = *snap;
+  s->rad.mstamp = ms;
+}
+
 // forces of one evaluation for an attached model
 void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
+  // frozen (mjb_freezeData): every call computes from the frozen state at
+  // the frozen time, so repeated steps of d (finite differences) see what
+  // a fresh copy of d would; d's time is put back on return
+  mjbBuoy::Frozen* fz = nullptr;
+  {
+    std::shared_lock<std::shared_mutex> lk(b->mu);
+    auto it = b->frozen.find(d);
+    if (it != b->frozen.end()) fz = &it->second;
+  }
+  struct Clock {
+    mjData* d;
+    double t;
+    ~Clock() { d->time = t; }
+  } clock{d, d->time};
+  if (fz) d->time = fz->t;
   State* s = state(b, d, true);
+  if (s && fz) thaw(s, &fz->snap);
+  if (!s) {
+    if (!b->toldAlloc.exchange(true)) {
+      mju_warning_i("mjbuoy: out of memory for an mjData's state (about %d MB): it gets no "
+                    "force from mjbuoy. Call mjb_bindData after mj_makeData to have it "
+                    "reported there; lower mjbuoy.threads or mjbuoy.sea.capacity",
+                    int(mjb::stateBytes(b->b, b->b.nthreads) >> 20));
+    }
+    return;
+  }
   if (b->b.gl) {
     mjb::glWrench(&b->b, m, d, s);
   } else {
@@ -210,11 +269,13 @@ void passive(const mjModel* m, mjData* d) {
   } depth;
   mjfGeneric next = nullptr;
   mjbBuoy* b;
+  std::shared_lock<std::shared_mutex> run;  // b stays whole until we return
   {
     std::shared_lock<std::shared_mutex> lk(gmu);
     int k = int(gchain.size()) - gdepth;
     if (k >= 0) next = gchain[k];
     b = gdepth == 1 ? find(m) : nullptr;
+    if (b) run = std::shared_lock<std::shared_mutex>(b->run);
   }
   if (next && next != passive) next(m, d);
   if (gdepth != 1) return;
@@ -231,12 +292,21 @@ void passive(const mjModel* m, mjData* d) {
 // user sensors: the user's callback first, then the ones mjbuoy binds
 // (sensor.cc), so a sensor bound to mjbuoy gets mjbuoy's value
 void sensorcb(const mjModel* m, mjData* d, int stage) {
-  if (gprevSensor) gprevSensor(m, d, stage);
+  struct Depth {
+    Depth() { gsdepth++; }
+    ~Depth() { gsdepth--; }
+  } depth;
+  mjfSensor next = nullptr;
   mjbBuoy* b;
+  std::shared_lock<std::shared_mutex> run;  // b stays whole until we return
   {
     std::shared_lock<std::shared_mutex> lk(gmu);
-    b = find(m);
+    int k = int(gschain.size()) - gsdepth;
+    if (k >= 0) next = gschain[k];
+    b = gsdepth == 1 ? find(m) : nullptr;
+    if (b) run = std::shared_lock<std::shared_mutex>(b->run);
   }
+  if (next && next != sensorcb) next(m, d, stage);
   if (!b || b->b.sensor.empty()) return;
   mjb::fillSensors(b->b, m, d, state(b, d, false), stage);
 }
@@ -252,11 +322,17 @@ void sensorcb(const mjModel* m, mjData* d, int stage) {
 // split among the threads instead (cpu.cc hullWrench)
 const int kParMin = 2000, kMaxAuto = 8, kChunks = 4;
 
+// the most one mjData's state may take [bytes]: its scratch grows with
+// threads x wave components x hull size (cpustate.cc stateBytes). Auto
+// threads stay within it; past it attach refuses, naming the settings
+const size_t kMaxState = size_t(1) << 30;
+
 void threads(Buoy* B) {
   int n = B->cfg.threads;
   if (n == 0) {
     n = int(B->face.size() / 3) >= kParMin ? mjb::usableCpus() : 1;
     n = std::max(1, std::min(n, kMaxAuto));
+    while (n > 1 && mjb::stateBytes(*B, n) > kMaxState) n--;
   }
   int parts = 0;
   for (const mjb::Hull& h : B->hull) parts += mjb::hullChunks(h.nt);
@@ -281,8 +357,65 @@ void threads(Buoy* B) {
   }
 }
 
+// the cost rule's warning (docs/robustness.md, "Sea"): a component many
+// times shorter than a hull's triangles adds almost nothing to the force
+// (its pressure averages out over each triangle) but costs each step series
+// terms and surface iterations in proportion to the wavelengths per
+// triangle. Named once, the shortest, against the longest hull edge
+void warnShortWaves(const Buoy& B, std::vector<std::string>* warn) {
+  const std::vector<mjb::Wave>& w = B.cfg.sea.waves;
+  if (w.empty() || B.face.empty()) return;
+  double e2 = 0;
+  int g = -1;
+  for (const mjb::Hull& h : B.hull) {
+    for (int t = h.t0; t < h.t0 + h.nt; t++) {
+      for (int j = 0; j < 3; j++) {
+        const double* p = &B.vert[3 * B.face[3 * t + j]];
+        const double* q = &B.vert[3 * B.face[3 * t + (j + 1) % 3]];
+        double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                    (p[2] - q[2]) * (p[2] - q[2]);
+        if (d2 > e2) e2 = d2, g = h.geom;
+      }
+    }
+  }
+  size_t k = 0;
+  for (size_t i = 1; i < w.size(); i++) if (w[i].len < w[k].len) k = i;
+  const double edge = std::sqrt(e2), kShortFactor = 8;
+  if (!(w[k].len * kShortFactor < edge)) return;
+  warn->push_back("a wave component of wavelength " + mjb::fmt(w[k].len) + " m is more than " +
+                  mjb::fmt(kShortFactor) + " times shorter than the longest edge (" +
+                  mjb::fmt(edge) + " m) of hull geom \"" + (B.m->names + B.m->name_geomadr[g]) +
+                  "\": its pressure averages out over each triangle while its cost per step "
+                  "grows with the wavelengths per triangle; remove it (mjbuoy.wave.*, "
+                  "mjbuoy.airy.*, a spectrum's range or tp), or refine the hull mesh if it matters");
+}
+
 void copyError(const std::string& e, char* error, int error_sz) {
   if (error && error_sz > 0) std::snprintf(error, error_sz, "%s", e.c_str());
+}
+
+// what replaces or frees a model's data waits for its callbacks to end, so
+// from inside one of mjbuoy's callbacks (or one it chains to) on this thread
+// it would wait for itself: refused, with the reason in error or a warning
+bool insideCallback(const char* what, char* error, int error_sz) {
+  if (gdepth == 0 && gsdepth == 0) return false;
+  std::string e = std::string("mjbuoy: ") + what + " was called from inside an mjcb_passive or "
+                  "mjcb_sensor callback; call it between steps (mjbuoy.h, threads); ignored";
+  if (error) copyError(e, error, error_sz);
+  else mju_warning_s("%s", e.c_str());
+  return true;
+}
+
+// every live handle of one model keeps the model's own "simple dof" flags
+// (radiation clears them): the last detach restores them, not the first.
+// Called with gmu held exclusively, before b joins gattached
+void shareSimple(mjbBuoy* b) {
+  for (mjbBuoy* o : gattached) {
+    if (o != b && o->b.m == b->b.m && !o->b.rad.simple0.empty()) {
+      if (!b->b.rad.simple0.empty()) b->b.rad.simple0 = o->b.rad.simple0;
+      return;
+    }
+  }
 }
 
 }  // namespace
@@ -409,9 +542,21 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
       B.cfg.backend = "cpu";
     }
   }
+  warnShortWaves(B, &warn);
   for (const std::string& w : warn) B.warnings += "mjbuoy: warning: " + w + "\n";
   if (B.cfg.backend == "cpu") threads(&B);
   e = mjb::parseSensors(&B);
+  size_t need = mjb::stateBytes(B, B.nthreads);
+  if (e.empty() && need > kMaxState) {
+    size_t tri = 0;
+    for (const mjb::Hull& h : B.hull) tri = std::max(tri, size_t(h.nt));
+    e = "mjbuoy: each mjData would need about " + std::to_string(need >> 20) + " MB of state, "
+        "above the " + std::to_string(kMaxState >> 20) + " MB mjbuoy allows (it grows with "
+        "threads x wave components x hull size: " + std::to_string(B.nthreads) + " thread(s), " +
+        std::to_string(B.wcap) + " components reserved, " + std::to_string(tri) +
+        " triangles in the largest hull); lower mjbuoy.threads, mjbuoy.sea.capacity or the "
+        "spectra's components, or coarsen the hull mesh";
+  }
   if (!e.empty()) {
     copyError(e, error, error_sz);
     mjb::restoreModel(m, B.rad);
@@ -429,9 +574,11 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
     mjcb_passive = passive;
   }
   if (gattached.empty() && mjcb_sensor != sensorcb) {
-    gprevSensor = mjcb_sensor;
+    if (!mjcb_sensor) gschain.clear();
+    gschain.push_back(mjcb_sensor);
     mjcb_sensor = sensorcb;
   }
+  shareSimple(out);
   gattached.push_back(out);
   return out;
 }
@@ -452,6 +599,8 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
 
 void mjb_detach(mjbBuoy* b) {
   if (!b) return;
+  if (insideCallback("mjb_detach", nullptr, 0)) return;
+  bool last;  // no other handle of this model is live
   {
     std::unique_lock<std::shared_mutex> lk(gmu);
     auto it = std::find(gattached.begin(), gattached.end(), b);
@@ -466,13 +615,17 @@ void mjb_detach(mjbBuoy* b) {
       mjcb_passive = gchain.back();
       gchain.pop_back();
     }
-    if (gattached.empty() && mjcb_sensor == sensorcb) {
-      mjcb_sensor = gprevSensor;
-      gprevSensor = nullptr;
+    if (gattached.empty() && mjcb_sensor == sensorcb && !gschain.empty()) {
+      mjcb_sensor = gschain.back();
+      gschain.pop_back();
     }
+    last = !find(b->b.m);
   }
+  // callbacks that found b before it left gattached end first; none starts
+  std::unique_lock<std::shared_mutex> wait(b->run);
+  wait.unlock();
   for (auto& kv : b->data) mjb::glFreeState(&b->b, kv.second.get());
-  mjb::restoreModel(b->b.m, b->b.rad);
+  if (last) mjb::restoreModel(b->b.m, b->b.rad);
   mjb::glFree(&b->b);
   mjb::poolFree(b->b.pool);
   delete b;
@@ -486,6 +639,7 @@ int mjb_bindData(mjbBuoy* b, const mjData* d) {
 void mjb_unbindData(mjbBuoy* b, const mjData* d) {
   if (!b) return;
   std::unique_lock<std::shared_mutex> lk(b->mu);
+  b->frozen.erase(d);
   auto it = b->data.find(d);
   if (it == b->data.end()) return;
   mjb::glFreeState(&b->b, it->second.get());
@@ -510,6 +664,30 @@ int mjb_copyData(mjbBuoy* b, mjData* dst, const mjData* src) {
   t->notices.reserve(s->notices.capacity());
   t->buf = dst->buffer;  // dst's counters and time are src's after mj_copyData
   return mjb::glCopyState(&b->b, t, s) ? 1 : 0;
+}
+
+int mjb_freezeData(mjbBuoy* b, const mjData* d, int freeze) {
+  if (!b || !d || b->b.gl) return 0;
+  if (!freeze) {
+    std::unique_lock<std::shared_mutex> lk(b->mu);
+    auto it = b->frozen.find(d);
+    if (it == b->frozen.end()) return 1;
+    auto st = b->data.find(d);
+    if (st != b->data.end()) thaw(st->second.get(), &it->second.snap);
+    b->frozen.erase(it);
+    return 1;
+  }
+  State* s = state(b, d, true);
+  if (!s) return 0;
+  try {
+    std::unique_lock<std::shared_mutex> lk(b->mu);
+    mjbBuoy::Frozen& f = b->frozen[d];
+    f.snap = *s;
+    f.t = d->time;
+  } catch (const std::exception&) {
+    return 0;
+  }
+  return 1;
 }
 
 const mjtNum* mjb_wrench(const mjbBuoy* b, const mjData* d) {
@@ -555,8 +733,10 @@ int mjb_setSea(mjbBuoy* b, const mjbSea* sea, char* error, int error_sz) {
     copyError("mjbuoy: mjb_setSea was given a NULL model or sea", error, error_sz);
     return 0;
   }
-  // no callback of this model may run meanwhile: its data lock, exclusive
-  std::unique_lock<std::shared_mutex> lk(b->mu);
+  if (insideCallback("mjb_setSea", error, error_sz)) return 0;
+  // a callback of this model running on another thread ends first, and no
+  // other starts until the sea is whole (mjbuoy.h, threads)
+  std::unique_lock<std::shared_mutex> lk(b->run);
   if (!mjb::setSea(&b->b, *sea, error, error_sz)) return 0;
   if (b->b.gl) mjb::glSetSea(&b->b);
   return 1;
@@ -573,6 +753,7 @@ int mjb_waves(const mjbBuoy* b, double* out, int max) {
 }
 
 void mjb_windVelocity(const mjbBuoy* b, mjtNum t, mjtNum v[2]) {
+  if (!v) return;
   v[0] = v[1] = 0;
   if (!b || !b->b.wind.par.on) return;
   double u = mjb::windSpeed(b->b.wind, t), dr = b->b.wind.par.w.dir * M_PI / 180;
@@ -586,17 +767,25 @@ mjtNum mjb_seaHeight(const mjbBuoy* b, mjtNum x, mjtNum y, mjtNum t) {
 
 std::string mjb::setHydroCoef(mjbBuoy* b, int body, const HydroCoef& c, double tmem) {
   if (!b) return "mjbuoy: setHydroCoef was given a NULL model";
-  // no callback of this model may run meanwhile: its data lock, exclusive
-  std::unique_lock<std::shared_mutex> lk(b->mu);
-  b->b.rad.conv = b->b.cfg.rad.conv;
-  std::copy(b->b.cfg.rad.roll, b->b.cfg.rad.roll + 2, b->b.rad.roll);
-  std::string e = setRadiation(b->b.m, body, c, tmem, &b->b.rad);
-  for (std::string& n : b->b.rad.note) b->b.warnings += "mjbuoy: warning: " + n + "\n";
-  b->b.rad.note.clear();
-  if (!e.empty()) return e;
-  // every mjData's history restarts with room for the new memory
-  for (auto& kv : b->data) radMakeState(b->b.rad, &kv.second->rad);
-  return "";
+  if (insideCallback("setHydroCoef", nullptr, 0)) return "mjbuoy: setHydroCoef inside a callback";
+  std::string e;
+  {
+    // no callback of this model may run meanwhile (mjbuoy.h, threads)
+    std::unique_lock<std::shared_mutex> run(b->run);
+    std::unique_lock<std::shared_mutex> lk(b->mu);
+    b->b.rad.conv = b->b.cfg.rad.conv;
+    std::copy(b->b.cfg.rad.roll, b->b.cfg.rad.roll + 2, b->b.rad.roll);
+    e = setRadiation(b->b.m, body, c, tmem, &b->b.rad);
+    for (std::string& n : b->b.rad.note) b->b.warnings += "mjbuoy: warning: " + n + "\n";
+    b->b.rad.note.clear();
+    // every mjData's history restarts with room for the new memory
+    if (e.empty()) for (auto& kv : b->data) radMakeState(b->b.rad, &kv.second->rad);
+  }
+  // the registry's lock after the model's: a callback takes them in the
+  // other order (the trampoline holds gmu while it takes run)
+  std::unique_lock<std::shared_mutex> g(gmu);
+  shareSimple(b);
+  return e;
 }
 
 const mjb::Buoy* mjb::buoyOf(const mjbBuoy* b) { return b ? &b->b : nullptr; }

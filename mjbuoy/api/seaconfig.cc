@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "api/config.h"
+#include "sea/seacheck.h"
 #include "sea/spectra.h"
 
 namespace mjb {
@@ -35,7 +36,7 @@ static const XField kSpecFields[] = {
   {"wind", 1, 0, 100, true, false, "m/s at 10 m", "15"},
   {"gamma", 1, 1, 10, false, false, "dimensionless", "3.3"},
   {"table", 0, 0, INFINITY, false, false, "pairs of omega rad/s and S m^2 s/rad", "0.5 0 0.8 1.2 1.5 0"},
-  {"direction", 1, -INFINITY, INFINITY, false, false, "deg", "0"},
+  {"direction", 1, kDirRange.lo, kDirRange.hi, false, false, "deg", "0"},
   {"spreading", 1, 0, 1000, false, false, "s of cos^2s, 0 = long-crested", "10"},
   {"components", 1, 1, 4096, false, true, "count", "64"},
   {"range", 2, 0, INFINITY, true, false, "rad/s, wmin wmax", "0.4 3"},
@@ -43,11 +44,11 @@ static const XField kSpecFields[] = {
 };
 
 static const XField kWindFields[] = {
-  {"speed", 1, 0, 100, false, false, "m/s, mean at 10 m", "10"},
-  {"direction", 1, -INFINITY, INFINITY, false, false, "deg, towards", "0"},
+  {"speed", 1, kWindSpeedRange.lo, kWindSpeedRange.hi, false, false, "m/s, mean at 10 m", "10"},
+  {"direction", 1, kDirRange.lo, kDirRange.hi, false, false, "deg, towards", "0"},
   {"density", 1, 0, INFINITY, true, false, "kg/m^3", "1.225"},
   {"drag", 2, 0, 10, false, false, "C_d per projected area, C_f per area", "1 0.002"},
-  {"gustcomponents", 1, 1, 1024, false, true, "count", "128"},
+  {"gustcomponents", 1, 1, kMaxGust, false, true, "count", "128"},
   {"seed", 1, 0, 9007199254740992.0, false, true, "whole number", "1"},
 };
 
@@ -144,7 +145,7 @@ static std::string specNumeric(const mjModel* m, int i, const char* field, SpecI
 }
 
 // the combination of fields a spectrum's type needs
-static std::string specComplete(const std::string& label, const SpecIn& in) {
+static std::string specComplete(const std::string& label, const SpecIn& in, double g) {
   std::string pre = "mjbuoy: spectrum \"" + label + "\" (mjbuoy.spectrum." + label + ".*): ";
   if (!in.typed) {
     return pre + "no type; add <text name=\"mjbuoy.spectrum." + label +
@@ -160,7 +161,7 @@ static std::string specComplete(const std::string& label, const SpecIn& in) {
   if (t != mjbSPEC_TABLE && !in.wind && !(in.hs && in.tp)) {
     return pre + "needs hs and tp" + std::string(t == mjbSPEC_PM ? " (or wind)" : "");
   }
-  return specCheck(in.s, pre.c_str());
+  return specCheck(in.s, g, pre.c_str());
 }
 
 static std::string windGeoms(const mjModel* m, const char* name, const char* text, Config* c) {
@@ -288,8 +289,12 @@ std::string parseSeaExtra(const mjModel* m, const std::vector<int>& hulls, Confi
     }
     if (!e.empty()) return e;
   }
+  if (c->wind.on) {
+    std::string e = windCheck(c->wind.w, "mjbuoy: mjbuoy.wind.*: ");
+    if (!e.empty()) return e;
+  }
   for (auto& kv : spec) {
-    std::string e = specComplete(kv.first, kv.second);
+    std::string e = specComplete(kv.first, kv.second, c->sea.g);
     if (!e.empty()) return e;
     size_t n0 = c->sea.waves.size();
     c->sea.waves.resize(n0 + kv.second.s.n);

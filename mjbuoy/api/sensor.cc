@@ -128,7 +128,7 @@ std::string bind(const Buoy& b, const char* name, const char* text, Sensor* out)
     }
     if (out->part < 0) {
       return at + ": \"" + w[1] + "\" is not a force family; use pressure, viscous, drag, "
-             "slam or damping, or plain \"wrench\" for the total";
+             "slam, damping or wind, or plain \"wrench\" for the total";
     }
   }
   if (m->sensor_dim[id] != q->dim) {

@@ -47,6 +47,19 @@ static size_t scratchSize(const Buoy& b) {
   return (n + 7) & ~size_t(7);
 }
 
+size_t stateBytes(const Buoy& b, int nthreads) {
+  const size_t nth = std::max(1, nthreads), nt = b.face.size() / 3, nv = b.vert.size() / 3;
+  const size_t nw = std::max(b.wcap, b.cfg.sea.waves.size());
+  size_t n = scratchSize(b) * nth * sizeof(double);     // scr
+  n += 4 * maxTris(b) * nth * sizeof(int);               // iscr
+  n += 10 * maxTris(b) * nth * sizeof(double);           // tri: area, c, n, u
+  n += hullChunks(int(maxTris(b))) * nth * sizeof(ChunkSum);
+  n += 2 * 3 * nt * sizeof(float);                       // curQ, prevQ
+  n += 4 * 2 * nv * sizeof(float) + nv * sizeof(double);  // label offsets, h
+  n += nw * (sizeof(WaveNow) + 16 * sizeof(double));     // wn, tab
+  return n;
+}
+
 void makeState(const Buoy& b, State* s) {
   size_t nt = b.face.size() / 3;
   s->wrench.assign(6 * b.m->nbody, 0);

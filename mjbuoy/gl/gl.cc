@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -58,6 +59,11 @@ struct GlBackend {
   // reports more (glWrench)
   std::vector<int> perm;
   double reach = 0;
+  // the reach each mjData's steps have raised it to (from reach0, the first
+  // guess): the buffers are redone for the data stepped when its reach is
+  // not the one they hold, so no mjData's results depend on another's
+  double reach0 = 0;
+  std::map<const State*, double> reachOf;
   int nfast = 0;
   int var = 0;                  // the sea's variant bits but kVSplit (seaUniforms)
   int vlocal = BUOY_VERT_LOCAL, local = BUOY_LOCAL, per = BUOY_PER, blocal = BUOY_BODY_LOCAL;
@@ -280,7 +286,7 @@ bool glMake(Buoy* b, std::string* err) {
   const int cap = std::max<int>(b->wcap, g->nwave);
   std::vector<GWave> wave(cap, GWave{});
   g->perm.assign(cap, 0);
-  g->reach = 1.25 * longestEdge(*b);  // a first guess; the steps raise it
+  g->reach = g->reach0 = 1.25 * longestEdge(*b);  // a first guess; the steps raise it
   g->phase.assign(g->nslot * std::max(cap, 1), 0);
   g->out.assign(g->nslot * 40, 0);
   g->nchunk = chunk.size();
@@ -442,10 +448,19 @@ void glSetSea(Buoy* b) {
 }
 
 void glFreeState(Buoy* b, State* s) {
-  if (!b->gl || !s->slambuf[0]) return;
-  GlCurrent cur(&b->gl->ctx);
-  b->gl->ctx.gl.DeleteBuffers(2, s->slambuf);
-  b->gl->ctx.gl.DeleteBuffers(1, &s->offbuf);
+  GlBackend* g = b->gl;
+  if (!g) return;
+  // one thread at a time in the context, as every other use of it
+  std::lock_guard<std::mutex> lk(g->mu);
+  g->reachOf.erase(s);
+  if (!s->slambuf[0]) return;
+  GlCurrent cur(&g->ctx);
+  // without the context current the names would delete another context's
+  // buffers: they are left to the context's end (glFree) instead
+  if (cur.ok()) {
+    g->ctx.gl.DeleteBuffers(2, s->slambuf);
+    g->ctx.gl.DeleteBuffers(1, &s->offbuf);
+  }
   s->slambuf[0] = s->slambuf[1] = s->offbuf = 0;
 }
 
@@ -474,6 +489,8 @@ bool glCopyState(Buoy* b, State* dst, const State* src) {
   GLsizeiptr n = GLsizeiptr(4 * sizeof(float)) * std::max(g->ntri, 1);
   GLsizeiptr no = GLsizeiptr(3 * 2 * sizeof(float)) * std::max(g->nvert, 1);
   if (!dst->slambuf[0]) makeStateBuffers(g, dst, n, false);
+  auto r = g->reachOf.find(src);
+  if (r != g->reachOf.end()) g->reachOf[dst] = r->second;
   for (int i = 0; i < 3; i++) {
     gl.BindBuffer(GL_COPY_READ_BUFFER, i < 2 ? src->slambuf[i] : src->offbuf);
     gl.BindBuffer(GL_COPY_WRITE_BUFFER, i < 2 ? dst->slambuf[i] : dst->offbuf);
@@ -591,11 +608,29 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   std::lock_guard<std::mutex> lk(g->mu);
   GlCurrent cur(&g->ctx);
   const GladGLContext& gl = g->ctx.gl;
-  if (!cur.ok()) return;
+  if (!cur.ok()) {
+    // no force from the water this call, said once; not the last call's
+    // wrench again (compute adds the wind to what is here)
+    std::fill(s->wrench.begin(), s->wrench.end(), 0.0);
+    std::fill(s->part.begin(), s->part.end(), 0.0);
+    static const char kLost[] = "mjbuoy: gl backend: the GL context could not be made current "
+                                "on this thread; no water force in this call\n";
+    if (s->notices.find(kLost) == std::string::npos) s->notices += kLost;
+    return;
+  }
 
   // per-data slamming history and label offsets, created on the first call for d
   if (!s->slambuf[0]) makeStateBuffers(g, s, GLsizeiptr(4 * sizeof(float)) * std::max(g->ntri, 1), true);
   int clock = stepClock(m, d, s);
+  // this data's reach (a restart starts from the first guess again, so a
+  // rerun repeats its bits); the wave buffers redone if they hold another's
+  auto ri = g->reachOf.find(s);
+  if (ri == g->reachOf.end()) ri = g->reachOf.emplace(s, g->reach0).first;  // with the buffers
+  if (clock == kRestart) ri->second = g->reach0;
+  if (ri->second != g->reach) {
+    g->reach = ri->second;
+    uploadWaves(g, b->cfg.sea);
+  }
   if (clock == kNewStep) s->slamcur ^= 1;
   labelGuess(g, s, clock, d->time);
   std::memset(s->bad.data(), 0, s->bad.size());
@@ -662,7 +697,7 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
       if (!s->bad[b->body[i]] && std::isfinite(r)) reach = std::max(reach, double(r));
     }
     if (reach <= g->reach || g->nwave == 0) break;
-    g->reach = 1.25 * reach;
+    g->reach = ri->second = 1.25 * reach;
     uploadWaves(g, b->cfg.sea);
   }
   for (int i = 0; i <= B_OFF; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);

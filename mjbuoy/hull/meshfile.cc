@@ -197,7 +197,18 @@ struct Walk {
   std::vector<std::string> meshes;
   std::string error;
   int depth = 0;
+  bool radian = false;    // <compiler angle="radian">
+  std::string angled;     // the first mjbuoy entry holding an angle [deg]
 };
+
+// does the mjbuoy entry hold an angle in degrees: a direction (of a
+// spectrum, the wind), or a listed wave (its direction and phase)
+bool holdsAngle(const char* name) {
+  if (std::strncmp(name, "mjbuoy.", 7)) return false;
+  size_t n = std::strlen(name);
+  return !std::strncmp(name + 7, "wave.", 5) || !std::strncmp(name + 7, "airy.", 5) ||
+         (n > 10 && !std::strcmp(name + n - 10, ".direction"));
+}
 
 void walk(const tinyxml2::XMLElement* e, Walk* w);
 
@@ -221,6 +232,11 @@ void walk(const tinyxml2::XMLElement* e, Walk* w) {
   if (!std::strcmp(name, "compiler")) {
     if (e->Attribute("assetdir") && w->meshdir.empty()) w->meshdir = e->Attribute("assetdir");
     if (e->Attribute("meshdir")) w->meshdir = e->Attribute("meshdir");
+    if (e->Attribute("angle")) w->radian = !std::strcmp(e->Attribute("angle"), "radian");
+  }
+  if (!std::strcmp(name, "numeric") && e->Attribute("name") && w->angled.empty() &&
+      holdsAngle(e->Attribute("name"))) {
+    w->angled = e->Attribute("name");
   }
   if (!std::strcmp(name, "mesh") && e->Attribute("file")) w->meshes.push_back(e->Attribute("file"));
   for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
@@ -253,6 +269,14 @@ int mjb_checkModelFile(const char* xmlpath, char* error, int error_sz) {
   if (!dir.empty() && dir.back() != '/') dir += '/';
   for (const std::string& f : w.meshes) {
     if (!mjb_checkMeshFile(join(dir, f).c_str(), error, error_sz)) return 0;
+  }
+  // MuJoCo converts the angles of its own attributes, never <custom> data,
+  // and mjModel keeps no trace of the unit: said here, where the file is read
+  if (w.radian && !w.angled.empty()) {
+    mju_warning_s("mjbuoy: the model sets <compiler angle=\"radian\">, but mjbuoy's angles "
+                  "are degrees whatever the compiler's unit (MuJoCo passes <custom> data "
+                  "through unconverted): <numeric name=\"%s\"> is read in degrees; give "
+                  "its angles in degrees (90, not 1.5708)", w.angled.c_str());
   }
   return 1;
 }

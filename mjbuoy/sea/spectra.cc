@@ -7,6 +7,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "sea/seacheck.h"
+
 namespace mjb {
 
 static const double kDeg = M_PI / 180;
@@ -80,6 +82,8 @@ void specRange(const mjbSpectrum& s, double g, double* wmin, double* wmax) {
   }
 }
 
+static const double kMaxHs = 50, kMaxSteep = 1.0 / 7;
+
 static std::string fmt(double v) {
   std::ostringstream o;
   o.precision(10);
@@ -92,7 +96,45 @@ static std::string bad(const std::string& where, const char* field, double v,
   return where + field + " = " + fmt(v) + " is out of range: it must be " + range;
 }
 
-std::string specCheck(const mjbSpectrum& s, const char* where) {
+// the sea a valid spectrum's components make (specExpand's range and
+// trapezoids): m0 [m^2], the peak frequency [rad/s]
+static void specMoment(const mjbSpectrum& s, double g, double* m0, double* wpk);
+
+// the bounds of the sea a spectrum makes, whatever its type (a table's
+// included): Hs = 4 sqrt(m0) within the hs range, the significant
+// steepness Hs / Lp (Lp = 2 pi g / wp^2, deep water) below the breaking
+// limit 1/7 of a single Stokes wave (Michell 1893), and the shortest
+// component (at wmax) no shorter than the shortest listed wave, 5 cm: a
+// shorter one is capillary, not gravity, and its cost per step grows as
+// (triangle size / wavelength)^2 (docs/robustness.md, "cost cliffs")
+template <class Where>
+static std::string seaCheck(const mjbSpectrum& s, double g, Where W) {
+  double m0, wp, wmin, wmax;
+  specMoment(s, g, &m0, &wp);
+  specRange(s, g, &wmin, &wmax);
+  double hs = 4 * std::sqrt(m0);
+  if (!(hs <= kMaxHs)) {
+    return W() + "makes a sea of Hs = 4 sqrt(m0) = " + fmt(hs) + " m, out of range: it must be "
+           "<= " + fmt(kMaxHs) + " m (the highest seas measured are about 20 m); lower " +
+           (s.type == mjbSPEC_TABLE ? "the table's S values" : "hs");
+  }
+  double lmin = 2 * M_PI * g / (wmax * wmax);
+  if (!(lmin >= kWaveRange[1].lo)) {
+    return W() + "has components as short as " + fmt(lmin) + " m (omega = " + fmt(wmax) +
+           " rad/s), below the 0.05 m of the shortest wave mjbuoy models (shorter waves are "
+           "capillary, and their cost per step explodes: docs/robustness.md); raise tp, or give "
+           "a range whose wmax is <= " + fmt(std::sqrt(2 * M_PI * g / kWaveRange[1].lo)) + " rad/s";
+  }
+  double lp = wp > 0 ? 2 * M_PI * g / (wp * wp) : INFINITY, steep = hs / lp;
+  if (!(steep <= kMaxSteep)) {
+    return W() + "makes a sea of Hs / Lp = " + fmt(steep) + " (Hs " + fmt(hs) +
+           " m, peak wavelength " + fmt(lp) + " m), steeper than the breaking limit 1/7; "
+           "lower hs (or S) or raise tp (a longer peak period)";
+  }
+  return "";
+}
+
+std::string specCheck(const mjbSpectrum& s, double g, const char* where) {
   // strings are built on the error paths only: mjb_setSea allocates nothing
   auto W = [&] { return std::string(where); };
   if (s.type < mjbSPEC_PM || s.type > mjbSPEC_TABLE) {
@@ -124,7 +166,9 @@ std::string specCheck(const mjbSpectrum& s, const char* where) {
       }
     }
   }
-  if (!std::isfinite(s.dir)) return W() + "direction = " + fmt(s.dir) + " is not finite [deg]";
+  if (!(s.dir >= -kDirRange.hi && s.dir <= kDirRange.hi)) {
+    return bad(W(), "direction", s.dir, ">= -360 and <= 360 [deg]");
+  }
   if (!(s.spread >= 0 && s.spread <= 1000)) {
     return bad(W(), "spreading", s.spread, ">= 0 and <= 1000 [dimensionless; 0 = long-crested]");
   }
@@ -137,7 +181,7 @@ std::string specCheck(const mjbSpectrum& s, const char* where) {
              " is out of range: it must be 0 < wmin < wmax, finite [rad/s] (or 0 0 for the default)";
     }
   }
-  return "";
+  return seaCheck(s, g, W);
 }
 
 // the spreading function's inverse distribution: the direction offset
@@ -195,6 +239,21 @@ static double invert(const double* F, double w0, double h, double e) {
   }
   double d = F[hi] - F[lo], f = d > 0 ? (e - F[lo]) / d : 0.5;
   return w0 + (lo + std::min(1.0, std::max(0.0, f))) * h;
+}
+
+static void specMoment(const mjbSpectrum& s, double g, double* m0, double* wpk) {
+  double wmin, wmax;
+  specRange(s, g, &wmin, &wmax);
+  const double h = (wmax - wmin) / kCdf;
+  double prev = specDensity(s, wmin, g), sum = 0, top = prev;
+  *wpk = wmin;
+  for (int j = 1; j <= kCdf; j++) {
+    double w = wmin + j * h, cur = specDensity(s, w, g);
+    sum += 0.5 * h * (prev + cur);
+    if (cur > top) top = cur, *wpk = w;
+    prev = cur;
+  }
+  *m0 = sum;
 }
 
 void specExpand(const mjbSpectrum& s, double g, double depth, Wave* out) {

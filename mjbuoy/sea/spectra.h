@@ -29,8 +29,11 @@ void specPeak(const mjbSpectrum& s, double g, double* wp, double* hs);
 // the frequency range the components cover [rad/s]
 void specRange(const mjbSpectrum& s, double g, double* wmin, double* wmax);
 
-// "" or an error naming where + the field, its value and accepted range
-std::string specCheck(const mjbSpectrum& s, const char* where);
+// "" or an error naming where + the field, its value and accepted range;
+// then the sea it makes (g [m/s^2]): Hs, steepness and shortest component
+// bounded (spectra.cc seaCheck). The one validator of a spectrum, for
+// MJCF and mjb_setSea alike
+std::string specCheck(const mjbSpectrum& s, double g, const char* where);
 
 // the spectrum's n components into out[0, n): random frequency inside each
 // of n equal bins, amplitude from the bin's energy, random phase and a
