@@ -221,12 +221,15 @@ def guarded(view, model, tmp):
     # in the first step, so MuJoCo resets the state (check_tools.py, diverge)
     light = os.path.join(tmp, "light.xml")
     open(light, "w").write(open(model).read().replace('mass="500"', 'mass="1e-7"'))
-    p = subprocess.run([view, light, "--exit-after", "1"], capture_output=True, text=True, timeout=300)
+    # in tmp, so a MUJOCO_LOG.TXT that other tests leave in the build's
+    # test folder cannot be taken for the viewer's
+    p = subprocess.run([view, light, "--exit-after", "1"], capture_output=True, text=True,
+                       timeout=300, cwd=tmp)
     print(p.stderr)
     check(p.returncode == 1 and "diverged" in p.stderr and "MuJoCo reset the state" in p.stderr,
           "a diverging scene: exit %d (want 1), says diverged and MuJoCo reset it" % p.returncode)
-    check(not os.path.exists(os.path.join(tmp, "MUJOCO_LOG.TXT")) and
-          not os.path.exists("MUJOCO_LOG.TXT"), "MuJoCo's warnings on stderr, no MUJOCO_LOG.TXT")
+    check(not os.path.exists(os.path.join(tmp, "MUJOCO_LOG.TXT")),
+          "MuJoCo's warnings on stderr, no MUJOCO_LOG.TXT")
     p = subprocess.run([view, model, "--screenshot", "0.1:/dev/full", "--exit-after", "0.2"],
                        capture_output=True, text=True, timeout=300, env=dict(os.environ, TMPDIR=tmp))
     print(p.stderr)
