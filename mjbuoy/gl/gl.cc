@@ -9,13 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "api/buoy.h"
 #include "gl/egl.h"
+#include "gl/gl.h"
 #include "gl/glprog.h"
 #include "gl/gltimer.h"
 #include "shared.h"
 #include "pipeline.h"
 #include "hull/rigid.h"
+#include "mjbuoy.h"
 
 namespace mjb {
 
@@ -147,7 +148,7 @@ static GWave gwave(const Wave& w, double depth, double reach) {
 static bool fastWave(const Wave& w, double reach) { return w.k * reach <= 2.0; }
 
 // the longest edge of any hull [m] (body frame)
-static double longestEdge(const Buoy& b) {
+static double longestEdge(const HullSet& b) {
   double e2 = 0;
   for (size_t t = 0; t + 2 < b.face.size(); t += 3) {
     for (int j = 0; j < 3; j++) {
@@ -185,7 +186,9 @@ static void uploadWaves(GlBackend* g, const Sea& sea) {
   trisUniform(g, "nfast", g->nfast);
 }
 
-bool glMake(Buoy* b, std::string* err) {
+bool glMake(const HullSet& hs, const Sea& sea, size_t wcap, GlBackend** out,
+            std::string* renderer, std::string* err) {
+  *out = nullptr;
   auto g = new GlBackend;
   if (!glCreate(&g->ctx, err)) {
     delete g;
@@ -200,8 +203,8 @@ bool glMake(Buoy* b, std::string* err) {
   }
   const GladGLContext& gl = g->ctx.gl;
   if (!groupSizes(g, err)) {
-    b->gl = g;
-    glFree(b);
+    *out = g;
+    glFree(out);
     return false;
   }
   std::string defs = "#define BUOY_VERT_LOCAL " + std::to_string(g->vlocal) +
@@ -220,20 +223,20 @@ bool glMake(Buoy* b, std::string* err) {
     GLuint& p = i == 2 * kNVar ? g->bprog : vert ? g->vprog[v] : g->tprog[v];
     p = glProgram(gl, kStage[i == 2 * kNVar ? kBodies : vert ? kVerts : kTris], err, d);
     if (!p) {
-      b->gl = g;
-      glFree(b);
+      *out = g;
+      glFree(out);
       return false;
     }
   }
 
   // static data: vertices, triangles, hulls, waves
-  const mjModel* m = b->m;
-  g->nvert = b->vert.size() / 3;
-  g->ntri = b->face.size() / 3;
-  g->nhull = b->hull.size();
-  g->nslot = b->body.size();
+  const mjModel* m = hs.m;
+  g->nvert = hs.vert.size() / 3;
+  g->ntri = hs.face.size() / 3;
+  g->nhull = hs.hull.size();
+  g->nslot = hs.body.size();
   std::vector<int> slot(m->nbody, -1);
-  for (int i = 0; i < g->nslot; i++) slot[b->body[i]] = i;
+  for (int i = 0; i < g->nslot; i++) slot[hs.body[i]] = i;
   std::vector<GVert> vert(g->nvert);
   std::vector<GTri> tri(g->ntri);
   std::vector<GHull> hull(g->nhull);
@@ -241,13 +244,13 @@ bool glMake(Buoy* b, std::string* err) {
   const int csize = g->local * g->per;
   g->body.assign(g->nslot, GBody{});
   for (int h = 0; h < g->nhull; h++) {
-    const Hull& hl = b->hull[h];
+    const Hull& hl = hs.hull[h];
     const HullParams& p = hl.par;
     for (int i = hl.v0; i < hl.v0 + hl.nv; i++) {
-      vert[i] = GVert{float(b->vert[3 * i]), float(b->vert[3 * i + 1]), float(b->vert[3 * i + 2]), h};
+      vert[i] = GVert{float(hs.vert[3 * i]), float(hs.vert[3 * i + 1]), float(hs.vert[3 * i + 2]), h};
     }
     for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-      tri[k] = GTri{b->face[3 * k], b->face[3 * k + 1], b->face[3 * k + 2], h};
+      tri[k] = GTri{hs.face[3 * k], hs.face[3 * k + 1], hs.face[3 * k + 2], h};
     }
     int s = slot[hl.body];
     hull[h].body = s;
@@ -274,13 +277,12 @@ bool glMake(Buoy* b, std::string* err) {
     bd.nh++;
     bd.nt += hl.nt;
   }
-  const Sea& sea = b->cfg.sea;
   g->nwave = sea.waves.size();
-  // room for b->wcap components, so mjb_setSea only rewrites (glSetSea)
-  const int cap = std::max<int>(b->wcap, g->nwave);
+  // room for wcap components, so mjb_setSea only rewrites (glSetSea)
+  const int cap = std::max<int>(wcap, g->nwave);
   std::vector<GWave> wave(cap, GWave{});
   g->perm.assign(cap, 0);
-  g->reach = 1.25 * longestEdge(*b);  // a first guess; the steps raise it
+  g->reach = 1.25 * longestEdge(hs);  // a first guess; the steps raise it
   g->phase.assign(g->nslot * std::max(cap, 1), 0);
   g->out.assign(g->nslot * 40, 0);
   g->nchunk = chunk.size();
@@ -297,8 +299,8 @@ bool glMake(Buoy* b, std::string* err) {
            " wave components (mjbuoy.sea.capacity, else the sea's count) = " +
            std::to_string(nexp) + " texels (two components each) exceed the driver's buffer texture size (" +
            std::to_string(tmax) + " texels); use fewer components or boats, or backend cpu";
-    b->gl = g;
-    glFree(b);
+    *out = g;
+    glFree(out);
     return false;
   }
   makeBuffer(g, B_EXP, std::max<size_t>(nexp, 1) * 16, nullptr, GL_DYNAMIC_COPY);
@@ -321,8 +323,8 @@ bool glMake(Buoy* b, std::string* err) {
     g->phasep = static_cast<float*>(mapped(B_PHASE, g->phase.size() * sizeof(float), wr));
     if (!g->bodyp || !g->phasep) {
       *err = "gl backend: could not map its per-step buffers (glMapBufferRange)";
-      b->gl = g;
-      glFree(b);
+      *out = g;
+      glFree(out);
       return false;
     }
     std::memcpy(g->bodyp, g->body.data(), g->nslot * sizeof(GBody));
@@ -346,8 +348,8 @@ bool glMake(Buoy* b, std::string* err) {
     *err = "gl backend: " + std::to_string(g->ntri) + " triangles and " +
            std::to_string(g->nvert) + " vertices exceed the driver's buffer texture size (" +
            std::to_string(tmax) + " texels); use backend cpu";
-    b->gl = g;
-    glFree(b);
+    *out = g;
+    glFree(out);
     return false;
   }
   const GLenum tfmt[kNTex] = {GL_RGBA32F, GL_RG32F,   GL_RGBA32I, GL_RGBA32F,
@@ -401,8 +403,8 @@ bool glMake(Buoy* b, std::string* err) {
   }
   timerInit(&g->timer, &gl);
   for (int i = 0; i < kNStage; i++) g->tstage[i] = timerStage(&g->timer, kStage[i]);
-  b->gl = g;
-  b->renderer = g->ctx.renderer;
+  *out = g;
+  *renderer = g->ctx.renderer;
   return true;
 }
 
@@ -428,12 +430,10 @@ static void seaUniforms(GlBackend* g, const Sea& sea) {
            (g->nwave == 1 ? kVOne : 0);
 }
 
-void glSetSea(Buoy* b) {
-  GlBackend* g = b->gl;
+void glSetSea(GlBackend* g, const Sea& sea) {
   if (!g) return;
   std::lock_guard<std::mutex> lk(g->mu);
   GlCurrent cur(&g->ctx);
-  const Sea& sea = b->cfg.sea;
   // within the capacity reserved in glMake (mjb_setSea checks): a rewrite,
   // no new GL object; uploaded in pieces from the stack
   g->nwave = sea.waves.size();
@@ -441,17 +441,17 @@ void glSetSea(Buoy* b) {
   seaUniforms(g, sea);
 }
 
-void glFreeState(Buoy* b, State* s) {
-  if (!b->gl || !s->slambuf[0]) return;
-  GlCurrent cur(&b->gl->ctx);
-  b->gl->ctx.gl.DeleteBuffers(2, s->slambuf);
-  b->gl->ctx.gl.DeleteBuffers(1, &s->offbuf);
+void glFreeState(GlBackend* g, GlState* s) {
+  if (!g || !s->slambuf[0]) return;
+  GlCurrent cur(&g->ctx);
+  g->ctx.gl.DeleteBuffers(2, s->slambuf);
+  g->ctx.gl.DeleteBuffers(1, &s->offbuf);
   s->slambuf[0] = s->slambuf[1] = s->offbuf = 0;
 }
 
 // s's per-data buffers, zeroed: the slamming history (n bytes each) and
 // the label offsets' ring
-static void makeStateBuffers(GlBackend* g, State* s, GLsizeiptr n, bool zero) {
+static void makeStateBuffers(GlBackend* g, GlState* s, GLsizeiptr n, bool zero) {
   const GladGLContext& gl = g->ctx.gl;
   const GLsizeiptr no = GLsizeiptr(3 * 2 * sizeof(float)) * std::max(g->nvert, 1);
   std::vector<char> z(zero ? std::max(n, no) : 0, 0);
@@ -464,8 +464,7 @@ static void makeStateBuffers(GlBackend* g, State* s, GLsizeiptr n, bool zero) {
   }
 }
 
-bool glCopyState(Buoy* b, State* dst, const State* src) {
-  GlBackend* g = b->gl;
+bool glCopyState(GlBackend* g, GlState* dst, const GlState* src) {
   if (!g || !src->slambuf[0]) return true;
   std::lock_guard<std::mutex> lk(g->mu);
   GlCurrent cur(&g->ctx);
@@ -483,8 +482,8 @@ bool glCopyState(Buoy* b, State* dst, const State* src) {
   return true;
 }
 
-void glFree(Buoy* b) {
-  GlBackend* g = b->gl;
+void glFree(GlBackend** out) {
+  GlBackend* g = *out;
   if (!g) return;
   {
     GlCurrent cur(&g->ctx);
@@ -498,16 +497,15 @@ void glFree(Buoy* b) {
   }
   glDestroy(&g->ctx);
   delete g;
-  b->gl = nullptr;
+  *out = nullptr;
 }
 
 // per-step body data, in double until the last moment: positions relative
 // to the COM, wave phases at the COM reduced mod 2 pi
-static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
-  GlBackend* g = b->gl;
-  const Sea& sea = b->cfg.sea;
+static void bodies(GlBackend* g, const HullSet& hs, const Sea& sea, const mjModel* m,
+                   const mjData* d, HullState* s) {
   for (int i = 0; i < g->nslot; i++) {
-    int bd = b->body[i];
+    int bd = hs.body[i];
     GBody& o = g->bodyp[i];
     const mjtNum* R = d->xmat + 9 * bd;
     const mjtNum* x = d->xpos + 3 * bd;
@@ -563,17 +561,17 @@ static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
 // takes the oldest's), a restart starts cold so a rerun repeats its bits.
 // Only the step's first call writes its slot, so an RK4 stage guesses from
 // the same steps as the step's first call
-static void labelGuess(GlBackend* g, State* s, int clock, double t) {
+static void labelGuess(GlBackend* g, HullState* s, GlState* gs, int clock, double t) {
   if (clock == kNewStep) {
-    s->offslot = (s->offslot + 2) % 3;
-    s->offn = std::min(s->offn + 1, 2);
+    gs->offslot = (gs->offslot + 2) % 3;
+    gs->offn = std::min(gs->offn + 1, 2);
     s->tgOld = s->tgOff;
     s->tgOff = s->tprev;
   }
-  if (clock == kRestart) s->offn = 0;
+  if (clock == kRestart) gs->offn = 0;
   const double tk[3] = {s->tgOff, s->tgOld, 0};
   double L[3];
-  guessWeights(t, tk, s->offn, L);
+  guessWeights(t, tk, gs->offn, L);
   const GladGLContext& gl = g->ctx.gl;
   for (int i = 0; i < kNVar; i++) {
     GLuint p = g->vprog[i];
@@ -581,25 +579,27 @@ static void labelGuess(GlBackend* g, State* s, int clock, double t) {
     gl.ProgramUniform1i(p, g->uvFirst[i], clock != kMidStep);
     gl.ProgramUniform2f(p, g->uvGw[i], float(L[0]), float(L[1]));
     for (int j = 0; j < 3; j++) {
-      gl.ProgramUniform1i(p, g->uvOff[i][j], g->nvert * ((s->offslot + j) % 3));
+      gl.ProgramUniform1i(p, g->uvOff[i][j], g->nvert * ((gs->offslot + j) % 3));
     }
   }
 }
 
-void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
-  GlBackend* g = b->gl;
+void glWrench(GlBackend* g, const HullSet& hs, const Sea& sea, const mjModel* m,
+              const mjData* d, HullState* s, GlState* gs) {
   std::lock_guard<std::mutex> lk(g->mu);
   GlCurrent cur(&g->ctx);
   const GladGLContext& gl = g->ctx.gl;
   if (!cur.ok()) return;
 
   // per-data slamming history and label offsets, created on the first call for d
-  if (!s->slambuf[0]) makeStateBuffers(g, s, GLsizeiptr(4 * sizeof(float)) * std::max(g->ntri, 1), true);
+  if (!gs->slambuf[0]) {
+    makeStateBuffers(g, gs, GLsizeiptr(4 * sizeof(float)) * std::max(g->ntri, 1), true);
+  }
   int clock = stepClock(m, d, s);
-  if (clock == kNewStep) s->slamcur ^= 1;
-  labelGuess(g, s, clock, d->time);
+  if (clock == kNewStep) gs->slamcur ^= 1;
+  labelGuess(g, s, gs, clock, d->time);
   std::memset(s->bad.data(), 0, s->bad.size());
-  bodies(b, m, d, s);
+  bodies(g, hs, sea, m, d, s);
 
   if (!g->persist) {
     gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_BODY]);
@@ -612,9 +612,9 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     if (g->buf[i] && i != B_EXP) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, g->buf[i]);
   }
   gl.BindImageTexture(0, g->tex[4], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_OFF, s->offbuf);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, gs->slambuf[gs->slamcur ^ 1]);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, gs->slambuf[gs->slamcur]);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_OFF, gs->offbuf);
   for (int i = 0; i < kNVar; i++) {
     GLuint p = g->tprog[i];
     if (!p) continue;
@@ -659,11 +659,11 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     double reach = 0;
     for (int i = 0; i < g->nslot; i++) {
       float r = g->out[40 * i + 3];
-      if (!s->bad[b->body[i]] && std::isfinite(r)) reach = std::max(reach, double(r));
+      if (!s->bad[hs.body[i]] && std::isfinite(r)) reach = std::max(reach, double(r));
     }
     if (reach <= g->reach || g->nwave == 0) break;
     g->reach = 1.25 * reach;
-    uploadWaves(g, b->cfg.sea);
+    uploadWaves(g, sea);
   }
   for (int i = 0; i <= B_OFF; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
   gl.BindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -677,9 +677,9 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   const int nb6 = 6 * m->nbody;
   std::memset(s->part.data(), 0, s->part.size() * sizeof(double));
   for (int i = 0; i < g->nslot; i++) {
-    int bd = b->body[i];
+    int bd = hs.body[i];
     if (s->bad[bd]) continue;
-    for (int p = 0; p < mjbPART_WIND; p++) {  // the water families; wind: wind.cc
+    for (int p = 0; p < mjbPART_WIND; p++) {  // the water families; wind: hull/windload.cc
       double* w = s->part.data() + p * nb6 + 6 * bd;
       const float* o = g->out.data() + 40 * i + 8 * p;
       for (int j = 0; j < 3; j++) {
@@ -688,15 +688,14 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
       }
     }
   }
-  finishWrench(*b, m, d, s);
+  finishWrench(hs, m, d, s);
 }
 
 }  // namespace mjb
 
 namespace mjb {
 
-int glStageTimes(Buoy* b, const char** name, double* ms, int n) {
-  GlBackend* g = b->gl;
+int glStageTimes(GlBackend* g, const char** name, double* ms, int n) {
   if (!g) return 0;
   std::lock_guard<std::mutex> lk(g->mu);
   {
