@@ -281,25 +281,12 @@ void copyError(const std::string& e, char* error, int error_sz) {
   if (error && error_sz > 0) std::snprintf(error, error_sz, "%s", e.c_str());
 }
 
-}  // namespace
-
-mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz) {
-  copyError("", error, error_sz);
-  if (!m) {
-    copyError("mjbuoy: mjb_attach was given a NULL model", error, error_sz);
-    return nullptr;
-  }
-  auto b = std::make_unique<mjbBuoy>();
-  Buoy& B = b->b;
-  B.m = m;
-  std::string e = mjb::parseConfig(m, &B.cfg);
-  if (e.empty() && backend) e = mjb::setBackend(backend, "the backend argument", &B.cfg);
-  if (!e.empty()) {
-    copyError(e, error, error_sz);
-    return nullptr;
-  }
-
-  // hulls grouped by body so each body's triangles are contiguous
+// the hull set of B.m from B.cfg: each hull geom's mesh, grouped by body
+// so each body's triangles are contiguous, its triangle areas, mass share
+// and bounding radius; "" or the error
+std::string makeHulls(Buoy* b) {
+  Buoy& B = *b;
+  const mjModel* m = B.m;
   std::vector<int> order = B.cfg.geom;
   std::stable_sort(order.begin(), order.end(), [&](int a, int c) {
     return m->geom_bodyid[a] < m->geom_bodyid[c];
@@ -308,10 +295,7 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
   for (int g : order) {
     size_t k = std::find(B.cfg.geom.begin(), B.cfg.geom.end(), g) - B.cfg.geom.begin();
     std::string se = mjb::sizeError(m, g);
-    if (!se.empty()) {
-      copyError(se, error, error_sz);
-      return nullptr;
-    }
+    if (!se.empty()) return se;
     mjb::Mesh mesh = mjb::hullMesh(m, g, &warn);
     mjb::Hull h;
     h.geom = g;
@@ -340,11 +324,9 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
       h.area += B.tarea.back();
     }
     if (!(h.area > 0)) {
-      copyError(std::string("mjbuoy: hull geom \"") + (m->names + m->name_geomadr[g]) +
-                    "\" has no surface area (no faces, or all faces degenerate); "
-                    "give it a closed triangle mesh",
-                error, error_sz);
-      return nullptr;
+      return std::string("mjbuoy: hull geom \"") + (m->names + m->name_geomadr[g]) +
+             "\" has no surface area (no faces, or all faces degenerate); "
+             "give it a closed triangle mesh";
     }
     B.vert.insert(B.vert.end(), mesh.v.begin(), mesh.v.end());
     for (int i : mesh.f) B.face.push_back(i + h.v0);
@@ -367,6 +349,54 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     h.rad = 0;
     for (int i = h.v0; i < h.v0 + h.nv; i++) h.rad = std::max(h.rad, mju_norm3(&B.vert[3 * i]));
   }
+  return "";
+}
+
+// the backend B->cfg.backend asks for: gl when asked (or, with auto, when
+// an EGL display with GL >= 4.3 compute is there), else cpu with a
+// notice; "" or the error when gl is required and not available
+std::string chooseBackend(Buoy* b) {
+  Buoy& B = *b;
+  B.renderer = "CPU";
+  if (B.cfg.backend == "cpu") return "";
+  std::string ge;
+  if (!B.hull.empty() && mjb::glMake(B, B.cfg.sea, B.wcap, &B.gl, &B.renderer, &ge)) {
+    B.cfg.backend = "gl";
+  } else if (B.cfg.backend == "gl" && !B.hull.empty()) {
+    return "mjbuoy: backend gl is not available: " + ge +
+           "; use backend cpu or auto (docs/mjcf.md)";
+  } else {
+    if (!B.hull.empty()) {
+      B.cfg.warn.push_back("backend auto: no usable GL (" + ge + "); running on cpu");
+    }
+    B.cfg.backend = "cpu";
+  }
+  return "";
+}
+
+}  // namespace
+
+mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz) {
+  copyError("", error, error_sz);
+  if (!m) {
+    copyError("mjbuoy: mjb_attach was given a NULL model", error, error_sz);
+    return nullptr;
+  }
+  auto b = std::make_unique<mjbBuoy>();
+  Buoy& B = b->b;
+  B.m = m;
+  std::string e = mjb::parseConfig(m, &B.cfg);
+  if (e.empty() && backend) e = mjb::setBackend(backend, "the backend argument", &B.cfg);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    return nullptr;
+  }
+
+  e = makeHulls(&B);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    return nullptr;
+  }
   // room for mjb_setSea, and the wind's surfaces
   B.wcap = std::max<size_t>(B.cfg.capacity, B.cfg.sea.waves.size());
   B.cfg.sea.waves.reserve(B.wcap);
@@ -382,24 +412,14 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     mjb::restoreModel(m, B.rad);
     return nullptr;
   }
-  // gl: required; auto: gl when an EGL display with GL >= 4.3 compute is
-  // there, else cpu with a notice
-  B.renderer = "CPU";
-  if (B.cfg.backend != "cpu") {
-    std::string ge;
-    if (!B.hull.empty() && mjb::glMake(B, B.cfg.sea, B.wcap, &B.gl, &B.renderer, &ge)) {
-      B.cfg.backend = "gl";
-    } else if (B.cfg.backend == "gl" && !B.hull.empty()) {
-      copyError("mjbuoy: backend gl is not available: " + ge +
-                    "; use backend cpu or auto (docs/mjcf.md)", error, error_sz);
-      mjb::restoreModel(m, B.rad);
-      return nullptr;
-    } else {
-      if (!B.hull.empty()) warn.push_back("backend auto: no usable GL (" + ge + "); running on cpu");
-      B.cfg.backend = "cpu";
-    }
+  // gl: required; auto: gl when there, else cpu with a notice
+  e = chooseBackend(&B);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    mjb::restoreModel(m, B.rad);
+    return nullptr;
   }
-  for (const std::string& w : warn) B.warnings += "mjbuoy: warning: " + w + "\n";
+  for (const std::string& w : B.cfg.warn) B.warnings += "mjbuoy: warning: " + w + "\n";
   if (B.cfg.backend == "cpu") threads(&B);
   e = mjb::parseSensors(&B);
   if (!e.empty()) {
