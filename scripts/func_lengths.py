@@ -30,7 +30,6 @@ KNOWN = {
     ('mjbuoy/api/radattach.cc', 'solveGroup'),
     ('mjbuoy/api/radattach.cc', 'attachRadiation'),
     ('mjbuoy/cpu/trivec_kern.h', 'cutChunk'),
-    ('mjbuoy/hull/hull.cc', 'repair'),
     ('mjbuoy/radiation/panel.cc', 'panelSolve'),
     ('mjbuoy/radiation/panel.cc', 'solveOmega'),
     ('mjbuoy/radiation/panelmesh.cc', 'hullPanels'),
