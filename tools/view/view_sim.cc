@@ -108,13 +108,20 @@ std::string describeSea(const mjModel* m) {
     std::snprintf(buf, sizeof(buf), "calm, level %g m", c.sea.level);
   } else {
     double amax = 0, lmin = 1e300, lmax = 0;
+    size_t ngerstner = 0;  // the rest are linear (Airy) components, e.g. of spectra
     for (const mjb::Wave& w : c.sea.waves) {
       amax = std::fmax(amax, w.amp);
       lmin = std::fmin(lmin, w.len);
       lmax = std::fmax(lmax, w.len);
+      ngerstner += w.kind == 0;
     }
-    std::snprintf(buf, sizeof(buf), "%zu Gerstner wave%s, A <= %g m, lambda %g-%g m",
-                  c.sea.waves.size(), c.sea.waves.size() > 1 ? "s" : "", amax, lmin, lmax);
+    const size_t n = c.sea.waves.size(), nlinear = n - ngerstner;
+    std::string kinds = !nlinear ? "Gerstner" : !ngerstner ? "linear" :
+                        std::to_string(ngerstner) + " Gerstner, " + std::to_string(nlinear) +
+                        " linear";
+    if (nlinear && ngerstner) kinds = "(" + kinds + ")";
+    std::snprintf(buf, sizeof(buf), "%zu %s wave component%s, A <= %g m, lambda %g-%g m", n,
+                  kinds.c_str(), n > 1 ? "s" : "", amax, lmin, lmax);
   }
   std::string s = buf;
   if (c.sea.current[0] != 0 || c.sea.current[1] != 0) {
