@@ -5,32 +5,11 @@
 #include <cmath>
 
 #include "util/fmt.h"
+#include "util/stepclock.h"
 
 namespace mjb {
 
 namespace {
-
-enum { kSame = 0, kNew, kRestart, kMid };
-
-// the lines' step clock, as the radiation memory's (radstep.cc): a call at
-// least 3/4 of a step after the current step's time opens a new step, a
-// call at that time repeats it, one in between is an RK4 stage; time going
-// back or the step counter dropping restarts
-int clock(const mjModel* m, const mjData* d, MoorState* s) {
-  long k = d->timer[mjTIMER_STEP].number;
-  int r;
-  if (s->key < 0 || k < s->key || d->time < s->tcur) {
-    r = kRestart;
-  } else if (d->time - s->tcur >= 0.75 * m->opt.timestep) {
-    r = kNew;
-  } else {
-    s->key = k;
-    return d->time == s->tcur ? kSame : kMid;
-  }
-  s->key = k;
-  s->tcur = d->time;
-  return r;
-}
 
 // an end's position and velocity now [m, m/s]
 void endNow(const mjModel* m, const mjData* d, const LineEnd& n, double e[6]) {
@@ -75,7 +54,7 @@ void moorRestart(MoorState* s) {
 void moorStep(const Mooring& mo, const Sea& sea, const mjModel* m, const mjData* d,
               MoorState* s, std::string* notices) {
   const double t0 = s->tcur;
-  const int r = clock(m, d, s);
+  const int r = stepTick(m, d, s);
   // the water at the nodes is taken 32 times per period of the shortest
   // wave and carried on by its acceleration in between (docs/mooring.md)
   double crest = sea.level, omax = 0;
@@ -87,12 +66,12 @@ void moorStep(const Mooring& mo, const Sea& sea, const mjModel* m, const mjData*
     LineState& ls = s->ls[i];
     double e[2][6];
     for (int k = 0; k < 2; k++) endNow(m, d, L.end[k], e[k]);
-    if (r == kRestart) {
+    if (r == kTickRestart) {
       s->bad[i] = 0;
       lineRest(w, L.line, e[0], e[1], &ls);
       std::copy(e[0], e[0] + 6, ls.end0);
       std::copy(e[1], e[1] + 6, ls.end1);
-    } else if (r == kNew && !s->bad[i]) {
+    } else if (r == kTickNew && !s->bad[i]) {
       lineStep(w, L.line, t0, d->time - t0, e[0], e[1], &ls);
       if (!finite(ls)) {
         s->bad[i] = 1;

@@ -38,7 +38,7 @@ struct MoorState {
   std::vector<double> tend, fend;
   std::vector<char> told;       // per line: overload named (1), non-finite named (2)
   std::vector<char> bad;        // per line: its state is not finite (no force)
-  long key = -1;                // the step clock, as the radiation memory's
+  long key = -1;                // the step clock (util/stepclock.h)
   double tcur = 0;
 };
 

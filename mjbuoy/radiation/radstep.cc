@@ -7,33 +7,12 @@
 
 #include "radiation/radiation.h"
 #include "sea/sea.h"
+#include "util/stepclock.h"
 #include "util/vmath.h"
 
 namespace mjb {
 
 namespace {
-
-enum { kSame = 0, kNew, kRestart, kMid };
-
-// the memory's step clock, as the slamming history's (docs/physics.md
-// section 7): a call at least 3/4 of a step after the current step's time
-// opens a new step, a call at that time repeats it, one in between is an
-// RK4 stage; time going back or the step counter dropping restarts
-int clock(const mjModel* m, const mjData* d, RadState* s) {
-  long k = d->timer[mjTIMER_STEP].number;
-  int r;
-  if (s->key < 0 || k < s->key || d->time < s->tcur) {
-    r = kRestart;
-  } else if (d->time - s->tcur >= 0.75 * m->opt.timestep) {
-    r = kNew;
-  } else {
-    s->key = k;
-    return d->time == s->tcur ? kSame : kMid;
-  }
-  s->key = k;
-  s->tcur = d->time;
-  return r;
-}
 
 void cross(const double* a, const double* b, double* c) {
   c[0] = a[1] * b[2] - a[2] * b[1];
@@ -215,9 +194,9 @@ void relative(const mjtNum* R, const double U[3], double nu[6], double bias[6]) 
 // factor at the last step's time and this step's (ss[0], ss[1], kept
 // here); an RK4 stage takes its slope from the step's start at tcur
 double immRate(int tick, double si, double t, double tcur, double h, double* ss) {
-  if (tick == kRestart) ss[0] = ss[1] = si;
-  if (tick == kNew) ss[0] = ss[1];
-  if (tick == kMid) return t > tcur ? (si - ss[1]) / (t - tcur) : 0;
+  if (tick == kTickRestart) ss[0] = ss[1] = si;
+  if (tick == kTickNew) ss[0] = ss[1];
+  if (tick == kTickMid) return t > tcur ? (si - ss[1]) / (t - tcur) : 0;
   ss[1] = si;
   return (ss[1] - ss[0]) / h;
 }
@@ -291,17 +270,17 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
                    std::string* notices, Pool* pool) {
   const double cur[3] = {sea.current[0], sea.current[1], 0};
   if (r.rb.empty()) return;
-  const int tick = clock(m, d, s);
+  const int tick = stepTick(m, d, s);
   // the step in force: another than at attach is followed or noted
   const double h = m->opt.timestep;
   const bool moved = h != r.dt;
   if (moved) timestepMoved(r, m, h, s, notices);
-  if (tick == kRestart) {
+  if (tick == kTickRestart) {
     s->head = 0;
     s->count = 0;
   }
-  if (tick == kNew) s->head = (s->head + 1) % r.nh;
-  if (tick == kNew || tick == kRestart) s->count = std::min(s->count + 1, r.nh);
+  if (tick == kTickNew) s->head = (s->head + 1) % r.nh;
+  if (tick == kTickNew || tick == kTickRestart) s->count = std::min(s->count + 1, r.nh);
   // qM is rebuilt by every mj_fwdPosition; a second callback after the same
   // one (mj_forwardSkip from the velocity stage) finds A_inf in it already
   const long pos = d->timer[mjTIMER_POSITION].number;
@@ -310,7 +289,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
   bool addM = pos != s->mstamp;
   for (size_t ib = 0; ib < r.rb.size() && !addM; ib++)
     addM = !(diagSum(m, d, r.rb[ib]) == s->mdiag[ib]);
-  if (tick != kMid && !moved) preParts(r, s, pool);
+  if (tick != kTickMid && !moved) preParts(r, s, pool);
   for (size_t ib = 0; ib < r.rb.size(); ib++) {
     const RadBody& rb = r.rb[ib];
     const int n = rb.dof.size();
@@ -367,14 +346,14 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
     // memory: the step's first call records nu and evaluates the convolution
     double* fm = s->fmem.data() + 6 * ib;
     double* hist = s->hist.data() + 6 * r.nh * ib;
-    if (rb.ss.size() && tick != kMid) {
+    if (rb.ss.size() && tick != kTickMid) {
       // state-space memory (radss.cc), on the same clock as the history
       SsState st{s->ssX.data() + rb.soff, s->ssPw.data() + rb.soff, s->ssNu.data() + 12 * ib,
                  s->ssNu.data() + 12 * ib + 6};
       const cplx* lam = moved ? s->ssLam.data() + rb.soff : nullptr;
-      if (tick == kRestart) {
+      if (tick == kTickRestart) {
         ssRestart(rb.ss, st, nu);
-      } else if (tick == kNew) {
+      } else if (tick == kTickNew) {
         ssNew(rb.ss, st, nu, lam);
       } else {
         ssSame(st, nu, s->count == 1);
@@ -382,7 +361,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
       ssForce(rb.ss, st, h, fm, lam);
     } else if (rb.nk && moved) {
       std::memset(fm, 0, 6 * sizeof(double));
-    } else if (rb.nk && tick != kMid) {
+    } else if (rb.nk && tick != kTickMid) {
       for (int j = 0; j < 6; j++) hist[r.nh * j + s->head] = nu[j];
       memoryFrom(rb, hist, r.nh, s->head, convSamples(rb, s->count), r.dt,
                  s->pre.data() + 3 * s->poff[ib], fm);
