@@ -859,22 +859,24 @@ TEST(RadAttach, BodyTooHeavyToFloatKeepsItsInitialPose) {
   EXPECT_NE(w.find("it sinks"), std::string::npos) << w;
 }
 
-TEST(RadAttach, BodyOnASlideJointKeepsItsInitialPose) {
-  // a body on a joint other than free floats where its joints hold it,
-  // which attach does not solve: the floating box on a vertical slide
-  // started 0.2 m high keeps the wet surface of qpos0 (draft 0.1 m), as
-  // the free box too heavy to float does there, and not that of its draft
-  // T (A33_inf grows with the draft: more than 1% apart)
+TEST(RadAttach, BodyOnASlideJointFloatsAtItsDraft) {
+  // a body on slide and hinge joints is posed at its equilibrium along
+  // them (docs/physics.md section 14, "Equilibrium along joints"): the
+  // floating box on a vertical slide started 0.2 m high floats at its
+  // draft T (Archimedes, as the free box), so its coefficients are those
+  // of the free box at T, and not those of qpos0 (draft 0.1 m; the heavy
+  // box, which cannot float, keeps that pose: A33_inf grows with the
+  // draft, more than 1% apart)
   const double z = 0.4 - kBoxT + 0.2, mass = kRho * 2 * 1 * kBoxT;
   std::vector<double> slide, heavy, atT;
   std::string w;
   eqBoxCoef(z, mass, &slide, &w, "<joint type=\"slide\" axis=\"0 0 1\"/>");
   EXPECT_EQ(w.find("equilibrium"), std::string::npos) << w;
-  eqBoxCoef(z, 2.5 * kRho * 2 * 1 * 0.8, &heavy, &w);
-  expectSameCoef(heavy, slide, "slide");
   eqBoxCoef(0.4 - kBoxT, mass, &atT, &w);
-  ASSERT_EQ(atT.size(), slide.size());
-  EXPECT_GT(std::fabs(atT[14] - slide[14]), 0.01 * atT[14]);
+  expectSameCoef(atT, slide, "slide");
+  eqBoxCoef(z, 2.5 * kRho * 2 * 1 * 0.8, &heavy, &w);
+  ASSERT_EQ(heavy.size(), slide.size());
+  EXPECT_GT(std::fabs(heavy[14] - slide[14]), 0.01 * heavy[14]);
 }
 
 // the drag a group gets when radiation on by default skips it at attach

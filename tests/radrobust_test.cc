@@ -287,9 +287,10 @@ TEST(RadRobust, PanelMemoryIsEstimatedBeforeAllocating) {
   }
 }
 
-// advice to refine the panels names the panel budget too: a refined hull
-// above mjbuoy.radiation.panels is coarsened back to it, so raising
-// mjbuoy.radiation.refine alone changes nothing. The case: a 2 x 1 m box
+// advice to refine the panels names the panel budget and the value to
+// set: a refined hull above an explicit mjbuoy.radiation.panels is
+// coarsened back to it, so raising mjbuoy.radiation.refine alone changes
+// nothing. The case: a 2 x 1 m box
 // of 500 kg in water of density 1e5 floats at 500 / (1e5 x 2) = 2.5 mm,
 // which its 12-triangle mesh's metre-wide panels do not resolve (A_inf
 // indefinite, the error of RobustLimits.DensestWaterWithRadiationNamesThe
@@ -310,7 +311,10 @@ TEST(RadRobust, RefineAdviceNamesThePanelBudget) {
   std::string err = e;
   EXPECT_NE(err.find("not positive semi-definite"), std::string::npos) << err;
   EXPECT_NE(err.find("mjbuoy.radiation.refine"), std::string::npos) << err;
-  EXPECT_NE(err.find("mjbuoy.radiation.panels (now 300"), std::string::npos) << err;
+  // the value to set: a refine level up quadruples the panels, so the
+  // budget must hold 4 x 300
+  EXPECT_NE(err.find("set <numeric name=\"mjbuoy.radiation.panels\" data=\"1200\"/> (now 300"),
+            std::string::npos) << err;
   if (b) mjb_detach(b);
   mj_deleteModel(m);
 }

@@ -232,11 +232,11 @@ TEST(RobustModel, HingedArmSettlesAtTheAnalyticAngle) {
   EXPECT_NEAR(a, th, 0.005 * th) << "analytic " << th * 180 / M_PI << " deg";
 }
 
-TEST(RobustModel, DefaultRadiationSkipsHingedHulls) {
+TEST(RobustModel, DefaultRadiationCoversHingedHulls) {
   // radiation on by default (no mjbuoy.radiation entry: RadConfig::on true,
-  // given false) covers only groups whose top body has a free joint; the
-  // hinged arm above and a slide radiate only when asked (docs/mjcf.md,
-  // "Radiation"): their coefficients hold about qpos0, not an equilibrium
+  // given false) covers every group that can move: the free one, the
+  // hinged arm and the slide, each about its equilibrium along its joints
+  // (docs/mjcf.md, "Radiation"); an off entry naming a body wins
   std::string e;
   mjModel* m = loadXML("<mujoco><worldbody><body name=\"free\"><freejoint/>"
                        "<geom type=\"box\" size=\"1 1 1\"/><body name=\"welded\">"
@@ -251,16 +251,20 @@ TEST(RobustModel, DefaultRadiationSkipsHingedHulls) {
   mjb::RadConfig def;
   def.on = true;  // the default once it flips
   EXPECT_TRUE(def.groupRadiates(m, hb, m->body_weldid[we]));  // the free group, welded hull
-  EXPECT_FALSE(def.groupRadiates(m, hb, arm));
-  EXPECT_FALSE(def.groupRadiates(m, hb, sl));
+  EXPECT_TRUE(def.groupRadiates(m, hb, arm));
+  EXPECT_TRUE(def.groupRadiates(m, hb, sl));
   mjb::RadConfig asked = def;  // <text name="mjbuoy.radiation" data="on"/>
   asked.given = true;
   EXPECT_TRUE(asked.groupRadiates(m, hb, arm));
   EXPECT_TRUE(asked.groupRadiates(m, hb, sl));
-  mjb::RadConfig named = def;  // mjbuoy.radiation.body.arm on
-  named.onBody.push_back(arm);
-  EXPECT_TRUE(named.groupRadiates(m, hb, arm));
-  EXPECT_FALSE(named.groupRadiates(m, hb, sl));
+  mjb::RadConfig named = def;  // mjbuoy.radiation.body.arm off
+  named.offBody.push_back(arm);
+  EXPECT_FALSE(named.groupRadiates(m, hb, arm));
+  EXPECT_TRUE(named.groupRadiates(m, hb, sl));
+  mjb::RadConfig off = def;  // <text name="mjbuoy.radiation" data="off"/>
+  off.on = false;
+  off.given = true;
+  EXPECT_FALSE(off.groupRadiates(m, hb, arm));
   mj_deleteModel(m);
 }
 

@@ -28,11 +28,10 @@ bool groupMoves(const mjModel* m, int root) {
 bool RadConfig::groupRadiates(const mjModel* m, const std::vector<int>& hullBody,
                               int root) const {
   if (!groupMoves(m, root)) return false;
-  // on by default (no mjbuoy.radiation entry) only for a group free to
-  // move: a hinged, sliding or jointed-to-a-parent hull radiates only when
-  // asked (docs/mjcf.md, "Radiation")
-  const bool free = m->body_jntnum[root] > 0 && m->jnt_type[m->body_jntadr[root]] == mjJNT_FREE;
-  bool yes = on && (given || free), no = false;
+  // on by default for every group that can move, free or on joints: a
+  // jointed hull radiates about its equilibrium along its joints
+  // (radattach.cc, jointPose; docs/mjcf.md, "Radiation")
+  bool yes = on, no = false;
   for (int hb : hullBody) {
     if (m->body_weldid[hb] != root) continue;
     for (int b : {hb, root}) {
@@ -245,12 +244,14 @@ static std::string parseNumeric(const mjModel* m, int i, RadConfig* r) {
   } else if (f == kF + 1) {
     e = checkRad(name, "value", v[0], 0, 4, true, "times each panel is split in 4", f->ex);
     r->refine = (int)v[0];
+    r->refineGiven = true;
   } else if (f == kF + 2) {
     // 0: no coarsening; else at least a coarse sphere's worth (the panel
     // count of the 12 x 24 hemisphere within 3% of Hulme is 288), at most
     // what a dense solve can hold (20000 complex unknowns: 6.4 GB)
     if (v[0] != 0) e = checkRad(name, "value", v[0], 100, 20000, true, "wet panels, 0 = no coarsening", f->ex);
     r->panels = e.empty() ? (int)v[0] : r->panels;
+    r->panelsGiven = e.empty();
   } else {
     e = checkRad(name, "value", v[0], 0, 60, false, "s, 0 = automatic", f->ex);
     r->memory = v[0];

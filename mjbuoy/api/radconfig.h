@@ -25,7 +25,13 @@ struct RadConfig {
   std::vector<int> offBody;
   double omega[3] = {0, 0, 0};  // wmin, wmax [rad/s], count; count 0: defaultOmega (radattach.h)
   int refine = 0;               // hullPanels refine level 0..4
+  bool refineGiven = false;     // mjbuoy.radiation.refine was in the model
   int panels = 400;             // wet panel budget (kDefaultPanels): a finer hull is coarsened; 0: never
+  bool panelsGiven = false;     // mjbuoy.radiation.panels was in the model
+  // the budget in force: the given one; none (0) when refine is given
+  // alone, since a hull refined on purpose is never coarsened back; else
+  // the default
+  int budget() const { return panelsGiven ? panels : refineGiven ? 0 : panels; }
   bool lid = true;              // interior lid against irregular frequencies
   bool diffraction = true;      // diffraction excitation (docs/physics.md section 15)
   double memory = 0;            // memory length [s]; 0: automatic
@@ -60,8 +66,7 @@ struct RadConfig {
   // whether the rigid group of weld root `root` radiates: an override
   // naming the root or any of its hull bodies (hullBody, one per hull)
   // wins over `on` (off over on); a group that cannot move (groupMoves)
-  // never radiates; `on` by default (not `given`) covers only groups
-  // whose top body has a free joint
+  // never radiates; `on` covers free and jointed groups alike
   bool groupRadiates(const mjModel* m, const std::vector<int>& hullBody, int root) const;
 };
 

@@ -698,7 +698,7 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
     if (bad[w]) {
       char b[240];
       std::snprintf(b, sizeof b, bad[w] == 2 ? "panel: out of memory at omega = %g rad/s (%d unknowns); "
-                    "use fewer panels (mjbuoy.radiation.refine)" : "panel: non-finite coefficients at omega = %g rad/s",
+                    "use fewer panels (lower mjbuoy.radiation.panels or mjbuoy.radiation.refine)" : "panel: non-finite coefficients at omega = %g rad/s",
                     omega[w], n);
       *err = b;
       return false;

@@ -14,6 +14,7 @@
 #include "radiation/coefxform.h"
 #include "radiation/diffract.h"
 #include "hull/eqdraft.h"
+#include "hull/jointeq.h"
 #include "radiation/hydrostatic.h"
 #include "radiation/panelcoarse.h"
 #include "radiation/panelmesh.h"
@@ -181,19 +182,29 @@ static void groupMesh(const Buoy& B, const mjData* d, int root, std::vector<floa
   }
 }
 
-// what refines a hull's panels: mjbuoy.radiation.refine, and while a
-// budget (mjbuoy.radiation.panels) holds, that too, since a refined hull
-// above it is coarsened back to it
-static std::string refineHint(const RadConfig& rc) {
-  if (rc.panels <= 0) return "raise mjbuoy.radiation.refine";
-  return "raise mjbuoy.radiation.refine together with mjbuoy.radiation.panels (now " +
-         std::to_string(rc.panels) + "; a refined hull is coarsened back to it, 0 solves the "
-         "full mesh)";
+// what refines a hull's panels, naming mjbuoy.radiation.panels and the
+// value to set: a refine level up splits each triangle in 4, so the
+// budget must hold 4 times the np panels solved now (a budget below a
+// hull's panels coarsens it back to the budget); with no budget (0) the
+// refine level alone
+static std::string refineHint(const RadConfig& rc, int np) {
+  const int up = std::min(rc.refine + 1, 4);
+  const std::string ref = "<numeric name=\"mjbuoy.radiation.refine\" data=\"" +
+                          std::to_string(up) + "\"/>";
+  if (rc.budget() <= 0) {
+    return "refine the panels with " + ref + " (mjbuoy.radiation.panels = 0 already solves "
+           "the full mesh; or give the hull a finer mesh)";
+  }
+  const int want = std::min(20000, (4 * std::max(np, rc.budget()) + 99) / 100 * 100);
+  return "solve more panels: set <numeric name=\"mjbuoy.radiation.panels\" data=\"" +
+         std::to_string(want) + "\"/> (now " + std::to_string(rc.budget()) + "; a hull finer "
+         "than it is coarsened to it, 0 solves the full mesh), with " + ref + " if the hull's "
+         "own mesh has fewer panels";
 }
 
 // warnings on c, then its symmetric part (who names the body; file: c is
 // from a coefficient file, not the panel solver)
-static void checkCoef(Buoy* B, const std::string& who, bool file, HydroCoef* cp) {
+static void checkCoef(Buoy* B, const std::string& who, bool file, int np, HydroCoef* cp) {
   HydroCoef& c = *cp;
   const char* src = file ? "the coefficient file" : "the panel solver";
   // potential flow radiates energy: B_ii >= 0; a coarse mesh (or the lid
@@ -211,7 +222,7 @@ static void checkCoef(Buoy* B, const std::string& who, bool file, HydroCoef* cp)
       B->cfg.warn.push_back(who.substr(8) + ": " + src + "'s " + kDof[i] + " damping is " +
                             fmt(low) + " at omega " + fmt(wl) + " rad/s (below -1% of its peak " +
                             fmt(big) + "); " + (file ? std::string("check the file's damping") :
-                            refineHint(B->cfg.rad) + ", or lower the highest frequency "
+                            refineHint(B->cfg.rad, np) + ", or lower the highest frequency "
                             "(mjbuoy.radiation.omega)"));
     }
   }
@@ -219,17 +230,15 @@ static void checkCoef(Buoy* B, const std::string& who, bool file, HydroCoef* cp)
   if (asym > kAsymWarn) {
     B->cfg.warn.push_back(who.substr(8) + ": " + src + "'s added mass or damping is " +
                           fmt(100 * asym) + "% asymmetric (made symmetric)" + (file ? "" :
-                          "; " + refineHint(B->cfg.rad)));
+                          "; " + refineHint(B->cfg.rad, np)));
   }
   // damping that would feed energy: projected out, with a warning
   const size_t nw = B->cfg.warn.size();
   projectDamping(cp, who.substr(8), &B->cfg.warn);
-  // its advice to refine names the budget too
-  for (size_t i = nw; i < B->cfg.warn.size() && B->cfg.rad.panels > 0; i++)
+  // its advice to refine names the budget and the value to set
+  for (size_t i = nw; i < B->cfg.warn.size() && !file; i++)
     if (B->cfg.warn[i].find("mjbuoy.radiation.refine") != std::string::npos)
-      B->cfg.warn[i] += " (with mjbuoy.radiation.panels = " + std::to_string(B->cfg.rad.panels) +
-                        ", a refined hull is coarsened back to that budget: raise it too, or 0 "
-                        "to solve the full mesh)";
+      B->cfg.warn[i] += "; " + refineHint(B->cfg.rad, np);
 }
 
 // panelSolve through the cache (radcache.h): a file whose key matches and
@@ -272,14 +281,13 @@ static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
   return true;
 }
 
-// heave offset [m] of the panel pose from qpos0: the flat-water
-// equilibrium of a free body's subtree (eqdraft.h), else 0 (a body on a
-// joint other than free floats where its joints hold it); at: the pose's
-// name for messages. A free body without equilibrium is warned about
+// heave offset [m] of the panel pose from d's: the flat-water equilibrium
+// of a free body's subtree (eqdraft.h), else 0 (a body on other joints
+// is at its equilibrium along them in d, jointPose); at: the pose's name
+// for messages. A free body without equilibrium is warned about
 static double poseHeave(Buoy* B, const mjData* d, int root, const std::string& who,
                         std::string* at) {
   const mjModel* m = B->m;
-  *at = "the model's initial pose (qpos0; not a free body)";
   if (!m->body_jntnum[root] || m->jnt_type[m->body_jntadr[root]] != mjJNT_FREE) return 0;
   double dz = 0;
   std::string why;
@@ -292,6 +300,71 @@ static double poseHeave(Buoy* B, const mjData* d, int root, const std::string& w
                         "); its added mass and damping are for its wetted surface at the "
                         "model's initial pose (qpos0)");
   return 0;
+}
+
+// the slide and hinge joints between root and the world (ball and free
+// joints there are held at qpos0); *held: whether there are such
+static std::vector<int> chainJoints(const mjModel* m, int root, bool* held) {
+  std::vector<int> j;
+  *held = false;
+  for (int b = root; b > 0; b = m->body_parentid[b])
+    for (int k = m->body_jntadr[b]; k < m->body_jntadr[b] + m->body_jntnum[b]; k++) {
+      const int t = m->jnt_type[k];
+      if (t == mjJNT_SLIDE || t == mjJNT_HINGE) {
+        j.push_back(k);
+      } else {
+        *held = true;
+      }
+    }
+  return j;
+}
+
+// the pose of a group whose root is not free: d0 (qpos0) with its slide
+// and hinge joints moved to their equilibrium on flat water (jointeq.h;
+// docs/physics.md section 14, "Equilibrium along joints"), in a new
+// mjData (nullptr for a free root, which poseHeave floats); at: the
+// pose's name. Without an equilibrium the pose is qpos0, with a warning
+// naming the body
+static mjData* jointPose(Buoy* B, const mjData* d0, int root, const std::string& who,
+                         std::string* at) {
+  const mjModel* m = B->m;
+  *at = "the model's initial pose (qpos0)";
+  if (m->body_jntnum[root] && m->jnt_type[m->body_jntadr[root]] == mjJNT_FREE) return nullptr;
+  mjData* d = mj_makeData(m);
+  if (!d) return nullptr;
+  mju_copy(d->qpos, d0->qpos, m->nq);
+  bool held = false;
+  std::vector<int> jnt = chainJoints(m, root, &held);
+  EqWater w;
+  w.vert = B->vert.data();
+  w.face = B->face.data();
+  w.level = B->cfg.sea.level;
+  w.rho = B->cfg.sea.rho;
+  w.g = B->cfg.sea.g;
+  for (const Hull& h : B->hull) w.hull.push_back({h.body, h.t0, h.nt});
+  std::string why = jnt.empty() ? "it has no slide or hinge joint to float along"
+                                : jointEquilibrium(m, d, w, jnt);
+  if (why.empty()) {
+    *at = "its equilibrium along its joints";
+    if (held) *at += " (its ball and free joints at qpos0)";
+    return d;
+  }
+  mju_copy(d->qpos, d0->qpos, m->nq);
+  mj_kinematics(m, d);
+  mj_comPos(m, d);
+  *at = "the model's initial pose (qpos0; no equilibrium along its joints)";
+  B->cfg.warn.push_back(who.substr(8) + ": no equilibrium along its joints on flat water (" +
+                        why + "); its added mass and damping are for its wetted surface at "
+                        "the model's initial pose (qpos0)");
+  return d;
+}
+
+// whether the wet panels reach the mean sea level (z = 0 in the panel
+// frame, within 1e-9 of their depth): a hull with a waterline
+static bool piercesSurface(const PanelMesh& p) {
+  double zlo = 0, zhi = -INFINITY;
+  eachEdge(p, [&](const double* a, double) { zlo = std::min(zlo, a[2]), zhi = std::max(zhi, a[2]); });
+  return zhi >= 1e-9 * zlo;
 }
 
 // why A_inf of the panel solution is not positive semi-definite, and what
@@ -313,7 +386,8 @@ static std::string unresolved(const PanelMesh& p, const HydroCoef& c, const RadC
          "(smallest diagonal entry " + fmt(lo) + "): its " + std::to_string(p.nface()) +
          " wet panels, up to " + fmt(wide) + " m wide, do not resolve its draft of " +
          fmt(-zlo) + " m (panels should be no wider than a few drafts); give the hull a "
-         "finer mesh below the waterline or " + refineHint(rc) + ", or turn its radiation off";
+         "finer mesh below the waterline or " + refineHint(rc, p.nface()) + ", or turn its "
+         "radiation off";
 }
 
 // the wet panels counted against mjbuoy.radiation.panels: those of a
@@ -338,8 +412,10 @@ static void coarsenGroup(Buoy* B, const std::string& who, const std::vector<floa
   CoarseInfo ci;
   std::string cn = *note;
   if (!coarsenPanels(v.data(), v.size() / 3, f.data(), f.size() / 3, pos, quat, rc.refine,
-                     rc.lid, rc.panels, body, lid, &cn, &ci)) {
-    B->cfg.warn.push_back(who.substr(8) + ": not coarsened: " + cn);
+                     rc.lid, rc.budget(), body, lid, &cn, &ci)) {
+    B->cfg.warn.push_back(who.substr(8) + ": not coarsened to mjbuoy.radiation.panels = " +
+                          std::to_string(rc.budget()) + ": " + cn + "; set <numeric name=\""
+                          "mjbuoy.radiation.panels\" data=\"0\"/> to solve the full mesh");
     return;
   }
   *note = cn;
@@ -353,10 +429,11 @@ static void coarsenGroup(Buoy* B, const std::string& who, const std::vector<floa
                         std::to_string(ci.panels0) + " to " + std::to_string(ci.panels) +
                         " wet panels (" + std::to_string(ci.tri0) + " to " +
                         std::to_string(ci.tri) + " triangles; mjbuoy.radiation.panels = " +
-                        std::to_string(rc.panels) + "): displaced volume " + pct(ci.vol / ci.vol0) +
-                        ", waterplane area " + pct(ci.awp / ci.awp0) + " (the hydrostatics keep "
-                        "the full mesh); mjbuoy.radiation.panels = 0 solves the full mesh "
-                        "(minutes, cached)");
+                        std::to_string(rc.budget()) + "): displaced volume " +
+                        pct(ci.vol / ci.vol0) + ", waterplane area " + pct(ci.awp / ci.awp0) +
+                        " (the hydrostatics keep the full mesh); <numeric name=\"mjbuoy."
+                        "radiation.panels\" data=\"0\"/> solves the full mesh (minutes, "
+                        "cached)");
 }
 
 // the rollzeta share of critical roll damping added to x (docs/physics.md
@@ -402,7 +479,7 @@ static std::string finishGroup(Buoy* B, const mjData* d, int root, const std::st
   const mjModel* m = B->m;
   const RadConfig& rc = B->cfg.rad;
   std::string err;
-  checkCoef(B, who, imported, &c);
+  checkCoef(B, who, imported, body.nface(), &c);
   B->rad.conv = rc.conv;
   B->rad.ssAsked = rc.ssAsked;
   std::copy(rc.roll, rc.roll + 2, B->rad.roll);
@@ -478,13 +555,16 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   const mjModel* m = B->m;
   const RadConfig& rc = B->cfg.rad;
   std::string who = std::string("mjbuoy: radiation of body \"") + bodyName(m, root) + "\"";
+  // the pose: qpos0 lifted or lowered to its flat-water equilibrium
+  // (docs/physics.md section 14, "Equilibrium draft"), or moved along its
+  // joints to it ("Equilibrium along joints"); at names it
+  std::string at;
+  std::unique_ptr<mjData, void (*)(mjData*)> dj(jointPose(B, d, root, who, &at), mj_deleteData);
+  if (dj) d = dj.get();
+  double dz = poseHeave(B, d, root, who, &at);
   std::vector<float> v;
   std::vector<int> f;
   groupMesh(*B, d, root, &v, &f);
-  // the pose: qpos0 lifted or lowered to its flat-water equilibrium
-  // (docs/physics.md section 14, "Equilibrium draft"); at names it
-  std::string at;
-  double dz = poseHeave(B, d, root, who, &at);
   double pos[3] = {d->xpos[3 * root], d->xpos[3 * root + 1],
                    d->xpos[3 * root + 2] + dz - B->cfg.sea.level};
   PanelMesh body, lid;
@@ -507,20 +587,26 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   if (const RadConfig::File* rf = fileOf(*B, root))
     return importGroup(B, d, root, who, *rf, body, dz);
   int np = body.nface() + (rc.lid ? lid.nface() : 0);
-  if (rc.panels > 0 && solveSize(body, lid, rc.lid) > rc.panels)
+  // the budget: an explicit mjbuoy.radiation.panels, none for a hull
+  // refined on purpose (mjbuoy.radiation.refine alone), else the default
+  const int budget = rc.budget();
+  if (budget > 0 && solveSize(body, lid, rc.lid) > budget)
     coarsenGroup(B, who, v, f, pos, d->xquat + 4 * root, &body, &lid, &note, &np);
-  if (rc.panels > 0 && solveSize(body, lid, rc.lid) > rc.panels && !(rc.given && rc.on) &&
+  if (budget > 0 && solveSize(body, lid, rc.lid) > budget && !(rc.given && rc.on) &&
       !namedOn(*B, root)) {
     // on by default only within the cost bound (seconds at attach)
     return skipGroup(B, root, who.substr(8) + " is off: " + std::to_string(np) + " wet panels, "
-                     "above the " + std::to_string(rc.panels) + " radiation solves "
-                     "by default (mjbuoy.radiation.panels); switch it on explicitly with "
-                     "<text name=\"mjbuoy.radiation\" data=\"on\"/> (minutes, cached), or "
-                     "coarsen the hull below the waterline");
+                     "above the " + std::to_string(budget) + " radiation solves by default; "
+                     "set <numeric name=\"mjbuoy.radiation.panels\" data=\"" +
+                     std::to_string(std::min(20000, (np + 99) / 100 * 100)) + "\"/> or switch "
+                     "it on explicitly with <text name=\"mjbuoy.radiation\" data=\"on\"/> "
+                     "(minutes, cached), or coarsen the hull below the waterline");
   }
   if (!rc.lid) {
     lid = PanelMesh();
-  } else if (!lid.nface()) {
+  } else if (!lid.nface() && piercesSurface(body)) {
+    // a fully submerged hull has no interior free surface, so no
+    // irregular frequencies (docs/physics.md section 13): no lid needed
     B->cfg.warn.push_back(who.substr(8) + ": no interior lid (" + note +
                           "); its coefficients may be spoiled near irregular frequencies");
   }
