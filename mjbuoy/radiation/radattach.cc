@@ -401,6 +401,38 @@ static double solveSize(const PanelMesh& body, const PanelMesh& lid, bool useLid
   return n * std::pow(4.0, -k / 3.0);
 }
 
+// the panels a hull's geometry asks for (docs/physics.md section 13,
+// "Panel size"): no wider than kDraftPanels drafts (a panel much wider
+// than the draft integrates its image's 1/r^2 kernel at one point) nor
+// than a sixth of the shortest wavelength every default range holds,
+// lambda = 2 pi R / kTopKRMin (6 panels per wavelength). The 90th-
+// percentile edge h (panelEdge90) is halved per refine level, up to
+// kAutoRefine, while the refined panels stay within the budget; body,
+// lid and note become the finest such mesh. A hull the budget coarsens
+// anyway is left as it is
+static const double kDraftPanels = 3;
+static const int kAutoRefine = 2;
+static void autoRefine(const RadConfig& rc, const std::vector<float>& v,
+                       const std::vector<int>& f, const double pos[3], const double* quat,
+                       PanelMesh* body, PanelMesh* lid, std::string* note) {
+  const int budget = rc.budget();
+  if (budget > 0 && solveSize(*body, *lid, rc.lid) > budget) return;
+  double zlo = 0;
+  eachEdge(*body, [&](const double* a, double) { zlo = std::min(zlo, a[2]); });
+  const double target = std::min(kDraftPanels * -zlo,
+                                 2 * M_PI * waterplaneRadius(*body) / kTopKRMin / 6);
+  double h = panelEdge90(*body);
+  for (int r = rc.refine + 1; r <= kAutoRefine && h > target; r++) {
+    PanelMesh b, l;
+    std::string n;
+    if (!hullPanels(v.data(), v.size() / 3, f.data(), f.size() / 3, pos, quat, r, &b, &l, &n))
+      return;
+    if (budget > 0 && solveSize(b, l, rc.lid) > budget) return;
+    *body = std::move(b), *lid = std::move(l), *note = n;
+    h = panelEdge90(*body);
+  }
+}
+
 // a coarsened copy of the group's hull within the budget
 // mjbuoy.radiation.panels (docs/physics.md section 13, "Coarsened hulls"):
 // body, lid, note and *np become its own, with a warning giving the
@@ -586,6 +618,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   }
   if (const RadConfig::File* rf = fileOf(*B, root))
     return importGroup(B, d, root, who, *rf, body, dz);
+  if (!rc.refineGiven) autoRefine(rc, v, f, pos, d->xquat + 4 * root, &body, &lid, &note);
   int np = body.nface() + (rc.lid ? lid.nface() : 0);
   // the budget: an explicit mjbuoy.radiation.panels, none for a hull
   // refined on purpose (mjbuoy.radiation.refine alone), else the default
