@@ -120,12 +120,11 @@ TEST(RadBudget, LongShallowBoxGetsPanelsForItsDraft) {
   // the box's tessellation (4 x 4 squares a face) gives bottom panels 5 x
   // 1.25 m, 5 drafts wide: the panel integrals do not resolve the draft.
   // The default refines it until its panels are at most 3 drafts wide
-  // (docs/physics.md section 13, "Panel size"): its 90th-percentile edge
-  // is the 5 m one, so it takes the highest automatic level, 2, the
-  // reference's mesh. Reference: the converged
-  // solution, an explicit refine 2 with panels 0 (1536 wet panels, 0.31 m,
-  // 1.25 drafts; refine 1 is within 2% of it in B33 and 3% in A33 at 1.5
-  // to 2.5 rad/s, so the sequence has converged to that order). Expected:
+  // (docs/physics.md section 13, "Panel size") while the default budget
+  // of 400 holds: once (256 wet panels of 2.5 x 0.63 m; twice, 1024 and
+  // the lid, is above it at cost). Reference: the converged
+  // solution, an explicit refine 2 with panels 0 (1024 wet panels of 1.25
+  // x 0.31 m). Expected:
   // heave damping at the five frequencies around the heave resonance
   // (omega_n = sqrt(rho g A_wp / (m + A33)) = 2.1 rad/s) and the heave
   // decay period within 5%; the unrefined mesh (refine 0 given) is not
