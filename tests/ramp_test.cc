@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "sea/sea.h"
 #include "testutil.h"
 
 namespace {
@@ -143,6 +144,46 @@ std::string cylXML(double amp, double len, double dir, double ph, double ramp, b
     << "<geom name=\"hull\" type=\"cylinder\" size=\"0.3 0.6\" pos=\"0 0 -0.2\" "
     << "contype=\"0\" conaffinity=\"0\"/></body></worldbody></mujoco>";
   return s.str();
+}
+
+// the kinematics other parts read (mooring nodes, the Kirchhoff terms, the
+// hull's flow: Sea::velocity, dynamic, height) during the ramp are those of
+// the sea of amplitude r(t) A, for a Gerstner and an Airy component in
+// finite depth
+TEST(Ramp, KinematicsOfTheSeaAreRamped) {
+  auto make = [](double gain, double ramp) {
+    mjb::Sea s;
+    s.depth = 12;
+    s.ramp = ramp;
+    mjb::Wave g{gain * 0.4, 15, 20, 10, 0.6, 0, 0, 0, 0, 0};
+    mjb::Wave a{gain * 0.2, 9, -40, 70, 0, 0, 0, 0, 0, 0};
+    a.kind = 1;
+    s.waves = {g, a};
+    s.derive();
+    return s;
+  };
+  const double T = 6;
+  const mjb::Sea ramped = make(1, T);
+  for (double t : {0.4, 2.2, 4.7}) {
+    const mjb::Sea same = make(rampGain(t, T), 0);
+    for (double z : {-3.0, -0.5, 0.2}) {
+      const double p[3] = {1.3, -0.7, z};
+      double v1[3], a1[3], v2[3], a2[3];
+      ramped.velocity(p, t, v1, a1);
+      same.velocity(p, t, v2, a2);
+      for (int j = 0; j < 3; j++) {
+        EXPECT_NEAR(v1[j], v2[j], 1e-12) << "t " << t << " z " << z;
+        EXPECT_NEAR(a1[j], a2[j], 1e-12) << "t " << t << " z " << z;
+      }
+      EXPECT_NEAR(ramped.dynamic(p, t), same.dynamic(p, t), 1e-8);
+    }
+    EXPECT_NEAR(ramped.height(1.3, -0.7, t), same.height(1.3, -0.7, t), 1e-12);
+    // and it is not the full sea's
+    const mjb::Sea full = make(1, 0);
+    const double q[3] = {0, 0, -1};
+    EXPECT_GT(std::fabs(ramped.height(1.3, -0.7, t) - full.height(1.3, -0.7, t)) +
+              std::fabs(ramped.dynamic(q, t) - full.dynamic(q, t)) / (kRho * kG), 1e-3);
+  }
 }
 
 // the one validator (sea/seacheck.h rampCheck, kRampRange) refuses a ramp
