@@ -236,6 +236,8 @@ typedef struct mjbSea_ {
   const mjbSpectrum* spectrum;  // nspectrum spectra, added to the waves
   int nspectrum;
   mjbWind wind;
+  double ramp;           // start-up ramp [s] from t = 0, as mjbuoy.sea.ramp (0 to 3600,
+                         // 0 = off); negative keeps the model's
 } mjbSea;
 
 // replace the sea state of an attached model between steps: it waits for

@@ -196,7 +196,9 @@ TEST(Cpu, HullAboveEveryCrestGetsNothing) {
       "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"h\"/>"
       "<numeric name=\"mjbuoy.sea.level\" data=\"0.2\"/>"
       "<numeric name=\"mjbuoy.wave.a\" data=\"0.3 10 0 0 0.5\"/>"
-      "<numeric name=\"mjbuoy.wave.b\" data=\"0.2 7 90 0 0.3\"/></custom><worldbody>"
+      "<numeric name=\"mjbuoy.wave.b\" data=\"0.2 7 90 0 0.3\"/>"
+      // the crests at full height at t = 0: no start-up ramp
+      "<numeric name=\"mjbuoy.sea.ramp\" data=\"0\"/></custom><worldbody>"
       "<body name=\"a\" pos=\"0 0 Z\"><freejoint/>"
       "<geom name=\"h\" type=\"box\" size=\"1 0.5 0.25\" mass=\"500\"/></body>"
       "</worldbody></mujoco>";

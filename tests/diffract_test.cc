@@ -141,6 +141,8 @@ std::string boxModel(double yaw, double dir) {
     << "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
     << "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 4\"/>"
     << "<numeric name=\"mjbuoy.airy.w\" data=\"0.1 6 " << dir << " 0\"/>"
+    // the full wave from t = 0, as the sea mjb_setSea gives below (ramp 0)
+    << "<numeric name=\"mjbuoy.sea.ramp\" data=\"0\"/>"
     << "</custom><worldbody><body name=\"box\" euler=\"0 0 " << yaw << "\"><freejoint/>"
     << "<geom name=\"hull\" type=\"box\" size=\"1 0.5 0.5\" mass=\"1000\"/>"
     << "</body></worldbody></mujoco>";

@@ -358,7 +358,8 @@ TEST(RobustForces, RadiationKirchhoffTermsSeeTheWaveOrbitalVelocity) {
   // surge u and heave w of the water are both about 0.7 A omega e^{kz}
   const char* xml =
       "<mujoco><option timestep=\"0.002\"><flag gravity=\"disable\"/></option><custom>"
-      "<numeric name=\"mjbuoy.wave.sea\" data=\"0.5 10 0 45 0\"/></custom><worldbody>"
+      "<numeric name=\"mjbuoy.wave.sea\" data=\"0.5 10 0 45 0\"/>"
+      "<numeric name=\"mjbuoy.sea.ramp\" data=\"0\"/></custom><worldbody>"
       "<body name=\"b\" pos=\"0 0 -0.5\"><freejoint/><geom type=\"box\" size=\"1 0.2 0.2\" "
       "mass=\"10\" contype=\"0\" conaffinity=\"0\"/></body></worldbody></mujoco>";
   Scene s(xml);

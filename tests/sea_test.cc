@@ -10,8 +10,10 @@
 namespace mjbt {
 namespace {
 
+// (no start-up ramp: the surface at full amplitude from t = 0, as the
+// analytic values below)
 std::string seaXML(const std::string& waves) {
-  return "<mujoco><custom>" + waves +
+  return "<mujoco><custom>" + waves + "<numeric name=\"mjbuoy.sea.ramp\" data=\"0\"/>" +
          "<text name=\"mjbuoy.hulls\" data=\"h\"/></custom><worldbody><body>"
          "<freejoint/><geom name=\"h\" type=\"sphere\" size=\"0.1\"/></body></worldbody></mujoco>";
 }

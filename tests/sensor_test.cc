@@ -66,6 +66,7 @@ TEST(Sensor, GaugeOnGerstnerWaveFollowsTheSite) {
   const double A = 0.3, lambda = 8, beta = 30, Q = 0.5;
   std::string xml = barge(
       R"(<numeric name="mjbuoy.wave.w" data="0.3 8 30 0 0.5"/>
+    <numeric name="mjbuoy.sea.ramp" data="0"/>
     <text name="mjbuoy.sensor.gauge" data="elevation"/>)",
       R"(<user name="gauge" objtype="site" objname="probe" dim="1" datatype="real" needstage="pos"/>)",
       R"(<body name="cart" pos="0 0 2">

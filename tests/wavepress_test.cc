@@ -112,7 +112,8 @@ TEST(WaveKinematics, SteepnessDoesNotChangeTheVelocity) {
 TEST(WaveKinematics, SeaHeightOfAMixedSea) {
   Scene s("<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"h\"/>"
           "<numeric name=\"mjbuoy.wave.g\" data=\"0.3 12 0 20 0.7\"/>"
-          "<numeric name=\"mjbuoy.airy.a\" data=\"0.2 7 30 -40\"/></custom>"
+          "<numeric name=\"mjbuoy.airy.a\" data=\"0.2 7 30 -40\"/>"
+          "<numeric name=\"mjbuoy.sea.ramp\" data=\"0\"/></custom>"
           "<worldbody><body><freejoint/><geom name=\"h\" type=\"box\" size=\"1 1 1\"/>"
           "</body></worldbody></mujoco>");
   ASSERT_TRUE(s.ok()) << s.err;
@@ -136,8 +137,10 @@ double heave(Scene& s, int b, double t) {
 std::string boxScene(double hx, double hy, double hz, double zc, const std::string& sea) {
   std::ostringstream o;
   o.precision(17);
+  // no start-up ramp: the analytic Froude-Krylov force of the full wave at any t
   o << "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"h\"/>" << sea
-    << "</custom><worldbody><body name=\"b\" pos=\"0 0 " << zc << "\"><freejoint/>"
+    << "<numeric name=\"mjbuoy.sea.ramp\" data=\"0\"/></custom>"
+    << "<worldbody><body name=\"b\" pos=\"0 0 " << zc << "\"><freejoint/>"
     << "<geom name=\"h\" type=\"box\" size=\"" << hx << " " << hy << " " << hz
     << "\" contype=\"0\" conaffinity=\"0\"/></body></worldbody></mujoco>";
   return o.str();

@@ -178,12 +178,14 @@ const char* kSeaBody = R"(</custom><worldbody><body name="b" pos="0 0 0"><freejo
     <geom name="hull" type="box" size="2 1 0.5" mass="2000"/></body></worldbody></mujoco>)";
 
 // the model a fresh attach sees: JONSWAP Hs 1.5 m Tp 6 s, 48 components,
-// seed 4, spreading 8 towards 20 deg, a current and wind
+// seed 4, spreading 8 towards 20 deg, a current and wind; no start-up ramp,
+// as the zeroed mjbSea given to mjb_setSea below
 std::string seaXml(bool withSea) {
   std::string s = R"(<mujoco><option timestep="0.01"/><custom>
     <text name="mjbuoy.hulls" data="hull"/>
     <numeric name="mjbuoy.hull.slamming" data="0 100 2"/>
     <numeric name="mjbuoy.sea.capacity" data="64"/>
+    <numeric name="mjbuoy.sea.ramp" data="0"/>
     <numeric name="mjbuoy.wind.drag" data="1 0.002"/>)";
   if (withSea) {
     s += R"(<text name="mjbuoy.spectrum.a.type" data="jonswap"/>
@@ -281,7 +283,8 @@ std::string radBoxXml(const std::string& waves) {
     <text name="mjbuoy.hulls" data="box"/>
     <text name="mjbuoy.radiation" data="on"/>
     <numeric name="mjbuoy.radiation.omega" data="1 9 4"/>
-    <numeric name="mjbuoy.sea.capacity" data="8"/>)" + waves + R"(</custom>
+    <numeric name="mjbuoy.sea.capacity" data="8"/>
+    <numeric name="mjbuoy.sea.ramp" data="0"/>)" + waves + R"(</custom>
     <worldbody><body name="b"><freejoint/>
       <geom name="box" type="box" size="1 0.5 0.5" mass="1000"/>
     </body></worldbody></mujoco>)";

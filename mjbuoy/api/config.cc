@@ -90,6 +90,7 @@ static const Field kSeaFields[] = {
   {"depth", 1, 0.01, 11000, false, "m (omit for deep water)", "50"},
   {"viscosity", 1, 1e-8, 1, false, "m^2/s, kinematic", "1e-6"},
   {"current", 2, 0, 0, false, "m/s, x and y", "0.5 0", 0, kCurrentParts},
+  {"ramp", 1, kRampRange.lo, kRampRange.hi, false, "s, 0 = off", "20"},
 };
 
 static const Field kWave = {"wave", 5, 0, 0, false,
@@ -323,6 +324,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
   const int nsf = sizeof(kSeaFields) / sizeof(kSeaFields[0]);
   std::vector<char> defSet(nhf, 0);  // mjbuoy.hull.<param> given
   bool any = anyHullList;
+  bool rampSet = false;  // mjbuoy.sea.ramp given
 
   // numeric entries
   for (int i = 0; i < m->nnumeric; i++) {
@@ -346,6 +348,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
       if (f == kSeaFields + 2) s.depth = v[0];
       if (f == kSeaFields + 3) s.nu = v[0];
       if (f == kSeaFields + 4) { s.current[0] = v[0]; s.current[1] = v[1]; }
+      if (f == kSeaFields + 5) { s.ramp = v[0]; rampSet = true; }
     } else if (!std::strncmp(key, "wave.", 5) && key[5]) {
       std::string e = checkNumeric(m, i, kWave);
       if (!e.empty()) return e;
@@ -434,6 +437,8 @@ std::string parseConfig(const mjModel* m, Config* c) {
   if (!ex.empty()) return ex;
   radiationDragDefaults(m, gid, c->rad, set, defSet, &par, &c->radDrag);
   c->sea.derive();
+  // no mjbuoy.sea.ramp: a few periods of the dominant component (sea.h)
+  if (!rampSet) c->sea.ramp = c->sea.defaultRamp();
   if (m->opt.density > 0 || m->opt.viscosity > 0) {
     c->warn.push_back("<option density/viscosity> is nonzero: MuJoCo's own fluid forces act "
                       "on every body as well as mjbuoy's (double counting); set them to 0");

@@ -49,8 +49,9 @@ struct RadConfig {
   double zeta = kRollZeta;
   bool zetaGiven = false;       // mjbuoy.radiation.rollzeta was in the model
   // mjbuoy.radiation.entry: the water's momentum taken up as the immersion
-  // factor rises (docs/physics.md section 14, "Water entry")
-  bool entry = false;
+  // factor rises (docs/physics.md section 14, "Water entry"); on by
+  // default: without it every entry creates (1/2) ds nu^T A_inf nu of energy
+  bool entry = true;
   // mjbuoy.radiation.file.<body>: the body's coefficients read from a file
   // of another tool instead of the panel solver (docs/interchange.md), with
   // mjbuoy.radiation.fileorigin.<body> (the file's origin in the body frame

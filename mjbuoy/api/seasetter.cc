@@ -50,6 +50,9 @@ static int checkWaves(const mjbSea& sea, char* error, int error_sz) {
 int setSea(Buoy* b, const mjbSea& sea, char* error, int error_sz) {
   std::string e = currentCheck(sea.current, "mjb_setSea: ");
   if (e.empty()) e = windCheck(sea.wind, "mjb_setSea: ");
+  // a finite negative ramp keeps the model's; NaN and -inf are refused
+  const bool keepRamp = sea.ramp < 0 && std::isfinite(sea.ramp);
+  if (e.empty() && !keepRamp) e = rampCheck(sea.ramp, "mjb_setSea: ");
   if (!e.empty()) return fail(error, error_sz, "%s", e.c_str());
   if (!checkWaves(sea, error, error_sz)) return 0;
   if (sea.nspectrum < 0 || (sea.nspectrum > 0 && !sea.spectrum)) {
@@ -82,6 +85,7 @@ int setSea(Buoy* b, const mjbSea& sea, char* error, int error_sz) {
     at += sea.spectrum[i].n;
   }
   s.derive();
+  if (sea.ramp >= 0) s.ramp = sea.ramp;
   diffSea(s, &b->diff);  // each component's row in the diffraction tables
   s.current[0] = sea.current[0];
   s.current[1] = sea.current[1];

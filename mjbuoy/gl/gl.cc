@@ -64,6 +64,9 @@ struct GlBackend {
   // not the one they hold, so no mjData's results depend on another's
   double reach0 = 0;
   std::map<const State*, double> reachOf;
+  // the start-up ramp's gain on the amplitudes in the wave buffer (sea.h
+  // gain): redone in a step whose time has another
+  double gain = 1;
   int nfast = 0;
   int var = 0;                  // the sea's variant bits but kVSplit (seaUniforms)
   int vlocal = BUOY_VERT_LOCAL, local = BUOY_LOCAL, per = BUOY_PER, blocal = BUOY_BODY_LOCAL;
@@ -126,13 +129,15 @@ static bool groupSizes(GlBackend* g, std::string* err) {
   return true;
 }
 
-// one wave component as the shaders read it; Airy components (kind 1) take
-// no part in the label search: steep 0; e^(-2 k h) for the finite-depth
+// one wave component as the shaders read it, its amplitude times the
+// start-up ramp's gain (sea.h; the shaders read every amplitude from here,
+// so the surface, labels and pressure all see the ramp); Airy components
+// (kind 1) take no part in the label search: steep 0; e^(-2 k h) for the finite-depth
 // profiles (0 deep, or where k h >= 17: shaders/waveint.glsl WI_KHMAX)
-static GWave gwave(const Wave& w, double depth, double reach) {
+static GWave gwave(const Wave& w, double depth, double reach, double gain) {
   double kh = w.k * depth;
   float e2 = depth > 0 && kh < 17 ? float(std::exp(-2 * kh)) : 0.0f;
-  GWave o{float(w.k * w.dx), float(w.k * w.dy), float(w.amp), float(w.kind), float(w.k),
+  GWave o{float(w.k * w.dx), float(w.k * w.dy), float(gain * w.amp), float(w.kind), float(w.k),
           float(w.omega / w.k), 0, e2, float(w.kind == 0 ? w.steep : 0), float(w.dx), float(w.dy), 0};
   // the series length of its piece integrals (shaders/waveint.glsl
   // ddSeries): the fewest terms n >= 4 whose first left out, (n + 1) r^n /
@@ -169,7 +174,8 @@ static double longestEdge(const Buoy& b) {
 // the uniforms that change with the sea
 static void seaUniforms(GlBackend* g, const Sea& sea);
 
-// the wave buffer from the sea at g->reach, sorted; nfast
+// the wave buffer from the sea at g->reach and the ramp's gain g->gain,
+// sorted; nfast
 static void uploadWaves(GlBackend* g, const Sea& sea) {
   const GladGLContext& gl = g->ctx.gl;
   int* p = g->perm.data();
@@ -184,7 +190,9 @@ static void uploadWaves(GlBackend* g, const Sea& sea) {
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_WAVE]);
   for (int i0 = 0; i0 < g->nwave; i0 += 64) {
     int n = std::min(64, g->nwave - i0);
-    for (int i = 0; i < n; i++) buf[i] = gwave(sea.waves[p[i0 + i]], sea.depth, g->reach);
+    for (int i = 0; i < n; i++) {
+      buf[i] = gwave(sea.waves[p[i0 + i]], sea.depth, g->reach, g->gain);
+    }
     gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, i0 * sizeof(GWave), n * sizeof(GWave), buf);
   }
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
@@ -627,8 +635,10 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
   auto ri = g->reachOf.find(s);
   if (ri == g->reachOf.end()) ri = g->reachOf.emplace(s, g->reach0).first;  // with the buffers
   if (clock == kRestart) ri->second = g->reach0;
-  if (ri->second != g->reach) {
+  const double gain = b->cfg.sea.gain(d->time);
+  if (ri->second != g->reach || gain != g->gain) {
     g->reach = ri->second;
+    g->gain = gain;
     uploadWaves(g, b->cfg.sea);
   }
   if (clock == kNewStep) s->slamcur ^= 1;

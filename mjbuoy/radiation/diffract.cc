@@ -121,6 +121,7 @@ static void bodyWrench(const DiffBody& b, const Sea& sea, const double x[3], dou
                        double t, double F[6]) {
   for (int k = 0; k < 6; k++) F[k] = 0;
   const size_t n = sea.waves.size() < b.iw.size() ? sea.waves.size() : b.iw.size();
+  const double r = sea.gain(t);  // the start-up ramp on every amplitude (sea.h)
   for (size_t j = 0; j < n; j++) {
     if (b.iw[j] == -2) continue;
     const Wave& w = sea.waves[j];
@@ -129,7 +130,7 @@ static void bodyWrench(const DiffBody& b, const Sea& sea, const double x[3], dou
     // a e^{-i omega t}, a = A e^{i (k D.x + phi)}: the component's complex
     // amplitude at the COM (the sea's phase, docs/physics.md section 11)
     const double ph = w.k * (w.dx * x[0] + w.dy * x[1]) + w.ph - w.omega * t;
-    const double c = w.amp * std::cos(ph), s = w.amp * std::sin(ph);
+    const double A = r * w.amp, c = A * std::cos(ph), s = A * std::sin(ph);
     for (int k = 0; k < 6; k++) F[k] += re[k] * c - im[k] * s;
   }
 }

@@ -32,6 +32,12 @@ void Sea::derive() {
   }
 }
 
+double Sea::defaultRamp() const {
+  const Wave* top = nullptr;
+  for (const Wave& w : waves) if (w.omega > 0 && (!top || w.amp > top->amp)) top = &w;
+  return top ? kRampPeriods * 2 * M_PI / top->omega : 0;
+}
+
 double Sea::fold() const {
   double s = 0;
   for (const Wave& w : waves) if (w.kind == 0) s += w.steep * w.k * w.amp;
@@ -87,6 +93,7 @@ void Sea::label(double x, double y, double t, double a[2]) const {
   // keeps J positive definite, so the root is unique and Newton converges
   // from any guess; the step is halved if it ever fails to reduce |F|.
   double f0, f1, j00, j01, j11, r2;
+  const double r = gain(t);
   auto eval = [&](const double* p) {
     f0 = p[0] - x;
     f1 = p[1] - y;
@@ -94,7 +101,7 @@ void Sea::label(double x, double y, double t, double a[2]) const {
     for (const Wave& w : waves) {
       if (w.kind != 0 || w.steep == 0 || w.amp == 0) continue;
       double th = w.k * (w.dx * p[0] + w.dy * p[1]) - w.omega * t + w.ph;
-      double s = std::sin(th), c = std::cos(th), qa = w.steep * w.amp;
+      double s = std::sin(th), c = std::cos(th), qa = w.steep * (r * w.amp);
       f0 -= qa * w.dx * s;
       f1 -= qa * w.dy * s;
       double jc = qa * w.k * c;
@@ -125,10 +132,11 @@ void Sea::label(double x, double y, double t, double a[2]) const {
 
 double Sea::heightOf(const double a[2], double x, double y, double t) const {
   double z = level;
+  const double r = gain(t);
   for (const Wave& w : waves) {
     double px = w.kind == 0 ? a[0] : x, py = w.kind == 0 ? a[1] : y;
     double th = w.k * (w.dx * px + w.dy * py) - w.omega * t + w.ph;
-    z += w.amp * std::cos(th);
+    z += r * w.amp * std::cos(th);
   }
   return z;
 }
@@ -149,10 +157,12 @@ void Sea::velocity(const double p[3], double t, double v[3], double acc[3]) cons
   v[1] = current[1];
   v[2] = 0;
   if (acc) acc[0] = acc[1] = acc[2] = 0;
+  const double r = gain(t);
   for (const Wave& w : waves) {
     double px = w.kind == 0 ? a[0] : p[0], py = w.kind == 0 ? a[1] : p[1];
     double th = w.k * (w.dx * px + w.dy * py) - w.omega * t + w.ph;
-    addFlow(profile(w.k, depth, zs), w.amp * w.omega, w.amp * w.omega * w.omega, w.dx, w.dy,
+    const double A = r * w.amp;
+    addFlow(profile(w.k, depth, zs), A * w.omega, A * w.omega * w.omega, w.dx, w.dy,
             std::sin(th), std::cos(th), v, acc);
   }
 }
@@ -162,20 +172,24 @@ double Sea::dynamic(const double p[3], double t) const {
   if (!waves.empty()) label(p[0], p[1], t, a);
   double eta = heightOf(a, p[0], p[1], t) - level;
   double zs = stretch(depth, p[2] - level, eta), pd = 0;
+  const double r = gain(t);
   for (const Wave& w : waves) {
     double px = w.kind == 0 ? a[0] : p[0], py = w.kind == 0 ? a[1] : p[1];
     double th = w.k * (w.dx * px + w.dy * py) - w.omega * t + w.ph;
-    pd += w.amp * profile(w.k, depth, zs).cc * std::cos(th);
+    pd += r * w.amp * profile(w.k, depth, zs).cc * std::cos(th);
   }
   return rho * g * pd;
 }
 
 void Sea::now(double t, WaveNow* w) const {
+  // the ramp scales every amplitude (1 after it: the same bits as without)
+  const double r = gain(t);
   for (size_t i = 0; i < order.size(); i++) {
     const Wave& W = waves[order[i]];
-    double qa = W.kind == 0 ? W.steep * W.amp : 0;
+    const double A = r * W.amp;
+    double qa = W.kind == 0 ? W.steep * A : 0;
     w[i] = WaveNow{W.k, W.dx, W.dy, W.omega * t, W.ph, qa * W.dx, qa * W.dy, qa * W.k,
-                   W.amp, qa * W.omega, W.amp * W.omega, W.amp * W.omega * W.omega};
+                   A, qa * W.omega, A * W.omega, A * W.omega * W.omega};
   }
 }
 

@@ -2,6 +2,7 @@
 #ifndef MJBUOY_SEA_H_
 #define MJBUOY_SEA_H_
 
+#include <cmath>
 #include <vector>
 
 #include "sea/wavenow.h"
@@ -32,6 +33,11 @@ struct Wave {
 // (z - eta) h / (h + eta), clamped) [m]
 double stretch(double depth, double z, double eta);
 
+// periods of the dominant component in the default start-up ramp: the
+// drift a switched-on wave leaves is cut to 1 / (4 N^2 - 1) of that of an
+// abrupt start, 1/35 for N = 3 (docs/physics.md section 6)
+inline constexpr double kRampPeriods = 3;
+
 struct Sea {
   double rho = 1000;        // water density [kg/m^3]
   double level = 0;         // still water level: height of the orbit centres [m]
@@ -40,6 +46,10 @@ struct Sea {
   double current[2] = {0, 0};  // uniform current [m/s]
   double g = 9.81;          // gravity magnitude [m/s^2], from opt.gravity
   bool kerner = false;      // pressure rho g (eta - z) (Kerner) instead of linear theory
+  // start-up ramp T [s]: every amplitude is scaled by gain(t), a half
+  // cosine from 0 at t = 0 to 1 at t = T (docs/physics.md section 6,
+  // "Start-up ramp"); 0 switches the waves on at full amplitude
+  double ramp = 0;
   std::vector<Wave> waves;
   // derived: the order of components in now(), Gerstner first, and how
   // many are Gerstner (the rest are Airy)
@@ -49,6 +59,17 @@ struct Sea {
   // fill k, omega, unit direction and phase in radians of every wave, and
   // order, ng
   void derive();
+
+  // the ramp's factor on every amplitude at t [s]: 0.5 (1 - cos(pi t / T))
+  // for t < T, 1 after (and always 1 with T = 0)
+  double gain(double t) const {
+    if (!(ramp > 0) || t >= ramp) return 1;
+    return t > 0 ? 0.5 * (1 - std::cos(M_PI * t / ramp)) : 0;
+  }
+  // the default ramp [s]: kRampPeriods periods 2 pi / omega of the
+  // component with the largest amplitude (the peak of a spectrum), 0
+  // without waves (docs/physics.md section 6, "Start-up ramp")
+  double defaultRamp() const;
 
   // sum over waves of Q k A; the surface folds (height stops being a
   // function of x, y) when it reaches 1

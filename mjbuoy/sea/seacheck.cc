@@ -56,6 +56,10 @@ std::string currentCheck(const double c[2], const char* where) {
   return "";
 }
 
+std::string rampCheck(double ramp, const char* where) {
+  return inside(ramp, kRampRange) ? "" : outside(where, "ramp", ramp, kRampRange);
+}
+
 std::string windCheck(const mjbWind& w, const char* where) {
   if (!inside(w.speed, kWindSpeedRange)) return outside(where, "wind speed", w.speed, kWindSpeedRange);
   if (!inside(w.dir, kDirRange)) return outside(where, "wind direction", w.dir, kDirRange);

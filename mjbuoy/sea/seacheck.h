@@ -38,6 +38,9 @@ inline constexpr double kMaxAmpSum = 30;
 inline constexpr Range kCurrentRange = {"current", -50, 50, "m/s"};
 inline constexpr Range kWindSpeedRange = {"speed", 0, 100, "m/s"};
 inline constexpr Range kDirRange = {"direction", -360, 360, "deg"};
+// the start-up ramp T [s] (Sea::ramp): up to an hour, beyond the few
+// periods of the longest swell (about 25 s) any run needs
+inline constexpr Range kRampRange = {"ramp", 0, 3600, "s"};
 // gust components
 inline constexpr int kMaxGust = 1024;
 
@@ -55,6 +58,9 @@ std::string wavesCheck(double sum, double fold, const char* where, const char* a
 
 // a uniform current [m/s]
 std::string currentCheck(const double c[2], const char* where);
+
+// the start-up ramp time [s]
+std::string rampCheck(double ramp, const char* where);
 
 // mean wind and gusts (speed, direction, gust spectrum, gust count)
 std::string windCheck(const mjbWind& w, const char* where);

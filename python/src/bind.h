@@ -49,7 +49,7 @@ void bindBatch(py::module_& m);
 
 // sea_py.cc: mjb_setSea from Python values, the radiation coefficients
 void setSea(mjbBuoy* b, py::object waves, py::object spectra, py::object current,
-            py::object wind);
+            py::object wind, py::object ramp);
 py::dict radiationOf(const World& w, int body);
 
 }  // namespace mjbpy

@@ -95,9 +95,11 @@ static void windOf(py::handle obj, mjbWind* w) {
 }
 
 void setSea(mjbBuoy* b, py::object waves, py::object spectra, py::object current,
-            py::object wind) {
+            py::object wind, py::object ramp) {
   mjbSea sea;
   std::memset(&sea, 0, sizeof(sea));
+  // no ramp given: the model's (mjb_setSea's negative)
+  sea.ramp = ramp.is_none() ? -1.0 : ramp.cast<double>();
   py::array_t<double> wv;
   if (!waves.is_none()) {
     wv = doubles(waves, "waves", {-1, 5});

@@ -327,9 +327,12 @@ pass **{"mjbuoy.spectrum.sea.hs": 1.5}, or spectrum__sea__hs=1.5 ("__" for
           return a;
         }, py::arg("t") = py::none(), "wind speed vector at 10 m at time t (None: now) [m/s]");
   c.def("set_sea", [](Sim& s, py::object waves, py::object spectra, py::object current,
-                      py::object wind) { setSea(s.world().b, waves, spectra, current, wind); },
+                      py::object wind, py::object ramp) {
+          setSea(s.world().b, waves, spectra, current, wind, ramp);
+        },
         py::kw_only(), py::arg("waves") = py::none(), py::arg("spectra") = py::none(),
         py::arg("current") = py::none(), py::arg("wind") = py::none(),
+        py::arg("ramp") = py::none(),
         R"(Replace the sea between steps (mjb_setSea); density, level and depth stay the model's.
 
 waves: (n, 5) rows of amplitude [m], wavelength [m], direction [deg], phase
@@ -338,9 +341,10 @@ keys type ("pm", "jonswap", "table"), hs [m], tp [s], wind [m/s], gamma,
 table ((n, 2) omega [rad/s], S [m^2 s/rad]), dir [deg], spread, n, wmin,
 wmax [rad/s], seed; missing keys keep mjb_defaultSpectrum's values.
 current: (2,) [m/s]. wind: a dict with speed [m/s], dir [deg], gust ("none"
-or "froya"), ngust, seed. What is not given is calm (no waves, no current,
-no wind). Raises mjbuoy.Error with mjbuoy's message if a value is out of
-range (the sea is then unchanged).)");
+or "froya"), ngust, seed. ramp: the start-up ramp [s] from t = 0 (as
+mjbuoy.sea.ramp, 0 = off); not given keeps the model's. What is not given
+is calm (no waves, no current, no wind). Raises mjbuoy.Error with
+mjbuoy's message if a value is out of range (the sea is then unchanged).)");
   c.def("radiation", [](Sim& s, py::object body) {
           World& w = s.world();
           return radiationOf(w, bodyOf(w.m, body));
