@@ -16,7 +16,7 @@ namespace {
 const double kPi = 3.14159265358979323846;
 const int kFitPts = 4000;      // samples of the remainder in x = k h
 const double kFitMax = 2000;   // ... on [0, kFitMax], x = kFitMax t^3
-const double kBmin = 0.01, kBmax = 40;  // exponents b_j, geometric
+const double kBmin = 0.01, kBmax = 40;  // exponents b_j, geometric (at least)
 
 // the kernel's remainder at x = k h (nu = K h, x0 = k0 h, gam = c h):
 //   Phi(x) - 1 - gam / (x - x0) - (2 nu - gam) (1 - e^-x) / x,
@@ -88,7 +88,11 @@ bool greenFdInit(double K, double h, GreenFd* g) {
   int n = (int)xs.size();
   Eigen::MatrixXd A(n, kProny);
   Eigen::VectorXd y(n);
-  for (int j = 0; j < kProny; j++) g->b[j] = kBmin * std::pow(kBmax / kBmin, j / (kProny - 1.0));
+  // long waves (x0 = k0 h small): the remainder varies on the scale x0,
+  // which exponents up to 4 / x0 resolve (integrated error under 1e-4 / h
+  // down to K h = 1e-5)
+  double bmax = std::fmax(kBmax, 4 / x0);
+  for (int j = 0; j < kProny; j++) g->b[j] = kBmin * std::pow(bmax / kBmin, j / (kProny - 1.0));
   for (int i = 0; i < n; i++) {
     double dx = (i + 1 < n ? xs[i + 1] : xs[i]) - (i > 0 ? xs[i - 1] : xs[i]);
     double w = std::sqrt(0.5 * dx + 1e-12);
