@@ -702,9 +702,12 @@ TEST(Panel, BadInputIsNamed) {
   bad.face[5] = 9999;
   EXPECT_FALSE(mjb::panelSolve(bad, l, {1.0}, {0.0}, &h, &err));
   EXPECT_NE(err.find("vertex index 9999"), std::string::npos) << err;
-  h.depth = 10;
+  h.depth = -1;
   EXPECT_FALSE(mjb::panelSolve(b, l, {1.0}, {0.0}, &h, &err));
-  EXPECT_NE(err.find("deep water"), std::string::npos) << err;
+  EXPECT_NE(err.find("depth"), std::string::npos) << err;
+  h.depth = 0.5;  // the hemisphere (radius 1) reaches below the seabed
+  EXPECT_FALSE(mjb::panelSolve(b, l, {1.0}, {0.0}, &h, &err));
+  EXPECT_NE(err.find("seabed"), std::string::npos) << err;
 }
 
 // ---- panels from a hull's triangles ----

@@ -1,6 +1,7 @@
 // boundary-element solve of the radiation and diffraction problems
 // (docs/physics.md section 13): constant-strength sources on flat panels,
-// collocation at the centroids, the deep-water Green function of green.h,
+// collocation at the centroids, the deep-water Green function of green.h
+// or the finite-depth one of greenfd.h,
 // a damped interior lid (dphi/dz = K (1 + i w) phi on the waterplane inside
 // the hull, w 0 at the waterline) against irregular frequencies
 #include "radiation/panel.h"
@@ -18,6 +19,7 @@
 
 #include "util/gauss.h"
 #include "radiation/green.h"
+#include "radiation/greenfd.h"
 #include "radiation/greentab.h"
 #include "radiation/rankine.h"
 
@@ -131,6 +133,7 @@ struct Problem {
   int nb = 0, nl = 0;
   std::vector<std::vector<QPoint>> near, self;
   std::vector<double> lidw;  // per lid panel: its damping weight w (panellid.h)
+  double h = 0;              // water depth [m]; 0: deep water
   double gn[6];  // scratch
 };
 
@@ -250,12 +253,22 @@ void rankineMatrices(const Problem& pb, Rankine* rk) {
 }
 
 // wave part of G integrated over panel j at x: potential and gradient
-void waveIntegral(const GreenTable* tab, const std::vector<QPoint>& q, double K, const double* x,
-                  bool grad, cplx* s, cplx g[3]) {
+void waveIntegral(const GreenTable* tab, const GreenFd* fd, const std::vector<QPoint>& q, double K,
+                  const double* x, bool grad, cplx* s, cplx g[3]) {
   cplx ss = 0, gg[3] = {0, 0, 0};
   for (const QPoint& t : q) {
     double dx = x[0] - t.p[0], dy = x[1] - t.p[1];
     double R = std::sqrt(dx * dx + dy * dy);
+    if (fd) {
+      // finite depth (greenfd.h): everything but 1/r + 1/r'
+      WaveFd f = greenFdWave(*fd, tab, R, x[2], t.p[2]);
+      ss += t.w * f.G;
+      double ux = R > 0 ? dx / R : 0, uy = R > 0 ? dy / R : 0;
+      gg[0] += t.w * f.GR * ux;
+      gg[1] += t.w * f.GR * uy;
+      gg[2] += t.w * f.Gz;
+      continue;
+    }
     double X = K * R, Y = -K * (x[2] + t.p[2]);
     if (Y < 0) Y = 0;
     WaveF f = greenWaveTab(tab, X, Y);
@@ -283,8 +296,8 @@ void waveIntegral(const GreenTable* tab, const std::vector<QPoint>& q, double K,
 
 // frequency-dependent wave matrices on the rows listed (body rows first):
 // WS (all of them) and WD (the body rows)
-void waveMatrices(const Problem& pb, const std::vector<int>& rows, const GreenTable* tab, double K,
-                  bool par, MatC* WS, MatC* WD) {
+void waveMatrices(const Problem& pb, const std::vector<int>& rows, const GreenTable* tab,
+                  const GreenFd* fd, double K, bool par, MatC* WS, MatC* WD) {
   int n = pb.nb + pb.nl, nb = pb.nb, nr = (int)rows.size(), nrb = 0;
   for (int i : rows) nrb += i < nb;
   WS->resize(nr, n);
@@ -299,6 +312,8 @@ void waveMatrices(const Problem& pb, const std::vector<int>& rows, const GreenTa
       const std::vector<QPoint>* q;
       double dx = pi.c[0] - pj.c[0], dy = pi.c[1] - pj.c[1], dz = pi.c[2] + pj.c[2];
       double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+      // finite depth: the image in the seabed too
+      if (fd) d = std::fmin(d, std::sqrt(dx * dx + dy * dy + std::pow(dz + 2 * pb.h, 2)));
       if (i == j && i >= nb) {
         q = &pb.self[j];
       } else if (d < 2 * pj.diam) {
@@ -311,7 +326,7 @@ void waveMatrices(const Problem& pb, const std::vector<int>& rows, const GreenTa
         q = &one;
       }
       cplx s, g[3];
-      waveIntegral(tab, *q, K, pi.c, grad, &s, g);
+      waveIntegral(tab, fd, *q, K, pi.c, grad, &s, g);
       (*WS)(r, j) = s;
       if (grad) (*WD)(r, j) = g[0] * pi.n[0] + g[1] * pi.n[1] + g[2] * pi.n[2];
     }
@@ -319,14 +334,15 @@ void waveMatrices(const Problem& pb, const std::vector<int>& rows, const GreenTa
 }
 
 // the tabulated wave part covering every panel pair up to wavenumber K:
-// X = K R <= K (horizontal diagonal of the bounding box), Y <= 2 K depth
+// X = K R <= K (horizontal diagonal of the bounding box), Y <= 2 K depth;
+// finite depth: K the wavenumber k0, Y <= 4 k0 h (the farthest image)
 std::shared_ptr<const GreenTable> waveTable(const Problem& pb, double K) {
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
   for (const Panel& p : pb.pn)
     for (int v = 0; v < p.nv; v++)
       for (int k = 0; k < 3; k++) lo[k] = std::fmin(lo[k], p.v[v][k]), hi[k] = std::fmax(hi[k], p.v[v][k]);
   double dh = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
-  return greenTable(K * dh, -2 * K * lo[2]);
+  return greenTable(K * dh, pb.h > 0 ? 4 * K * pb.h : -2 * K * lo[2]);
 }
 
 bool finiteAll(const double* a, int n) {
@@ -457,6 +473,7 @@ struct Freq {
   const Rankine* rk;
   const MatR *Nn, *Na;
   const GreenTable* tab;
+  const std::vector<GreenFd>* fd;  // per frequency; empty: deep water
   const std::vector<double>*omega, *heading;
   HydroCoef* out;
   bool outer;        // frequencies run in parallel: fill serially
@@ -501,8 +518,10 @@ bool solveOmega(const Freq& f, int w) {
   const double* ref = out->ref;
   double rho = out->rho, grav = out->g;
   double om = (*f.omega)[w], K = om * om / grav;
+  const GreenFd* fd = f.fd->empty() || !((*f.fd)[w].h > 0) ? nullptr : &(*f.fd)[w];
+  double kw = fd ? fd->k0 : K;  // the incident wave's wavenumber
   MatC WS, WD;
-  waveMatrices(pb, rows, f.tab, K, !f.outer, &WS, &WD);
+  waveMatrices(pb, rows, f.tab, fd, K, !f.outer, &WS, &WD);
   int nrb = (int)WD.rows();
   // lid rows: the damped lid, dphi/dz(0-) = K (1 + i w) phi on the lid's
   // interior side, w 0 at the waterline (docs/physics.md section 13); with
@@ -520,17 +539,21 @@ bool solveOmega(const Freq& f, int w) {
   // problems (dphi_D/dn = -dphi_0/dn)
   MatC rhs = MatC::Zero(n, 6 + nh);
   rhs.block(0, 0, nb, 6) = Nn.cast<cplx>();
-  // incident potential per unit amplitude: phi0 = -i g/omega e^{Kz} e^{iK(x cos b + y sin b)}
+  // incident potential per unit amplitude: phi0 = -i g/omega Z(z) e^{ik(x cos b + y sin b)},
+  // Z = e^{kz} in deep water, cosh(k (z + h)) / cosh(k h) at depth h
   MatC phi0(nb, nh);
   for (int h = 0; h < nh; h++) {
     double cb = std::cos(heading[h]), sb = std::sin(heading[h]);
     for (int i = 0; i < nb; i++) {
       const Panel& p = pb.pn[i];
-      double ph = K * ((p.c[0] - ref[0]) * cb + (p.c[1] - ref[1]) * sb);
-      cplx e = std::exp(K * p.c[2]) * cplx(std::cos(ph), std::sin(ph));
-      cplx f0 = cplx(0, -grav / om) * e;
+      double ph = kw * ((p.c[0] - ref[0]) * cb + (p.c[1] - ref[1]) * sb), Z, Zz;
+      depthFactor(kw, fd ? pb.h : 0, p.c[2], &Z, &Zz);
+      cplx e = cplx(std::cos(ph), std::sin(ph)), a = cplx(0, -grav / om) * e;
+      cplx f0 = a * Z;
       phi0(i, h) = f0;
-      cplx dn = f0 * (cplx(0, K * cb) * p.n[0] + cplx(0, K * sb) * p.n[1] + K * p.n[2]);
+      // (no Zz / Z: both underflow to 0 for a body far down)
+      cplx dn = a * (cplx(0, kw * cb) * Z * p.n[0] + cplx(0, kw * sb) * Z * p.n[1] +
+                     kw * Zz * p.n[2]);
       rhs(i, 6 + h) = -dn;
     }
   }
@@ -578,6 +601,55 @@ bool solveOmega(const Freq& f, int w) {
          finiteAll(out->Xim.data() + 6 * w * nh, 6 * nh);
 }
 
+// finite depth: every body vertex above the seabed z = -h
+bool bodyAboveSeabed(const Problem& pb, std::string* err) {
+  if (!(pb.h > 0)) return true;
+  for (int j = 0; j < pb.nb; j++)
+    for (int v = 0; v < pb.pn[j].nv; v++)
+      if (!(pb.pn[j].v[v][2] > -pb.h)) {
+        char b[240];
+        std::snprintf(b, sizeof b, "panel body face %d: vertex z = %g m is at or below the seabed "
+                      "(depth %g m); the hull must float clear of it (raise mjbuoy.sea.depth)", j,
+                      pb.pn[j].v[v][2], pb.h);
+        *err = b;
+        return false;
+      }
+  return true;
+}
+
+// whether the seabed is within kReachSize times the body's size (greenfd.h)
+bool bottomNear(const Problem& pb) {
+  double cx = 0, cy = 0, a = 0, r = 0;
+  for (int j = 0; j < pb.nb; j++) {
+    const Panel& p = pb.pn[j];
+    cx += p.area * p.c[0], cy += p.area * p.c[1], a += p.area;
+  }
+  cx /= a, cy /= a;
+  for (int j = 0; j < pb.nb; j++)
+    for (int v = 0; v < pb.pn[j].nv; v++) {
+      const double* q = pb.pn[j].v[v];
+      double dx = q[0] - cx, dy = q[1] - cy;
+      r = std::fmax(r, std::sqrt(dx * dx + dy * dy + q[2] * q[2]));
+    }
+  return pb.h < kReachSize * r;
+}
+
+// infinite frequency at depth h: the images beyond 1/r - 1/r' (greenfd.h),
+// all at least 2 (h - draft) away: by the panel centroid
+void addInfiniteImages(const Problem& pb, MatR* S, MatR* D) {
+  int nb = pb.nb;
+  parallelRows(nb, [&](int i) {
+    const Panel& pi = pb.pn[i];
+    for (int j = 0; j < nb; j++) {
+      const Panel& pj = pb.pn[j];
+      double G, g[3];
+      greenFdInfinite(pb.h, pi.c[0] - pj.c[0], pi.c[1] - pj.c[1], pi.c[2], pj.c[2], &G, g);
+      (*S)(i, j) += pj.area * G;
+      (*D)(i, j) += pj.area * (g[0] * pi.n[0] + g[1] * pi.n[1] + g[2] * pi.n[2]);
+    }
+  });
+}
+
 }  // namespace
 
 void panelSymmetryUse(bool on) { gSymmetry = on; }
@@ -623,10 +695,12 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
       *err = b;
       return false;
     }
-  if (!(out->rho > 0) || !(out->g > 0) || out->depth != 0) {
-    *err = "panel: rho and g must be > 0 and depth 0 (deep water only)";
+  if (!(out->rho > 0) || !(out->g > 0) || !(out->depth >= 0) || !std::isfinite(out->depth)) {
+    *err = "panel: rho and g must be > 0 and depth >= 0 (0: deep water), finite";
     return false;
   }
+  pb.h = out->depth;
+  if (!bodyAboveSeabed(pb, err)) return false;
   int n = pb.nb + pb.nl, nb = pb.nb, nh = (int)heading.size(), nw = (int)omega.size();
   pb.near.resize(n);
   pb.self.resize(n);
@@ -652,9 +726,11 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
   // infinite frequency: G = 1/r - 1/r' (phi = 0 on z = 0), body only
   {
     MatR M = rk.Dd.leftCols(nb) - rk.Di.leftCols(nb);
+    MatR S = rk.Sd.topLeftCorner(nb, nb) - rk.Si.topLeftCorner(nb, nb);
+    if (pb.h > 0 && bottomNear(pb)) addInfiniteImages(pb, &S, &M);
     M.diagonal().array() -= 2 * kPi;
     MatR sig = M.partialPivLu().solve(Nn);
-    MatR phi = (rk.Sd.topLeftCorner(nb, nb) - rk.Si.topLeftCorner(nb, nb)) * sig;
+    MatR phi = S * sig;
     MatR Ai = -rho * Na.transpose() * phi;
     for (int a = 0; a < 6; a++)
       for (int b = 0; b < 6; b++) out->Ainf[6 * a + b] = Ai(a, b);
@@ -672,14 +748,31 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
   out->Xim.assign(6 * nw * nh, 0);
   out->FKre.assign(6 * nw * nh, 0);
   out->FKim.assign(6 * nw * nh, 0);
-  std::shared_ptr<const GreenTable> tab = waveTable(pb, omega.back() * omega.back() / grav);
+  // finite depth: the kernel of each frequency (greenfd.h), the table up to
+  // the largest propagating wavenumber
+  // (a frequency out of the seabed's reach: the deep-water function, a
+  // kernel with h = 0)
+  std::vector<GreenFd> fds(pb.h > 0 ? nw : 0);
+  for (size_t w = 0; w < fds.size(); w++)
+    if (omega[w] * omega[w] / grav * pb.h >= kReachKh && !bottomNear(pb)) {
+      fds[w].h = 0;
+    } else if (!greenFdInit(omega[w] * omega[w] / grav, pb.h, &fds[w])) {
+      char b[200];
+      std::snprintf(b, sizeof b, "panel: finite-depth Green function not finite at omega = %g "
+                    "rad/s, depth %g m", omega[w], pb.h);
+      *err = b;
+      return false;
+    }
+  double kmax = omega.back() * omega.back() / grav;
+  for (const GreenFd& f : fds) kmax = std::fmax(kmax, f.k0);
+  std::shared_ptr<const GreenTable> tab = waveTable(pb, kmax);
   // frequencies in parallel (each with a serial fill; one frequency: a
   // parallel fill): every frequency is computed by the same operations in
   // the same order whatever the thread, so results do not depend on it
   // a mirror-symmetric mesh (about y = c, x = c or both): reduced systems
   Group gr;
   bool sym = gSymmetry && (gr = symmetryGroup(pb), gr.img.size() > 1);
-  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &omega, &heading, out, nw > 1, &gr, {}};
+  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &fds, &omega, &heading, out, nw > 1, &gr, {}};
   if (sym) {
     fq.rows = gr.rows;
   } else {

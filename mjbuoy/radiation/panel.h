@@ -1,6 +1,6 @@
-// linear potential-flow panel solver, deep water: added mass, radiation
-// damping and exciting force of one rigid body from its wetted surface
-// (docs/physics.md section 13)
+// linear potential-flow panel solver, deep or finite depth: added mass,
+// radiation damping and exciting force of one rigid body from its wetted
+// surface (docs/physics.md section 13)
 #ifndef MJBUOY_PANEL_H_
 #define MJBUOY_PANEL_H_
 
@@ -22,7 +22,8 @@ struct PanelMesh {
 //   the water (normals out of the body);
 // lid: the waterplane inside the waterline (z = 0, normals up), for the
 //   removal of irregular frequencies; empty: no removal;
-// omega [rad/s] > 0 increasing, heading [rad]; rho, g, ref of out are inputs.
+// omega [rad/s] > 0 increasing, heading [rad]; rho, g, depth (0: deep water;
+// the body above z = -depth) and ref of out are inputs.
 // Fills out's omega, A, B, Ainf, heading, X, FK. Returns false with a message
 // naming the bad entry on invalid input or a non-finite result.
 bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,

@@ -653,6 +653,9 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   HydroCoef c;
   c.rho = B->cfg.sea.rho;
   c.g = B->cfg.sea.g;
+  // finite depth: the panel solver's Green function of depth h where the
+  // seabed is within reach (docs/physics.md section 13, "Finite depth")
+  c.depth = B->cfg.sea.depth > 0 ? B->cfg.sea.depth : 0;
   std::string err;
   // diffraction: a uniform heading set, interpolated at the components'
   // headings relative to the body's yaw (docs/physics.md section 15)
@@ -745,10 +748,6 @@ static std::string attachGroups(Buoy* B) {
                             "(mjbuoy.radiation) or remove the entry");
     }
     return "";
-  }
-  if (B->cfg.sea.depth > 0) {
-    B->cfg.warn.push_back("radiation: the panel solver is for deep water; mjbuoy.sea.depth = " +
-                          fmt(B->cfg.sea.depth) + " m is not used for the radiation coefficients");
   }
   if (B->cfg.sea.kerner && rc.diffraction) {
     B->cfg.warn.push_back("radiation: mjbuoy.sea.pressure = kerner is not linear theory's "
