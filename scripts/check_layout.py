@@ -33,10 +33,6 @@ PUBLIC = {'mjbuoy.h', 'mjbuoy_version.h'}
 KNOWN = {
     ('mjbuoy/cpu/cpuhull.h', 'api/buoy.h'),
     ('mjbuoy/gl/gl.cc', 'api/buoy.h'),
-    ('mjbuoy/hull/eqdraft.cc', 'api/buoy.h'),
-    ('mjbuoy/radiation/radattach.cc', 'api/buoy.h'),
-    ('mjbuoy/sea/wind.cc', 'api/buoy.h'),
-    ('mjbuoy/sea/wind.cc', 'hull/hull.h'),
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 

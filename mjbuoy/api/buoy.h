@@ -9,6 +9,8 @@
 #include <mujoco/mujoco.h>
 
 #include "api/config.h"
+#include "hull/hullset.h"
+#include "hull/windload.h"
 #include "radiation/diffract.h"
 #include "mjbuoy.h"
 #include "mooring/mooring.h"
@@ -22,27 +24,10 @@ namespace mjb {
 struct GlBackend;
 struct Pool;
 
-struct Hull {
-  int geom, body;     // MuJoCo ids
-  int v0, nv;         // vertex range in Buoy::vert
-  int t0, nt;         // triangle range in Buoy::face
-  double area;        // total surface area S_total [m^2]
-  double mass;        // body mass share of this hull (by area) [kg]
-  double share;       // this hull's share (by area) of its rigid group's hulls
-  double rad;         // largest vertex distance from the body origin [m]
-  HullParams par;
-  char radDrag = 0;   // linear drag terms radiation's default zeroed (config.h kRadDrag)
-};
-
-// static data of one attached model, built once by mjb_attach
-struct Buoy {
-  const mjModel* m;
+// static data of one attached model, built once by mjb_attach: its hulls
+// (the HullSet base: m, hull, vert, face, tarea, body) and the rest
+struct Buoy : HullSet {
   Config cfg;
-  std::vector<Hull> hull;      // ordered by body, then geom
-  std::vector<double> vert;    // hull vertices in body frame, 3 each [m]
-  std::vector<int> face;       // 3 global vertex indices per triangle
-  std::vector<double> tarea;   // area of each triangle [m^2]
-  std::vector<int> body;       // bodies carrying hulls, ascending
   std::vector<Sensor> sensor;  // user sensors mjbuoy fills (sensor.h)
   std::string warnings;        // newline-separated
   std::string renderer;
@@ -56,7 +41,7 @@ struct Buoy {
   bool splitHulls = false;
   Pool* pool = nullptr;
   size_t wcap = 0;             // wave components reserved (cpu scratch, gl buffers)
-  Wind wind;                   // wind.cc
+  Wind wind;                   // hull/windload.h
   Radiation rad;               // radiation.h: bodies with added mass and memory
   // the panel solver's coefficients set at attach (radattach.cc): body id
   // and its HydroCoef (about the body COM, body axes), for mjbuoy-hydro

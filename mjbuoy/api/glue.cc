@@ -14,9 +14,10 @@
 
 #include "api/buoy.h"
 #include "hull/hull.h"
+#include "hull/windload.h"
 #include "util/cpus.h"
 #include "util/pool.h"
-#include "radiation/radattach.h"
+#include "api/radattach.h"
 #include "radiation/radiation.h"
 #include "mjbuoy.h"
 #include "api/seasetter.h"
@@ -218,12 +219,15 @@ void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
   } else {
     mjb::cpuWrench(b->b, m, d, s);
   }
-  mjb::windWrench(b->b, m, d, s);
+  const Buoy& B = b->b;
+  const mjb::WindIO io = {B.gl ? nullptr : s->h.data(), s->crest, s->bad.data(),
+                          s->part.data() + 6 * m->nbody * mjbPART_WIND, s->wrench.data()};
+  mjb::windWrench(B, B.wind, B.cfg.sea, m, d, io);
   for (int bd : b->b.body) {
     const mjtNum* w = s->wrench.data() + 6 * bd;
     applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
   }
-  // wind on superstructure bodies that carry no hull (wind.cc)
+  // wind on superstructure bodies that carry no hull (hull/windload.cc)
   for (int bd : b->b.wind.extra) {
     const mjtNum* w = s->wrench.data() + 6 * bd;
     applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
@@ -509,7 +513,7 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
   B.wcap = std::max<size_t>(B.cfg.capacity, B.cfg.sea.waves.size());
   B.cfg.sea.waves.reserve(B.wcap);
   B.cfg.sea.order.reserve(B.wcap);  // Sea::derive rebuilds it in mjb_setSea
-  mjb::windMake(&B);
+  mjb::windMake(B, B.cfg.wind, &B.cfg.warn, &B.wind);
   // radiation (on by default for free hull bodies, seconds per hull:
   // docs/mjcf.md section 11), before the backend: a group it skips takes
   // back its linear drag terms (radattach.cc skipGroup), which the gl
