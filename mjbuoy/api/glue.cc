@@ -125,6 +125,23 @@ void renew(State* s, const mjData* d) {
   mjb::moorRestart(&s->moor);
 }
 
+}  // namespace
+
+void mjb::makeState(const Buoy& b, State* s) {
+  const size_t nw = std::max(b.wcap, b.cfg.sea.waves.size());
+  mjb::makeHullState(b, nw, s);
+  mjb::makeCpuState(b, b.cfg.sea, b.wcap, b, &s->cpu);
+  s->dwrench.assign(6 * b.diff.db.size(), 0);
+  s->dtold.assign(b.diff.db.size(), 0);
+}
+
+size_t mjb::stateBytes(const Buoy& b, int nthreads) {
+  const size_t nw = std::max(b.wcap, b.cfg.sea.waves.size());
+  return mjb::cpuStateBytes(b, b.cfg.sea, b.wcap, nthreads) + mjb::hullStateBytes(b, nw);
+}
+
+namespace {
+
 // the state of d, renewed if it is stale; fresh says the state was created
 State* state(mjbBuoy* b, const mjData* d, bool create) {
   State* s = nullptr;
@@ -215,9 +232,9 @@ void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
     return;
   }
   if (b->b.gl) {
-    mjb::glWrench(&b->b, m, d, s);
+    mjb::glWrench(b->b.gl, b->b, b->b.cfg.sea, m, d, s, &s->gl);
   } else {
-    mjb::cpuWrench(b->b, m, d, s);
+    mjb::cpuWrench(b->b, b->b.cfg.sea, b->b, m, d, s, &s->cpu);
   }
   const Buoy& B = b->b;
   const mjb::WindIO io = {B.gl ? nullptr : s->h.data(), s->crest, s->bad.data(),
@@ -534,7 +551,7 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
   B.renderer = "CPU";
   if (B.cfg.backend != "cpu") {
     std::string ge;
-    if (!B.hull.empty() && mjb::glMake(&B, &ge)) {
+    if (!B.hull.empty() && mjb::glMake(B, B.cfg.sea, B.wcap, &B.gl, &B.renderer, &ge)) {
       B.cfg.backend = "gl";
     } else if (B.cfg.backend == "gl" && !B.hull.empty()) {
       copyError("mjbuoy: backend gl is not available: " + ge +
@@ -564,7 +581,7 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
   if (!e.empty()) {
     copyError(e, error, error_sz);
     mjb::restoreModel(m, B.rad);
-    mjb::glFree(&B);
+    mjb::glFree(&B.gl);
     mjb::poolFree(B.pool);
     return nullptr;
   }
@@ -628,9 +645,9 @@ void mjb_detach(mjbBuoy* b) {
   // callbacks that found b before it left gattached end first; none starts
   std::unique_lock<std::shared_mutex> wait(b->run);
   wait.unlock();
-  for (auto& kv : b->data) mjb::glFreeState(&b->b, kv.second.get());
+  for (auto& kv : b->data) mjb::glFreeState(b->b.gl, &kv.second->gl);
   if (last) mjb::restoreModel(b->b.m, b->b.rad);
-  mjb::glFree(&b->b);
+  mjb::glFree(&b->b.gl);
   mjb::poolFree(b->b.pool);
   delete b;
 }
@@ -646,7 +663,7 @@ void mjb_unbindData(mjbBuoy* b, const mjData* d) {
   b->frozen.erase(d);
   auto it = b->data.find(d);
   if (it == b->data.end()) return;
-  mjb::glFreeState(&b->b, it->second.get());
+  mjb::glFreeState(b->b.gl, &it->second->gl);
   b->data.erase(it);
 }
 
@@ -660,14 +677,14 @@ int mjb_copyData(mjbBuoy* b, mjData* dst, const mjData* src) {
   }
   State* t = state(b, dst, true);
   // dst's own GL buffers (glCopyState copies into them)
-  unsigned keep[3] = {t->slambuf[0], t->slambuf[1], t->offbuf};
+  unsigned keep[3] = {t->gl.slambuf[0], t->gl.slambuf[1], t->gl.offbuf};
   *t = *s;
-  t->slambuf[0] = keep[0];
-  t->slambuf[1] = keep[1];
-  t->offbuf = keep[2];
+  t->gl.slambuf[0] = keep[0];
+  t->gl.slambuf[1] = keep[1];
+  t->gl.offbuf = keep[2];
   t->notices.reserve(s->notices.capacity());
   t->buf = dst->buffer;  // dst's counters and time are src's after mj_copyData
-  return mjb::glCopyState(&b->b, t, s) ? 1 : 0;
+  return mjb::glCopyState(b->b.gl, &t->gl, &s->gl) ? 1 : 0;
 }
 
 int mjb_freezeData(mjbBuoy* b, const mjData* d, int freeze) {
@@ -725,7 +742,7 @@ mjbInfo mjb_info(const mjbBuoy* b) {
 }
 
 int mjb_stageTimes(const mjbBuoy* b, const char** name, double* ms, int n) {
-  return b ? mjb::glStageTimes(const_cast<Buoy*>(&b->b), name, ms, n) : 0;
+  return b ? mjb::glStageTimes(b->b.gl, name, ms, n) : 0;
 }
 
 const char* mjb_warnings(const mjbBuoy* b) {
@@ -742,7 +759,7 @@ int mjb_setSea(mjbBuoy* b, const mjbSea* sea, char* error, int error_sz) {
   // other starts until the sea is whole (mjbuoy.h, threads)
   std::unique_lock<std::shared_mutex> lk(b->run);
   if (!mjb::setSea(&b->b, *sea, error, error_sz)) return 0;
-  if (b->b.gl) mjb::glSetSea(&b->b);
+  if (b->b.gl) mjb::glSetSea(b->b.gl, b->b.cfg.sea);
   return 1;
 }
 
@@ -798,7 +815,7 @@ bool mjb::vertexSeconds(const mjbBuoy* b, const mjData* d, double* sec) {
   State* s = b ? state(const_cast<mjbBuoy*>(b), d, false) : nullptr;
   if (!s) return false;
   *sec = 0;
-  for (double v : s->vsec) *sec += v;
+  for (double v : s->cpu.vsec) *sec += v;
   return true;
 }
 
@@ -806,9 +823,9 @@ bool mjb::newtonStats(const mjbBuoy* b, const mjData* d, long* solves, long* ste
   State* s = b ? state(const_cast<mjbBuoy*>(b), d, false) : nullptr;
   if (!s) return false;
   *solves = *steps = 0;
-  for (size_t i = 0; i < s->nsolve.size(); i++) {
-    *solves += s->nsolve[i];
-    *steps += s->niter[i];
+  for (size_t i = 0; i < s->cpu.nsolve.size(); i++) {
+    *solves += s->cpu.nsolve[i];
+    *steps += s->cpu.niter[i];
   }
   return true;
 }

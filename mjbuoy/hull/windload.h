@@ -19,7 +19,8 @@ struct Sea;
 struct Wind : WindField {
   std::vector<double> vert;    // superstructure vertices, body frame [m]
   std::vector<int> face;       // 3 indices into vert each
-  struct Part { int body, t0, nt, hull; };  // triangles of one surface on one body; hull index or -1
+  // triangles of one surface on one body; hull index or -1
+  struct Part { int body, t0, nt, hull; };
   std::vector<Part> part;      // hulls then superstructure; t0 < 0: hull triangles
   std::vector<int> body;       // bodies with a wind surface, ascending
   std::vector<int> extra;      // those of them without a hull
