@@ -192,27 +192,9 @@ static void uploadWaves(GlBackend* g, const Sea& sea) {
   trisUniform(g, "nfast", g->nfast);
 }
 
-bool glMake(const HullSet& hs, const Sea& sea, size_t wcap, GlBackend** out,
-            std::string* renderer, std::string* err) {
-  *out = nullptr;
-  auto g = new GlBackend;
-  if (!glCreate(&g->ctx, err)) {
-    delete g;
-    return false;
-  }
-  GlCurrent cur(&g->ctx);
-  if (!cur.ok()) {
-    *err = cur.error();
-    glDestroy(&g->ctx);
-    delete g;
-    return false;
-  }
+// compile every program variant (kVarDef) with the group sizes as defines
+static bool makePrograms(GlBackend* g, std::string* err) {
   const GladGLContext& gl = g->ctx.gl;
-  if (!groupSizes(g, err)) {
-    *out = g;
-    glFree(out);
-    return false;
-  }
   std::string defs = "#define BUOY_VERT_LOCAL " + std::to_string(g->vlocal) +
                      "\n#define BUOY_LOCAL " + std::to_string(g->local) +
                      "\n#define BUOY_PER " + std::to_string(g->per) +
@@ -228,14 +210,23 @@ bool glMake(const HullSet& hs, const Sea& sea, size_t wcap, GlBackend** out,
     }
     GLuint& p = i == 2 * kNVar ? g->bprog : vert ? g->vprog[v] : g->tprog[v];
     p = glProgram(gl, kStage[i == 2 * kNVar ? kBodies : vert ? kVerts : kTris], err, d);
-    if (!p) {
-      *out = g;
-      glFree(out);
-      return false;
-    }
+    if (!p) return false;
   }
+  return true;
+}
 
-  // static data: vertices, triangles, hulls, waves
+// the static data the buffers start from: vertices, triangles, hulls and
+// their chunks, bodies, waves (room for wcap components)
+struct GlStatic {
+  std::vector<GVert> vert;
+  std::vector<GTri> tri;
+  std::vector<GHull> hull;
+  std::vector<GChunk> chunk, vchunk;
+  std::vector<GWave> wave;
+};
+
+static void staticData(GlBackend* g, const HullSet& hs, const Sea& sea, size_t wcap,
+                       GlStatic* st) {
   const mjModel* m = hs.m;
   g->nvert = hs.vert.size() / 3;
   g->ntri = hs.face.size() / 3;
@@ -243,10 +234,14 @@ bool glMake(const HullSet& hs, const Sea& sea, size_t wcap, GlBackend** out,
   g->nslot = hs.body.size();
   std::vector<int> slot(m->nbody, -1);
   for (int i = 0; i < g->nslot; i++) slot[hs.body[i]] = i;
-  std::vector<GVert> vert(g->nvert);
-  std::vector<GTri> tri(g->ntri);
-  std::vector<GHull> hull(g->nhull);
-  std::vector<GChunk> chunk, vchunk;
+  std::vector<GVert>& vert = st->vert;
+  std::vector<GTri>& tri = st->tri;
+  std::vector<GHull>& hull = st->hull;
+  std::vector<GChunk>& chunk = st->chunk;
+  std::vector<GChunk>& vchunk = st->vchunk;
+  vert.assign(g->nvert, GVert{});
+  tri.assign(g->ntri, GTri{});
+  hull.assign(g->nhull, GHull{});
   const int csize = g->local * g->per;
   g->body.assign(g->nslot, GBody{});
   for (int h = 0; h < g->nhull; h++) {
@@ -286,17 +281,24 @@ bool glMake(const HullSet& hs, const Sea& sea, size_t wcap, GlBackend** out,
   g->nwave = sea.waves.size();
   // room for wcap components, so mjb_setSea only rewrites (glSetSea)
   const int cap = std::max<int>(wcap, g->nwave);
-  std::vector<GWave> wave(cap, GWave{});
+  st->wave.assign(cap, GWave{});
   g->perm.assign(cap, 0);
   g->reach = g->reach0 = 1.25 * longestEdge(hs);  // a first guess; the steps raise it
   g->phase.assign(g->nslot * std::max(cap, 1), 0);
   g->out.assign(g->nslot * 40, 0);
   g->nchunk = chunk.size();
   g->nvchunk = vchunk.size();
+}
 
+// the buffers, within the driver's buffer texture size (false and err if
+// not): static data from st, per-step inputs (mapped for good where GL 4.4
+// can), outputs
+static bool makeBuffers(GlBackend* g, const GlStatic& st, std::string* err) {
+  const GladGLContext& gl = g->ctx.gl;
   // each vertex's e^(i theta) per component, two a texel (shaders/sea.glsl
   // expTexel), room for the capacity so mjb_setSea creates nothing; within
   // the driver's limits (checked before anything is allocated)
+  const int cap = st.wave.size();
   const size_t nexp = size_t(g->nvert) * ((cap + 1) / 2);
   GLint tmax = 0;  // texels; GL guarantees only 65536, llvmpipe has 2^27
   gl.GetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &tmax);
@@ -305,15 +307,13 @@ bool glMake(const HullSet& hs, const Sea& sea, size_t wcap, GlBackend** out,
            " wave components (mjbuoy.sea.capacity, else the sea's count) = " +
            std::to_string(nexp) + " texels (two components each) exceed the driver's buffer texture size (" +
            std::to_string(tmax) + " texels); use fewer components or boats, or backend cpu";
-    *out = g;
-    glFree(out);
     return false;
   }
   makeBuffer(g, B_EXP, std::max<size_t>(nexp, 1) * 16, nullptr, GL_DYNAMIC_COPY);
-  makeBuffer(g, B_VERT, vert.size() * sizeof(GVert), vert.data(), GL_STATIC_DRAW);
-  makeBuffer(g, B_TRI, tri.size() * sizeof(GTri), tri.data(), GL_STATIC_DRAW);
-  makeBuffer(g, B_HULL, hull.size() * sizeof(GHull), hull.data(), GL_STATIC_DRAW);
-  makeBuffer(g, B_WAVE, wave.size() * sizeof(GWave), wave.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_VERT, st.vert.size() * sizeof(GVert), st.vert.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_TRI, st.tri.size() * sizeof(GTri), st.tri.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_HULL, st.hull.size() * sizeof(GHull), st.hull.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_WAVE, st.wave.size() * sizeof(GWave), st.wave.data(), GL_STATIC_DRAW);
   // the per-step inputs: written in place where GL 4.4 can map them for
   // good (on llvmpipe a mapping is the buffer's own memory: no copy)
   g->persist = gl.VERSION_4_4 && gl.BufferStorage && gl.MapBufferRange;
@@ -329,8 +329,6 @@ bool glMake(const HullSet& hs, const Sea& sea, size_t wcap, GlBackend** out,
     g->phasep = static_cast<float*>(mapped(B_PHASE, g->phase.size() * sizeof(float), wr));
     if (!g->bodyp || !g->phasep) {
       *err = "gl backend: could not map its per-step buffers (glMapBufferRange)";
-      *out = g;
-      glFree(out);
       return false;
     }
     std::memcpy(g->bodyp, g->body.data(), g->nslot * sizeof(GBody));
@@ -342,9 +340,9 @@ bool glMake(const HullSet& hs, const Sea& sea, size_t wcap, GlBackend** out,
   }
   makeBuffer(g, B_VOUT, g->nvert * 16, nullptr, GL_DYNAMIC_COPY);
   makeBuffer(g, B_LAB, g->nvert * 8, nullptr, GL_DYNAMIC_COPY);
-  makeBuffer(g, B_CHUNK, chunk.size() * sizeof(GChunk), chunk.data(), GL_STATIC_DRAW);
-  makeBuffer(g, B_VCHUNK, vchunk.size() * sizeof(GChunk), vchunk.data(), GL_STATIC_DRAW);
-  makeBuffer(g, B_CPART, chunk.size() * g->local * BUOY_NSUM * 16, nullptr, GL_DYNAMIC_COPY);
+  makeBuffer(g, B_CHUNK, st.chunk.size() * sizeof(GChunk), st.chunk.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_VCHUNK, st.vchunk.size() * sizeof(GChunk), st.vchunk.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_CPART, st.chunk.size() * g->local * BUOY_NSUM * 16, nullptr, GL_DYNAMIC_COPY);
   makeBuffer(g, B_OUT, g->out.size() * sizeof(float), nullptr, GL_DYNAMIC_READ);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   // the per-triangle gathers read through texel fetches: llvmpipe gathers a
@@ -354,10 +352,14 @@ bool glMake(const HullSet& hs, const Sea& sea, size_t wcap, GlBackend** out,
     *err = "gl backend: " + std::to_string(g->ntri) + " triangles and " +
            std::to_string(g->nvert) + " vertices exceed the driver's buffer texture size (" +
            std::to_string(tmax) + " texels); use backend cpu";
-    *out = g;
-    glFree(out);
     return false;
   }
+  return true;
+}
+
+// the buffer textures the per-triangle gathers read, and their units
+static void makeTextures(GlBackend* g) {
+  const GladGLContext& gl = g->ctx.gl;
   const GLenum tfmt[kNTex] = {GL_RGBA32F, GL_RG32F,   GL_RGBA32I, GL_RGBA32F,
                               GL_RGBA32F, GL_RGBA32F, GL_R32F};
   const int tbuf[kNTex] = {B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP, B_WAVE, B_PHASE};
@@ -382,8 +384,12 @@ bool glMake(const HullSet& hs, const Sea& sea, size_t wcap, GlBackend** out,
     gl.ProgramUniform1i(p, loc(g, p, "tWave"), 5);
     gl.ProgramUniform1i(p, loc(g, p, "tPhase"), 6);
   }
+}
 
-  // uniforms that never change
+// the uniforms that never change, the locations of the per-step ones, the
+// stage timers
+static void fixedUniforms(GlBackend* g, const Sea& sea) {
+  const GladGLContext& gl = g->ctx.gl;
   trisUniform(g, "nchunk", g->nchunk);
   trisUniform(g, "rhog", float(sea.rho * sea.g));
   trisUniform(g, "rho", float(sea.rho));
@@ -409,7 +415,34 @@ bool glMake(const HullSet& hs, const Sea& sea, size_t wcap, GlBackend** out,
   }
   timerInit(&g->timer, &gl);
   for (int i = 0; i < kNStage; i++) g->tstage[i] = timerStage(&g->timer, kStage[i]);
+}
+
+bool glMake(const HullSet& hs, const Sea& sea, size_t wcap, GlBackend** out,
+            std::string* renderer, std::string* err) {
+  *out = nullptr;
+  auto g = new GlBackend;
+  if (!glCreate(&g->ctx, err)) {
+    delete g;
+    return false;
+  }
+  GlCurrent cur(&g->ctx);
+  if (!cur.ok()) {
+    *err = cur.error();
+    glDestroy(&g->ctx);
+    delete g;
+    return false;
+  }
+  GlStatic st;
+  bool ok = groupSizes(g, err) && makePrograms(g, err);
+  if (ok) staticData(g, hs, sea, wcap, &st);
+  ok = ok && makeBuffers(g, st, err);
   *out = g;
+  if (!ok) {
+    glFree(out);
+    return false;
+  }
+  makeTextures(g);
+  fixedUniforms(g, sea);
   *renderer = g->ctx.renderer;
   return true;
 }
@@ -600,29 +633,9 @@ static void labelGuess(GlBackend* g, HullState* s, GlState* gs, int clock, doubl
   }
 }
 
-void glWrench(GlBackend* g, const HullSet& hs, const Sea& sea, const mjModel* m,
-              const mjData* d, HullState* s, GlState* gs) {
-  std::lock_guard<std::mutex> lk(g->mu);
-  GlCurrent cur(&g->ctx);
-  const GladGLContext& gl = g->ctx.gl;
-  if (!cur.ok()) {
-    // no force from the water this call, said once; not the last call's
-    // wrench again (compute adds the wind to what is here)
-    std::fill(s->wrench.begin(), s->wrench.end(), 0.0);
-    std::fill(s->part.begin(), s->part.end(), 0.0);
-    static const char kLost[] = "mjbuoy: gl backend: the GL context could not be made current "
-                                "on this thread; no water force in this call\n";
-    if (s->notices.find(kLost) == std::string::npos) s->notices += kLost;
-    return;
-  }
-
-  // per-data slamming history and label offsets, created on the first call for d
-  if (!gs->slambuf[0]) {
-    makeStateBuffers(g, gs, GLsizeiptr(4 * sizeof(float)) * std::max(g->ntri, 1), true);
-  }
-  int clock = stepClock(m, d, s);
-  // this data's reach (a restart starts from the first guess again, so a
-  // rerun repeats its bits); the wave buffers redone if they hold another's
+// gs's reach (a restart starts from the first guess again, so a rerun
+// repeats its bits), the wave buffers redone if they hold another data's
+static double* dataReach(GlBackend* g, const Sea& sea, const GlState* gs, int clock) {
   auto ri = g->reachOf.find(gs);
   if (ri == g->reachOf.end()) ri = g->reachOf.emplace(gs, g->reach0).first;  // with the buffers
   if (clock == kRestart) ri->second = g->reach0;
@@ -630,11 +643,14 @@ void glWrench(GlBackend* g, const HullSet& hs, const Sea& sea, const mjModel* m,
     g->reach = ri->second;
     uploadWaves(g, sea);
   }
-  if (clock == kNewStep) gs->slamcur ^= 1;
-  labelGuess(g, s, gs, clock, d->time);
-  std::memset(s->bad.data(), 0, s->bad.size());
-  bodies(g, hs, sea, m, d, s);
+  return &ri->second;
+}
 
+// the step's per-data inputs: body data (unless mapped), buffers,
+// textures as images, the mjData's history buffers gs, and the slamming
+// uniforms at time t [s] of clock (stepClock)
+static void bindStep(GlBackend* g, const HullState& s, const GlState& gs, int clock, double t) {
+  const GladGLContext& gl = g->ctx.gl;
   if (!g->persist) {
     gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_BODY]);
     gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->nslot * sizeof(GBody), g->body.data());
@@ -646,17 +662,23 @@ void glWrench(GlBackend* g, const HullSet& hs, const Sea& sea, const mjModel* m,
     if (g->buf[i] && i != B_EXP) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, g->buf[i]);
   }
   gl.BindImageTexture(0, g->tex[4], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, gs->slambuf[gs->slamcur ^ 1]);
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, gs->slambuf[gs->slamcur]);
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_OFF, gs->offbuf);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, gs.slambuf[gs.slamcur ^ 1]);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, gs.slambuf[gs.slamcur]);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_OFF, gs.offbuf);
   for (int i = 0; i < kNVar; i++) {
     GLuint p = g->tprog[i];
     if (!p) continue;
-    gl.ProgramUniform1i(p, g->uHasprev[i], s->hasPrev);
+    gl.ProgramUniform1i(p, g->uHasprev[i], s.hasPrev);
     gl.ProgramUniform1i(p, g->uFirst[i], clock != kMidStep);
-    gl.ProgramUniform1f(p, g->uSlamdt[i], float(s->hasPrev ? d->time - s->tprev : 0));
+    gl.ProgramUniform1f(p, g->uSlamdt[i], float(s.hasPrev ? t - s.tprev : 0));
   }
+}
 
+// the three stages for all hulls, timed, and the readback of g->out;
+// mine: this data's reach, raised with g->reach
+static void dispatch(GlBackend* g, const HullSet& hs, const Sea& sea, const HullState& s,
+                     double* mine) {
+  const GladGLContext& gl = g->ctx.gl;
   // per-item stages loop (grid-stride) past 65535 groups, GL's guaranteed
   // GL_MAX_COMPUTE_WORK_GROUP_COUNT: beyond it glDispatchCompute does nothing
   const int groups[kNStage] = {std::min(g->nvchunk, kMaxGroups),
@@ -693,10 +715,10 @@ void glWrench(GlBackend* g, const HullSet& hs, const Sea& sea, const mjModel* m,
     double reach = 0;
     for (int i = 0; i < g->nslot; i++) {
       float r = g->out[40 * i + 3];
-      if (!s->bad[hs.body[i]] && std::isfinite(r)) reach = std::max(reach, double(r));
+      if (!s.bad[hs.body[i]] && std::isfinite(r)) reach = std::max(reach, double(r));
     }
     if (reach <= g->reach || g->nwave == 0) break;
-    g->reach = ri->second = 1.25 * reach;
+    g->reach = *mine = 1.25 * reach;
     uploadWaves(g, sea);
   }
   for (int i = 0; i <= B_OFF; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
@@ -706,7 +728,10 @@ void glWrench(GlBackend* g, const HullSet& hs, const Sea& sea, const mjModel* m,
     gl.BindTexture(GL_TEXTURE_BUFFER, 0);
   }
   timerFrame(&g->timer);
+}
 
+// s->part of each body that has a finite state from g->out
+static void unpack(const GlBackend* g, const HullSet& hs, const mjModel* m, HullState* s) {
   // unpack: part p of slot i at out[40 i + 8 p], force xyz then torque xyz
   const int nb6 = 6 * m->nbody;
   std::memset(s->part.data(), 0, s->part.size() * sizeof(double));
@@ -722,6 +747,36 @@ void glWrench(GlBackend* g, const HullSet& hs, const Sea& sea, const mjModel* m,
       }
     }
   }
+}
+
+void glWrench(GlBackend* g, const HullSet& hs, const Sea& sea, const mjModel* m,
+              const mjData* d, HullState* s, GlState* gs) {
+  std::lock_guard<std::mutex> lk(g->mu);
+  GlCurrent cur(&g->ctx);
+  if (!cur.ok()) {
+    // no force from the water this call, said once; not the last call's
+    // wrench again (compute adds the wind to what is here)
+    std::fill(s->wrench.begin(), s->wrench.end(), 0.0);
+    std::fill(s->part.begin(), s->part.end(), 0.0);
+    static const char kLost[] = "mjbuoy: gl backend: the GL context could not be made current "
+                                "on this thread; no water force in this call\n";
+    if (s->notices.find(kLost) == std::string::npos) s->notices += kLost;
+    return;
+  }
+
+  // per-data slamming history and label offsets, created on the first call for d
+  if (!gs->slambuf[0]) {
+    makeStateBuffers(g, gs, GLsizeiptr(4 * sizeof(float)) * std::max(g->ntri, 1), true);
+  }
+  int clock = stepClock(m, d, s);
+  double* mine = dataReach(g, sea, gs, clock);
+  if (clock == kNewStep) gs->slamcur ^= 1;
+  labelGuess(g, s, gs, clock, d->time);
+  std::memset(s->bad.data(), 0, s->bad.size());
+  bodies(g, hs, sea, m, d, s);
+  bindStep(g, *s, *gs, clock, d->time);
+  dispatch(g, hs, sea, *s, mine);
+  unpack(g, hs, m, s);
   finishWrench(hs, m, d, s);
 }
 
