@@ -439,26 +439,12 @@ void shareSimple(mjbBuoy* b) {
   }
 }
 
-}  // namespace
-
-// mjb_attach's work, which may throw (std::bad_alloc)
-static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, int error_sz) {
-  copyError("", error, error_sz);
-  if (!m) {
-    copyError("mjbuoy: mjb_attach was given a NULL model", error, error_sz);
-    return nullptr;
-  }
-  auto b = std::make_unique<mjbBuoy>();
-  Buoy& B = b->b;
-  B.m = m;
-  std::string e = mjb::parseConfig(m, &B.cfg);
-  if (e.empty() && backend) e = mjb::setBackend(backend, "the backend argument", &B.cfg);
-  if (!e.empty()) {
-    copyError(e, error, error_sz);
-    return nullptr;
-  }
-
-  // hulls grouped by body so each body's triangles are contiguous
+// the hull set of B.m from B.cfg: each hull geom's mesh, grouped by body
+// so each body's triangles are contiguous, its triangle areas, mass share
+// and bounding radius; "" or the error
+std::string makeHulls(Buoy* b) {
+  Buoy& B = *b;
+  const mjModel* m = B.m;
   std::vector<int> order = B.cfg.geom;
   std::stable_sort(order.begin(), order.end(), [&](int a, int c) {
     return m->geom_bodyid[a] < m->geom_bodyid[c];
@@ -467,10 +453,7 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
   for (int g : order) {
     size_t k = std::find(B.cfg.geom.begin(), B.cfg.geom.end(), g) - B.cfg.geom.begin();
     std::string se = mjb::sizeError(m, g);
-    if (!se.empty()) {
-      copyError(se, error, error_sz);
-      return nullptr;
-    }
+    if (!se.empty()) return se;
     mjb::Mesh mesh = mjb::hullMesh(m, g, &warn);
     mjb::Hull h;
     h.geom = g;
@@ -499,11 +482,9 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
       h.area += B.tarea.back();
     }
     if (!(h.area > 0)) {
-      copyError(std::string("mjbuoy: hull geom \"") + (m->names + m->name_geomadr[g]) +
-                    "\" has no surface area (no faces, or all faces degenerate); "
-                    "give it a closed triangle mesh",
-                error, error_sz);
-      return nullptr;
+      return std::string("mjbuoy: hull geom \"") + (m->names + m->name_geomadr[g]) +
+             "\" has no surface area (no faces, or all faces degenerate); "
+             "give it a closed triangle mesh";
     }
     B.vert.insert(B.vert.end(), mesh.v.begin(), mesh.v.end());
     for (int i : mesh.f) B.face.push_back(i + h.v0);
@@ -526,6 +507,70 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
     h.rad = 0;
     for (int i = h.v0; i < h.v0 + h.nv; i++) h.rad = std::max(h.rad, mju_norm3(&B.vert[3 * i]));
   }
+  return "";
+}
+
+// the backend B->cfg.backend asks for: gl when asked (or, with auto, when
+// an EGL display with GL >= 4.3 compute is there), else cpu with a
+// notice; "" or the error when gl is required and not available
+std::string chooseBackend(Buoy* b) {
+  Buoy& B = *b;
+  B.renderer = "CPU";
+  if (B.cfg.backend == "cpu") return "";
+  std::string ge;
+  if (!B.hull.empty() && mjb::glMake(B, B.cfg.sea, B.wcap, &B.gl, &B.renderer, &ge)) {
+    B.cfg.backend = "gl";
+  } else if (B.cfg.backend == "gl" && !B.hull.empty()) {
+    return "mjbuoy: backend gl is not available: " + ge +
+           "; use backend cpu or auto (docs/mjcf.md)";
+  } else {
+    if (!B.hull.empty()) {
+      B.cfg.warn.push_back("backend auto: no usable GL (" + ge + "); running on cpu");
+    }
+    B.cfg.backend = "cpu";
+  }
+  return "";
+}
+
+// the per-mjData state's size within kMaxState: "" or the error
+std::string stateBound(const Buoy& B) {
+  size_t need = mjb::stateBytes(B, B.nthreads);
+  if (need <= kMaxState) return "";
+  size_t tri = 0;
+  for (const mjb::Hull& h : B.hull) tri = std::max(tri, size_t(h.nt));
+  return "mjbuoy: each mjData would need about " + std::to_string(need >> 20) + " MB of state, "
+         "above the " + std::to_string(kMaxState >> 20) + " MB mjbuoy allows (it grows with "
+         "threads x wave components x hull size: " + std::to_string(B.nthreads) + " thread(s), " +
+         std::to_string(B.wcap) + " components reserved, " + std::to_string(tri) +
+         " triangles in the largest hull); lower mjbuoy.threads, mjbuoy.sea.capacity or the "
+         "spectra's components, or coarsen the hull mesh";
+}
+
+}  // namespace
+
+// mjb_attach's work, which may throw (std::bad_alloc)
+static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, int error_sz) {
+  copyError("", error, error_sz);
+  if (!m) {
+    copyError("mjbuoy: mjb_attach was given a NULL model", error, error_sz);
+    return nullptr;
+  }
+  auto b = std::make_unique<mjbBuoy>();
+  Buoy& B = b->b;
+  B.m = m;
+  std::string e = mjb::parseConfig(m, &B.cfg);
+  if (e.empty() && backend) e = mjb::setBackend(backend, "the backend argument", &B.cfg);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    return nullptr;
+  }
+
+  std::vector<std::string>& warn = B.cfg.warn;
+  e = makeHulls(&B);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    return nullptr;
+  }
   // room for mjb_setSea, and the wind's surfaces
   B.wcap = std::max<size_t>(B.cfg.capacity, B.cfg.sea.waves.size());
   B.cfg.sea.waves.reserve(B.wcap);
@@ -546,38 +591,18 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
     mjb::restoreModel(m, B.rad);
     return nullptr;
   }
-  // gl: required; auto: gl when an EGL display with GL >= 4.3 compute is
-  // there, else cpu with a notice
-  B.renderer = "CPU";
-  if (B.cfg.backend != "cpu") {
-    std::string ge;
-    if (!B.hull.empty() && mjb::glMake(B, B.cfg.sea, B.wcap, &B.gl, &B.renderer, &ge)) {
-      B.cfg.backend = "gl";
-    } else if (B.cfg.backend == "gl" && !B.hull.empty()) {
-      copyError("mjbuoy: backend gl is not available: " + ge +
-                    "; use backend cpu or auto (docs/mjcf.md)", error, error_sz);
-      mjb::restoreModel(m, B.rad);
-      return nullptr;
-    } else {
-      if (!B.hull.empty()) warn.push_back("backend auto: no usable GL (" + ge + "); running on cpu");
-      B.cfg.backend = "cpu";
-    }
+  // gl: required; auto: gl when there, else cpu with a notice
+  e = chooseBackend(&B);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    mjb::restoreModel(m, B.rad);
+    return nullptr;
   }
   warnShortWaves(B, &warn);
   for (const std::string& w : warn) B.warnings += "mjbuoy: warning: " + w + "\n";
   if (B.cfg.backend == "cpu") threads(&B);
   e = mjb::parseSensors(&B);
-  size_t need = mjb::stateBytes(B, B.nthreads);
-  if (e.empty() && need > kMaxState) {
-    size_t tri = 0;
-    for (const mjb::Hull& h : B.hull) tri = std::max(tri, size_t(h.nt));
-    e = "mjbuoy: each mjData would need about " + std::to_string(need >> 20) + " MB of state, "
-        "above the " + std::to_string(kMaxState >> 20) + " MB mjbuoy allows (it grows with "
-        "threads x wave components x hull size: " + std::to_string(B.nthreads) + " thread(s), " +
-        std::to_string(B.wcap) + " components reserved, " + std::to_string(tri) +
-        " triangles in the largest hull); lower mjbuoy.threads, mjbuoy.sea.capacity or the "
-        "spectra's components, or coarsen the hull mesh";
-  }
+  if (e.empty()) e = stateBound(B);
   if (!e.empty()) {
     copyError(e, error, error_sz);
     mjb::restoreModel(m, B.rad);
