@@ -31,7 +31,6 @@ KNOWN = {
     ('mjbuoy/api/radattach.cc', 'solveGroup'),
     ('mjbuoy/api/radattach.cc', 'attachGroups'),
     ('mjbuoy/cpu/trivec_kern.h', 'cutChunk'),
-    ('mjbuoy/hull/hull.cc', 'repair'),
     ('mjbuoy/radiation/coefio_netcdf.cc', 'readAll'),
     ('mjbuoy/radiation/coefio_netcdf.cc', 'writeAll'),
     ('mjbuoy/radiation/panel.cc', 'panelSolve'),
