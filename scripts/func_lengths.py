@@ -30,7 +30,6 @@ KNOWN = {
     ('mjbuoy/api/moorconfig.cc', 'parseMooring'),
     ('mjbuoy/api/radattach.cc', 'solveGroup'),
     ('mjbuoy/api/radattach.cc', 'attachGroups'),
-    ('mjbuoy/cpu/trivec_kern.h', 'cutChunk'),
     ('mjbuoy/radiation/coefio_netcdf.cc', 'readAll'),
     ('mjbuoy/radiation/coefio_netcdf.cc', 'writeAll'),
     ('mjbuoy/radiation/panel.cc', 'panelSolve'),
