@@ -38,7 +38,6 @@ KNOWN = {
     ('mjbuoy/radiation/radiation.cc', 'fitMemory'),
     ('mjbuoy/radiation/radiation.cc', 'setRadiation'),
     ('mjbuoy/radiation/radstep.cc', 'radiationStep'),
-    ('mjbuoy/sea/seavec_kern.h', 'solveChunk'),
 }
 
 
