@@ -879,7 +879,7 @@ TEST(RadAttach, BodyOnASlideJointKeepsItsInitialPose) {
 }
 
 // the drag a group gets when radiation on by default skips it at attach
-// (mjbuoy/radiation/radattach.cc skipGroup): the linear terms that stood in for
+// (mjbuoy/api/radattach.cc skipGroup): the linear terms that stood in for
 // radiation damping come back, on both backends (the gl backend copies the
 // terms at its setup, so radiation is attached first). A 2 x 1 x 0.8 m box
 // (no mjbuoy.radiation entry, viscous resistance and slamming off), its

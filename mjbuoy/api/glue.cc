@@ -344,7 +344,7 @@ void sensorcb(const mjModel* m, mjData* d, int stage) {
 const int kParMin = 2000, kMaxAuto = 8, kChunks = 4;
 
 // the most one mjData's state may take [bytes]: its scratch grows with
-// threads x wave components x hull size (cpustate.cc stateBytes). Auto
+// threads x wave components x hull size (stateBytes). Auto
 // threads stay within it; past it attach refuses, naming the settings
 const size_t kMaxState = size_t(1) << 30;
 
