@@ -21,7 +21,7 @@
 #include "floatbox.h"
 #include "hull/hull.h"
 #include "radiation/panelmesh.h"
-#include "radiation/radattach.h"
+#include "api/radattach.h"
 #include "testutil.h"
 
 namespace {
@@ -820,9 +820,10 @@ TEST(RadAttach, EquilibriumHeaveIsTheAnalyticDraft) {
     mj_kinematics(s.m, s.d);
     double dz = 0;
     std::string why;
-    ASSERT_TRUE(mjb::equilibriumHeave(*mjb::buoyOf(s.b), s.d, 1, &dz, &why)) << why;
+    const mjb::Buoy& B = *mjb::buoyOf(s.b);
+    ASSERT_TRUE(mjb::equilibriumHeave(B, B.cfg.sea, s.d, 1, &dz, &why)) << why;
     EXPECT_NEAR(z0 + dz, 0.4 - kBoxT, 1e-9) << z0;
-    EXPECT_NEAR(mjb::displacedVolume(*mjb::buoyOf(s.b), s.d, 1, dz), 2 * 1 * kBoxT, 1e-9);
+    EXPECT_NEAR(mjb::displacedVolume(B, B.cfg.sea, s.d, 1, dz), 2 * 1 * kBoxT, 1e-9);
   }
 }
 
@@ -880,7 +881,7 @@ TEST(RadAttach, BodyOnASlideJointFloatsAtItsDraft) {
 }
 
 // the drag a group gets when radiation on by default skips it at attach
-// (mjbuoy/radiation/radattach.cc skipGroup): the linear terms that stood in for
+// (mjbuoy/api/radattach.cc skipGroup): the linear terms that stood in for
 // radiation damping come back, on both backends (the gl backend copies the
 // terms at its setup, so radiation is attached first). A 2 x 1 x 0.8 m box
 // (no mjbuoy.radiation entry, viscous resistance and slamming off), its

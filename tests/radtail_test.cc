@@ -12,7 +12,7 @@
 
 #include "api/buoy.h"
 #include "floatbox.h"
-#include "radiation/radattach.h"
+#include "api/radattach.h"
 #include "radiation/radiation.h"
 #include "radiation/radtail.h"
 #include "testutil.h"

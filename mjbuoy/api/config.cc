@@ -242,12 +242,8 @@ std::string setBackend(const char* name, const std::string& where, Config* c) {
   return "";
 }
 
-std::string parseConfig(const mjModel* m, Config* c) {
-  *c = Config();
-  const size_t np = sizeof(kPre) - 1;
-  auto has = [&](const char* s) { return !std::strncmp(s, kPre, np); };
-
-  // gravity must point down z: the sea is z = eta(x, y, t)
+// gravity must point down z: the sea is z = eta(x, y, t); sets c->sea.g
+static std::string parseGravity(const mjModel* m, Config* c) {
   const mjtNum* gv = m->opt.gravity;
   if (gv[0] != 0 || gv[1] != 0 || !(gv[2] < 0) || !std::isfinite(gv[2])) {
     return "mjbuoy: <option gravity=\"" + fmt(gv[0]) + " " + fmt(gv[1]) + " " +
@@ -262,10 +258,15 @@ std::string parseConfig(const mjModel* m, Config* c) {
            " (a world with a sea: Titan 1.35, Earth 9.81, Jupiter 24.8); e.g. gravity=\"0 0 "
            "-9.81\"";
   }
+  return "";
+}
 
-  // hulls first: per-geom overrides refer to them
-  std::vector<char> is(m->ngeom, 0);
-  bool anyHullList = false;
+// the text entries: the hull list into is (anyHullList: given), the
+// backend, the pressure model
+static std::string parseText(const mjModel* m, Config* c, std::vector<char>* is,
+                             bool* anyHullList) {
+  const size_t np = sizeof(kPre) - 1;
+  auto has = [&](const char* s) { return !std::strncmp(s, kPre, np); };
   for (int i = 0; i < m->ntext; i++) {
     const char* name = m->names + m->name_textadr[i];
     if (!has(name)) continue;
@@ -273,8 +274,8 @@ std::string parseConfig(const mjModel* m, Config* c) {
     const char* text = m->text_data + m->text_adr[i];
     if (isSeaExtra(key) || isRadEntry(key) || isMoorEntry(key)) continue;  // *config.cc
     if (!std::strcmp(key, "hulls")) {
-      anyHullList = true;
-      std::string e = parseHulls(m, name, text, &is);
+      *anyHullList = true;
+      std::string e = parseHulls(m, name, text, is);
       if (!e.empty()) return e;
     } else if (!std::strcmp(key, "backend")) {
       std::string e = setBackend(text, tag("text", name), c);
@@ -299,10 +300,13 @@ std::string parseConfig(const mjModel* m, Config* c) {
              kNumericNames + "; see docs/mjcf.md)";
     }
   }
+  return "";
+}
 
-  // hull geoms on the world body, or on a body welded to it (no joint on
-  // the way), cannot move: ignored with a warning
-  std::vector<char> listed = is;
+// hull geoms on the world body, or on a body welded to it (no joint on
+// the way), cannot move: dropped from is with a warning
+static void dropFixedHulls(const mjModel* m, std::vector<char>* isp, Config* c) {
+  std::vector<char>& is = *isp;
   for (int g = 0; g < m->ngeom; g++) {
     int bd = m->geom_bodyid[g];
     if (is[g] && m->body_weldid[bd] == 0) {
@@ -314,19 +318,66 @@ std::string parseConfig(const mjModel* m, Config* c) {
       is[g] = 0;
     }
   }
-  HullParams def = kHullDefault;
+}
+
+// the hulls' coefficients as the entries give them: the hull geoms (gid)
+// and the geoms listed before dropFixedHulls (listed), the defaults (def,
+// with defSet: mjbuoy.hull.<param> given), each hull's (par, with set:
+// mjbuoy.geom.<geom>.<param> given)
+struct HullEntries {
   std::vector<int> gid;
-  for (int g = 0; g < m->ngeom; g++) if (is[g]) gid.push_back(g);
-  std::vector<HullParams> par(gid.size(), def);
-  std::vector<std::vector<char>> set(gid.size(), std::vector<char>(
-      sizeof(kHullFields) / sizeof(kHullFields[0]), 0));
+  std::vector<char> listed;
+  HullParams def;
+  std::vector<HullParams> par;
+  std::vector<std::vector<char>> set;
+  std::vector<char> defSet;
+};
+
+// numeric entry i, mjbuoy.geom.<geom>.<param> (key: after "mjbuoy."),
+// into he's hull of that geom
+static std::string geomEntry(const mjModel* m, int i, const char* name, const char* key,
+                             HullEntries* he) {
+  const int nhf = sizeof(kHullFields) / sizeof(kHullFields[0]);
+  const mjtNum* v = m->numeric_data + m->numeric_adr[i];
+  const std::vector<int>& gid = he->gid;
+  const std::vector<char>& listed = he->listed;
+  // mjbuoy.geom.<geom>.<param>: geom names may hold dots, params do not
+  const char* rest = key + 5;
+  const char* dot = std::strrchr(rest, '.');
+  const Field* f = dot ? findField(kHullFields, nhf, dot + 1) : nullptr;
+  if (!f) {
+    return "mjbuoy: unknown entry " + tag("numeric", name) +
+           "; per-hull entries are mjbuoy.geom.<geom>.<param> with param one of " +
+           fieldList(kHullFields, nhf) + " (see docs/mjcf.md)";
+  }
+  std::string gname(rest, dot - rest);
+  int g = mj_name2id(m, mjOBJ_GEOM, gname.c_str());
+  int h = -1;
+  for (size_t j = 0; j < gid.size(); j++) if (gid[j] == g) h = j;
+  if (g < 0 || h < 0) {
+    return "mjbuoy: " + tag("numeric", name) + " refers to geom \"" + gname + "\", " +
+           (g < 0 ? "which does not exist"
+            : listed[g] ? "which is on the world body (or welded to it) and so is not a hull"
+                        : "which is not listed in mjbuoy.hulls") +
+           "; fix the name or add the geom to <text name=\"mjbuoy.hulls\">";
+  }
+  std::string e = checkNumeric(m, i, *f);
+  if (!e.empty()) return e;
+  for (int j = 0; j < f->n; j++) param(&he->par[h], *f)[j] = v[j];
+  he->set[h][f - kHullFields] = 1;
+  return "";
+}
+
+// the numeric entries: sea fields, waves, hull defaults and per-hull
+// values into he, threads; any: an mjbuoy.* entry was seen
+static std::string parseNumeric(const mjModel* m, Config* c, HullEntries* he, bool* anyp) {
+  const size_t np = sizeof(kPre) - 1;
+  auto has = [&](const char* s) { return !std::strncmp(s, kPre, np); };
   const int nhf = sizeof(kHullFields) / sizeof(kHullFields[0]);
   const int nsf = sizeof(kSeaFields) / sizeof(kSeaFields[0]);
-  std::vector<char> defSet(nhf, 0);  // mjbuoy.hull.<param> given
-  bool any = anyHullList;
-  bool rampSet = false;  // mjbuoy.sea.ramp given
-
-  // numeric entries
+  HullParams& def = he->def;
+  std::vector<char>& defSet = he->defSet;
+  bool& any = *anyp;
   for (int i = 0; i < m->nnumeric; i++) {
     const char* name = m->names + m->name_numericadr[i];
     if (!has(name)) continue;
@@ -348,7 +399,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
       if (f == kSeaFields + 2) s.depth = v[0];
       if (f == kSeaFields + 3) s.nu = v[0];
       if (f == kSeaFields + 4) { s.current[0] = v[0]; s.current[1] = v[1]; }
-      if (f == kSeaFields + 5) { s.ramp = v[0]; rampSet = true; }
+      if (f == kSeaFields + 5) s.ramp = v[0];
     } else if (!std::strncmp(key, "wave.", 5) && key[5]) {
       std::string e = checkNumeric(m, i, kWave);
       if (!e.empty()) return e;
@@ -370,30 +421,8 @@ std::string parseConfig(const mjModel* m, Config* c) {
       for (int j = 0; j < f->n; j++) param(&def, *f)[j] = v[j];
       defSet[f - kHullFields] = 1;
     } else if (!std::strncmp(key, "geom.", 5)) {
-      // mjbuoy.geom.<geom>.<param>: geom names may hold dots, params do not
-      const char* rest = key + 5;
-      const char* dot = std::strrchr(rest, '.');
-      const Field* f = dot ? findField(kHullFields, nhf, dot + 1) : nullptr;
-      if (!f) {
-        return "mjbuoy: unknown entry " + tag("numeric", name) +
-               "; per-hull entries are mjbuoy.geom.<geom>.<param> with param one of " +
-               fieldList(kHullFields, nhf) + " (see docs/mjcf.md)";
-      }
-      std::string gname(rest, dot - rest);
-      int g = mj_name2id(m, mjOBJ_GEOM, gname.c_str());
-      int h = -1;
-      for (size_t j = 0; j < gid.size(); j++) if (gid[j] == g) h = j;
-      if (g < 0 || h < 0) {
-        return "mjbuoy: " + tag("numeric", name) + " refers to geom \"" + gname + "\", " +
-               (g < 0 ? "which does not exist"
-                : listed[g] ? "which is on the world body (or welded to it) and so is not a hull"
-                            : "which is not listed in mjbuoy.hulls") +
-               "; fix the name or add the geom to <text name=\"mjbuoy.hulls\">";
-      }
-      std::string e = checkNumeric(m, i, *f);
+      std::string e = geomEntry(m, i, name, key, he);
       if (!e.empty()) return e;
-      for (int j = 0; j < f->n; j++) param(&par[h], *f)[j] = v[j];
-      set[h][f - kHullFields] = 1;
     } else if (!std::strcmp(key, "threads")) {
       std::string e = checkNumeric(m, i, kThreads);
       if (!e.empty()) return e;
@@ -413,16 +442,52 @@ std::string parseConfig(const mjModel* m, Config* c) {
              "mjbuoy.sea.pressure (see docs/mjcf.md)";
     }
   }
+  return "";
+}
 
-  // per-hull values not overridden take the (possibly user-set) defaults
-  for (size_t h = 0; h < gid.size(); h++) {
+// per-hull values not overridden take the (possibly user-set) defaults
+static void fillDefaults(HullEntries* he) {
+  const int nhf = sizeof(kHullFields) / sizeof(kHullFields[0]);
+  HullParams& def = he->def;
+  std::vector<HullParams>& par = he->par;
+  for (size_t h = 0; h < he->gid.size(); h++) {
     for (int k = 0; k < nhf; k++) {
-      if (set[h][k]) continue;
+      if (he->set[h][k]) continue;
       for (int j = 0; j < kHullFields[k].n; j++) {
         param(&par[h], kHullFields[k])[j] = param(&def, kHullFields[k])[j];
       }
     }
   }
+}
+
+std::string parseConfig(const mjModel* m, Config* c) {
+  *c = Config();
+  std::string e = parseGravity(m, c);
+  if (!e.empty()) return e;
+
+  // hulls first: per-geom overrides refer to them
+  std::vector<char> is(m->ngeom, 0);
+  bool anyHullList = false;
+  e = parseText(m, c, &is, &anyHullList);
+  if (!e.empty()) return e;
+  HullEntries he;
+  he.listed = is;
+  dropFixedHulls(m, &is, c);
+  const int nhf = sizeof(kHullFields) / sizeof(kHullFields[0]);
+  he.def = kHullDefault;
+  for (int g = 0; g < m->ngeom; g++) if (is[g]) he.gid.push_back(g);
+  he.par.assign(he.gid.size(), he.def);
+  he.set.assign(he.gid.size(), std::vector<char>(nhf, 0));
+  he.defSet.assign(nhf, 0);
+  bool any = anyHullList;
+  c->sea.ramp = -1;  // not given (mjbuoy.sea.ramp accepts only >= 0)
+  e = parseNumeric(m, c, &he, &any);
+  if (!e.empty()) return e;
+  fillDefaults(&he);
+  const std::vector<int>& gid = he.gid;
+  std::vector<HullParams>& par = he.par;
+  const std::vector<std::vector<char>>& set = he.set;
+  const std::vector<char>& defSet = he.defSet;
 
   // the listed waves together: the highest crest above level, level + sum
   // A, stays a height a sea can have, and the surface does not fold
@@ -438,7 +503,7 @@ std::string parseConfig(const mjModel* m, Config* c) {
   radiationDragDefaults(m, gid, c->rad, set, defSet, &par, &c->radDrag);
   c->sea.derive();
   // no mjbuoy.sea.ramp: a few periods of the dominant component (sea.h)
-  if (!rampSet) c->sea.ramp = c->sea.defaultRamp();
+  if (c->sea.ramp < 0) c->sea.ramp = c->sea.defaultRamp();
   if (m->opt.density > 0 || m->opt.viscosity > 0) {
     c->warn.push_back("<option density/viscosity> is nonzero: MuJoCo's own fluid forces act "
                       "on every body as well as mjbuoy's (double counting); set them to 0");

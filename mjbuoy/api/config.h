@@ -8,21 +8,12 @@
 #include <mujoco/mujoco.h>
 
 #include "api/radconfig.h"
+#include "hull/hullset.h"
 #include "sea/sea.h"
 #include "sea/wind.h"
 #include "util/fmt.h"
 
 namespace mjb {
-
-// per-hull coefficients; defaults in kHullDefault (config.cc)
-struct HullParams {
-  double damp[2];     // simple damping: linear [N s/m], angular [N m s/rad]
-  double viscous;     // form factor 1+k of the viscous resistance; 0 = off
-  double drag[3];     // pressure drag C_PD1, C_PD2 [N/m^2], exponent f_P
-  double suction[3];  // suction drag C_SD1, C_SD2 [N/m^2], exponent f_S
-  double vref;        // reference speed of the drag terms [m/s]
-  double slam[3];     // slamming gain [0, 1], Gamma_max [m/s^2], power p
-};
 
 struct Config {
   Sea sea;

@@ -14,9 +14,10 @@
 
 #include "api/buoy.h"
 #include "hull/hull.h"
+#include "hull/windload.h"
 #include "util/cpus.h"
 #include "util/pool.h"
-#include "radiation/radattach.h"
+#include "api/radattach.h"
 #include "radiation/radiation.h"
 #include "mjbuoy.h"
 #include "api/seasetter.h"
@@ -124,6 +125,23 @@ void renew(State* s, const mjData* d) {
   mjb::moorRestart(&s->moor);
 }
 
+}  // namespace
+
+void mjb::makeState(const Buoy& b, State* s) {
+  const size_t nw = std::max(b.wcap, b.cfg.sea.waves.size());
+  mjb::makeHullState(b, nw, s);
+  mjb::makeCpuState(b, b.cfg.sea, b.wcap, b, &s->cpu);
+  s->dwrench.assign(6 * b.diff.db.size(), 0);
+  s->dtold.assign(b.diff.db.size(), 0);
+}
+
+size_t mjb::stateBytes(const Buoy& b, int nthreads) {
+  const size_t nw = std::max(b.wcap, b.cfg.sea.waves.size());
+  return mjb::cpuStateBytes(b, b.cfg.sea, b.wcap, nthreads) + mjb::hullStateBytes(b, nw);
+}
+
+namespace {
+
 // the state of d, renewed if it is stale; fresh says the state was created
 State* state(mjbBuoy* b, const mjData* d, bool create) {
   State* s = nullptr;
@@ -214,16 +232,19 @@ void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
     return;
   }
   if (b->b.gl) {
-    mjb::glWrench(&b->b, m, d, s);
+    mjb::glWrench(b->b.gl, b->b, b->b.cfg.sea, m, d, s, &s->gl);
   } else {
-    mjb::cpuWrench(b->b, m, d, s);
+    mjb::cpuWrench(b->b, b->b.cfg.sea, b->b, m, d, s, &s->cpu);
   }
-  mjb::windWrench(b->b, m, d, s);
+  const Buoy& B = b->b;
+  const mjb::WindIO io = {B.gl ? nullptr : s->h.data(), s->crest, s->bad.data(),
+                          s->part.data() + 6 * m->nbody * mjbPART_WIND, s->wrench.data()};
+  mjb::windWrench(B, B.wind, B.cfg.sea, m, d, io);
   for (int bd : b->b.body) {
     const mjtNum* w = s->wrench.data() + 6 * bd;
     applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
   }
-  // wind on superstructure bodies that carry no hull (wind.cc)
+  // wind on superstructure bodies that carry no hull (hull/windload.cc)
   for (int bd : b->b.wind.extra) {
     const mjtNum* w = s->wrench.data() + 6 * bd;
     applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
@@ -323,7 +344,7 @@ void sensorcb(const mjModel* m, mjData* d, int stage) {
 const int kParMin = 2000, kMaxAuto = 8, kChunks = 4;
 
 // the most one mjData's state may take [bytes]: its scratch grows with
-// threads x wave components x hull size (cpustate.cc stateBytes). Auto
+// threads x wave components x hull size (stateBytes). Auto
 // threads stay within it; past it attach refuses, naming the settings
 const size_t kMaxState = size_t(1) << 30;
 
@@ -418,26 +439,12 @@ void shareSimple(mjbBuoy* b) {
   }
 }
 
-}  // namespace
-
-// mjb_attach's work, which may throw (std::bad_alloc)
-static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, int error_sz) {
-  copyError("", error, error_sz);
-  if (!m) {
-    copyError("mjbuoy: mjb_attach was given a NULL model", error, error_sz);
-    return nullptr;
-  }
-  auto b = std::make_unique<mjbBuoy>();
-  Buoy& B = b->b;
-  B.m = m;
-  std::string e = mjb::parseConfig(m, &B.cfg);
-  if (e.empty() && backend) e = mjb::setBackend(backend, "the backend argument", &B.cfg);
-  if (!e.empty()) {
-    copyError(e, error, error_sz);
-    return nullptr;
-  }
-
-  // hulls grouped by body so each body's triangles are contiguous
+// the hull set of B.m from B.cfg: each hull geom's mesh, grouped by body
+// so each body's triangles are contiguous, its triangle areas, mass share
+// and bounding radius; "" or the error
+std::string makeHulls(Buoy* b) {
+  Buoy& B = *b;
+  const mjModel* m = B.m;
   std::vector<int> order = B.cfg.geom;
   std::stable_sort(order.begin(), order.end(), [&](int a, int c) {
     return m->geom_bodyid[a] < m->geom_bodyid[c];
@@ -446,10 +453,7 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
   for (int g : order) {
     size_t k = std::find(B.cfg.geom.begin(), B.cfg.geom.end(), g) - B.cfg.geom.begin();
     std::string se = mjb::sizeError(m, g);
-    if (!se.empty()) {
-      copyError(se, error, error_sz);
-      return nullptr;
-    }
+    if (!se.empty()) return se;
     mjb::Mesh mesh = mjb::hullMesh(m, g, &warn);
     mjb::Hull h;
     h.geom = g;
@@ -478,11 +482,9 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
       h.area += B.tarea.back();
     }
     if (!(h.area > 0)) {
-      copyError(std::string("mjbuoy: hull geom \"") + (m->names + m->name_geomadr[g]) +
-                    "\" has no surface area (no faces, or all faces degenerate); "
-                    "give it a closed triangle mesh",
-                error, error_sz);
-      return nullptr;
+      return std::string("mjbuoy: hull geom \"") + (m->names + m->name_geomadr[g]) +
+             "\" has no surface area (no faces, or all faces degenerate); "
+             "give it a closed triangle mesh";
     }
     B.vert.insert(B.vert.end(), mesh.v.begin(), mesh.v.end());
     for (int i : mesh.f) B.face.push_back(i + h.v0);
@@ -505,11 +507,75 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
     h.rad = 0;
     for (int i = h.v0; i < h.v0 + h.nv; i++) h.rad = std::max(h.rad, mju_norm3(&B.vert[3 * i]));
   }
+  return "";
+}
+
+// the backend B->cfg.backend asks for: gl when asked (or, with auto, when
+// an EGL display with GL >= 4.3 compute is there), else cpu with a
+// notice; "" or the error when gl is required and not available
+std::string chooseBackend(Buoy* b) {
+  Buoy& B = *b;
+  B.renderer = "CPU";
+  if (B.cfg.backend == "cpu") return "";
+  std::string ge;
+  if (!B.hull.empty() && mjb::glMake(B, B.cfg.sea, B.wcap, &B.gl, &B.renderer, &ge)) {
+    B.cfg.backend = "gl";
+  } else if (B.cfg.backend == "gl" && !B.hull.empty()) {
+    return "mjbuoy: backend gl is not available: " + ge +
+           "; use backend cpu or auto (docs/mjcf.md)";
+  } else {
+    if (!B.hull.empty()) {
+      B.cfg.warn.push_back("backend auto: no usable GL (" + ge + "); running on cpu");
+    }
+    B.cfg.backend = "cpu";
+  }
+  return "";
+}
+
+// the per-mjData state's size within kMaxState: "" or the error
+std::string stateBound(const Buoy& B) {
+  size_t need = mjb::stateBytes(B, B.nthreads);
+  if (need <= kMaxState) return "";
+  size_t tri = 0;
+  for (const mjb::Hull& h : B.hull) tri = std::max(tri, size_t(h.nt));
+  return "mjbuoy: each mjData would need about " + std::to_string(need >> 20) + " MB of state, "
+         "above the " + std::to_string(kMaxState >> 20) + " MB mjbuoy allows (it grows with "
+         "threads x wave components x hull size: " + std::to_string(B.nthreads) + " thread(s), " +
+         std::to_string(B.wcap) + " components reserved, " + std::to_string(tri) +
+         " triangles in the largest hull); lower mjbuoy.threads, mjbuoy.sea.capacity or the "
+         "spectra's components, or coarsen the hull mesh";
+}
+
+}  // namespace
+
+// mjb_attach's work, which may throw (std::bad_alloc)
+static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, int error_sz) {
+  copyError("", error, error_sz);
+  if (!m) {
+    copyError("mjbuoy: mjb_attach was given a NULL model", error, error_sz);
+    return nullptr;
+  }
+  auto b = std::make_unique<mjbBuoy>();
+  Buoy& B = b->b;
+  B.m = m;
+  std::string e = mjb::parseConfig(m, &B.cfg);
+  if (e.empty() && backend) e = mjb::setBackend(backend, "the backend argument", &B.cfg);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    return nullptr;
+  }
+
+  std::vector<std::string>& warn = B.cfg.warn;
+  e = makeHulls(&B);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    return nullptr;
+  }
   // room for mjb_setSea, and the wind's surfaces
   B.wcap = std::max<size_t>(B.cfg.capacity, B.cfg.sea.waves.size());
   B.cfg.sea.waves.reserve(B.wcap);
   B.cfg.sea.order.reserve(B.wcap);  // Sea::derive rebuilds it in mjb_setSea
-  mjb::windMake(&B);
+  mjb::windMake(B, B.cfg.wind, &B.cfg.warn, &B.wind);
   // radiation (on by default for free hull bodies, seconds per hull:
   // docs/mjcf.md section 11), before the backend: a group it skips takes
   // back its linear drag terms (radattach.cc skipGroup), which the gl
@@ -525,42 +591,22 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
     mjb::restoreModel(m, B.rad);
     return nullptr;
   }
-  // gl: required; auto: gl when an EGL display with GL >= 4.3 compute is
-  // there, else cpu with a notice
-  B.renderer = "CPU";
-  if (B.cfg.backend != "cpu") {
-    std::string ge;
-    if (!B.hull.empty() && mjb::glMake(&B, &ge)) {
-      B.cfg.backend = "gl";
-    } else if (B.cfg.backend == "gl" && !B.hull.empty()) {
-      copyError("mjbuoy: backend gl is not available: " + ge +
-                    "; use backend cpu or auto (docs/mjcf.md)", error, error_sz);
-      mjb::restoreModel(m, B.rad);
-      return nullptr;
-    } else {
-      if (!B.hull.empty()) warn.push_back("backend auto: no usable GL (" + ge + "); running on cpu");
-      B.cfg.backend = "cpu";
-    }
+  // gl: required; auto: gl when there, else cpu with a notice
+  e = chooseBackend(&B);
+  if (!e.empty()) {
+    copyError(e, error, error_sz);
+    mjb::restoreModel(m, B.rad);
+    return nullptr;
   }
   warnShortWaves(B, &warn);
   for (const std::string& w : warn) B.warnings += "mjbuoy: warning: " + w + "\n";
   if (B.cfg.backend == "cpu") threads(&B);
   e = mjb::parseSensors(&B);
-  size_t need = mjb::stateBytes(B, B.nthreads);
-  if (e.empty() && need > kMaxState) {
-    size_t tri = 0;
-    for (const mjb::Hull& h : B.hull) tri = std::max(tri, size_t(h.nt));
-    e = "mjbuoy: each mjData would need about " + std::to_string(need >> 20) + " MB of state, "
-        "above the " + std::to_string(kMaxState >> 20) + " MB mjbuoy allows (it grows with "
-        "threads x wave components x hull size: " + std::to_string(B.nthreads) + " thread(s), " +
-        std::to_string(B.wcap) + " components reserved, " + std::to_string(tri) +
-        " triangles in the largest hull); lower mjbuoy.threads, mjbuoy.sea.capacity or the "
-        "spectra's components, or coarsen the hull mesh";
-  }
+  if (e.empty()) e = stateBound(B);
   if (!e.empty()) {
     copyError(e, error, error_sz);
     mjb::restoreModel(m, B.rad);
-    mjb::glFree(&B);
+    mjb::glFree(&B.gl);
     mjb::poolFree(B.pool);
     return nullptr;
   }
@@ -624,9 +670,9 @@ void mjb_detach(mjbBuoy* b) {
   // callbacks that found b before it left gattached end first; none starts
   std::unique_lock<std::shared_mutex> wait(b->run);
   wait.unlock();
-  for (auto& kv : b->data) mjb::glFreeState(&b->b, kv.second.get());
+  for (auto& kv : b->data) mjb::glFreeState(b->b.gl, &kv.second->gl);
   if (last) mjb::restoreModel(b->b.m, b->b.rad);
-  mjb::glFree(&b->b);
+  mjb::glFree(&b->b.gl);
   mjb::poolFree(b->b.pool);
   delete b;
 }
@@ -642,7 +688,7 @@ void mjb_unbindData(mjbBuoy* b, const mjData* d) {
   b->frozen.erase(d);
   auto it = b->data.find(d);
   if (it == b->data.end()) return;
-  mjb::glFreeState(&b->b, it->second.get());
+  mjb::glFreeState(b->b.gl, &it->second->gl);
   b->data.erase(it);
 }
 
@@ -656,14 +702,14 @@ int mjb_copyData(mjbBuoy* b, mjData* dst, const mjData* src) {
   }
   State* t = state(b, dst, true);
   // dst's own GL buffers (glCopyState copies into them)
-  unsigned keep[3] = {t->slambuf[0], t->slambuf[1], t->offbuf};
+  unsigned keep[3] = {t->gl.slambuf[0], t->gl.slambuf[1], t->gl.offbuf};
   *t = *s;
-  t->slambuf[0] = keep[0];
-  t->slambuf[1] = keep[1];
-  t->offbuf = keep[2];
+  t->gl.slambuf[0] = keep[0];
+  t->gl.slambuf[1] = keep[1];
+  t->gl.offbuf = keep[2];
   t->notices.reserve(s->notices.capacity());
   t->buf = dst->buffer;  // dst's counters and time are src's after mj_copyData
-  return mjb::glCopyState(&b->b, t, s) ? 1 : 0;
+  return mjb::glCopyState(b->b.gl, &t->gl, &s->gl) ? 1 : 0;
 }
 
 int mjb_freezeData(mjbBuoy* b, const mjData* d, int freeze) {
@@ -721,7 +767,7 @@ mjbInfo mjb_info(const mjbBuoy* b) {
 }
 
 int mjb_stageTimes(const mjbBuoy* b, const char** name, double* ms, int n) {
-  return b ? mjb::glStageTimes(const_cast<Buoy*>(&b->b), name, ms, n) : 0;
+  return b ? mjb::glStageTimes(b->b.gl, name, ms, n) : 0;
 }
 
 const char* mjb_warnings(const mjbBuoy* b) {
@@ -738,7 +784,7 @@ int mjb_setSea(mjbBuoy* b, const mjbSea* sea, char* error, int error_sz) {
   // other starts until the sea is whole (mjbuoy.h, threads)
   std::unique_lock<std::shared_mutex> lk(b->run);
   if (!mjb::setSea(&b->b, *sea, error, error_sz)) return 0;
-  if (b->b.gl) mjb::glSetSea(&b->b);
+  if (b->b.gl) mjb::glSetSea(b->b.gl, b->b.cfg.sea);
   return 1;
 }
 
@@ -794,7 +840,7 @@ bool mjb::vertexSeconds(const mjbBuoy* b, const mjData* d, double* sec) {
   State* s = b ? state(const_cast<mjbBuoy*>(b), d, false) : nullptr;
   if (!s) return false;
   *sec = 0;
-  for (double v : s->vsec) *sec += v;
+  for (double v : s->cpu.vsec) *sec += v;
   return true;
 }
 
@@ -802,9 +848,9 @@ bool mjb::newtonStats(const mjbBuoy* b, const mjData* d, long* solves, long* ste
   State* s = b ? state(const_cast<mjbBuoy*>(b), d, false) : nullptr;
   if (!s) return false;
   *solves = *steps = 0;
-  for (size_t i = 0; i < s->nsolve.size(); i++) {
-    *solves += s->nsolve[i];
-    *steps += s->niter[i];
+  for (size_t i = 0; i < s->cpu.nsolve.size(); i++) {
+    *solves += s->cpu.nsolve[i];
+    *steps += s->cpu.niter[i];
   }
   return true;
 }

@@ -13,7 +13,7 @@ namespace mjb {
 
 // whole hull above the highest crest the waves can make: all dry, which
 // gives exactly what the passes give then (no force, no history)
-static void dryHull(const Hull& hl, int ih, bool first, State* s) {
+static void dryHull(const Hull& hl, int ih, bool first, HullState* s) {
   s->hwet[ih] = 0;
   if (!first) return;
   std::memset(&s->curQ[3 * hl.t0], 0, 3 * hl.nt * sizeof(float));
@@ -51,13 +51,13 @@ struct HullRun {
   ChunkSum* cs;
 };
 
-static HullCall hullCall(const Buoy& b, int ih, const mjData* d, bool first, State* s,
-                         int slot) {
+static HullCall hullCall(const HullSet& b, const Sea& sea, int ih, const mjData* d, bool first,
+                         HullState* s, CpuState* cs, int slot) {
   const Hull& hl = b.hull[ih];
-  HullCall c{b, hl, ih, d->xpos + 3 * hl.body, d->xmat + 9 * hl.body, d->xipos + 3 * hl.body,
-             {0, 0, 0}, first, s, slot, s->scr.data() + s->per * slot, nullptr,
-             triScr(s, slot, hl.t0)};
-  c.tmp = laneTmp(c.sc, b.cfg.sea.waves.size());
+  HullCall c{b, sea, hl, ih, d->xpos + 3 * hl.body, d->xmat + 9 * hl.body,
+             d->xipos + 3 * hl.body, {0, 0, 0}, first, s, cs, slot,
+             cs->scr.data() + cs->per * slot, nullptr, triScr(cs, slot, hl.t0)};
+  c.tmp = laneTmp(c.sc, sea.waves.size());
   return c;
 }
 
@@ -65,10 +65,10 @@ static HullCall hullCall(const Buoy& b, int ih, const mjData* d, bool first, Sta
 // hs->arg) over the hull's shared scratch
 static HullCall chunkCall(const HullRun& r, int slot, HullScr* hs) {
   HullCall c = r.c;
-  State* s = c.s;
+  CpuState* cs = c.cs;
   c.slot = slot;
-  c.sc = s->scr.data() + s->per * slot;
-  c.tmp = laneTmp(c.sc, c.b.cfg.sea.waves.size());
+  c.sc = cs->scr.data() + cs->per * slot;
+  c.tmp = laneTmp(c.sc, c.sea.waves.size());
   *hs = r.hs;
   hs->arg = c.sc + (r.hs.arg - r.c.sc);
   return c;
@@ -91,8 +91,8 @@ static void passPart(const HullRun& r, int i, int slot) {
   const Hull& hl = c.hl;
   ChunkSum& cs = r.cs[i];
   cs = ChunkSum{};
-  Pass1 q{c.b, c.b.cfg.sea, c.s, hs, hl, c.com, r.dir, c.ts, cs.wp, 0, 0, INFINITY, -INFINITY};
-  int* wl = c.s->iscr.data() + c.s->iper * slot;
+  Pass1 q{c.b, c.sea, c.s, hs, hl, c.com, r.dir, c.ts, cs.wp, 0, 0, INFINITY, -INFINITY};
+  int* wl = c.cs->iscr.data() + c.cs->iper * slot;
   const int k0 = hl.t0 + chunkAt(hl.nt, r.nc, i), k1 = hl.t0 + chunkAt(hl.nt, r.nc, i + 1);
   passChunk(q, Pass2{c, r.vel, *r.rig, r.dir, r.dt, &cs}, k0, k1, wl);
   cs.wet = q.wet;
@@ -106,17 +106,17 @@ static void passPart(const HullRun& r, int i, int slot) {
 static bool hullStart(HullRun* r, const mjData* d) {
   const HullCall& c = r->c;
   const Hull& hl = c.hl;
-  State* s = c.s;
+  HullState* s = c.s;
   if (c.x[2] - hl.rad > s->crest + 1e-6 * (1 + std::fabs(c.x[2]) + hl.rad)) {
     dryHull(hl, c.ih, c.first, s);
     return false;
   }
   if (c.first) s->hvNew[c.ih] = 1;
   hullGuess(*s, c.ih, d->time, r->c.L);
-  r->hs = hullScr(c.b.cfg.sea, c.sc, s->mi, hl.nv);
+  r->hs = hullScr(c.sea, c.sc, c.cs->mi, hl.nv);
   r->speed = hullFlow(c, r->vel, r->dir);
   r->nc = hullChunks(hl.nt);
-  r->cs = s->csum.data() + s->cper * c.slot;
+  r->cs = c.cs->csum.data() + c.cs->cper * c.slot;
   r->dt = s->hasPrev ? d->time - s->tprev : 0;
   return true;
 }
@@ -143,7 +143,7 @@ static void hullEnd(HullRun* r, double* const w[]) {
     hi = std::max(hi, cs.hi);
   }
   const Hull& hl = r->c.hl;
-  const Sea& sea = r->c.b.cfg.sea;
+  const Sea& sea = r->c.sea;
   const double len = hi > lo ? hi - lo : 0;
   const double cf = ittc57(r->speed * len / sea.nu);
   viscousWrench(sea.rho * cf, hl.par.viscous, lo, len, formMean(wet, wdir, lo, hi), v1, vd,
@@ -178,10 +178,11 @@ static void stage(Pool* pool, const HullRun& r, void (*part)(const HullRun&, int
 // is the body's wrench of force family p; slot picks the owner's scratch.
 // pool: run each stage's chunks on its threads (a hull split among them),
 // or null: all here
-static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[6],
-                       const Rigid& rig, bool first, State* s, int slot, double* const w[],
-                       Pool* pool) {
-  HullRun r{hullCall(b, ih, d, first, s, slot), {}, vel, &rig, {0, 0, 0}, 0, 0, 0, nullptr};
+static void hullWrench(const HullSet& b, const Sea& sea, int ih, const mjData* d,
+                       const double vel[6], const Rigid& rig, bool first, HullState* s,
+                       CpuState* cs, int slot, double* const w[], Pool* pool) {
+  HullRun r{hullCall(b, sea, ih, d, first, s, cs, slot), {}, vel, &rig, {0, 0, 0}, 0, 0, 0,
+            nullptr};
   if (!hullStart(&r, d)) return;
   stage(pool, r, vertexPart);
   // pass 1: cut, pressure force and torque: Kerner's rho g (eta - z), linear
@@ -195,16 +196,19 @@ static void hullWrench(const Buoy& b, int ih, const mjData* d, const double vel[
 // hulls [h0, h1), which own whole bodies, with scratch slot i; pool: each
 // hull split among its threads (cpuWrench)
 struct Job {
-  const Buoy* b;
+  const HullSet* b;
+  const Sea* sea;
+  const CpuPlan* plan;
   const mjModel* m;
   const mjData* d;
-  State* s;
+  HullState* s;
+  CpuState* cs;
   bool first;
 };
 
 static void hullRange(const Job& j, int h0, int h1, int slot, Pool* pool) {
-  const Buoy& b = *j.b;
-  State* s = j.s;
+  const HullSet& b = *j.b;
+  HullState* s = j.s;
   const int nb6 = 6 * j.m->nbody;
   for (int ih = h0; ih < h1; ih++) {
     const int bd = b.hull[ih].body;
@@ -226,29 +230,17 @@ static void hullRange(const Job& j, int h0, int h1, int slot, Pool* pool) {
     for (int p = 0; p < mjbNPART; p++) w[p] = s->part.data() + p * nb6 + 6 * bd;
     Rigid rig;
     rigidGroup(j.m, j.d, bd, &rig);
-    hullWrench(b, ih, j.d, vel, rig, j.first, s, slot, w, pool);
+    hullWrench(b, *j.sea, ih, j.d, vel, rig, j.first, s, j.cs, slot, w, pool);
   }
 }
 
 static void runChunk(void* arg, int c, int slot) {
   const Job& j = *static_cast<const Job*>(arg);
-  hullRange(j, j.b->split[c], j.b->split[c + 1], slot, nullptr);
+  hullRange(j, j.plan->split[c], j.plan->split[c + 1], slot, nullptr);
 }
 
-void noteBad(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
-  for (int bd : b.body) {
-    if (!s->bad[bd] || s->told[bd]) continue;
-    s->told[bd] = 1;
-    char line[256];
-    std::snprintf(line, sizeof(line),
-                  "body \"%s\": position or velocity not finite at t = %g s; "
-                  "mjbuoy adds no force to it\n", m->names + m->name_bodyadr[bd], d->time);
-    // within the capacity reserved in makeState: no allocation while stepping
-    if (s->notices.size() + std::strlen(line) < s->notices.capacity()) s->notices += line;
-  }
-}
-
-void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
+void cpuWrench(const HullSet& b, const Sea& sea, const CpuPlan& plan, const mjModel* m,
+               const mjData* d, HullState* s, CpuState* cs) {
   std::memset(s->part.data(), 0, s->part.size() * sizeof(double));
   std::memset(s->bad.data(), 0, s->bad.size());
   int clock = stepClock(m, d, s);
@@ -282,7 +274,6 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
     s->tgOff = s->tgOld = s->tgOld2 = 0;
   }
   // per-call wave constants, and the highest crest: level + sum |A|
-  const Sea& sea = b.cfg.sea;
   sea.now(d->time, s->wn.data());
   if (!sea.waves.empty()) s->tab.fill(sea, s->wn.data());
   s->crest = sea.level;
@@ -292,39 +283,13 @@ void cpuWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
   // the pool balances (glue.cc threads): one hull after the other, each
   // split among the threads. Either way the result does not depend on who
   // runs what. Another mjData holding the pool: serial
-  Job job{&b, m, d, s, clock != kMidStep};
-  if (b.pool && b.splitHulls) {
-    hullRange(job, 0, b.hull.size(), 0, b.pool);
-  } else if (!b.pool || !poolRun(b.pool, runChunk, &job, int(b.split.size()) - 1)) {
+  Job job{&b, &sea, &plan, m, d, s, cs, clock != kMidStep};
+  if (plan.pool && plan.splitHulls) {
+    hullRange(job, 0, b.hull.size(), 0, plan.pool);
+  } else if (!plan.pool || !poolRun(plan.pool, runChunk, &job, int(plan.split.size()) - 1)) {
     hullRange(job, 0, b.hull.size(), 0, nullptr);
   }
   finishWrench(b, m, d, s);
-}
-
-void finishWrench(const Buoy& b, const mjModel* m, const mjData* d, State* s) {
-  static const char* kFamily[mjbNPART] = {"pressure", "viscous", "drag", "slamming", "damping"};
-  noteBad(b, m, d, s);
-  const int nb6 = 6 * m->nbody;
-  std::memset(s->wrench.data(), 0, s->wrench.size() * sizeof(double));
-  for (int bd : b.body) {
-    for (int p = 0; p < mjbNPART; p++) {
-      double* wp = s->part.data() + p * nb6 + 6 * bd;
-      char& bad = s->badPart[mjbNPART * bd + p];
-      bad = !s->bad[bd] && !finite(wp, 6);
-      if (s->bad[bd] || bad) std::memset(wp, 0, 6 * sizeof(double));
-      if (bad && !s->toldPart[mjbNPART * bd + p]) {
-        s->toldPart[mjbNPART * bd + p] = 1;
-        char line[256];
-        std::snprintf(line, sizeof(line),
-                      "body \"%s\": %s force not finite at t = %g s (an intermediate "
-                      "overflowed or was NaN); mjbuoy leaves it out of the wrench\n",
-                      m->names + m->name_bodyadr[bd], kFamily[p], d->time);
-        // within the capacity reserved in makeState: no allocation while stepping
-        if (s->notices.size() + std::strlen(line) < s->notices.capacity()) s->notices += line;
-      }
-      for (int j = 0; j < 6; j++) s->wrench[6 * bd + j] += wp[j];
-    }
-  }
 }
 
 }  // namespace mjb

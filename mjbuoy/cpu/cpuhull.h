@@ -9,8 +9,9 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "api/buoy.h"
+#include "cpu/cpu.h"
 #include "hull/rigid.h"
+#include "mjbuoy.h"
 
 namespace mjb {
 
@@ -52,7 +53,7 @@ enum { kExpChunk = 32 };
 // the position relative to the COM (rel, 3 each), the label (lab, 2
 // each) and all of these with the height in one record (rec, zipkern.h
 // kRec each, 64-byte aligned, for the triangle kernels), by the vertex's
-// index in its hull. In the thread's scratch, not the State's: a hull's
+// index in its hull. In the thread's scratch, not the CpuState's: a hull's
 // vertex data stays in cache between the vertex stage and the passes and
 // is never written back to memory
 struct HullScr {
@@ -72,9 +73,9 @@ struct TriScr {
 // sums they add to (pressure wrench wp, wet area, its first moment along
 // the flow wdir, the extent along the flow)
 struct Pass1 {
-  const Buoy& b;
+  const HullSet& b;
   const Sea& sea;
-  State* s;
+  HullState* s;
   const HullScr& hs;
   const Hull& hl;
   const double* com;
@@ -84,16 +85,19 @@ struct Pass1 {
   double wet, wdir, lo, hi;
 };
 
-// hullWrench's per-call data: the body's pose, the thread's scratch and the
+// hullWrench's per-call data: the hulls b and the sea, the body's pose,
+// the per-mjData state s and scratch cs, the thread's scratch and the
 // label guesses' weights L (guessWeights)
 struct HullCall {
-  const Buoy& b;
+  const HullSet& b;
+  const Sea& sea;
   const Hull& hl;
   int ih;
   const mjtNum *x, *R, *com;
   double L[3];
   bool first;
-  State* s;
+  HullState* s;
+  CpuState* cs;
   int slot;
   double *sc, *tmp;
   TriScr ts;
@@ -107,7 +111,7 @@ struct HullCall {
 // where the last step's label was off by O(dt) (millimetres), and Newton,
 // converging quadratically, reaches its tolerance in one step instead of
 // two; the tolerance is unchanged, so the labels differ only within it
-void hullGuess(const State& s, int ih, double t, double L[3]);
+void hullGuess(const HullState& s, int ih, double t, double L[3]);
 
 // p rounded up to a 64-byte line: the lane kernels' scratch arrays start on
 // one, so a vector of 8 doubles is one line (a store split over two lines
@@ -134,7 +138,7 @@ void vertexStage(const HullCall& c, const HullScr& hs, int q0, int q1);
 double hullFlow(const HullCall& c, const double vel[6], double dir[3]);
 
 // the per-triangle scratch of thread slot for a hull whose first triangle is t0
-TriScr triScr(State* s, int slot, int t0);
+TriScr triScr(CpuState* cs, int slot, int t0);
 
 // Kerner's per-triangle form factor's mean position: 1+k_i = (1+k)(1 +
 // sbar - s_i), s in [0, 1] from rear to front along dir, whose

@@ -61,18 +61,18 @@ static void wetWaves(const Sea& sea, const WaveTab& t, size_t nw, const Wet& wt,
   }
 }
 
-TriScr triScr(State* s, int slot, int t0) {
-  const size_t o = 3 * s->tri.per * slot;
-  return {s->tri.area.data() + s->tri.per * slot, s->tri.c.data() + o, s->tri.n.data() + o,
-          s->tri.u.data() + o, t0};
+TriScr triScr(CpuState* cs, int slot, int t0) {
+  const size_t o = 3 * cs->tri.per * slot;
+  return {cs->tri.area.data() + cs->tri.per * slot, cs->tri.c.data() + o, cs->tri.n.data() + o,
+          cs->tri.u.data() + o, t0};
 }
 
 // cut, pressure force and torque of triangle k, the water's mean wave
 // velocity over its wet part; the scalar reference of pass1Lanes
 static void pass1Tri(Pass1& q, int k) {
-  const Buoy& b = q.b;
+  const HullSet& b = q.b;
   const Sea& sea = q.sea;
-  State* s = q.s;
+  HullState* s = q.s;
   const size_t nw = sea.waves.size();
   const bool linear = !sea.kerner && nw > 0;
   const double rg = sea.rho * sea.g;
@@ -127,7 +127,7 @@ static void pass1Tri(Pass1& q, int k) {
 // table, the pressure model, where per-triangle results go
 static TriIn triIn(const Pass1& q) {
   const Sea& sea = q.sea;
-  State* s = q.s;
+  HullState* s = q.s;
   const WaveTab& t = s->tab;
   TriIn in;
   in.face = q.b.face.data();
@@ -226,7 +226,7 @@ static FlowIn flowIn(const Pass2& p) {
   const HullCall& c = p.c;
   const Hull& hl = c.hl;
   const HullParams& par = hl.par;
-  State* s = c.s;
+  HullState* s = c.s;
   FlowIn in;
   in.tarea = c.b.tarea.data();
   in.q = c.first ? s->curQ.data() : nullptr;
@@ -257,7 +257,7 @@ static FlowIn flowIn(const Pass2& p) {
 // (a triangle with no vertex below the surface has no wet part), with
 // pass 2 in the same lanes when fused; wl: 4 (k1 - k0) ints of scratch
 static void passLanes(Pass1& q, const Pass2& p2, bool fused, int k0, int k1, int* wl) {
-  State* s = q.s;
+  HullState* s = q.s;
   const int nt = k1 - k0;
   // unfused: dry triangles keep the zero area pass 2 reads
   if (!fused) std::memset(&q.ts.area(k0), 0, nt * sizeof(double));
@@ -300,7 +300,7 @@ static void pass2Tri(const Pass2& p, int k) {
   const double* vel = p.vel;
   ChunkSum* cs = p.cs;
   const HullParams& par = c.hl.par;
-  State* s = c.s;
+  HullState* s = c.s;
   const TriScr& ts = c.ts;
   double A = ts.area(k);
   const double* cc = ts.at(ts.c, k);
@@ -342,7 +342,7 @@ static void pass2Tri(const Pass2& p, int k) {
 
 void passChunk(Pass1& q, const Pass2& p2, int k0, int k1, int* wl) {
   const HullCall& c = p2.c;
-  State* s = c.s;
+  HullState* s = c.s;
   // dry triangles' history is zero; wet ones' are written by pass 2
   if (c.first) std::memset(&s->curQ[3 * k0], 0, 3 * (k1 - k0) * sizeof(float));
   const bool lanes = simdLevel() != kSimdScalar;

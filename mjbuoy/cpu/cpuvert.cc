@@ -77,7 +77,7 @@ HullScr hullScr(const Sea& sea, double* sc, size_t mi, int nv) {
 // the last steps (zero after a restart), which moves by mm per step
 static void placeVertices(const HullCall& c, const HullScr& hs, int q0, int q1) {
   const Hull& hl = c.hl;
-  State* s = c.s;
+  HullState* s = c.s;
   const mjtNum *x = c.x, *R = c.R, *com = c.com;
   const double* L = c.L;
   const int v = hl.v0 + q0;
@@ -110,7 +110,7 @@ static void placeVertices(const HullCall& c, const HullScr& hs, int q0, int q1) 
 // (seavec.h), the rest here
 static void vertexOut(const HullCall& c, const HullScr& hs, int q0, int q1) {
   const Hull& hl = c.hl;
-  State* s = c.s;
+  HullState* s = c.s;
   const double zc = c.com[2];
   const int v = hl.v0 + q0;
   int qs = q0;
@@ -145,8 +145,8 @@ static void vertexOut(const HullCall& c, const HullScr& hs, int q0, int q1) {
 enum { kWetLanesMax = 8 };
 static void wetVertices(const HullCall& c, const HullScr& hs, int q0, int q1) {
   const Hull& hl = c.hl;
-  const Sea& sea = c.b.cfg.sea;
-  State* s = c.s;
+  const Sea& sea = c.sea;
+  HullState* s = c.s;
   const size_t nw = sea.waves.size();
   if (nw == 0) return;
   const double zc = c.com[2];
@@ -197,24 +197,25 @@ static void packVertices(const HullCall& c, const HullScr& hs, int q0, int q1) {
 // hs.arg are the running thread's
 void vertexStage(const HullCall& c, const HullScr& hs, int q0, int q1) {
   const auto tv0 = std::chrono::steady_clock::now();
-  State* s = c.s;
-  const size_t nw = c.b.cfg.sea.waves.size();
+  HullState* s = c.s;
+  const size_t nw = c.sea.waves.size();
   placeVertices(c, hs, q0, q1);
-  s->niter[c.slot] += c.b.cfg.sea.solveMany(s->wn.data(), q1 - q0, hs.X + q0, hs.Y + q0,
+  c.cs->niter[c.slot] += c.sea.solveMany(s->wn.data(), q1 - q0, hs.X + q0, hs.Y + q0,
                                             hs.A0 + q0, hs.A1 + q0, hs.Z + q0,
                                             hs.SC + 2 * nw * q0, c.tmp);
-  s->nsolve[c.slot] += q1 - q0;
+  c.cs->nsolve[c.slot] += q1 - q0;
   vertexOut(c, hs, q0, q1);
   wetVertices(c, hs, q0, q1);
   packVertices(c, hs, q0, q1);
-  s->vsec[c.slot] += std::chrono::duration<double>(std::chrono::steady_clock::now() - tv0).count();
+  c.cs->vsec[c.slot] +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - tv0).count();
 }
 
 // the hull's flow: its COM velocity relative to the water there, its speed
 // (returned) and direction dir (body x when at rest)
 double hullFlow(const HullCall& c, const double vel[6], double dir[3]) {
-  const Sea& sea = c.b.cfg.sea;
-  State* s = c.s;
+  const Sea& sea = c.sea;
+  HullState* s = c.s;
   const int ih = c.ih;
   const mjtNum* com = c.com;
   const double* L = c.L;
@@ -224,8 +225,8 @@ double hullFlow(const HullCall& c, const double vel[6], double dir[3]) {
                  com[1] + (L[0] * o[1] + L[1] * o1[1] + L[2] * o2[1])};
   int nit = 0;
   double hz = sea.solve(s->wn.data(), com[0], com[1], a, c.sc, c.tmp, &nit);
-  s->niter[c.slot] += nit;
-  s->nsolve[c.slot]++;
+  c.cs->niter[c.slot] += nit;
+  c.cs->nsolve[c.slot]++;
   if (c.first) {
     const double o0 = a[0] - com[0], o1 = a[1] - com[1];
     const bool ok = std::isfinite(o0) && std::isfinite(o1);

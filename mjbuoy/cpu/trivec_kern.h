@@ -626,31 +626,27 @@ static void cutPoint(const typename TLanes<W>::V pw[3], const typename TLanes<W>
   for (int j = 0; j < 2; j++) l[j] = lw[j] + t * (le[j] - lw[j]);
 }
 
-// cut triangles [p0, p0 + nl) of in.idx as W lanes (the last repeated
-// past nl), each turned so its odd corner o (the one alone on its side of
-// the surface) comes first, winding kept: o, a, b. TWO false: o alone
-// below, one wet piece (o, cut oa, cut ob); TWO true: o alone above, a wet
-// quadrilateral a, b, cut bo, cut ao in two pieces fanned from a. Sums
-// into f, t, wet, wdir, lo, hi as triChunk
-template <int W, class M, bool TWO>
-static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
-                     typename TLanes<W>::V* Tq, typename TLanes<W>::V* wet,
-                     typename TLanes<W>::V* wdir, typename TLanes<W>::V* lo,
-                     typename TLanes<W>::V* hi, FlowAcc<W>* acc) {
+// the corners of cut triangles [p0, p0 + nl) of in.idx as W lanes (the
+// last repeated past nl), each turned so its odd corner o (the one alone
+// on its side of the surface) comes first, winding kept: o, a, b;
+// position p, height h, z' zs and label lb of each corner, the lanes
+// whose quadrilateral is fanned from b (TWO), each lane's e^L at its
+// first wet corner and its triangle
+template <int W, bool TWO>
+static void cutLoad(const TriIn* in, int p0, int nl, typename TLanes<W>::V p[3][3],
+                    typename TLanes<W>::V h[3], typename TLanes<W>::V zs[3],
+                    typename TLanes<W>::V lb[3][2], typename TLanes<W>::I* fromB,
+                    const double* e0[W], int tk[W]) {
   typedef typename TLanes<W>::V V;
-  typedef typename TLanes<W>::I I;
-  V p[3][3], h[3], zs[3], lb[3][2];
-  I fromB = I{};  // lanes whose quadrilateral is fanned from b
-  const double* e0[W];
-  int tk[W];
   int gv[3][W];
+  *fromB = typename TLanes<W>::I{};
   for (int l = 0; l < W; l++) {
     const int k = in->idx[p0 + (l < nl ? l : nl - 1)];
     const int* fc = in->face + 3 * k;
     tk[l] = k;
     const double h0 = in->h[fc[0]], h1 = in->h[fc[1]];
     const int r = TWO ? (h0 > 0 ? 0 : h1 > 0 ? 1 : 2) : (h0 <= 0 ? 0 : h1 <= 0 ? 1 : 2);
-    fromB[l] = TWO && r == 1 ? -1 : 0;
+    (*fromB)[l] = TWO && r == 1 ? -1 : 0;
     for (int c = 0; c < 3; c++) gv[c][l] = fc[(r + c) % 3] - in->v0;
     e0[l] = in->E + in->es * in->nw * gv[!TWO ? 0 : r == 1 ? 2 : 1][l];
   }
@@ -663,13 +659,23 @@ static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
     lb[c][0] = f[5];
     lb[c][1] = f[6];
   }
-  // the parent's normal (wetTriangle)
-  V cr[3], n[3];
-  const V len = laneNormal<W, M>(p, cr, n);
-  const I ok = len > 0;
-  const V hs = h[0] + h[1] + h[2];
-  I good = ok & ((hs - hs) == 0);
-  V A = V{}, rA[3] = {}, Fl[3] = {}, Tl[3] = {}, Vw[3] = {}, x[4][3];
+}
+
+// the integrals of the wet part of the lanes' cut triangles (corners from
+// cutLoad, parent's normal n) into A, rA, F, Tq and Vw, and its corners x
+// (3 used, or 4 when TWO). TWO false: o alone below, one wet piece (o,
+// cut oa, cut ob); TWO true: o alone above, a wet quadrilateral a, b, cut
+// bo, cut ao in two pieces fanned from a, or from b in the lanes of fromB
+template <int W, class M, bool TWO>
+static void cutPieces(const TriIn* in, const typename TLanes<W>::V p[3][3],
+                      const typename TLanes<W>::V h[3], const typename TLanes<W>::V zs[3],
+                      const typename TLanes<W>::V lb[3][2], typename TLanes<W>::I fromB,
+                      const double* const e0[W], const typename TLanes<W>::V n[3],
+                      typename TLanes<W>::I* good, typename TLanes<W>::V x[4][3],
+                      typename TLanes<W>::V* A, typename TLanes<W>::V rA[3],
+                      typename TLanes<W>::V Fl[3], typename TLanes<W>::V Tl[3],
+                      typename TLanes<W>::V Vw[3]) {
+  typedef typename TLanes<W>::V V;
   const V z = V{};
   if (!TWO) {
     V l1[2], l2[2];
@@ -681,48 +687,74 @@ static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
     V d[3] = {-h[0], z, z};
     const V zq[3] = {zs[0], z, z}, lq[3][2] = {{lb[0][0], lb[0][1]}, {l1[0], l1[1]},
                                                {l2[0], l2[1]}};
-    cutPiece<W, M>(in, q, d, zq, lq, e0, n, &good, &A, rA, Fl, Tl, Vw);
-  } else {
-    // the quadrilateral a, b, cut bo, cut ao fanned as wetWaves fans it:
-    // from the first wet corner in the parent's order, b when o is the
-    // parent's corner 1, else a (the cut points' labels and z' are linear
-    // along the edges only, so the diagonal changes the integrals beyond
-    // round-off)
-    V la[2], lbo[2];
-    cutPoint<W>(p[1], p[0], lb[1], lb[0], h[1], h[0], x[3], la);   // on edge a-o
-    cutPoint<W>(p[2], p[0], lb[2], lb[0], h[2], h[0], x[2], lbo);  // on edge b-o
-    for (int j = 0; j < 3; j++) {
-      x[0][j] = p[1][j];
-      x[1][j] = p[2][j];
-    }
-    // corners a, b, cut bo, cut ao: position, depth, z', label
-    V cq[4][3], cd[4], cz[4] = {zs[1], zs[2], z, z}, cl[4][2];
-    for (int c = 0; c < 4; c++) {
-      for (int j = 0; j < 3; j++) cq[c][j] = x[c][j];
-      cd[c] = c == 0 ? -h[1] : c == 1 ? -h[2] : z;
-    }
-    for (int j = 0; j < 2; j++) {
-      cl[0][j] = lb[1][j];
-      cl[1][j] = lb[2][j];
-      cl[2][j] = lbo[j];
-      cl[3][j] = la[j];
-    }
-    // pieces (a, b, cut bo), (a, cut bo, cut ao), or from b (b, cut bo,
-    // cut ao), (b, cut ao, a): corner indices into the four
-    const int fa[2][3] = {{0, 1, 2}, {0, 2, 3}}, fbv[2][3] = {{1, 2, 3}, {1, 3, 0}};
-    for (int m = 0; m < 2; m++) {
-      V q[3][3], d[3], zq[3], lq[3][2];
-      for (int c = 0; c < 3; c++) {
-        const int i = fa[m][c], k = fbv[m][c];
-        for (int j = 0; j < 3; j++) q[c][j] = fromB ? cq[k][j] : cq[i][j];
-        d[c] = fromB ? cd[k] : cd[i];
-        zq[c] = fromB ? cz[k] : cz[i];
-        for (int j = 0; j < 2; j++) lq[c][j] = fromB ? cl[k][j] : cl[i][j];
-      }
-      cutPiece<W, M>(in, q, d, zq, lq, e0, n, &good, &A, rA, Fl, Tl, Vw);
-    }
+    cutPiece<W, M>(in, q, d, zq, lq, e0, n, good, A, rA, Fl, Tl, Vw);
+    return;
   }
-  // per triangle done (wet area, centroid, normal, mean water velocity)
+  // the quadrilateral a, b, cut bo, cut ao fanned as wetWaves fans it:
+  // from the first wet corner in the parent's order, b when o is the
+  // parent's corner 1, else a (the cut points' labels and z' are linear
+  // along the edges only, so the diagonal changes the integrals beyond
+  // round-off)
+  V la[2], lbo[2];
+  cutPoint<W>(p[1], p[0], lb[1], lb[0], h[1], h[0], x[3], la);   // on edge a-o
+  cutPoint<W>(p[2], p[0], lb[2], lb[0], h[2], h[0], x[2], lbo);  // on edge b-o
+  for (int j = 0; j < 3; j++) {
+    x[0][j] = p[1][j];
+    x[1][j] = p[2][j];
+  }
+  // corners a, b, cut bo, cut ao: position, depth, z', label
+  V cq[4][3], cd[4], cz[4] = {zs[1], zs[2], z, z}, cl[4][2];
+  for (int c = 0; c < 4; c++) {
+    for (int j = 0; j < 3; j++) cq[c][j] = x[c][j];
+    cd[c] = c == 0 ? -h[1] : c == 1 ? -h[2] : z;
+  }
+  for (int j = 0; j < 2; j++) {
+    cl[0][j] = lb[1][j];
+    cl[1][j] = lb[2][j];
+    cl[2][j] = lbo[j];
+    cl[3][j] = la[j];
+  }
+  // pieces (a, b, cut bo), (a, cut bo, cut ao), or from b (b, cut bo,
+  // cut ao), (b, cut ao, a): corner indices into the four
+  const int fa[2][3] = {{0, 1, 2}, {0, 2, 3}}, fbv[2][3] = {{1, 2, 3}, {1, 3, 0}};
+  for (int m = 0; m < 2; m++) {
+    V q[3][3], d[3], zq[3], lq[3][2];
+    for (int c = 0; c < 3; c++) {
+      const int i = fa[m][c], k = fbv[m][c];
+      for (int j = 0; j < 3; j++) q[c][j] = fromB ? cq[k][j] : cq[i][j];
+      d[c] = fromB ? cd[k] : cd[i];
+      zq[c] = fromB ? cz[k] : cz[i];
+      for (int j = 0; j < 2; j++) lq[c][j] = fromB ? cl[k][j] : cl[i][j];
+    }
+    cutPiece<W, M>(in, q, d, zq, lq, e0, n, good, A, rA, Fl, Tl, Vw);
+  }
+}
+
+// cut triangles [p0, p0 + nl) of in.idx as W lanes (cutLoad), their wet
+// parts (cutPieces), then per triangle done (wet area, centroid, normal,
+// mean water velocity) and the sums into f, t, wet, wdir, lo, hi as
+// triChunk
+template <int W, class M, bool TWO>
+static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
+                     typename TLanes<W>::V* Tq, typename TLanes<W>::V* wet,
+                     typename TLanes<W>::V* wdir, typename TLanes<W>::V* lo,
+                     typename TLanes<W>::V* hi, FlowAcc<W>* acc) {
+  typedef typename TLanes<W>::V V;
+  typedef typename TLanes<W>::I I;
+  V p[3][3], h[3], zs[3], lb[3][2];
+  I fromB;  // lanes whose quadrilateral is fanned from b
+  const double* e0[W];
+  int tk[W];
+  cutLoad<W, TWO>(in, p0, nl, p, h, zs, lb, &fromB, e0, tk);
+  // the parent's normal (wetTriangle)
+  V cr[3], n[3];
+  const V len = laneNormal<W, M>(p, cr, n);
+  const I ok = len > 0;
+  const V hs = h[0] + h[1] + h[2];
+  I good = ok & ((hs - hs) == 0);
+  V A = V{}, rA[3] = {}, Fl[3] = {}, Tl[3] = {}, Vw[3] = {}, x[4][3];
+  const V z = V{};
+  cutPieces<W, M, TWO>(in, p, h, zs, lb, fromB, e0, n, &good, x, &A, rA, Fl, Tl, Vw);
   const I has = A > 0;
   const V inv = has ? 1 / A : z;
   I use = good & has;

@@ -10,13 +10,14 @@
 #include <string>
 #include <vector>
 
-#include "api/buoy.h"
 #include "gl/egl.h"
+#include "gl/gl.h"
 #include "gl/glprog.h"
 #include "gl/gltimer.h"
 #include "shared.h"
 #include "pipeline.h"
 #include "hull/rigid.h"
+#include "mjbuoy.h"
 
 namespace mjb {
 
@@ -63,7 +64,7 @@ struct GlBackend {
   // guess): the buffers are redone for the data stepped when its reach is
   // not the one they hold, so no mjData's results depend on another's
   double reach0 = 0;
-  std::map<const State*, double> reachOf;
+  std::map<const GlState*, double> reachOf;
   // the start-up ramp's gain on the amplitudes in the wave buffer (sea.h
   // gain): redone in a step whose time has another
   double gain = 1;
@@ -158,7 +159,7 @@ static GWave gwave(const Wave& w, double depth, double reach, double gain) {
 static bool fastWave(const Wave& w, double reach) { return w.k * reach <= 2.0; }
 
 // the longest edge of any hull [m] (body frame)
-static double longestEdge(const Buoy& b) {
+static double longestEdge(const HullSet& b) {
   double e2 = 0;
   for (size_t t = 0; t + 2 < b.face.size(); t += 3) {
     for (int j = 0; j < 3; j++) {
@@ -199,25 +200,9 @@ static void uploadWaves(GlBackend* g, const Sea& sea) {
   trisUniform(g, "nfast", g->nfast);
 }
 
-bool glMake(Buoy* b, std::string* err) {
-  auto g = new GlBackend;
-  if (!glCreate(&g->ctx, err)) {
-    delete g;
-    return false;
-  }
-  GlCurrent cur(&g->ctx);
-  if (!cur.ok()) {
-    *err = cur.error();
-    glDestroy(&g->ctx);
-    delete g;
-    return false;
-  }
+// compile every program variant (kVarDef) with the group sizes as defines
+static bool makePrograms(GlBackend* g, std::string* err) {
   const GladGLContext& gl = g->ctx.gl;
-  if (!groupSizes(g, err)) {
-    b->gl = g;
-    glFree(b);
-    return false;
-  }
   std::string defs = "#define BUOY_VERT_LOCAL " + std::to_string(g->vlocal) +
                      "\n#define BUOY_LOCAL " + std::to_string(g->local) +
                      "\n#define BUOY_PER " + std::to_string(g->per) +
@@ -233,35 +218,48 @@ bool glMake(Buoy* b, std::string* err) {
     }
     GLuint& p = i == 2 * kNVar ? g->bprog : vert ? g->vprog[v] : g->tprog[v];
     p = glProgram(gl, kStage[i == 2 * kNVar ? kBodies : vert ? kVerts : kTris], err, d);
-    if (!p) {
-      b->gl = g;
-      glFree(b);
-      return false;
-    }
+    if (!p) return false;
   }
+  return true;
+}
 
-  // static data: vertices, triangles, hulls, waves
-  const mjModel* m = b->m;
-  g->nvert = b->vert.size() / 3;
-  g->ntri = b->face.size() / 3;
-  g->nhull = b->hull.size();
-  g->nslot = b->body.size();
-  std::vector<int> slot(m->nbody, -1);
-  for (int i = 0; i < g->nslot; i++) slot[b->body[i]] = i;
-  std::vector<GVert> vert(g->nvert);
-  std::vector<GTri> tri(g->ntri);
-  std::vector<GHull> hull(g->nhull);
+// the static data the buffers start from: vertices, triangles, hulls and
+// their chunks, bodies, waves (room for wcap components)
+struct GlStatic {
+  std::vector<GVert> vert;
+  std::vector<GTri> tri;
+  std::vector<GHull> hull;
   std::vector<GChunk> chunk, vchunk;
+  std::vector<GWave> wave;
+};
+
+static void staticData(GlBackend* g, const HullSet& hs, const Sea& sea, size_t wcap,
+                       GlStatic* st) {
+  const mjModel* m = hs.m;
+  g->nvert = hs.vert.size() / 3;
+  g->ntri = hs.face.size() / 3;
+  g->nhull = hs.hull.size();
+  g->nslot = hs.body.size();
+  std::vector<int> slot(m->nbody, -1);
+  for (int i = 0; i < g->nslot; i++) slot[hs.body[i]] = i;
+  std::vector<GVert>& vert = st->vert;
+  std::vector<GTri>& tri = st->tri;
+  std::vector<GHull>& hull = st->hull;
+  std::vector<GChunk>& chunk = st->chunk;
+  std::vector<GChunk>& vchunk = st->vchunk;
+  vert.assign(g->nvert, GVert{});
+  tri.assign(g->ntri, GTri{});
+  hull.assign(g->nhull, GHull{});
   const int csize = g->local * g->per;
   g->body.assign(g->nslot, GBody{});
   for (int h = 0; h < g->nhull; h++) {
-    const Hull& hl = b->hull[h];
+    const Hull& hl = hs.hull[h];
     const HullParams& p = hl.par;
     for (int i = hl.v0; i < hl.v0 + hl.nv; i++) {
-      vert[i] = GVert{float(b->vert[3 * i]), float(b->vert[3 * i + 1]), float(b->vert[3 * i + 2]), h};
+      vert[i] = GVert{float(hs.vert[3 * i]), float(hs.vert[3 * i + 1]), float(hs.vert[3 * i + 2]), h};
     }
     for (int k = hl.t0; k < hl.t0 + hl.nt; k++) {
-      tri[k] = GTri{b->face[3 * k], b->face[3 * k + 1], b->face[3 * k + 2], h};
+      tri[k] = GTri{hs.face[3 * k], hs.face[3 * k + 1], hs.face[3 * k + 2], h};
     }
     int s = slot[hl.body];
     hull[h].body = s;
@@ -288,21 +286,27 @@ bool glMake(Buoy* b, std::string* err) {
     bd.nh++;
     bd.nt += hl.nt;
   }
-  const Sea& sea = b->cfg.sea;
   g->nwave = sea.waves.size();
-  // room for b->wcap components, so mjb_setSea only rewrites (glSetSea)
-  const int cap = std::max<int>(b->wcap, g->nwave);
-  std::vector<GWave> wave(cap, GWave{});
+  // room for wcap components, so mjb_setSea only rewrites (glSetSea)
+  const int cap = std::max<int>(wcap, g->nwave);
+  st->wave.assign(cap, GWave{});
   g->perm.assign(cap, 0);
-  g->reach = g->reach0 = 1.25 * longestEdge(*b);  // a first guess; the steps raise it
+  g->reach = g->reach0 = 1.25 * longestEdge(hs);  // a first guess; the steps raise it
   g->phase.assign(g->nslot * std::max(cap, 1), 0);
   g->out.assign(g->nslot * 40, 0);
   g->nchunk = chunk.size();
   g->nvchunk = vchunk.size();
+}
 
+// the buffers, within the driver's buffer texture size (false and err if
+// not): static data from st, per-step inputs (mapped for good where GL 4.4
+// can), outputs
+static bool makeBuffers(GlBackend* g, const GlStatic& st, std::string* err) {
+  const GladGLContext& gl = g->ctx.gl;
   // each vertex's e^(i theta) per component, two a texel (shaders/sea.glsl
   // expTexel), room for the capacity so mjb_setSea creates nothing; within
   // the driver's limits (checked before anything is allocated)
+  const int cap = st.wave.size();
   const size_t nexp = size_t(g->nvert) * ((cap + 1) / 2);
   GLint tmax = 0;  // texels; GL guarantees only 65536, llvmpipe has 2^27
   gl.GetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &tmax);
@@ -311,15 +315,13 @@ bool glMake(Buoy* b, std::string* err) {
            " wave components (mjbuoy.sea.capacity, else the sea's count) = " +
            std::to_string(nexp) + " texels (two components each) exceed the driver's buffer texture size (" +
            std::to_string(tmax) + " texels); use fewer components or boats, or backend cpu";
-    b->gl = g;
-    glFree(b);
     return false;
   }
   makeBuffer(g, B_EXP, std::max<size_t>(nexp, 1) * 16, nullptr, GL_DYNAMIC_COPY);
-  makeBuffer(g, B_VERT, vert.size() * sizeof(GVert), vert.data(), GL_STATIC_DRAW);
-  makeBuffer(g, B_TRI, tri.size() * sizeof(GTri), tri.data(), GL_STATIC_DRAW);
-  makeBuffer(g, B_HULL, hull.size() * sizeof(GHull), hull.data(), GL_STATIC_DRAW);
-  makeBuffer(g, B_WAVE, wave.size() * sizeof(GWave), wave.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_VERT, st.vert.size() * sizeof(GVert), st.vert.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_TRI, st.tri.size() * sizeof(GTri), st.tri.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_HULL, st.hull.size() * sizeof(GHull), st.hull.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_WAVE, st.wave.size() * sizeof(GWave), st.wave.data(), GL_STATIC_DRAW);
   // the per-step inputs: written in place where GL 4.4 can map them for
   // good (on llvmpipe a mapping is the buffer's own memory: no copy)
   g->persist = gl.VERSION_4_4 && gl.BufferStorage && gl.MapBufferRange;
@@ -335,8 +337,6 @@ bool glMake(Buoy* b, std::string* err) {
     g->phasep = static_cast<float*>(mapped(B_PHASE, g->phase.size() * sizeof(float), wr));
     if (!g->bodyp || !g->phasep) {
       *err = "gl backend: could not map its per-step buffers (glMapBufferRange)";
-      b->gl = g;
-      glFree(b);
       return false;
     }
     std::memcpy(g->bodyp, g->body.data(), g->nslot * sizeof(GBody));
@@ -348,9 +348,9 @@ bool glMake(Buoy* b, std::string* err) {
   }
   makeBuffer(g, B_VOUT, g->nvert * 16, nullptr, GL_DYNAMIC_COPY);
   makeBuffer(g, B_LAB, g->nvert * 8, nullptr, GL_DYNAMIC_COPY);
-  makeBuffer(g, B_CHUNK, chunk.size() * sizeof(GChunk), chunk.data(), GL_STATIC_DRAW);
-  makeBuffer(g, B_VCHUNK, vchunk.size() * sizeof(GChunk), vchunk.data(), GL_STATIC_DRAW);
-  makeBuffer(g, B_CPART, chunk.size() * g->local * BUOY_NSUM * 16, nullptr, GL_DYNAMIC_COPY);
+  makeBuffer(g, B_CHUNK, st.chunk.size() * sizeof(GChunk), st.chunk.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_VCHUNK, st.vchunk.size() * sizeof(GChunk), st.vchunk.data(), GL_STATIC_DRAW);
+  makeBuffer(g, B_CPART, st.chunk.size() * g->local * BUOY_NSUM * 16, nullptr, GL_DYNAMIC_COPY);
   makeBuffer(g, B_OUT, g->out.size() * sizeof(float), nullptr, GL_DYNAMIC_READ);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   // the per-triangle gathers read through texel fetches: llvmpipe gathers a
@@ -360,10 +360,14 @@ bool glMake(Buoy* b, std::string* err) {
     *err = "gl backend: " + std::to_string(g->ntri) + " triangles and " +
            std::to_string(g->nvert) + " vertices exceed the driver's buffer texture size (" +
            std::to_string(tmax) + " texels); use backend cpu";
-    b->gl = g;
-    glFree(b);
     return false;
   }
+  return true;
+}
+
+// the buffer textures the per-triangle gathers read, and their units
+static void makeTextures(GlBackend* g) {
+  const GladGLContext& gl = g->ctx.gl;
   const GLenum tfmt[kNTex] = {GL_RGBA32F, GL_RG32F,   GL_RGBA32I, GL_RGBA32F,
                               GL_RGBA32F, GL_RGBA32F, GL_R32F};
   const int tbuf[kNTex] = {B_VOUT, B_LAB, B_TRI, B_VERT, B_EXP, B_WAVE, B_PHASE};
@@ -388,8 +392,12 @@ bool glMake(Buoy* b, std::string* err) {
     gl.ProgramUniform1i(p, loc(g, p, "tWave"), 5);
     gl.ProgramUniform1i(p, loc(g, p, "tPhase"), 6);
   }
+}
 
-  // uniforms that never change
+// the uniforms that never change, the locations of the per-step ones, the
+// stage timers
+static void fixedUniforms(GlBackend* g, const Sea& sea) {
+  const GladGLContext& gl = g->ctx.gl;
   trisUniform(g, "nchunk", g->nchunk);
   trisUniform(g, "rhog", float(sea.rho * sea.g));
   trisUniform(g, "rho", float(sea.rho));
@@ -415,8 +423,35 @@ bool glMake(Buoy* b, std::string* err) {
   }
   timerInit(&g->timer, &gl);
   for (int i = 0; i < kNStage; i++) g->tstage[i] = timerStage(&g->timer, kStage[i]);
-  b->gl = g;
-  b->renderer = g->ctx.renderer;
+}
+
+bool glMake(const HullSet& hs, const Sea& sea, size_t wcap, GlBackend** out,
+            std::string* renderer, std::string* err) {
+  *out = nullptr;
+  auto g = new GlBackend;
+  if (!glCreate(&g->ctx, err)) {
+    delete g;
+    return false;
+  }
+  GlCurrent cur(&g->ctx);
+  if (!cur.ok()) {
+    *err = cur.error();
+    glDestroy(&g->ctx);
+    delete g;
+    return false;
+  }
+  GlStatic st;
+  bool ok = groupSizes(g, err) && makePrograms(g, err);
+  if (ok) staticData(g, hs, sea, wcap, &st);
+  ok = ok && makeBuffers(g, st, err);
+  *out = g;
+  if (!ok) {
+    glFree(out);
+    return false;
+  }
+  makeTextures(g);
+  fixedUniforms(g, sea);
+  *renderer = g->ctx.renderer;
   return true;
 }
 
@@ -442,12 +477,10 @@ static void seaUniforms(GlBackend* g, const Sea& sea) {
            (g->nwave == 1 ? kVOne : 0);
 }
 
-void glSetSea(Buoy* b) {
-  GlBackend* g = b->gl;
+void glSetSea(GlBackend* g, const Sea& sea) {
   if (!g) return;
   std::lock_guard<std::mutex> lk(g->mu);
   GlCurrent cur(&g->ctx);
-  const Sea& sea = b->cfg.sea;
   // within the capacity reserved in glMake (mjb_setSea checks): a rewrite,
   // no new GL object; uploaded in pieces from the stack
   g->nwave = sea.waves.size();
@@ -455,8 +488,7 @@ void glSetSea(Buoy* b) {
   seaUniforms(g, sea);
 }
 
-void glFreeState(Buoy* b, State* s) {
-  GlBackend* g = b->gl;
+void glFreeState(GlBackend* g, GlState* s) {
   if (!g) return;
   // one thread at a time in the context, as every other use of it
   std::lock_guard<std::mutex> lk(g->mu);
@@ -474,7 +506,7 @@ void glFreeState(Buoy* b, State* s) {
 
 // s's per-data buffers, zeroed: the slamming history (n bytes each) and
 // the label offsets' ring
-static void makeStateBuffers(GlBackend* g, State* s, GLsizeiptr n, bool zero) {
+static void makeStateBuffers(GlBackend* g, GlState* s, GLsizeiptr n, bool zero) {
   const GladGLContext& gl = g->ctx.gl;
   const GLsizeiptr no = GLsizeiptr(3 * 2 * sizeof(float)) * std::max(g->nvert, 1);
   std::vector<char> z(zero ? std::max(n, no) : 0, 0);
@@ -487,8 +519,7 @@ static void makeStateBuffers(GlBackend* g, State* s, GLsizeiptr n, bool zero) {
   }
 }
 
-bool glCopyState(Buoy* b, State* dst, const State* src) {
-  GlBackend* g = b->gl;
+bool glCopyState(GlBackend* g, GlState* dst, const GlState* src) {
   if (!g || !src->slambuf[0]) return true;
   std::lock_guard<std::mutex> lk(g->mu);
   GlCurrent cur(&g->ctx);
@@ -508,8 +539,8 @@ bool glCopyState(Buoy* b, State* dst, const State* src) {
   return true;
 }
 
-void glFree(Buoy* b) {
-  GlBackend* g = b->gl;
+void glFree(GlBackend** out) {
+  GlBackend* g = *out;
   if (!g) return;
   {
     GlCurrent cur(&g->ctx);
@@ -523,16 +554,15 @@ void glFree(Buoy* b) {
   }
   glDestroy(&g->ctx);
   delete g;
-  b->gl = nullptr;
+  *out = nullptr;
 }
 
 // per-step body data, in double until the last moment: positions relative
 // to the COM, wave phases at the COM reduced mod 2 pi
-static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
-  GlBackend* g = b->gl;
-  const Sea& sea = b->cfg.sea;
+static void bodies(GlBackend* g, const HullSet& hs, const Sea& sea, const mjModel* m,
+                   const mjData* d, HullState* s) {
   for (int i = 0; i < g->nslot; i++) {
-    int bd = b->body[i];
+    int bd = hs.body[i];
     GBody& o = g->bodyp[i];
     const mjtNum* R = d->xmat + 9 * bd;
     const mjtNum* x = d->xpos + 3 * bd;
@@ -588,17 +618,17 @@ static void bodies(Buoy* b, const mjModel* m, const mjData* d, State* s) {
 // takes the oldest's), a restart starts cold so a rerun repeats its bits.
 // Only the step's first call writes its slot, so an RK4 stage guesses from
 // the same steps as the step's first call
-static void labelGuess(GlBackend* g, State* s, int clock, double t) {
+static void labelGuess(GlBackend* g, HullState* s, GlState* gs, int clock, double t) {
   if (clock == kNewStep) {
-    s->offslot = (s->offslot + 2) % 3;
-    s->offn = std::min(s->offn + 1, 2);
+    gs->offslot = (gs->offslot + 2) % 3;
+    gs->offn = std::min(gs->offn + 1, 2);
     s->tgOld = s->tgOff;
     s->tgOff = s->tprev;
   }
-  if (clock == kRestart) s->offn = 0;
+  if (clock == kRestart) gs->offn = 0;
   const double tk[3] = {s->tgOff, s->tgOld, 0};
   double L[3];
-  guessWeights(t, tk, s->offn, L);
+  guessWeights(t, tk, gs->offn, L);
   const GladGLContext& gl = g->ctx.gl;
   for (int i = 0; i < kNVar; i++) {
     GLuint p = g->vprog[i];
@@ -606,46 +636,32 @@ static void labelGuess(GlBackend* g, State* s, int clock, double t) {
     gl.ProgramUniform1i(p, g->uvFirst[i], clock != kMidStep);
     gl.ProgramUniform2f(p, g->uvGw[i], float(L[0]), float(L[1]));
     for (int j = 0; j < 3; j++) {
-      gl.ProgramUniform1i(p, g->uvOff[i][j], g->nvert * ((s->offslot + j) % 3));
+      gl.ProgramUniform1i(p, g->uvOff[i][j], g->nvert * ((gs->offslot + j) % 3));
     }
   }
 }
 
-void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
-  GlBackend* g = b->gl;
-  std::lock_guard<std::mutex> lk(g->mu);
-  GlCurrent cur(&g->ctx);
-  const GladGLContext& gl = g->ctx.gl;
-  if (!cur.ok()) {
-    // no force from the water this call, said once; not the last call's
-    // wrench again (compute adds the wind to what is here)
-    std::fill(s->wrench.begin(), s->wrench.end(), 0.0);
-    std::fill(s->part.begin(), s->part.end(), 0.0);
-    static const char kLost[] = "mjbuoy: gl backend: the GL context could not be made current "
-                                "on this thread; no water force in this call\n";
-    if (s->notices.find(kLost) == std::string::npos) s->notices += kLost;
-    return;
-  }
-
-  // per-data slamming history and label offsets, created on the first call for d
-  if (!s->slambuf[0]) makeStateBuffers(g, s, GLsizeiptr(4 * sizeof(float)) * std::max(g->ntri, 1), true);
-  int clock = stepClock(m, d, s);
-  // this data's reach (a restart starts from the first guess again, so a
-  // rerun repeats its bits); the wave buffers redone if they hold another's
-  auto ri = g->reachOf.find(s);
-  if (ri == g->reachOf.end()) ri = g->reachOf.emplace(s, g->reach0).first;  // with the buffers
+// gs's reach (a restart starts from the first guess again, so a rerun
+// repeats its bits), the wave buffers redone if they hold another data's
+// or the ramp's gain at time t [s] differs
+static double* dataReach(GlBackend* g, const Sea& sea, const GlState* gs, int clock, double t) {
+  auto ri = g->reachOf.find(gs);
+  if (ri == g->reachOf.end()) ri = g->reachOf.emplace(gs, g->reach0).first;  // with the buffers
   if (clock == kRestart) ri->second = g->reach0;
-  const double gain = b->cfg.sea.gain(d->time);
+  const double gain = sea.gain(t);
   if (ri->second != g->reach || gain != g->gain) {
     g->reach = ri->second;
     g->gain = gain;
-    uploadWaves(g, b->cfg.sea);
+    uploadWaves(g, sea);
   }
-  if (clock == kNewStep) s->slamcur ^= 1;
-  labelGuess(g, s, clock, d->time);
-  std::memset(s->bad.data(), 0, s->bad.size());
-  bodies(b, m, d, s);
+  return &ri->second;
+}
 
+// the step's per-data inputs: body data (unless mapped), buffers,
+// textures as images, the mjData's history buffers gs, and the slamming
+// uniforms at time t [s] of clock (stepClock)
+static void bindStep(GlBackend* g, const HullState& s, const GlState& gs, int clock, double t) {
+  const GladGLContext& gl = g->ctx.gl;
   if (!g->persist) {
     gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, g->buf[B_BODY]);
     gl.BufferSubData(GL_SHADER_STORAGE_BUFFER, 0, g->nslot * sizeof(GBody), g->body.data());
@@ -657,17 +673,23 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     if (g->buf[i] && i != B_EXP) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, g->buf[i]);
   }
   gl.BindImageTexture(0, g->tex[4], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, s->slambuf[s->slamcur ^ 1]);
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, s->slambuf[s->slamcur]);
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_OFF, s->offbuf);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMPREV, gs.slambuf[gs.slamcur ^ 1]);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_SLAMCUR, gs.slambuf[gs.slamcur]);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, B_OFF, gs.offbuf);
   for (int i = 0; i < kNVar; i++) {
     GLuint p = g->tprog[i];
     if (!p) continue;
-    gl.ProgramUniform1i(p, g->uHasprev[i], s->hasPrev);
+    gl.ProgramUniform1i(p, g->uHasprev[i], s.hasPrev);
     gl.ProgramUniform1i(p, g->uFirst[i], clock != kMidStep);
-    gl.ProgramUniform1f(p, g->uSlamdt[i], float(s->hasPrev ? d->time - s->tprev : 0));
+    gl.ProgramUniform1f(p, g->uSlamdt[i], float(s.hasPrev ? t - s.tprev : 0));
   }
+}
 
+// the three stages for all hulls, timed, and the readback of g->out;
+// mine: this data's reach, raised with g->reach
+static void dispatch(GlBackend* g, const HullSet& hs, const Sea& sea, const HullState& s,
+                     double* mine) {
+  const GladGLContext& gl = g->ctx.gl;
   // per-item stages loop (grid-stride) past 65535 groups, GL's guaranteed
   // GL_MAX_COMPUTE_WORK_GROUP_COUNT: beyond it glDispatchCompute does nothing
   const int groups[kNStage] = {std::min(g->nvchunk, kMaxGroups),
@@ -704,11 +726,11 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     double reach = 0;
     for (int i = 0; i < g->nslot; i++) {
       float r = g->out[40 * i + 3];
-      if (!s->bad[b->body[i]] && std::isfinite(r)) reach = std::max(reach, double(r));
+      if (!s.bad[hs.body[i]] && std::isfinite(r)) reach = std::max(reach, double(r));
     }
     if (reach <= g->reach || g->nwave == 0) break;
-    g->reach = ri->second = 1.25 * reach;
-    uploadWaves(g, b->cfg.sea);
+    g->reach = *mine = 1.25 * reach;
+    uploadWaves(g, sea);
   }
   for (int i = 0; i <= B_OFF; i++) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
   gl.BindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -717,14 +739,17 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
     gl.BindTexture(GL_TEXTURE_BUFFER, 0);
   }
   timerFrame(&g->timer);
+}
 
+// s->part of each body that has a finite state from g->out
+static void unpack(const GlBackend* g, const HullSet& hs, const mjModel* m, HullState* s) {
   // unpack: part p of slot i at out[40 i + 8 p], force xyz then torque xyz
   const int nb6 = 6 * m->nbody;
   std::memset(s->part.data(), 0, s->part.size() * sizeof(double));
   for (int i = 0; i < g->nslot; i++) {
-    int bd = b->body[i];
+    int bd = hs.body[i];
     if (s->bad[bd]) continue;
-    for (int p = 0; p < mjbPART_WIND; p++) {  // the water families; wind: wind.cc
+    for (int p = 0; p < mjbPART_WIND; p++) {  // the water families; wind: hull/windload.cc
       double* w = s->part.data() + p * nb6 + 6 * bd;
       const float* o = g->out.data() + 40 * i + 8 * p;
       for (int j = 0; j < 3; j++) {
@@ -733,15 +758,44 @@ void glWrench(Buoy* b, const mjModel* m, const mjData* d, State* s) {
       }
     }
   }
-  finishWrench(*b, m, d, s);
+}
+
+void glWrench(GlBackend* g, const HullSet& hs, const Sea& sea, const mjModel* m,
+              const mjData* d, HullState* s, GlState* gs) {
+  std::lock_guard<std::mutex> lk(g->mu);
+  GlCurrent cur(&g->ctx);
+  if (!cur.ok()) {
+    // no force from the water this call, said once; not the last call's
+    // wrench again (compute adds the wind to what is here)
+    std::fill(s->wrench.begin(), s->wrench.end(), 0.0);
+    std::fill(s->part.begin(), s->part.end(), 0.0);
+    static const char kLost[] = "mjbuoy: gl backend: the GL context could not be made current "
+                                "on this thread; no water force in this call\n";
+    if (s->notices.find(kLost) == std::string::npos) s->notices += kLost;
+    return;
+  }
+
+  // per-data slamming history and label offsets, created on the first call for d
+  if (!gs->slambuf[0]) {
+    makeStateBuffers(g, gs, GLsizeiptr(4 * sizeof(float)) * std::max(g->ntri, 1), true);
+  }
+  int clock = stepClock(m, d, s);
+  double* mine = dataReach(g, sea, gs, clock, d->time);
+  if (clock == kNewStep) gs->slamcur ^= 1;
+  labelGuess(g, s, gs, clock, d->time);
+  std::memset(s->bad.data(), 0, s->bad.size());
+  bodies(g, hs, sea, m, d, s);
+  bindStep(g, *s, *gs, clock, d->time);
+  dispatch(g, hs, sea, *s, mine);
+  unpack(g, hs, m, s);
+  finishWrench(hs, m, d, s);
 }
 
 }  // namespace mjb
 
 namespace mjb {
 
-int glStageTimes(Buoy* b, const char** name, double* ms, int n) {
-  GlBackend* g = b->gl;
+int glStageTimes(GlBackend* g, const char** name, double* ms, int n) {
   if (!g) return 0;
   std::lock_guard<std::mutex> lk(g->mu);
   {

@@ -9,15 +9,16 @@
 
 namespace mjb {
 
-struct Buoy;
+struct HullSet;
+struct Sea;
 
-// volume [m^3] of the hulls of the bodies in root's subtree below the flat
-// sea at the mean level, with the poses of d shifted up by dz [m]: the
+// volume [m^3] of the hulls (of hs) of the bodies in root's subtree below
+// the flat sea at its mean level (sea.level), with the poses of d shifted up by dz [m]: the
 // exact flat-water integral of wetTriangle (pressure.h), V = -sum dA n_z
-double displacedVolume(const Buoy& B, const mjData* d, int root, double dz);
+double displacedVolume(const HullSet& hs, const Sea& sea, const mjData* d, int root, double dz);
 
 // the same for the hulls of root's rigid group (body_weldid == root) only
-double groupVolume(const Buoy& B, const mjData* d, int root, double dz);
+double groupVolume(const HullSet& hs, const Sea& sea, const mjData* d, int root, double dz);
 
 // heave offset dz [m] at which the subtree of root, a body with a free
 // joint, displaces its own mass (body_subtreemass / rho), its orientation
@@ -25,7 +26,8 @@ double groupVolume(const Buoy& B, const mjData* d, int root, double dz);
 // the hull's height (the volume is monotone in dz). false, with the reason
 // in why, when it has no hull, no mass, or is heavier than its whole
 // displacement (it sinks)
-bool equilibriumHeave(const Buoy& B, const mjData* d, int root, double* dz, std::string* why);
+bool equilibriumHeave(const HullSet& hs, const Sea& sea, const mjData* d, int root, double* dz,
+                      std::string* why);
 
 }  // namespace mjb
 

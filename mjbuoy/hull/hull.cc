@@ -256,47 +256,41 @@ static EdgeMap edges(const Mesh& m) {
   return e;
 }
 
-Repair repair(Mesh* m) {
-  Repair r;
+static void dropRepeats(Mesh* m, Repair* r) {
   // duplicates (any order or winding) and triangles with a repeated vertex
   // go first: a copy doubles (same winding) or cancels (opposite winding)
   // the pressure on its patch, and breaks the edge topology below
-  {
-    std::map<std::array<int, 3>, int> seen;
-    Mesh out;
-    out.v = m->v;
-    for (int f = 0; f < m->nf(); f++) {
-      std::array<int, 3> k = {m->f[3 * f], m->f[3 * f + 1], m->f[3 * f + 2]};
-      std::array<int, 3> s = k;
-      std::sort(s.begin(), s.end());
-      if (s[0] == s[1] || s[1] == s[2]) {
-        r.degenerate++;
-        continue;
-      }
-      if (!seen.emplace(s, f).second) {
-        r.duplicate++;
-        continue;
-      }
-      out.f.insert(out.f.end(), k.begin(), k.end());
+  std::map<std::array<int, 3>, int> seen;
+  Mesh out;
+  out.v = m->v;
+  for (int f = 0; f < m->nf(); f++) {
+    std::array<int, 3> k = {m->f[3 * f], m->f[3 * f + 1], m->f[3 * f + 2]};
+    std::array<int, 3> s = k;
+    std::sort(s.begin(), s.end());
+    if (s[0] == s[1] || s[1] == s[2]) {
+      r->degenerate++;
+      continue;
     }
-    *m = out;
+    if (!seen.emplace(s, f).second) {
+      r->duplicate++;
+      continue;
+    }
+    out.f.insert(out.f.end(), k.begin(), k.end());
   }
-  // zero area: height below 1e-6 of the longest edge, i.e. collinear to
-  // within float precision. Kept through the topology (a sliver closing a
-  // T-junction keeps the edges paired) and dropped at the end
-  const int nf = m->nf();
-  std::vector<char> zero(nf);
-  for (int f = 0; f < nf; f++) {
-    double l2, a2 = area2(*m, f, &l2);
-    zero[f] = !(a2 > 1e-6 * l2);
-  }
+  *m = out;
+}
 
+// pieces: each triangle's connected piece; returns their count
+static int orient(Mesh* m, const std::vector<char>& zero, std::vector<int>* pieces, Repair* r) {
   // orientation: neighbours across a two-triangle edge must run it in
   // opposite directions. Breadth-first over each connected piece, par[f]
   // says whether f disagrees with the piece's first triangle; the minority
   // is re-wound (ties keep the first triangle's winding)
   EdgeMap em = edges(*m);
-  std::vector<int> piece(nf, -1), par(nf, 0);
+  const int nf = m->nf();
+  std::vector<int>& piece = *pieces;
+  piece.assign(nf, -1);
+  std::vector<int> par(nf, 0);
   std::vector<std::vector<int>> adj(nf);
   std::vector<std::vector<int>> same(nf);  // 1 when the pair runs the edge the same way
   for (const auto& [e, t] : em) {
@@ -328,20 +322,24 @@ Repair repair(Mesh* m) {
     for (int f : q) {
       if (par[f] != bad) continue;
       flip(m, f);
-      r.rewound += !zero[f];
+      r->rewound += !zero[f];
     }
     np++;
   }
+  return np;
+}
 
+static void closePieces(Mesh* m, const std::vector<int>& piece, int np, Repair* r) {
+  const int nf = m->nf();
   // holes, non-manifold edges, and pieces that are closed but inside out
-  em = edges(*m);
+  EdgeMap em = edges(*m);
   std::vector<char> open(np, 0);
   for (const auto& [e, t] : em) {
     if (t.size() == 1) {
-      r.boundary++;
+      r->boundary++;
       open[piece[t[0].first]] = 1;
     } else if (t.size() > 2 || t[0].second == t[1].second) {
-      r.nonmanifold++;
+      r->nonmanifold++;
       for (const auto& ft : t) open[piece[ft.first]] = 1;
     }
   }
@@ -355,22 +353,43 @@ Repair repair(Mesh* m) {
   }
   for (int p = 0; p < np; p++) {
     if (open[p] || !(vol[p] < 0)) continue;
-    r.inverted++;
-    r.invvol += vol[p];
+    r->inverted++;
+    r->invvol += vol[p];
     for (int f = 0; f < nf; f++) if (piece[f] == p) flip(m, f);
   }
+}
 
+static void dropZero(Mesh* m, const std::vector<char>& zero, Repair* r) {
+  const int nf = m->nf();
   // zero-area triangles carry no pressure
   Mesh out;
   out.v = m->v;
   for (int f = 0; f < nf; f++) {
     if (zero[f]) {
-      r.degenerate++;
+      r->degenerate++;
       continue;
     }
     out.f.insert(out.f.end(), m->f.begin() + 3 * f, m->f.begin() + 3 * f + 3);
   }
   *m = out;
+}
+
+Repair repair(Mesh* m) {
+  Repair r;
+  dropRepeats(m, &r);
+  // zero area: height below 1e-6 of the longest edge, i.e. collinear to
+  // within float precision. Kept through the topology (a sliver closing a
+  // T-junction keeps the edges paired) and dropped at the end
+  const int nf = m->nf();
+  std::vector<char> zero(nf);
+  for (int f = 0; f < nf; f++) {
+    double l2, a2 = area2(*m, f, &l2);
+    zero[f] = !(a2 > 1e-6 * l2);
+  }
+  std::vector<int> piece;
+  const int np = orient(m, zero, &piece, &r);
+  closePieces(m, piece, np, &r);
+  dropZero(m, zero, &r);
   return r;
 }
 

@@ -37,7 +37,7 @@ long solveLanesAvx512(const LaneIn& in);
 // major) and shifted by t = body origin - COM [m] into rel (3 each,
 // relative to the COM); X, Y = rel + com (world); the label search's
 // guesses A0, A1 = X, Y + sum_s L[s] o[s] (the last steps' offsets, 2
-// each, float: buoy.h State::off; an o[s] whose weight is 0 is not read)
+// each, float: hull/hullstate.h HullState::off; an o[s] whose weight is 0 is not read)
 struct PlaceIn {
   const double* p;
   int m;

@@ -168,6 +168,68 @@ static void newtonLanes(const WaveNow* w, int ng, typename Lanes<W>::V x,
   }
 }
 
+// the labels a0, a1 and the Gerstner components' sin and cos (cur, 2 ng
+// rows of W) of points [p0, p0 + nl) into in
+template <int W>
+static void storeLabels(const LaneIn& in, int p0, int nl, bool whole,
+                        typename Lanes<W>::V a0, typename Lanes<W>::V a1, const double* cur) {
+  typedef Lanes<W> L;
+  typedef typename L::V V;
+  const int ng = in.ng, n = in.n;
+  if (whole && n == 1 && ng == 1) {  // one Gerstner component: phases zipped
+    L::st(in.a0 + p0, a0);
+    L::st(in.a1 + p0, a1);
+    zip2<V, W>(in.sc + 2 * p0, L::ld(cur), L::ld(cur + W));
+    return;
+  }
+  for (int l = 0; l < nl; l++) {
+    const int q = p0 + l;
+    in.a0[q] = a0[l];
+    in.a1[q] = a1[l];
+    double* sc = in.sc + 2 * n * q;
+    for (int i = 0; i < ng; i++) {
+      sc[2 * i] = cur[2 * i * W + l];
+      sc[2 * i + 1] = cur[(2 * i + 1) * W + l];
+    }
+  }
+}
+
+// the Airy components of points [p0, p0 + nl) at (x, y): a direct sum at
+// the physical point added to z; their sin and cos go to each point's row
+// W / 2 components at a time through a W x W transpose (row l: point l's
+// W / 2 pairs, one store) instead of two lane stores each, the rest lane
+// by lane
+template <int W, class M>
+static void airyLanes(const LaneIn& in, int p0, int nl, typename Lanes<W>::V x,
+                      typename Lanes<W>::V y, typename Lanes<W>::V* z) {
+  typedef typename Lanes<W>::V V;
+  const WaveNow* w = in.w;
+  const int n = in.n;
+  int i = in.ng;
+  for (; i + W / 2 <= n; i += W / 2) {
+    V r[W];
+    for (int a = 0; a < W / 2; a++) {
+      const WaveNow& wa = w[i + a];
+      sinCosPhases<W, M>(wa.k * (wa.dx * x + wa.dy * y) - wa.wt + wa.ph, &r[2 * a], &r[2 * a + 1]);
+      *z += wa.amp * r[2 * a + 1];
+    }
+    transpose<V, W>(r);
+    for (int l = 0; l < nl; l++) {
+      __builtin_memcpy(in.sc + 2 * n * (p0 + l) + 2 * i, &r[l], sizeof(V));
+    }
+  }
+  for (; i < n; i++) {
+    const V th = w[i].k * (w[i].dx * x + w[i].dy * y) - w[i].wt + w[i].ph;
+    V s, c;
+    sinCosPhases<W, M>(th, &s, &c);
+    *z += w[i].amp * c;
+    for (int l = 0; l < nl; l++) {
+      in.sc[2 * n * (p0 + l) + 2 * i] = s[l];
+      in.sc[2 * n * (p0 + l) + 2 * i + 1] = c[l];
+    }
+  }
+}
+
 // points [p0, p0 + nl) of in as W lanes (the last point repeated in the
 // lanes past nl, whose results are dropped)
 template <int W, class M>
@@ -176,7 +238,7 @@ static long solveChunk(const LaneIn& in, int p0, int nl) {
   typedef typename L::V V;
   typedef typename L::I I;
   const WaveNow* w = in.w;
-  const int ng = in.ng, n = in.n;
+  const int ng = in.ng;
   double* cur = in.tmp;
   double* nxt = in.tmp + 2 * ng * W;
   V x, y, a0, a1;
@@ -213,49 +275,8 @@ static long solveChunk(const LaneIn& in, int p0, int nl) {
   for (int i = 0; i < ng; i++) z += w[i].amp * L::ld(cur + (2 * i + 1) * W);
   long nit = 0;
   for (int l = 0; l < nl; l++) nit += it[l];
-  if (whole && n == 1 && ng == 1) {  // one Gerstner component: phases zipped
-    L::st(in.a0 + p0, a0);
-    L::st(in.a1 + p0, a1);
-    zip2<V, W>(in.sc + 2 * p0, L::ld(cur), L::ld(cur + W));
-  } else {
-    for (int l = 0; l < nl; l++) {
-      const int q = p0 + l;
-      in.a0[q] = a0[l];
-      in.a1[q] = a1[l];
-      double* sc = in.sc + 2 * n * q;
-      for (int i = 0; i < ng; i++) {
-        sc[2 * i] = cur[2 * i * W + l];
-        sc[2 * i + 1] = cur[(2 * i + 1) * W + l];
-      }
-    }
-  }
-  // Airy components: a direct sum at the physical point; their sin and cos
-  // go to each point's row W / 2 components at a time through a W x W
-  // transpose (row l: point l's W / 2 pairs, one store) instead of two
-  // lane stores each, the rest lane by lane
-  int i = ng;
-  for (; i + W / 2 <= n; i += W / 2) {
-    V r[W];
-    for (int a = 0; a < W / 2; a++) {
-      const WaveNow& wa = w[i + a];
-      sinCosPhases<W, M>(wa.k * (wa.dx * x + wa.dy * y) - wa.wt + wa.ph, &r[2 * a], &r[2 * a + 1]);
-      z += wa.amp * r[2 * a + 1];
-    }
-    transpose<V, W>(r);
-    for (int l = 0; l < nl; l++) {
-      __builtin_memcpy(in.sc + 2 * n * (p0 + l) + 2 * i, &r[l], sizeof(V));
-    }
-  }
-  for (; i < n; i++) {
-    const V th = w[i].k * (w[i].dx * x + w[i].dy * y) - w[i].wt + w[i].ph;
-    V s, c;
-    sinCosPhases<W, M>(th, &s, &c);
-    z += w[i].amp * c;
-    for (int l = 0; l < nl; l++) {
-      in.sc[2 * n * (p0 + l) + 2 * i] = s[l];
-      in.sc[2 * n * (p0 + l) + 2 * i + 1] = c[l];
-    }
-  }
+  storeLabels<W>(in, p0, nl, whole, a0, a1, cur);
+  airyLanes<W, M>(in, p0, nl, x, y, &z);
   if (whole) {
     L::st(in.z + p0, z);
   } else {

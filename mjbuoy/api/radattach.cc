@@ -1,5 +1,5 @@
 // radattach: panel solver to time-domain radiation at attach (radattach.h)
-#include "radiation/radattach.h"
+#include "api/radattach.h"
 
 #include <algorithm>
 #include <cmath>
@@ -291,7 +291,7 @@ static double poseHeave(Buoy* B, const mjData* d, int root, const std::string& w
   if (!m->body_jntnum[root] || m->jnt_type[m->body_jntadr[root]] != mjJNT_FREE) return 0;
   double dz = 0;
   std::string why;
-  if (equilibriumHeave(*B, d, root, &dz, &why)) {
+  if (equilibriumHeave(*B, B->cfg.sea, d, root, &dz, &why)) {
     *at = "its floating equilibrium (qpos0 moved " + fmt(dz) + " m in z)";
     return dz;
   }
@@ -533,7 +533,7 @@ static std::string finishGroup(Buoy* B, const mjData* d, int root, const std::st
   // the group's displaced volume at the panel pose, and its hull bodies
   for (RadBody& x : B->rad.rb) {
     if (x.body != root) continue;
-    x.veq = groupVolume(*B, d, root, dz);
+    x.veq = groupVolume(*B, B->cfg.sea, d, root, dz);
     rollZeta(B, d, root, body, c, dz, who, &x);
     for (int hb : B->body)
       if (m->body_weldid[hb] == root) x.hb.push_back(hb);
