@@ -323,6 +323,36 @@ static void subStep(const LineWater& w, const Line& l, double h, double tau, Lin
   }
 }
 
+// the unstretched length resting on the bed [m]: each inner node counts
+// for the share of its weight w_j l0 (submerged, or dry above the surface)
+// the bed carries, F_n / (w_j l0) clipped to [0, 1], times l0, so the
+// touchdown falls between nodes where the bed carries part of one; an end
+// on the bed adds its half segment when its neighbour rests. In a static
+// line this is L - (V_F + V_A) / w, the length whose weight the fairlead
+// and anchor do not carry, the catenary's L_B (Jonkman 2007 eq. 4-3);
+// a line lighter than water counts the nodes below the bed
+static double bedLength(const LineWater& w, const Line& l, const LineState& s) {
+  const Seabed& bed = *w.bed;
+  const double kb = bed.k * l.t.diam * l.l0, cb = bed.c * l.t.diam * l.l0;
+  const double wd = l.mnode * w.sea->g, wb = w.sea->rho * l.vnode * w.sea->g;
+  const int n = l.nseg;
+  double on = 0, first = 0, last = 0;
+  for (int j = 1; j < n; j++) {
+    const double pen = bed.z - s.r[3 * j + 2];
+    if (!(pen > 0)) continue;
+    const double wj = wd - (s.wet[j] ? wb : 0);
+    const double fn = std::max(kb * pen - cb * s.v[3 * j + 2], 0.0);
+    const double f = wj > 0 ? std::min(fn / wj, 1.0) : 1.0;
+    on += f;
+    if (j == 1) first = f;
+    if (j == n - 1) last = f;
+  }
+  const double tol = 1e-3 * l.t.diam;
+  if (s.r[2] <= bed.z + tol) on += 0.5 * first;
+  if (s.r[3 * n + 2] <= bed.z + tol) on += 0.5 * last;
+  return on * l.l0;
+}
+
 void lineStep(const LineWater& w, const Line& l, double t, double dt, const double e0[6],
               const double e1[6], LineState* s) {
   setEnds(l, 0, e0, e1, s);
@@ -355,17 +385,15 @@ void lineStep(const LineWater& w, const Line& l, double t, double dt, const doub
   }
   std::copy(e0, e0 + 6, s->end0);
   std::copy(e1, e1 + 6, s->end1);
-  // what rests on the bed, and overload
-  int on = 0;
+  // overload, and what rests on the bed
   s->over = 0;
   for (int i = 0; i < l.nseg; i++) {
     const double* a = &s->r[3 * i];
     const double* b = &s->r[3 * i + 3];
     double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     if (std::sqrt(dot3(d, d)) > (1 + kOverStrain) * l.l0) s->over++;
-    if (a[2] <= w.bed->z + 1e-3 * l.t.diam && b[2] <= w.bed->z + 1e-3 * l.t.diam) on++;
   }
-  s->bedlen = on * l.l0;
+  s->bedlen = bedLength(w, l, *s);
 }
 
 double lineEndForce(const LineWater& w, const Line& l, const LineState& s, int end,
