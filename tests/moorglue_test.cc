@@ -166,6 +166,42 @@ TEST(MooringGlue, ClockResetCopy) {
   EXPECT_EQ(nodes(sc, 0), rest);
 }
 
+// mjb_lineWrench gives the lines' pull on the body at rest: by symmetry no
+// horizontal force, and down three times the fairlead's vertical tension
+// V_F of the elastic catenary (Irvine 1981; Jonkman 2007 eqs. 4-1 to 4-4,
+// span 250 m, fairlead 95 m above the anchors), within 1% once the
+// 20-segment lines have settled (100 s); mjb_wrench (the hull wrench) does
+// not hold it. mjb_seabed is at level - depth
+TEST(MooringGlue, LineWrenchAndSeabed) {
+  Scene sc(threeLines(5e6, 250));
+  ASSERT_TRUE(sc.ok()) << sc.err;
+  for (int i = 0; i < 2000; i++) mj_step(sc.m, sc.d);
+  const mjtNum* w = mjb_lineWrench(sc.b, sc.d);
+  ASSERT_TRUE(w);
+  const int bd = sc.body("buoy");
+  const double W = (kMass - 1000 * M_PI * kDiam * kDiam / 4) * 9.81;
+  mjb::Catenary c;
+  ASSERT_TRUE(mjb::catenarySolve(250, kDepth - 5, kLen, kEA, W, true, &c));
+  EXPECT_NEAR(w[6 * bd + 2], -3 * c.vf, 0.01 * 3 * c.vf);
+  EXPECT_NEAR(w[6 * bd], 0, 0.01 * c.hf);
+  EXPECT_NEAR(w[6 * bd + 1], 0, 0.01 * c.hf);
+  std::printf("line wrench: Fz %.6g N, catenary -3 V_F %.6g N (%+.3f%%)\n", w[6 * bd + 2],
+              -3 * c.vf, 100 * (w[6 * bd + 2] / (-3 * c.vf) - 1));
+  const mjtNum* h = mjb_wrench(sc.b, sc.d);
+  ASSERT_TRUE(h);
+  EXPECT_EQ(h[6 * bd + 2], 0);  // no hull: the lines are not in the hull wrench
+  mjtNum z = 0;
+  EXPECT_EQ(mjb_seabed(sc.b, &z), 1);
+  EXPECT_EQ(z, -kDepth);
+  // no lines and a deep sea: no bed, and no line wrench
+  Scene free("<mujoco><worldbody><body><freejoint/><geom type=\"box\" size=\"1 1 1\"/>"
+             "</body></worldbody></mujoco>");
+  ASSERT_TRUE(free.ok()) << free.err;
+  EXPECT_EQ(mjb_seabed(free.b, &z), 0);
+  mj_forward(free.m, free.d);
+  EXPECT_EQ(mjb_lineWrench(free.b, free.d), nullptr);
+}
+
 std::string attachError(const std::string& custom, const std::string& body) {
   std::string xml = "<mujoco><custom><numeric name=\"mjbuoy.sea.depth\" data=\"100\"/>" +
                     chainType() + custom + "</custom><worldbody>" + body +
