@@ -135,11 +135,14 @@ MJB_API int mjb_freezeData(mjbBuoy* b, const mjData* d, int freeze);
 // stepping other mjData of the same model
 MJB_API void mjb_unbindData(mjbBuoy* b, const mjData* d);
 
-// the wrench mjbuoy added in the last callback for d: nbody x 6, laid out
-// like xfrc_applied: world-frame force [N], then world-frame torque about
-// the body's centre of mass d->xipos [N m]. Zero for bodies without hulls,
-// and zero for a new or reset d before its first callback. NULL if d was
-// never seen.
+// the hull wrench mjbuoy added in the last callback for d: nbody x 6, laid
+// out like xfrc_applied: world-frame force [N], then world-frame torque
+// about the body's centre of mass d->xipos [N m]; the sum of the force
+// families of mjb_wrenchPart (pressure, viscous, drag, slam, damping,
+// wind). Zero for bodies without hulls or wind, and zero for a new or reset
+// d before its first callback. NULL if d was never seen. Not in it (each
+// reaches qfrc_passive on its own): the mooring lines' forces
+// (mjb_lineWrench), radiation (added mass in qM, memory) and diffraction.
 MJB_API const mjtNum* mjb_wrench(const mjbBuoy* b, const mjData* d);
 
 // the force families that make up the wrench
@@ -274,6 +277,19 @@ MJB_API int mjb_lineCount(const mjbBuoy* b);
 // (may be NULL) and returns the line's node count, segments + 1. 0 when
 // there is no such line or d has not been stepped
 MJB_API int mjb_lineNodes(const mjbBuoy* b, const mjData* d, int line, mjtNum* pos, int max);
+
+// the wrench the mooring lines put on each body in the last callback for
+// d: nbody x 6 like mjb_wrench (world-frame force [N], torque about xipos
+// [N m]), the sum over the line ends on each body; zero for bodies with no
+// line end, and NULL if the model has no lines or d was never seen. A
+// body's total mjbuoy force is mjb_wrench plus this (plus radiation and
+// diffraction when on)
+MJB_API const mjtNum* mjb_lineWrench(const mjbBuoy* b, const mjData* d);
+
+// the seabed of an attached model: 1 and its height z [m] (world frame)
+// when it has one (a finite mjbuoy.sea.depth, or lines anchored on a fixed
+// point or static body), else 0
+MJB_API int mjb_seabed(const mjbBuoy* b, mjtNum* z);
 
 #ifdef __cplusplus
 }

@@ -11,6 +11,7 @@
 #include <mujoco/mujoco.h>
 
 #include "mjbuoy.h"
+#include "api/buoy.h"
 #include "mooring/catenary.h"
 #include "testutil.h"
 
@@ -116,6 +117,78 @@ TEST(MooringGlue, SurgeDecayPeriod) {
   }
 }
 
+// a floating spar (vertical cylinder, radius 5 m, draft 40 m) on a surge
+// slide, held by the three lines of SurgeDecayPeriod: its surge period is
+// 2 pi sqrt((m + a11(w)) / k) at w = 2 pi / period, k from the catenary as
+// above and a11(w) the hull's surge added mass from mjbuoy's panel solver
+// at that frequency, A_inf - (1 / w) int_0^inf K(t) sin(w t) dt from its
+// retardation function K (Ogilvie 1964; the simulation uses the fitted
+// state-space memory instead), within 5%; strip theory's rho pi R^2 T
+// (Newman 1977 sec. 4.13) is printed beside it
+TEST(MooringGlue, SurgeDecayFloatingHull) {
+  const double R = 5, T = 40, X = 270, rho = 1025;
+  const double M = rho * M_PI * R * R * T;  // floats at its draft
+  std::ostringstream s;
+  s << "<mujoco><option timestep=\"0.05\"/><custom>"
+    << "<numeric name=\"mjbuoy.sea.depth\" data=\"" << kDepth << "\"/>"
+    << "<numeric name=\"mjbuoy.sea.density\" data=\"" << rho << "\"/>"
+    << "<text name=\"mjbuoy.hulls\" data=\"spar_hull\"/>" << chainType()
+    << "<text name=\"mjbuoy.radiation.body.spar\" data=\"on\"/>"
+    << "<numeric name=\"mjbuoy.seabed.friction\" data=\"0 0\"/>";
+  for (int i = 0; i < 3; i++) {
+    double a = 2 * M_PI * i / 3, Ra = R + X;
+    s << line("l" + std::to_string(i), Ra * std::cos(a), Ra * std::sin(a), -kDepth,
+              "f" + std::to_string(i));
+  }
+  s << "</custom><worldbody><body name=\"spar\" pos=\"0 0 0\">"
+    << "<joint name=\"surge\" type=\"slide\" axis=\"1 0 0\"/>"
+    << "<geom name=\"spar_hull\" type=\"cylinder\" size=\"" << R << " 22\" pos=\"0 0 -18\" mass=\""
+    << M << "\"/>";
+  for (int i = 0; i < 3; i++) {
+    double a = 2 * M_PI * i / 3;
+    s << "<site name=\"f" << i << "\" pos=\"" << R * std::cos(a) << " " << R * std::sin(a)
+      << " -5\"/>";
+  }
+  s << "</body></worldbody></mujoco>";
+  Scene sc(s.str());
+  ASSERT_TRUE(sc.ok()) << sc.err;
+  const mjb::Buoy* bb = mjb::buoyOf(sc.b);
+  ASSERT_EQ(bb->rad.rb.size(), 1u);
+  const mjb::RadBody& rb = bb->rad.rb[0];
+  int p = -1;
+  for (size_t i = 0; i < rb.pair.size(); i++) if (rb.pair[i] == 0) p = int(i);
+  ASSERT_GE(p, 0);
+  ASSERT_GT(rb.nk, 0);
+  ASSERT_EQ(rb.K.size(), rb.pair.size() * rb.nk);
+  // a11 at w (trapezoid rule on the samples K(k dt))
+  auto a11at = [&](double w) {
+    double in = 0;
+    for (int k = 1; k < rb.nk; k++) {
+      const double t0 = (k - 1) * bb->rad.dt, t1 = k * bb->rad.dt;
+      in += 0.5 * bb->rad.dt * (rb.K[p * rb.nk + k - 1] * std::sin(w * t0) +
+                                rb.K[p * rb.nk + k] * std::sin(w * t1));
+    }
+    return rb.A[0] - in / w;
+  };
+  const double W = (kMass - 1000 * M_PI * kDiam * kDiam / 4) * 9.81;
+  mjb::Catenary a, b, c;
+  ASSERT_TRUE(mjb::catenarySolve(X, kDepth - 5, kLen, kEA, W, true, &c));
+  ASSERT_TRUE(mjb::catenarySolve(X + 0.1, kDepth - 5, kLen, kEA, W, true, &a));
+  ASSERT_TRUE(mjb::catenarySolve(X - 0.1, kDepth - 5, kLen, kEA, W, true, &b));
+  const double k = 1.5 * ((a.hf - b.hf) / 0.2 + c.hf / X);
+  double Tn = 2 * M_PI * std::sqrt((M + rb.A[0]) / k), a11 = rb.A[0];
+  for (int i = 0; i < 20; i++) {  // the period and a11 at its frequency
+    a11 = a11at(2 * M_PI / Tn);
+    Tn = 2 * M_PI * std::sqrt((M + a11) / k);
+  }
+  double P = surgePeriod(&sc, 3.2 * Tn);
+  EXPECT_NEAR(P, Tn, 0.05 * Tn);
+  std::printf("floating spar: a11(w) %.4g kg (A_inf %.4g, strip theory %.4g), m %.4g kg, "
+              "period %.4g s, linear %.4g s (%+.2f%%), without a11 %.4g s\n", a11, rb.A[0],
+              rho * M_PI * R * R * T, M, P, Tn, 100 * (P / Tn - 1),
+              2 * M_PI * std::sqrt(M / k));
+}
+
 // the body starts at rest: the lines start on their equilibrium, so it
 // moves by far less than the 3 m of the decay test in 20 s
 TEST(MooringGlue, StartsAtRest) {
@@ -164,6 +237,42 @@ TEST(MooringGlue, ClockResetCopy) {
   sc.d->qpos[0] = 2;
   mj_forward(sc.m, sc.d);
   EXPECT_EQ(nodes(sc, 0), rest);
+}
+
+// mjb_lineWrench gives the lines' pull on the body at rest: by symmetry no
+// horizontal force, and down three times the fairlead's vertical tension
+// V_F of the elastic catenary (Irvine 1981; Jonkman 2007 eqs. 4-1 to 4-4,
+// span 250 m, fairlead 95 m above the anchors), within 1% once the
+// 20-segment lines have settled (100 s); mjb_wrench (the hull wrench) does
+// not hold it. mjb_seabed is at level - depth
+TEST(MooringGlue, LineWrenchAndSeabed) {
+  Scene sc(threeLines(5e6, 250));
+  ASSERT_TRUE(sc.ok()) << sc.err;
+  for (int i = 0; i < 2000; i++) mj_step(sc.m, sc.d);
+  const mjtNum* w = mjb_lineWrench(sc.b, sc.d);
+  ASSERT_TRUE(w);
+  const int bd = sc.body("buoy");
+  const double W = (kMass - 1000 * M_PI * kDiam * kDiam / 4) * 9.81;
+  mjb::Catenary c;
+  ASSERT_TRUE(mjb::catenarySolve(250, kDepth - 5, kLen, kEA, W, true, &c));
+  EXPECT_NEAR(w[6 * bd + 2], -3 * c.vf, 0.01 * 3 * c.vf);
+  EXPECT_NEAR(w[6 * bd], 0, 0.01 * c.hf);
+  EXPECT_NEAR(w[6 * bd + 1], 0, 0.01 * c.hf);
+  std::printf("line wrench: Fz %.6g N, catenary -3 V_F %.6g N (%+.3f%%)\n", w[6 * bd + 2],
+              -3 * c.vf, 100 * (w[6 * bd + 2] / (-3 * c.vf) - 1));
+  const mjtNum* h = mjb_wrench(sc.b, sc.d);
+  ASSERT_TRUE(h);
+  EXPECT_EQ(h[6 * bd + 2], 0);  // no hull: the lines are not in the hull wrench
+  mjtNum z = 0;
+  EXPECT_EQ(mjb_seabed(sc.b, &z), 1);
+  EXPECT_EQ(z, -kDepth);
+  // no lines and a deep sea: no bed, and no line wrench
+  Scene free("<mujoco><worldbody><body><freejoint/><geom type=\"box\" size=\"1 1 1\"/>"
+             "</body></worldbody></mujoco>");
+  ASSERT_TRUE(free.ok()) << free.err;
+  EXPECT_EQ(mjb_seabed(free.b, &z), 0);
+  mj_forward(free.m, free.d);
+  EXPECT_EQ(mjb_lineWrench(free.b, free.d), nullptr);
 }
 
 std::string attachError(const std::string& custom, const std::string& body) {

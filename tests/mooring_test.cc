@@ -101,7 +101,8 @@ TEST(Catenary, SolverMeetsIrvineEquations) {
 
 // a settled lumped-mass line matches the continuous elastic catenary: the
 // fairlead tension within 0.5% (Irvine 1981; Jonkman 2007 eqs. 4-1 to
-// 4-4, checked above), and the touchdown point within one segment, at
+// 4-4, checked above), and the length on the bed, L_B (the touchdown
+// point's distance from the anchor, L_B (1 + H / EA)), within 0.5%, at
 // spans from mostly grounded to taut (a span below L - depth = 205 m has
 // no catenary: the line would have to fold on the bed; near it the
 // radius H / w at touchdown falls below the 7.5 m segments)
@@ -125,9 +126,10 @@ TEST(MooringLine, StaticCatenary) {
     EXPECT_NEAR(T, Ta, 0.005 * Ta) << "span " << X;
     EXPECT_NEAR(-f[0], c.hf, 0.005 * Ta) << "span " << X;
     EXPECT_NEAR(-f[2], c.vf, 0.005 * Ta) << "span " << X;
-    EXPECT_NEAR(r.s.bedlen, c.lb, r.l.l0 + 1e-9) << "span " << X;
-    std::printf("span %g m: T %.6g N (catenary %.6g, %+.3f%%), on bed %.4g m (catenary %.4g)\n",
-                X, T, Ta, 100 * (T / Ta - 1), r.s.bedlen, c.lb);
+    EXPECT_NEAR(r.s.bedlen, c.lb, 0.005 * c.lb + 1e-9) << "span " << X;
+    std::printf("span %g m: T %.6g N (catenary %.6g, %+.3f%%), on bed %.5g m (catenary %.5g, "
+                "%+.3f%%)\n", X, T, Ta, 100 * (T / Ta - 1), r.s.bedlen, c.lb,
+                c.lb > 0 ? 100 * (r.s.bedlen / c.lb - 1) : 0.0);
   }
 }
 
@@ -306,6 +308,57 @@ TEST(MooringLine, DragInCurrent) {
   EXPECT_NEAR(fa[2] + fb[2], 0, 0.01 * D);  // no net weight
   std::printf("drag: %.6g N, formula %.6g N (%+.3f%%)\n", fa[0] + fb[0], D,
               100 * ((fa[0] + fb[0]) / D - 1));
+}
+
+}  // namespace
+
+namespace {
+
+// the OC3-Hywind spar's mooring (Jonkman 2010, "Definition of the Floating
+// System for Phase IV of OC3", NREL/TP-500-47535, table "Mooring System
+// Properties"): three lines at 120 degrees, 320 m deep, fairleads 70 m
+// below the surface at radius 5.2 m, anchors at radius 853.87 m, 902.2 m
+// of line of 77.7066 kg/m (698.094 N/m in water, with d = 0.09 m), EA
+// 384,243,000 N. The same report gives its linearised surge stiffness at
+// zero offset, K11 = 41,180 N/m (the "additional yaw spring" aside). The
+// settled lumped-mass lines (40 segments of 22.6 m, g 9.80665 as there) at
+// offsets of +-1 m give the slope within 1%, and so does the catenary
+TEST(MooringLine, Oc3HywindSurgeStiffness) {
+  mjb::LineType t;
+  t.mass = 77.7066;
+  t.diam = 0.09;
+  t.ea = 384243000;
+  const double depth = 320, zf = -70, rf = 5.2, ra = 853.87, L = 902.2, K11 = 41180;
+  double F[2] = {0, 0}, Fc[2] = {0, 0};
+  for (int side = 0; side < 2; side++) {
+    const double dx = side ? 1 : -1;
+    for (int i = 0; i < 3; i++) {
+      const double a = 2 * M_PI * i / 3;
+      Rig r(t, L, 40, -depth, 0);
+      r.sea.g = 9.80665;
+      r.sea.rho = 1025;
+      r.bed.mu[0] = r.bed.mu[1] = 0;  // the catenary's frictionless bed
+      double an[3] = {ra * std::cos(a), ra * std::sin(a), -depth};
+      double fl[3] = {rf * std::cos(a) + dx, rf * std::sin(a), zf};
+      r.ends(an, fl);
+      mjb::lineRest(r.w, r.l, an, fl, &r.s);
+      r.run(60, 0.05);
+      double f[3];
+      r.force(1, f);
+      F[side] += f[0];
+      const double hx = an[0] - fl[0], hy = an[1] - fl[1], span = std::hypot(hx, hy);
+      const double W = mjb::lineWetWeight(r.sea, t);
+      EXPECT_NEAR(W, 698.094, 0.01);  // the report's weight in water
+      Catenary c;
+      ASSERT_TRUE(mjb::catenarySolve(span, depth + zf, L, t.ea, W, true, &c));
+      Fc[side] += c.hf * hx / span;
+    }
+  }
+  const double k = -(F[1] - F[0]) / 2, kc = -(Fc[1] - Fc[0]) / 2;
+  EXPECT_NEAR(k, K11, 0.01 * K11);
+  EXPECT_NEAR(kc, K11, 0.01 * K11);
+  std::printf("OC3-Hywind surge stiffness: lines %.6g N/m, catenary %.6g N/m, published %g N/m "
+              "(%+.2f%%, %+.2f%%)\n", k, kc, K11, 100 * (k / K11 - 1), 100 * (kc / K11 - 1));
 }
 
 }  // namespace

@@ -857,6 +857,26 @@ bool mjb::newtonStats(const mjbBuoy* b, const mjData* d, long* solves, long* ste
 
 int mjb_lineCount(const mjbBuoy* b) { return b ? int(b->b.moor.line.size()) : 0; }
 
+const mjtNum* mjb_lineWrench(const mjbBuoy* b, const mjData* d) {
+  if (!b || !d || b->b.moor.line.empty()) return nullptr;
+  State* s = state(const_cast<mjbBuoy*>(b), d, false);
+  return s && !s->moor.wrench.empty() ? s->moor.wrench.data() : nullptr;
+}
+
+int mjb_seabed(const mjbBuoy* b, mjtNum* z) {
+  if (!b) return 0;
+  const mjb::Sea& sea = b->b.cfg.sea;
+  double h = NAN;
+  if (sea.depth > 0) {
+    h = sea.level - sea.depth;
+  } else if (!b->b.moor.line.empty() && b->b.moor.bed.z > -1e29) {
+    h = b->b.moor.bed.z;  // deep sea: at the lowest fixed anchor
+  }
+  if (!std::isfinite(h)) return 0;
+  if (z) *z = h;
+  return 1;
+}
+
 int mjb_lineNodes(const mjbBuoy* b, const mjData* d, int line, mjtNum* pos, int max) {
   if (!b || !d || line < 0 || line >= int(b->b.moor.line.size())) return 0;
   State* s = state(const_cast<mjbBuoy*>(b), d, false);

@@ -15,7 +15,8 @@ inline double dot3(const double* a, const double* b) {
 }
 
 // a segment's tension from its length l and stretch rate ld [N]: Hooke's
-// EA e plus internal damping BA de/dt, never compressive (docs/mooring.md)
+// EA e plus internal damping BA de/dt, never compressive (docs/mooring.md);
+// the end segments' force on the bodies (lineEndForce)
 inline double tension(const Line& l, double len, double ld) {
   double e = len / l.l0 - 1;
   if (e <= 0) return 0;
@@ -46,26 +47,34 @@ void waterAt(const LineWater& w, const Line& l, double t, LineState* s) {
     sea.velocity(p, t, u, a);
     s->wet[j] = p[2] < sea.level - amp || p[2] < sea.height(p[0], p[1], t);
   }
+  // the inverse masses across and along each node: dry, or with added mass
+  const double rv = sea.rho * l.vnode;
+  for (int j = 0; j <= l.nseg; j++) {
+    s->im[2 * j] = 1 / (l.mnode + (s->wet[j] ? rv * l.t.can : 0));
+    s->im[2 * j + 1] = 1 / (l.mnode + (s->wet[j] ? rv * l.t.cat : 0));
+  }
 }
 
-// the forces on every inner node but seabed friction (f), segment tensions
-// (s->tseg), with the nodes at s->r, s->v
+// the explicit forces on every inner node (f): the segments' elastic
+// tension EA e (s->tseg, along s->qs), weight, buoyancy, drag, Froude-Krylov
+// and added mass, with the nodes at s->r, s->v. Internal damping and the
+// seabed are the implicit part of the sub-step (subStep)
 void nodeForces(const LineWater& w, const Line& l, double tau, LineState* s) {
   const Sea& sea = *w.sea;
-  const Seabed& bed = *w.bed;
   const int n = l.nseg;
   double* f = s->f.data();
   std::fill(s->f.begin(), s->f.end(), 0.0);
   for (int i = 0; i < n; i++) {
     const double* a = &s->r[3 * i];
     const double* b = &s->r[3 * i + 3];
+    double* q = &s->qs[3 * i];
     double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     double len = std::sqrt(dot3(d, d)), T = 0;
+    q[0] = q[1] = q[2] = 0;
     if (len > 0) {
-      double q[3] = {d[0] / len, d[1] / len, d[2] / len};
-      double dv[3] = {s->v[3 * i + 3] - s->v[3 * i], s->v[3 * i + 4] - s->v[3 * i + 1],
-                      s->v[3 * i + 5] - s->v[3 * i + 2]};
-      T = tension(l, len, dot3(dv, q));
+      const double il = 1 / len;
+      for (int k = 0; k < 3; k++) q[k] = d[k] * il;
+      T = l.t.ea * std::max(len / l.l0 - 1, 0.0);
       for (int k = 0; k < 3; k++) {
         f[3 * i + k] += T * q[k];
         f[3 * i + 3 + k] -= T * q[k];
@@ -73,7 +82,7 @@ void nodeForces(const LineWater& w, const Line& l, double tau, LineState* s) {
     }
     s->tseg[i] = T;
   }
-  const double rho = sea.rho, g = sea.g, dia = l.t.diam, l0 = l.l0;
+  const double rho = sea.rho, g = sea.g, dia = l.t.diam;
   // drag acts on the stretched length a node stands for: half the chord
   // of its neighbours
   const double dn = 0.5 * rho * l.t.cdn * dia, dt = 0.5 * rho * l.t.cdt * M_PI * dia;
@@ -83,8 +92,6 @@ void nodeForces(const LineWater& w, const Line& l, double tau, LineState* s) {
     const double ls = 0.5 * lineTangent(s->r.data(), j, q);
     fj[2] -= l.mnode * g;
     const double* v = &s->v[3 * j];
-    double pen = bed.z - s->r[3 * j + 2];
-    if (pen > 0) fj[2] += std::max(bed.k * pen - bed.c * v[2], 0.0) * dia * l0;
     if (!s->wet[j]) continue;
     fj[2] += rho * l.vnode * g;
     const double* u = &s->uw[3 * j];
@@ -115,7 +122,8 @@ double lineTangent(const double* r, int j, double q[3]) {
                  r[3 * j + 5] - r[3 * j - 1]};
   double n = std::sqrt(dot3(d, d));
   if (n > 0) {
-    for (int k = 0; k < 3; k++) q[k] = d[k] / n;
+    const double in = 1 / n;
+    for (int k = 0; k < 3; k++) q[k] = d[k] * in;
   } else {
     q[0] = q[1] = 0;
     q[2] = 1;
@@ -130,16 +138,23 @@ double lineWetWeight(const Sea& sea, const LineType& t) {
 // the fraction of the linear bound taken: room for the geometric
 // nonlinearity and the drag the bound leaves out
 static const double kSafety = 0.8;
+// the most sub-steps of one step
+static const int kMaxSub = 10000;
 
 double lineStableStep(const LineWater& w, const Line& l) {
-  // the highest mode of a chain of masses m and springs k, c moves
-  // neighbours against each other: stiffness 4k and damping 4c on each
-  // node; the bed adds its own spring and damper (vertical). Added mass
-  // only slows it, so the dry mass gives the bound
-  const double m = l.mnode, k = l.t.ea / l.l0, c = l.t.ba / l.l0;
-  const double kb = w.bed->k * l.t.diam * l.l0, cb = w.bed->c * l.t.diam * l.l0;
-  const double om = std::sqrt((4 * k + kb) / m), z = (4 * c + cb) / (2 * m * om);
-  return kSafety * 2 / om * (std::sqrt(1 + z * z) - z);
+  // the highest axial mode of a chain of masses m and springs k moves
+  // neighbours against each other: omega = 2 sqrt(k / m). The internal
+  // damping c = beta k is implicit and of the stiffness's form, so each mode
+  // keeps symplectic Euler stable for h^2 - 2 beta h < 4 / omega^2 (docs/
+  // mooring.md "Integration"); the transverse modes, stiffness T / l0 at
+  // most kOverStrain EA / l0, are explicit and undamped. The bed is
+  // implicit; added mass only slows the modes, so the dry mass gives the bound
+  (void)w;
+  const double m = l.mnode, k = l.t.ea / l.l0, beta = l.t.ba / l.t.ea;
+  const double om = 2 * std::sqrt(k / m);
+  const double axial = beta + std::sqrt(beta * beta + 4 / (om * om));
+  const double transverse = 2 / (om * std::sqrt(kOverStrain));
+  return kSafety * std::min(axial, transverse);
 }
 
 std::string lineDerive(const LineWater& w, Line* l) {
@@ -164,7 +179,11 @@ void lineMake(const Line& l, LineState* s) {
   s->aw.assign(n3, 0.0);
   s->f.assign(n3, 0.0);
   s->q.assign(n3, 0.0);
+  s->qs.assign(3 * l.nseg, 0.0);
+  s->im.assign(2 * (l.nseg + 1), 0.0);
   s->tseg.assign(l.nseg, 0.0);
+  s->td.assign(l.nseg, 0.0);
+  s->tri.assign(2 * l.nseg, 0.0);
   s->wet.assign(l.nseg + 1, 1);
   s->tw = -1;
 }
@@ -181,67 +200,200 @@ static void setEnds(const Line& l, double a, const double e0[6], const double e1
   }
 }
 
-// one semi-implicit Euler sub-step of length h of the inner nodes: v from
-// the forces at (r, v), then r from the new v. Seabed friction is a
-// damper of coefficient mu N / max(|v|, vs) along and across the line,
-// taken implicitly so its stiffness sets no step limit (docs/mooring.md)
+// a . M_j^-1 b for node j of inverse masses imn across and imt along its
+// tangent q (0 at the ends, whose velocity is given)
+static inline double invMass(const LineState& s, int j, const double* a, const double* b) {
+  const double* q = &s.q[3 * j];
+  const double imn = s.im[2 * j], imt = s.im[2 * j + 1];
+  return imn * dot3(a, b) + (imt - imn) * dot3(a, q) * dot3(b, q);
+}
+
+// v_j += h M_j^-1 f
+static inline void pushNode(LineState* s, int j, double h, const double f[3]) {
+  const double* q = &s->q[3 * j];
+  const double imn = s->im[2 * j], imt = s->im[2 * j + 1], fq = dot3(f, q);
+  double* v = &s->v[3 * j];
+  for (int k = 0; k < 3; k++) v[k] += h * (imn * f[k] + (imt - imn) * fq * q[k]);
+}
+
+// solve for the damping tensions d_s of the taut segments at the end of a
+// sub-step (backward Euler in the damping: docs/mooring.md "Integration"):
+// d_s = c q_s . (v'_{s+1} - v'_s), v' = v* + h M^-1 (d_j q_j - d_{j-1} q_{j-1}),
+// a tridiagonal system in the scalars d_s solved by the Thomas algorithm.
+// Segments in fix hold d_s = -tseg_s (their total tension is zero)
+static void dampSolve(const Line& l, double h, const char* fix, LineState* s) {
+  const int n = l.nseg;
+  const double c0 = l.t.ba / l.l0;
+  double* cp = s->tri.data();
+  double* dp = cp + n;
+  for (int i = 0; i < n; i++) {
+    const double* q = &s->qs[3 * i];
+    double c = s->tseg[i] > 0 ? c0 : 0, lo = 0, up = 0, diag = 1, rhs = 0;
+    if (fix && fix[i]) {
+      rhs = -s->tseg[i];
+    } else if (c > 0) {
+      const double* va = &s->v[3 * i];
+      const double* vb = &s->v[3 * i + 3];
+      rhs = c * (q[0] * (vb[0] - va[0]) + q[1] * (vb[1] - va[1]) + q[2] * (vb[2] - va[2]));
+      if (i + 1 < n) {
+        diag += h * c * invMass(*s, i + 1, q, q);
+        up = -h * c * invMass(*s, i + 1, q, q + 3);
+      }
+      if (i > 0) {
+        diag += h * c * invMass(*s, i, q, q);
+        lo = -h * c * invMass(*s, i, q, q - 3);
+      }
+    }
+    const double iden = 1 / (diag - (i > 0 ? lo * cp[i - 1] : 0));
+    cp[i] = up * iden;
+    dp[i] = (rhs - (i > 0 ? lo * dp[i - 1] : 0)) * iden;
+  }
+  s->td[n - 1] = dp[n - 1];
+  for (int i = n - 2; i >= 0; i--) s->td[i] = dp[i] - cp[i] * s->td[i + 1];
+}
+
+// the damping tensions (dampSolve), kept from making a segment's total
+// tension compressive: a segment whose EA e + d_s < 0 is solved again
+// with a total of zero (one pass); then applied to the inner nodes' v
+static void dampStep(const Line& l, double h, LineState* s) {
+  const int n = l.nseg;
+  dampSolve(l, h, nullptr, s);
+  bool any = false;
+  for (int i = 0; i < n; i++) any |= s->tseg[i] + s->td[i] < 0;
+  if (any) {
+    char fix[1024];  // nseg <= 1000 (moorconfig.cc)
+    for (int i = 0; i < n; i++) fix[i] = s->tseg[i] + s->td[i] < 0;
+    dampSolve(l, h, fix, s);
+  }
+  for (int j = 1; j < n; j++) {
+    const double *qa = &s->qs[3 * j - 3], *qb = &s->qs[3 * j];
+    const double da = s->td[j - 1], db = s->td[j];
+    const double f[3] = {db * qb[0] - da * qa[0], db * qb[1] - da * qa[1],
+                         db * qb[2] - da * qa[2]};
+    pushNode(s, j, h, f);
+  }
+  for (int i = 0; i < n; i++) s->tseg[i] += s->td[i];
+}
+
+// node j on the bed: its vertical spring k and damper c per contact area
+// in backward Euler, linearised (v_z' = (v_z + h k' p / m) / (1 + h (c' +
+// h k') / m), k' = k d l0, p the penetration), then friction: a damper of
+// coefficient mu F_n / max(|v|, vs) along and across the line, implicit
+// too, so neither sets a step limit (docs/mooring.md "Seabed")
+static void bedStep(const LineWater& w, const Line& l, double h, int j, LineState* s) {
+  const Seabed& bed = *w.bed;
+  const double pen = bed.z - s->r[3 * j + 2];
+  if (!(pen > 0)) return;
+  double* v = &s->v[3 * j];
+  const double* q = &s->q[3 * j];
+  const double kb = bed.k * l.t.diam * l.l0, cb = bed.c * l.t.diam * l.l0;
+  const double m = 1 / s->im[2 * j];
+  const double vz = (v[2] + h * kb * pen / m) / (1 + h * (cb + h * kb) / m);
+  const double fn = kb * (pen - h * vz) - cb * vz;
+  if (!(fn > 0)) return;  // lifting off: no contact force
+  v[2] = vz;
+  double ax[2] = {q[0], q[1]}, an = std::sqrt(q[0] * q[0] + q[1] * q[1]);
+  if (an > 1e-9) {
+    ax[0] /= an;
+    ax[1] /= an;
+  } else {
+    ax[0] = 1;
+    ax[1] = 0;
+  }
+  double va = v[0] * ax[0] + v[1] * ax[1];
+  double vl = -v[0] * ax[1] + v[1] * ax[0];
+  va /= 1 + h * bed.mu[0] * fn / (std::max(std::fabs(va), bed.vs) * l.mnode);
+  vl /= 1 + h * bed.mu[1] * fn / (std::max(std::fabs(vl), bed.vs) * l.mnode);
+  v[0] = va * ax[0] - vl * ax[1];
+  v[1] = va * ax[1] + vl * ax[0];
+}
+
+// one sub-step of length h of the inner nodes: v from the explicit forces
+// at (r, v), the internal damping and the seabed implicitly at the new v,
+// then r from the new v (symplectic Euler in the elastic and fluid forces;
+// docs/mooring.md "Integration"). The end nodes' velocities are already
+// those at the end of the sub-step
 static void subStep(const LineWater& w, const Line& l, double h, double tau, LineState* s) {
   nodeForces(w, l, tau, s);
-  const Seabed& bed = *w.bed;
-  const double rv = w.sea->rho * l.vnode;
+  for (int j = 1; j < l.nseg; j++) pushNode(s, j, h, &s->f[3 * j]);
+  if (l.t.ba > 0) dampStep(l, h, s);
   for (int j = 1; j < l.nseg; j++) {
-    double* v = &s->v[3 * j];
-    double* fj = &s->f[3 * j];
-    const double* q = &s->q[3 * j];
-    const bool wet = s->wet[j];
-    const double mn = l.mnode + (wet ? rv * l.t.can : 0), mt = l.mnode + (wet ? rv * l.t.cat : 0);
-    double fq = dot3(fj, q);
-    for (int k = 0; k < 3; k++) v[k] += h * ((fj[k] - fq * q[k]) / mn + fq * q[k] / mt);
-    double pen = bed.z - s->r[3 * j + 2];
-    if (pen > 0) {
-      double fn = std::max(bed.k * pen - bed.c * v[2], 0.0) * l.t.diam * l.l0;
-      double ax[2] = {q[0], q[1]}, an = std::sqrt(q[0] * q[0] + q[1] * q[1]);
-      if (an > 1e-9) {
-        ax[0] /= an;
-        ax[1] /= an;
-      } else {
-        ax[0] = 1;
-        ax[1] = 0;
-      }
-      double va = v[0] * ax[0] + v[1] * ax[1];
-      double vl = -v[0] * ax[1] + v[1] * ax[0];
-      va /= 1 + h * bed.mu[0] * fn / (std::max(std::fabs(va), bed.vs) * l.mnode);
-      vl /= 1 + h * bed.mu[1] * fn / (std::max(std::fabs(vl), bed.vs) * l.mnode);
-      v[0] = va * ax[0] - vl * ax[1];
-      v[1] = va * ax[1] + vl * ax[0];
-    }
-    for (int k = 0; k < 3; k++) s->r[3 * j + k] += h * v[k];
+    bedStep(w, l, h, j, s);
+    for (int k = 0; k < 3; k++) s->r[3 * j + k] += h * s->v[3 * j + k];
   }
+}
+
+// the unstretched length resting on the bed [m]: each inner node counts
+// for the share of its weight w_j l0 (submerged, or dry above the surface)
+// the bed carries, F_n / (w_j l0) clipped to [0, 1], times l0, so the
+// touchdown falls between nodes where the bed carries part of one; an end
+// on the bed adds its half segment when its neighbour rests. In a static
+// line this is L - (V_F + V_A) / w, the length whose weight the fairlead
+// and anchor do not carry, the catenary's L_B (Jonkman 2007 eq. 4-3);
+// a line lighter than water counts the nodes below the bed
+static double bedLength(const LineWater& w, const Line& l, const LineState& s) {
+  const Seabed& bed = *w.bed;
+  const double kb = bed.k * l.t.diam * l.l0, cb = bed.c * l.t.diam * l.l0;
+  const double wd = l.mnode * w.sea->g, wb = w.sea->rho * l.vnode * w.sea->g;
+  const int n = l.nseg;
+  double on = 0, first = 0, last = 0;
+  for (int j = 1; j < n; j++) {
+    const double pen = bed.z - s.r[3 * j + 2];
+    if (!(pen > 0)) continue;
+    const double wj = wd - (s.wet[j] ? wb : 0);
+    const double fn = std::max(kb * pen - cb * s.v[3 * j + 2], 0.0);
+    const double f = wj > 0 ? std::min(fn / wj, 1.0) : 1.0;
+    on += f;
+    if (j == 1) first = f;
+    if (j == n - 1) last = f;
+  }
+  const double tol = 1e-3 * l.t.diam;
+  if (s.r[2] <= bed.z + tol) on += 0.5 * first;
+  if (s.r[3 * n + 2] <= bed.z + tol) on += 0.5 * last;
+  return on * l.l0;
 }
 
 void lineStep(const LineWater& w, const Line& l, double t, double dt, const double e0[6],
               const double e1[6], LineState* s) {
   setEnds(l, 0, e0, e1, s);
   if (!(s->tw >= 0) || t < s->tw || t - s->tw >= w.refresh) waterAt(w, l, t, s);
-  int nsub = std::max(1, int(std::ceil(dt / l.hmax)));
-  const double h = dt / nsub;
-  for (int i = 0; i < nsub; i++) {
-    subStep(w, l, h, t + i * h - s->tw, s);
-    setEnds(l, double(i + 1) / nsub, e0, e1, s);
+  // sub-steps of at most hmax, and shorter while a segment's tension T
+  // makes the transverse modes stiffer than hmax allows (an overloaded
+  // line): 0.8 of 2 / omega_t, omega_t = 2 sqrt(T / (l0 m)); at most
+  // kMaxSub of them (past that the line goes non-finite and is named)
+  double done = 0;
+  for (int i = 0; done < dt; i++) {
+    double tmax = 0;
+    for (int k = 0; k < l.nseg; k++) tmax = std::max(tmax, s->tseg[k]);
+    double hs = l.hmax;
+    if (tmax * hs * hs > kSafety * kSafety * l.l0 * l.mnode) {
+      hs = kSafety * std::sqrt(l.l0 * l.mnode / tmax);
+    }
+    double left = std::ceil((dt - done) / hs * (1 - 1e-12));
+    if (!(left > 1) || i + 1 >= kMaxSub) left = 1;
+    const double h = (dt - done) / left;
+    const double a = left == 1 ? 1.0 : (done + h) / dt;
+    // the ends' velocities at the end of the sub-step (the implicit
+    // damping's boundary values), their positions at its start
+    for (int k = 3; k < 6; k++) {
+      s->v[k - 3] = s->end0[k] + a * (e0[k] - s->end0[k]);
+      s->v[3 * l.nseg + k - 3] = s->end1[k] + a * (e1[k] - s->end1[k]);
+    }
+    subStep(w, l, h, t + done - s->tw, s);
+    done = left == 1 ? dt : done + h;
+    setEnds(l, a, e0, e1, s);
   }
   std::copy(e0, e0 + 6, s->end0);
   std::copy(e1, e1 + 6, s->end1);
-  // what rests on the bed, and overload
-  int on = 0;
+  // overload, and what rests on the bed
   s->over = 0;
   for (int i = 0; i < l.nseg; i++) {
     const double* a = &s->r[3 * i];
     const double* b = &s->r[3 * i + 3];
     double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     if (std::sqrt(dot3(d, d)) > (1 + kOverStrain) * l.l0) s->over++;
-    if (a[2] <= w.bed->z + 1e-3 * l.t.diam && b[2] <= w.bed->z + 1e-3 * l.t.diam) on++;
   }
-  s->bedlen = on * l.l0;
+  s->bedlen = bedLength(w, l, *s);
 }
 
 double lineEndForce(const LineWater& w, const Line& l, const LineState& s, int end,
@@ -318,6 +470,7 @@ bool lineRest(const LineWater& w, const Line& l, const double e0[3], const doubl
     }
   }
   std::fill(s->v.begin(), s->v.end(), 0.0);
+  std::fill(s->tseg.begin(), s->tseg.end(), 0.0);
   for (int k = 0; k < 3; k++) {
     s->end0[k] = e0[k];
     s->end1[k] = e1[k];

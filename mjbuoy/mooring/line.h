@@ -65,6 +65,10 @@ struct LineState {
   std::vector<double> uw, aw;    // water velocity, acceleration, 3 per node
   std::vector<double> f;         // scratch: force per node [N]
   std::vector<double> q;         // scratch: unit tangent per node
+  std::vector<double> qs;        // scratch: unit vector of each segment, node i to i + 1
+  std::vector<double> im;        // inverse mass across, along each node, wet as at tw [1/kg]
+  std::vector<double> td;        // scratch: damping tension of each segment [N]
+  std::vector<double> tri;       // scratch: the tridiagonal solve, 2 per segment
   std::vector<double> tseg;      // tension of each segment after the last step [N]
   std::vector<char> wet;         // per node: below the surface at tw
   double tw = -1;                // time the water's kinematics were taken [s]; < 0: none
@@ -79,10 +83,11 @@ const double kOverStrain = 0.1;
 // fill the derived values of l; "" or an error naming the line and field
 std::string lineDerive(const LineWater& w, Line* l);
 
-// the largest sub-step [s] at which the explicit scheme is stable for the
-// stiffest motions of l (axial waves, the seabed spring, internal damping):
-// 0.8 of the central-difference bound (2 / omega)(sqrt(1 + z^2) - z) on the
-// highest mode (docs/mooring.md "Stability")
+// the largest sub-step [s] at which lineStep is stable for the stiffest
+// motions of l: 0.8 of the bound beta + sqrt(beta^2 + 4 / omega^2) of the
+// highest axial mode omega with its internal damping implicit (beta = BA /
+// EA), and of 2 / omega_t of the transverse modes at kOverStrain
+// (docs/mooring.md "Integration")
 double lineStableStep(const LineWater& w, const Line& l);
 
 // size s for l
@@ -90,7 +95,9 @@ void lineMake(const Line& l, LineState* s);
 
 // move l over [t, t + dt]: its ends go linearly from s->end0 to e0 (node 0)
 // and from s->end1 to e1 (node N), 6 values each (position, velocity);
-// inner nodes take semi-implicit Euler sub-steps of at most hmax. The
+// inner nodes take sub-steps of at most hmax: symplectic Euler in the
+// elastic and fluid forces, backward Euler in the internal damping and the
+// seabed. The
 // water's kinematics are taken at t when those held are w.refresh old
 void lineStep(const LineWater& w, const Line& l, double t, double dt, const double e0[6],
               const double e1[6], LineState* s);

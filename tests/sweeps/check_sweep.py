@@ -19,6 +19,8 @@ check_sweep.py MODE BIN [ARGS]; prints "FAIL ..." and exits 1 on a failure.
   fifo BIN                a FIFO in the results folder is refused by run and merge
                           (they blocked forever), naming it; run does not write its
                           manifest over the sweep file
+  mooring BIN             a tiny examples/mooring/pretension.xml (two lengths, calm, 20 s):
+                          the fairlead tension at rest against the elastic catenary
   cluster BIN             the scripts run as they are on a cluster: --time and --mem
                           from the measured case, --jobs 0 from the CPU allocation
                           (taskset, SLURM_CPUS_PER_TASK), one shared radiation cache
@@ -268,6 +270,78 @@ def mode_sensor(bin_):
         check(re.search(want, case.get("error", "")) is not None, f"unknown sensor: {case.get('error')}")
 
 
+def catenary_tension(X, Z, L, EA, W):
+    """fairlead tension of a line with its anchor on a frictionless bed:
+    Jonkman 2007 (NREL/TP-500-41958) eqs. 4-1 to 4-4 with C_B = 0 (Irvine
+    1981 sec. 2.2 with an elastic line), solved by nested bisection"""
+    def end(H, V):
+        if V < W * L:
+            x = L - V / W + H / W * math.asinh(V / H) + H * L / EA
+            z = H / W * (math.sqrt(1 + (V / H) ** 2) - 1) + V * V / (2 * EA * W)
+        else:
+            Va = V - W * L
+            x = H / W * (math.asinh(V / H) - math.asinh(Va / H)) + H * L / EA
+            z = (H / W * (math.sqrt(1 + (V / H) ** 2) - math.sqrt(1 + (Va / H) ** 2))
+                 + (V * L - W * L * L / 2) / EA)
+        return x, z
+
+    def v_for(H):  # the height grows with V
+        lo, hi = 0.0, 4 * W * L
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if end(H, mid)[1] < Z else (lo, mid)
+        return 0.5 * (lo + hi)
+
+    lo, hi = 1e-6 * W * L, 100 * W * L  # the span grows with H
+    for _ in range(200):
+        mid = math.sqrt(lo * hi)
+        lo, hi = (mid, hi) if end(mid, v_for(mid))[0] < X else (lo, mid)
+    H = math.sqrt(lo * hi)
+    return math.hypot(H, v_for(H))
+
+
+def mode_mooring(bin_):
+    """a tiny version of examples/mooring/pretension.xml: two chain lengths,
+    calm water with no current, 20 s; the buoy at rest holds line a at the
+    catenary's fairlead tension for its span and height (the buoy's mean z
+    gives the fairlead 2 m below it; anchor 101.5 m out, 50 m deep; chain
+    30 kg/m, d 0.07 m, EA 1.2e8 N, rho 1025, g 9.81), within 1%, and the
+    shorter chain pulls harder"""
+    ex = os.path.join(ROOT, "examples", "mooring")
+    with tempfile.TemporaryDirectory() as d:
+        sw = os.path.join(d, "tiny.xml")
+        open(sw, "w").write(
+            '<sweep scenario="%s" name="tiny">\n'
+            '  <axis name="duration" set="@duration" values="20"/>\n'
+            '  <axis name="current" set="sea@current" format="0 {}" values="0"/>\n'
+            '  <zip name="length">\n'
+            '    <axis name="length" set="numeric[name=mjbuoy.line.a.length]@data" values="128 132"/>\n'
+            '    <axis name="lb" set="numeric[name=mjbuoy.line.b.length]@data" values="128 132"/>\n'
+            '    <axis name="lc" set="numeric[name=mjbuoy.line.c.length]@data" values="128 132"/>\n'
+            '  </zip>\n'
+            '  <stat name="tension" stat="mean" sensor="tension_a" from="12"/>\n'
+            '  <stat name="z" stat="mean" body="buoy" quantity="z" from="12"/>\n'
+            '  <stat name="x" stat="mean" body="buoy" quantity="x" from="12"/>\n'
+            '</sweep>\n' % os.path.join(ex, "moored_current.xml"))
+        out = os.path.join(d, "o")
+        run([bin_, "run", sw, "--out", out, "--jobs", "2"], ok=(0,))
+        run([bin_, "merge", out], ok=(0,))
+        rs = rows(out)
+        check(len(rs) == 2, f"2 rows (got {len(rs)})")
+        W = (30 - 1025 * math.pi * 0.07 ** 2 / 4) * 9.81
+        t = {}
+        for r in rs.values():
+            L = float(r["length"])
+            X = 101.5 - 1.5 - float(r["x"])
+            Z = 50 + float(r["z"]) - 2
+            Tc = catenary_tension(X, Z, L, 1.2e8, W)
+            T = float(r["tension"])
+            t[L] = T
+            check(abs(T / Tc - 1) < 0.01, f"L = {L:g} m: fairlead tension {T:.1f} N, catenary "
+                  f"{Tc:.1f} N ({100 * (T / Tc - 1):+.3f}%, within 1%)")
+        check(t.get(128, 0) > t.get(132, 1e30), f"the shorter chain pulls harder: {t}")
+
+
 def small_sweep(d, model_xml, extra_files=()):
     """a 2-case sweep in d of a 0.5 s drop of the model text model_xml"""
     open(os.path.join(d, "model.xml"), "w").write(model_xml)
@@ -453,7 +527,8 @@ if __name__ == "__main__":
      "local": lambda: mode_local(bin_), "slurm": lambda: mode_slurm(bin_),
      "rao": lambda: mode_rao(bin_), "sensor": lambda: mode_sensor(bin_),
      "stale": lambda: mode_stale(bin_), "inject": lambda: mode_inject(bin_),
-     "fifo": lambda: mode_fifo(bin_), "cluster": lambda: mode_cluster(bin_)}[mode]()
+     "fifo": lambda: mode_fifo(bin_), "cluster": lambda: mode_cluster(bin_),
+     "mooring": lambda: mode_mooring(bin_)}[mode]()
     if failures:
         print(f"FAIL {len(failures)} check(s) failed")
         sys.exit(1)

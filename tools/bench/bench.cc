@@ -68,6 +68,37 @@ static bool addRadiation(mjbBuoy* b, const mjModel* m) {
   return true;
 }
 static std::string gpress = "linear";  // mjbuoy.sea.pressure: linear or kerner
+static int glines = 0;     // --lines: mooring lines per boat
+static int gsegments = 20;  // --segments: segments per line
+
+// --lines: n mooring lines per boat at equal angles, each gsegments
+// segments of a 20 mm polyester rope (0.5 kg/m; EA 1.2 MN, about 20 times
+// its breaking load of 60 kN; submerged weight 1.8 N/m, so the boat sinks
+// by a few kg of line), 20 m long from a
+// fairlead at the boat's origin to an anchor 15 m out on a bed 10 m down:
+// a catenary with about a third of it on the bed (docs/benchmarks.md
+// "Mooring lines")
+static std::string lineEntries(int boats) {
+  if (glines <= 0) return "";
+  std::ostringstream s;
+  s << "<numeric name=\"mjbuoy.linetype.rope.mass\" data=\"0.5\"/>"
+    << "<numeric name=\"mjbuoy.linetype.rope.diameter\" data=\"0.02\"/>"
+    << "<numeric name=\"mjbuoy.linetype.rope.ea\" data=\"1.2e6\"/>";
+  int side = std::ceil(std::sqrt(boats));
+  for (int i = 0; i < boats; i++) {
+    for (int k = 0; k < glines; k++) {
+      const double a = 2 * M_PI * k / glines;
+      const std::string n = "mjbuoy.line.b" + std::to_string(i) + "_" + std::to_string(k);
+      s << "<text name=\"" << n << ".type\" data=\"rope\"/>"
+        << "<numeric name=\"" << n << ".length\" data=\"20\"/>"
+        << "<numeric name=\"" << n << ".segments\" data=\"" << gsegments << "\"/>"
+        << "<numeric name=\"" << n << ".anchor\" data=\"" << 6 * (i % side) + 15 * std::cos(a)
+        << " " << 2 * (i / side) + 15 * std::sin(a) << " -10\"/>"
+        << "<text name=\"" << n << ".fairlead\" data=\"f" << i << "\"/>";
+    }
+  }
+  return s.str();
+}
 
 // the sea entries of --sea: jonswap is a 64-component short-crested sea
 // (Hs 0.6 m, Tp 5 s, spreading s = 10 about 20 deg), longcrested the same
@@ -92,13 +123,14 @@ static std::string scene(const std::string& meshes, int boats, int tris) {
   if (gthreads >= 0) s << "<numeric name=\"mjbuoy.threads\" data=\"" << gthreads << "\"/>";
   if (!gradmem.empty()) s << "<text name=\"mjbuoy.radiation.memorymodel\" data=\"" << gradmem << "\"/>";
   if (gradoff) s << "<text name=\"mjbuoy.radiation\" data=\"off\"/>";
-  s << "</custom><worldbody>";
+  s << lineEntries(boats) << "</custom><worldbody>";
   int side = std::ceil(std::sqrt(boats));
   for (int i = 0; i < boats; i++) {
     s << "<body pos=\"" << 6 * (i % side) << " " << 2 * (i / side) << " 0.03\"><freejoint/>"
       << "<inertial pos=\"0 0 -0.08\" mass=\"176.2\" diaginertia=\"6.02 237.28 238.6\"/>"
-      << "<geom name=\"h" << i << "\" type=\"mesh\" mesh=\"w\" contype=\"0\" conaffinity=\"0\"/>"
-      << "</body>";
+      << "<geom name=\"h" << i << "\" type=\"mesh\" mesh=\"w\" contype=\"0\" conaffinity=\"0\"/>";
+    if (glines > 0) s << "<site name=\"f" << i << "\"/>";
+    s << "</body>";
   }
   s << "</worldbody></mujoco>";
   return s.str();
@@ -137,6 +169,7 @@ static void timed(const mjModel* m, mjData* d) {
 struct Cell {
   int boats, tris, ntri;
   std::string backend, sea, pressure;
+  int lines;  // mooring lines per boat
   double hydro, step, bare;  // ms per step (median of repetitions)
   double cpu;                // CPU ms (all threads) in mjbuoy per step (median)
   double newton;             // cpu backend: Newton steps per surface solve (NaN: none)
@@ -232,7 +265,7 @@ static bool run(const std::string& meshes, int boats, int tris, const std::strin
   const char* sn[8];
   double ms[8];
   int ns = mjb_stageTimes(b, sn, ms, 8);
-  *c = Cell{boats, tris, mjb_info(b).ntri, mjb_info(b).backend, gsea, gpress, median(hydro),
+  *c = Cell{boats, tris, mjb_info(b).ntri, mjb_info(b).backend, gsea, gpress, glines, median(hydro),
             median(full), median(bare), median(cpu),
             ns1 > ns0 ? double(ni1 - ni0) / (ns1 - ns0) : NAN,
             vs1 > vs0 ? (vs1 - vs0) * 1e3 / (double(steps) * reps) : NAN, {}};
@@ -258,11 +291,19 @@ static double paper(int boats, int tris) {
   return NAN;
 }
 
+// what each cell measures in turn: the sea, the pressure model, the mooring
+// lines per boat
+struct Kind {
+  std::string sea, pressure;
+  int lines;
+};
+
 // one cell of --baseline: this bench and the baseline's, each as a child
 // process running the cell once (--reps 1), alternating A/B reps times
 struct CmpCell {
   std::string backend, sea, pressure;
   int boats, tris;
+  int lines = 0;
   double hydro = 0, bhydro = 0, ratio = 0, step = 0, bstep = 0, sratio = 0;
   double cpu = 0, bcpu = 0, cratio = 0;  // CPU time of all threads in mjbuoy
   int ntri = 0;
@@ -324,7 +365,7 @@ static std::string num(double v, const char* fmt) {
 static int compareGrid(const std::string& base, const std::string& meshes,
                        const std::vector<int>& tris, const std::vector<int>& boats,
                        const std::vector<std::string>& backends,
-                       const std::vector<std::pair<std::string, std::string>>& kinds,
+                       const std::vector<Kind>& kinds,
                        int steps, int reps, std::vector<CmpCell>* out) {
   char exe[4096];
   ssize_t n = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
@@ -342,12 +383,17 @@ static int compareGrid(const std::string& base, const std::string& meshes,
                  tmpl.c_str(), std::strerror(errno));
     return 1;
   }
+  // a lines column only when some cell is moored (--lines): the unmoored
+  // table keeps its columns
+  bool anyLines = false;
+  for (const Kind& k : kinds) anyLines |= k.lines > 0;
   std::printf("| backend | sea | pressure | boats | tris/boat | hydro ms | baseline hydro ms | "
               "baseline/this hydro | hydro CPU ms | baseline hydro CPU ms | baseline/this CPU | "
               "step ms | baseline step ms | baseline/this step | newton/solve | "
               "baseline newton/solve | roofline | vertex ms | baseline vertex ms | "
-              "baseline/this vertex |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "baseline/this vertex |%s\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|%s\n",
+              anyLines ? " lines/boat |" : "", anyLines ? "---|" : "");
   int rc = 0;
   for (int t : tris) {
     for (int nb : boats) {
@@ -355,7 +401,7 @@ static int compareGrid(const std::string& base, const std::string& meshes,
         for (const auto& kind : kinds) {
           std::vector<std::string> common = {
               "--meshes", meshes, "--boats", std::to_string(nb), "--tris", std::to_string(t),
-              "--backend", be, "--sea", kind.first, "--pressure", kind.second,
+              "--backend", be, "--sea", kind.sea, "--pressure", kind.pressure,
               "--steps", std::to_string(steps), "--reps", "1"};
           if (gthreads >= 0) {
             common.push_back("--threads");
@@ -370,20 +416,28 @@ static int compareGrid(const std::string& base, const std::string& meshes,
             common.push_back(gradmem);
           }
           if (gwarmmem) common.push_back("--warm-memory");
+          if (kind.lines > 0) {  // only then: a baseline without --lines runs the rest
+            for (const std::string& a : {std::string("--lines"), std::to_string(kind.lines),
+                                         std::string("--segments"), std::to_string(gsegments)}) {
+              common.push_back(a);
+            }
+          }
           if (gradoff) common.push_back("--radiation-off");
-          CmpCell c{be, kind.first, kind.second, nb, t};
+          CmpCell c{be, kind.sea, kind.pressure, nb, t};
+          c.lines = kind.lines;
           if (!compareCell(exe, base, common, dir, reps, &c)) {
             rc = 1;
             break;
           }
           out->push_back(c);
           std::printf("| %s | %s | %s | %d | %d | %.3f | %.3f | %.2f | %.3f | %.3f | %.2f | "
-                      "%.3f | %.3f | %.2f | %s | %s | %.3f | %s | %s | %s |\n", be.c_str(), c.sea.c_str(),
+                      "%.3f | %.3f | %.2f | %s | %s | %.3f | %s | %s | %s |%s\n", be.c_str(), c.sea.c_str(),
                       c.pressure.c_str(), nb, t, c.hydro, c.bhydro, c.ratio, c.cpu, c.bcpu,
                       c.cratio, c.step, c.bstep, c.sratio,
                       num(c.newton, "%.3f").c_str(), num(c.bnewton, "%.3f").c_str(),
                       fraction(c.sea, c.ntri, c.cpu), num(c.vertex, "%.3f").c_str(),
-                      num(c.bvertex, "%.3f").c_str(), num(c.vratio, "%.2f").c_str());
+                      num(c.bvertex, "%.3f").c_str(), num(c.vratio, "%.2f").c_str(),
+                      anyLines ? (" " + std::to_string(c.lines) + " |").c_str() : "");
           std::fflush(stdout);
         }
         if (rc) break;
@@ -428,11 +482,11 @@ static int writeCompare(const std::string& json, const std::vector<CmpCell>& cc)
   auto row = [&](FILE* f, size_t i) {
     const CmpCell& c = cc[i];
     std::fprintf(f, "{\"backend\": \"%s\", \"sea\": \"%s\", \"pressure\": \"%s\", "
-                 "\"boats\": %d, \"tris\": %d, \"hydro_ms\": %.6f, \"baseline_hydro_ms\": "
+                 "\"boats\": %d, \"tris\": %d, \"lines\": %d, \"hydro_ms\": %.6f, \"baseline_hydro_ms\": "
                  "%.6f, \"hydro_ratio\": %.6f, \"step_ms\": %.6f, \"baseline_step_ms\": %.6f, "
                  "\"step_ratio\": %.6f, \"hydro_cpu_ms\": %.6f, \"baseline_hydro_cpu_ms\": "
                  "%.6f, \"cpu_ratio\": %.6f}", c.backend.c_str(), c.sea.c_str(),
-                 c.pressure.c_str(), c.boats, c.tris, c.hydro, c.bhydro, c.ratio, c.step,
+                 c.pressure.c_str(), c.boats, c.tris, c.lines, c.hydro, c.bhydro, c.ratio, c.step,
                  c.bstep, c.sratio, c.cpu, c.bcpu, c.cratio);
   };
   if (!json.empty() && writeJsonArray(json, cc.size(), row) != 0) return 1;
@@ -499,6 +553,13 @@ int main(int argc, char** argv) {
   app.add_flag("--warm-memory", gwarmmem, "warm up until every boat's radiation memory "
                "history is full (its steady cost; about memory length / timestep steps, "
                "seconds to minutes for large cells) instead of 5 steps");
+  std::vector<int> lines = {0};
+  app.add_option("--lines", lines, "mooring lines per boat, each count measured in turn in "
+                 "every cell (0, the default: unmoored), e.g. --lines 0 3 for moored against "
+                 "unmoored: 20 m polyester ropes to anchors 15 m out on a bed 10 m down")
+      ->check(Finite(0, 16));
+  app.add_option("--segments", gsegments, "segments per mooring line (with --lines)")
+      ->check(Finite(1, 1000));
   std::string baseline;
   app.add_option("--baseline", baseline, "another build's mjbuoy-bench binary: run every cell "
                  "with both, one repetition each in turn (A/B/A/B as child processes), and "
@@ -528,9 +589,11 @@ int main(int argc, char** argv) {
 
   std::fprintf(stderr, "mjbuoy-bench: Wigley meshes from %s\n", meshes.c_str());
   // the seas and pressure models side by side in every cell, one after the other
-  std::vector<std::pair<std::string, std::string>> kinds;
+  std::vector<Kind> kinds;
   for (const std::string& sea : seas) {
-    for (const std::string& pm : pressures) kinds.emplace_back(sea, pm);
+    for (const std::string& pm : pressures) {
+      for (int nl : lines) kinds.push_back({sea, pm, nl});
+    }
   }
   if (!baseline.empty()) {
     std::string e;
@@ -543,18 +606,20 @@ int main(int argc, char** argv) {
     return writeCompare(json, cc);
   }
   std::vector<Cell> cells;
-  int total = boats.size() * tris.size() * backends.size() * seas.size() * pressures.size();
+  int total = boats.size() * tris.size() * backends.size() * kinds.size();
   int done = 0;
   auto start = Clock::now();
   std::printf("| backend | sea | pressure | boats | tris/boat | triangles | hydro ms/step | step ms "
-              "| bare step ms | step/bare | Mtri/s | paper GPU ms | hydro/paper | roofline |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "| bare step ms | step/bare | Mtri/s | paper GPU ms | hydro/paper | roofline "
+              "| lines/boat |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int t : tris) {
     for (int n : boats) {
       for (const std::string& be : backends) {
         for (const auto& kind : kinds) {
-          gsea = kind.first;
-          gpress = kind.second;
+          gsea = kind.sea;
+          gpress = kind.pressure;
+          glines = kind.lines;
           Cell c;
           // fewer steps for huge cells so the grid finishes in minutes
           int st = std::max(2, std::min(steps, int(2e6 / double(n * t)) + 2));
@@ -562,11 +627,11 @@ int main(int argc, char** argv) {
           cells.push_back(c);
           double p = paper(n, t);
           std::printf("| %s | %s | %s | %d | %d | %d | %.3f | %.3f | %.3f | %.2f | %.1f | %s | %s "
-                      "| %.3f |\n", be.c_str(), gsea.c_str(), gpress.c_str(), n, t, c.ntri,
+                      "| %.3f | %d |\n", be.c_str(), gsea.c_str(), gpress.c_str(), n, t, c.ntri,
                       c.hydro, c.step, c.bare, c.step / c.bare, c.ntri / c.hydro / 1e3,
                       std::isnan(p) ? "" : std::to_string(p).c_str(),
                       std::isnan(p) ? "" : std::to_string(c.hydro / p).c_str(),
-                      fraction(gsea, c.ntri, c.cpu));
+                      fraction(gsea, c.ntri, c.cpu), glines);
           std::fflush(stdout);
           double el = std::chrono::duration<double>(Clock::now() - start).count();
           done++;
@@ -580,9 +645,9 @@ int main(int argc, char** argv) {
   auto row = [&](FILE* f, size_t i) {
     const Cell& c = cells[i];
     std::fprintf(f, "{\"backend\": \"%s\", \"sea\": \"%s\", \"pressure\": \"%s\", "
-                 "\"boats\": %d, \"tris\": %d, \"triangles\": %d, "
+                 "\"boats\": %d, \"tris\": %d, \"triangles\": %d, \"lines\": %d, "
                  "\"hydro_ms\": %.6f, \"hydro_cpu_ms\": %.6f, \"step_ms\": %.6f, \"bare_ms\": %.6f, ",
-                 c.backend.c_str(), c.sea.c_str(), c.pressure.c_str(), c.boats, c.tris, c.ntri,
+                 c.backend.c_str(), c.sea.c_str(), c.pressure.c_str(), c.boats, c.tris, c.ntri, c.lines,
                  c.hydro, c.cpu, c.step, c.bare);
     if (std::isfinite(c.newton)) std::fprintf(f, "\"newton_per_solve\": %.6f, ", c.newton);
     if (std::isfinite(c.vertex)) std::fprintf(f, "\"vertex_ms\": %.6f, ", c.vertex);

@@ -341,14 +341,56 @@ void addForceArrows(const mjModel* m, const mjbBuoy* b, const mjData* d, mjvScen
   }
 }
 
+// the seabed under the lines (or 100 m around the origin without lines):
+// a sand-coloured slab at the bed's height with a grid of dark lines at a
+// round spacing, about ten across
+static void addSeabed(const mjbBuoy* b, double lo[2], double hi[2], mjvScene* scn) {
+  mjtNum z;
+  if (!mjb_seabed(b, &z)) return;
+  if (!(hi[0] >= lo[0])) lo[0] = lo[1] = -100, hi[0] = hi[1] = 100;
+  const double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]);
+  const double half = std::max(20.0, 0.6 * std::max(hi[0] - lo[0], hi[1] - lo[1]));
+  const double step = std::pow(10.0, std::floor(std::log10(half / 5)));
+  const double th = 0.01 * half;  // the slab's thickness, below the bed
+  if (scn->ngeom >= scn->maxgeom) return;
+  mjvGeom* g = scn->geoms + scn->ngeom++;
+  const float sand[4] = {0.55f, 0.5f, 0.38f, 1};
+  const mjtNum size[3] = {half, half, th}, pos[3] = {cx, cy, z - th};
+  mjv_initGeom(g, mjGEOM_BOX, size, pos, nullptr, sand);
+  g->category = mjCAT_DECOR;
+  const float grid[4] = {0.35f, 0.32f, 0.25f, 1};
+  const int n = int(std::floor(half / step));
+  for (int i = -n; i <= n; i++) {
+    for (int ax = 0; ax < 2 && scn->ngeom < scn->maxgeom; ax++) {
+      const double u = (ax ? cy : cx) + i * step;
+      mjtNum a[3], c[3];
+      a[ax] = c[ax] = u;
+      a[1 - ax] = (ax ? cx : cy) - half;
+      c[1 - ax] = (ax ? cx : cy) + half;
+      a[2] = c[2] = z + 1e-3 * half;
+      mjvGeom* l = scn->geoms + scn->ngeom++;
+      mjv_initGeom(l, mjGEOM_LINE, nullptr, nullptr, nullptr, grid);
+      mjv_makeConnector(l, mjGEOM_LINE, 2, a[0], a[1], a[2], c[0], c[1], c[2]);
+      l->category = mjCAT_DECOR;
+    }
+  }
+}
+
 void addLines(const mjbBuoy* b, const mjData* d, mjvScene* scn) {
   const int kMaxNodes = 1001;  // segments are at most 1000 (docs/mooring.md)
   static thread_local std::vector<mjtNum> p(3 * kMaxNodes);
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (int i = 0; i < mjb_lineCount(b); i++) {
     const int n = std::min(mjb_lineNodes(b, d, i, p.data(), kMaxNodes), kMaxNodes);
     double len = 0;
     for (int j = 1; j < n; j++) len += mju_dist3(&p[3 * j], &p[3 * j - 3]);
     const double r = std::max(0.05, 1e-3 * len);
+    for (int j = 0; j < n; j++) {
+      for (int k = 0; k < 2; k++) {
+        lo[k] = std::min(lo[k], double(p[3 * j + k]));
+        hi[k] = std::max(hi[k], double(p[3 * j + k]));
+      }
+    }
     for (int j = 1; j < n && scn->ngeom < scn->maxgeom; j++) {
       const mjtNum* a = &p[3 * j - 3];
       const mjtNum* c = &p[3 * j];
@@ -359,6 +401,7 @@ void addLines(const mjbBuoy* b, const mjData* d, mjvScene* scn) {
       g->category = mjCAT_DECOR;
     }
   }
+  addSeabed(b, lo, hi, scn);
 }
 
 // the bodies to frame: those mjbuoy pushes on (hull bodies, wet at the

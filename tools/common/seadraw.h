@@ -74,7 +74,9 @@ void addForceArrows(const mjModel* m, const mjbBuoy* b, const mjData* d, mjvScen
 
 // the mooring lines of d (mjb_lineNodes) added to scn: a dark capsule per
 // segment, as thick as a thousandth of the line's length (at least 5 cm)
-// so a chain shows at any zoom
+// so a chain shows at any zoom; and the seabed when the model has one
+// (mjb_seabed): a sand-coloured slab with a grid under the lines, 200 m
+// across the origin without lines
 void addLines(const mjbBuoy* b, const mjData* d, mjvScene* scn);
 
 // a free camera that frames all hull bodies from the south, 25 degrees
