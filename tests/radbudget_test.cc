@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "api/buoy.h"
+#include "hemisphere.h"
 #include "testutil.h"
 
 namespace mjbt {
@@ -152,6 +153,25 @@ TEST(RadBudget, LongShallowBoxGetsPanelsForItsDraft) {
   std::printf("[radbudget] 20 m box: heave period default %.4f s, converged %.4f s; B33 "
               "worst of the unrefined mesh %.1f%%\n", Td, Tf, 100 * rawErr);
   EXPECT_NEAR(Td, Tf, 0.05 * Tf);
+}
+
+TEST(RadBudget, CoarseningAHemisphereOnASlideAttaches) {
+  // an 8 x 24 hemisphere (R 1 m) on a slide joint under the default budget:
+  // the coarsening's later tries ask for more triangles than the mesh has,
+  // which the simplifier refuses by aborting the process; attach must
+  // succeed with the body's coefficients (the library never aborts)
+  std::string xml =
+      "<mujoco><asset>" + hemisphereMeshXML(hemisphereAreaScale(24), 8, 24, 0.3) +
+      "</asset><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
+      "<numeric name=\"mjbuoy.sea.density\" data=\"1025\"/>"
+      "<numeric name=\"mjbuoy.radiation.omega\" data=\"0.7 7 6\"/></custom>"
+      "<worldbody><body name=\"hemi\"><joint type=\"slide\" axis=\"1 0 0\" "
+      "stiffness=\"300\"/><inertial pos=\"0 0 -0.3\" mass=\"2146.8\" "
+      "diaginertia=\"858 858 858\"/><geom name=\"hull\" type=\"mesh\" mesh=\"hemi\" "
+      "contype=\"0\" conaffinity=\"0\"/></body></worldbody></mujoco>";
+  Scene s(xml);
+  ASSERT_TRUE(s.ok()) << s.err;
+  EXPECT_EQ(mjb::buoyOf(s.b)->coef.size(), 1u) << mjb_warnings(s.b);
 }
 
 }  // namespace

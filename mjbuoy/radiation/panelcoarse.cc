@@ -150,7 +150,8 @@ bool coarsenPanels(const float* vert, int nvert, const int* face, int nface, con
     // quadric collapse to a share of the target (target error 1: the
     // whole extent, i.e. the triangle count decides), then the longest
     // edges bisected up to the target
-    size_t tq = std::max(size_t(4), size_t(kShapeShare * target));
+    // (at most the mesh's own count: meshopt_simplify requires it)
+    size_t tq = std::min(ni / 3, std::max(size_t(4), size_t(kShapeShare * target)));
     size_t n = meshopt_simplify(out.data(), idx.data(), ni, pv.data(), nv, 3 * sizeof(float),
                                 3 * tq, 1.0f, 0, &err);
     bisectLongest(pv, out.data(), n / 3, target, &soup);
