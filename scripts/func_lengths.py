@@ -34,10 +34,8 @@ KNOWN = {
     ('mjbuoy/radiation/coefio_netcdf.cc', 'writeAll'),
     ('mjbuoy/radiation/panel.cc', 'panelSolve'),
     ('mjbuoy/radiation/panel.cc', 'solveOmega'),
-    ('mjbuoy/radiation/panelmesh.cc', 'hullPanels'),
     ('mjbuoy/radiation/radiation.cc', 'fitMemory'),
     ('mjbuoy/radiation/radiation.cc', 'setRadiation'),
-    ('mjbuoy/radiation/radstep.cc', 'radiationStep'),
 }
 
 
