@@ -34,8 +34,6 @@ KNOWN = {
     ('mjbuoy/radiation/coefio_netcdf.cc', 'writeAll'),
     ('mjbuoy/radiation/panel.cc', 'panelSolve'),
     ('mjbuoy/radiation/panel.cc', 'solveOmega'),
-    ('mjbuoy/radiation/radiation.cc', 'fitMemory'),
-    ('mjbuoy/radiation/radiation.cc', 'setRadiation'),
 }
 
 
