@@ -29,8 +29,6 @@ NAME = re.compile(r'([~\w:]+)\s*\(')
 KNOWN = {
     ('mjbuoy/api/radattach.cc', 'solveGroup'),
     ('mjbuoy/api/radattach.cc', 'attachGroups'),
-    ('mjbuoy/radiation/coefio_netcdf.cc', 'readAll'),
-    ('mjbuoy/radiation/coefio_netcdf.cc', 'writeAll'),
     ('mjbuoy/radiation/panel.cc', 'panelSolve'),
     ('mjbuoy/radiation/panel.cc', 'solveOmega'),
 }
