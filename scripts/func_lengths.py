@@ -27,17 +27,10 @@ HEAD = re.compile(r'^(?!(?:namespace|struct|class|enum|union|extern|typedef|usin
 NAME = re.compile(r'([~\w:]+)\s*\(')
 # the functions past the limit still to split; the list may only shrink
 KNOWN = {
-    ('mjbuoy/api/moorconfig.cc', 'parseMooring'),
     ('mjbuoy/api/radattach.cc', 'solveGroup'),
     ('mjbuoy/api/radattach.cc', 'attachGroups'),
-    ('mjbuoy/radiation/coefio_netcdf.cc', 'readAll'),
-    ('mjbuoy/radiation/coefio_netcdf.cc', 'writeAll'),
     ('mjbuoy/radiation/panel.cc', 'panelSolve'),
     ('mjbuoy/radiation/panel.cc', 'solveOmega'),
-    ('mjbuoy/radiation/panelmesh.cc', 'hullPanels'),
-    ('mjbuoy/radiation/radiation.cc', 'fitMemory'),
-    ('mjbuoy/radiation/radiation.cc', 'setRadiation'),
-    ('mjbuoy/radiation/radstep.cc', 'radiationStep'),
 }
 
 

@@ -220,6 +220,118 @@ std::vector<double> sitesAtRest(const mjModel* m) {
   return p;
 }
 
+// why line ln's entries are incomplete (type, its required fields, length, fairlead, one
+// anchor), or ""
+std::string lineInError(const std::string& ln, const LineIn& in,
+                        const std::map<std::string, LineType>& types,
+                        const std::map<std::string, std::vector<char>>& tset) {
+  const char* need[3] = {"mass", "diameter", "ea"};
+  const std::string at = "mjbuoy: " + lineWho(ln) + ": ";
+  const std::string ent = "mjbuoy.line." + ln;
+  if (in.type.empty()) {
+    return at + "no type; add <text name=\"" + ent + ".type\" data=\"<type>\"/> naming a "
+           "mjbuoy.linetype.<type>";
+  }
+  if (!types.count(in.type)) {
+    return at + "type \"" + in.type + "\" has no mjbuoy.linetype." + in.type +
+           ".* entries; define it (mass, diameter, ea at least) or fix the name";
+  }
+  for (int k = 0; k < 3; k++) {
+    if (!tset.at(in.type)[k]) {
+      return "mjbuoy: line type \"" + in.type + "\" has no " + need[k] + "; add <numeric "
+             "name=\"mjbuoy.linetype." + in.type + "." + need[k] + "\" data=\"" +
+             kTypeFields[k].example + "\"/> (" + kTypeFields[k].unit + ")";
+    }
+  }
+  if (!in.hasLen) {
+    return at + "no length; add <numeric name=\"" + ent + ".length\" data=\"250\"/> "
+           "(unstretched length, m, > 0)";
+  }
+  if (in.fairlead.empty()) {
+    return at + "no fairlead; add <text name=\"" + ent + ".fairlead\" data=\"<site>\"/>";
+  }
+  if (in.anchor.empty() == !in.hasAnchorP) {
+    return at + "give exactly one anchor: a site, <text name=\"" + ent +
+           ".anchor\" data=\"<site>\"/>, or a world point, <numeric name=\"" + ent +
+           ".anchor\" data=\"x y z\"/>";
+  }
+  return "";
+}
+
+// line ln from its checked entries: its type, length, segments, and its ends at the sites'
+// rest positions rest (m) or the anchor's world point; "" or the site's error
+std::string buildLine(const mjModel* m, const std::string& ln, const LineIn& in,
+                      const std::map<std::string, LineType>& types,
+                      const std::vector<double>& rest, MoorLine* L) {
+  L->line.name = ln;
+  L->line.t = types.at(in.type);
+  L->line.len = in.len;
+  L->line.nseg = in.nseg;
+  int id;
+  std::string e;
+  if (!in.anchor.empty()) {
+    e = site(m, ln, "anchor", in.anchor, &id);
+    if (!e.empty()) return e;
+    siteEnd(m, id, &L->end[0]);
+    for (int k = 0; k < 3; k++) L->end[0].p[k] = rest[3 * id + k];
+  } else {
+    for (int k = 0; k < 3; k++) L->end[0].p[k] = in.anchorP[k];
+  }
+  e = site(m, ln, "fairlead", in.fairlead, &id);
+  if (!e.empty()) return e;
+  siteEnd(m, id, &L->end[1]);
+  for (int k = 0; k < 3; k++) L->end[1].p[k] = rest[3 * id + k];
+  return "";
+}
+
+// the bed's height (m) and the sorted, unique bodies that line ends move with
+void placeBedAndBodies(const Sea& sea, Mooring* mo) {
+  // the bed: at the sea's depth; in a deep sea (no depth) at the lowest
+  // anchor that cannot move, and none when every anchor moves
+  double low = INFINITY;
+  for (const MoorLine& L : mo->line) {
+    if (!L.end[0].moves) low = std::fmin(low, L.end[0].p[2]);
+  }
+  if (sea.depth > 0) {
+    mo->bed.z = sea.level - sea.depth;
+  } else {
+    mo->defaultBed = true;
+    mo->bed.z = std::isfinite(low) ? low : -1e30;
+  }
+  for (const MoorLine& L : mo->line) {
+    for (const LineEnd& n : L.end) if (n.moves) mo->body.push_back(n.body);
+  }
+  std::sort(mo->body.begin(), mo->body.end());
+  mo->body.erase(std::unique(mo->body.begin(), mo->body.end()), mo->body.end());
+}
+
+// each line's derived quantities; an error for a fixed end below the bed, a warning for ends
+// farther apart than the line's length plus kOverStrain
+std::string deriveLines(const Sea& sea, Mooring* mo, std::vector<std::string>* warn) {
+  LineWater w = {&sea, &mo->bed, sea.level, 0};
+  for (MoorLine& L : mo->line) {
+    Line& l = L.line;
+    for (int k = 0; k < 2; k++) {
+      if (L.end[k].moves || L.end[k].p[2] >= mo->bed.z - 1e-6) continue;
+      return "mjbuoy: " + lineWho(l.name) + ": its " + (k ? "fairlead" : "anchor") +
+             " at z = " + fmt(L.end[k].p[2]) + " m is below the seabed at z = " +
+             fmt(mo->bed.z) + " m (mjbuoy.sea.level - mjbuoy.sea.depth); raise it or set "
+             "mjbuoy.sea.depth";
+    }
+    std::string e = lineDerive(w, &l);
+    if (!e.empty()) return e;
+    double span = 0;
+    for (int k = 0; k < 3; k++) span += std::pow(L.end[1].p[k] - L.end[0].p[k], 2);
+    span = std::sqrt(span);
+    if (span > (1 + kOverStrain) * l.len) {
+      warn->push_back("line \"" + l.name + "\": its ends are " + fmt(span) +
+                      " m apart at the model's rest pose, more than its length " + fmt(l.len) +
+                      " m plus " + fmt(100 * kOverStrain) + "%: it starts overloaded");
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 bool isMoorEntry(const char* key) {
@@ -249,97 +361,17 @@ std::string parseMooring(const mjModel* m, const Sea& sea, Mooring* mo,
   if (!e.empty()) return e;
   if (order.empty()) return "";
   std::vector<double> rest = sitesAtRest(m);
-  const char* need[3] = {"mass", "diameter", "ea"};
   for (const std::string& ln : order) {
     const LineIn& in = lines[ln];
-    const std::string at = "mjbuoy: " + lineWho(ln) + ": ";
-    const std::string ent = "mjbuoy.line." + ln;
-    if (in.type.empty()) {
-      return at + "no type; add <text name=\"" + ent + ".type\" data=\"<type>\"/> naming a "
-             "mjbuoy.linetype.<type>";
-    }
-    if (!types.count(in.type)) {
-      return at + "type \"" + in.type + "\" has no mjbuoy.linetype." + in.type +
-             ".* entries; define it (mass, diameter, ea at least) or fix the name";
-    }
-    for (int k = 0; k < 3; k++) {
-      if (!tset[in.type][k]) {
-        return "mjbuoy: line type \"" + in.type + "\" has no " + need[k] + "; add <numeric "
-               "name=\"mjbuoy.linetype." + in.type + "." + need[k] + "\" data=\"" +
-               kTypeFields[k].example + "\"/> (" + kTypeFields[k].unit + ")";
-      }
-    }
-    if (!in.hasLen) {
-      return at + "no length; add <numeric name=\"" + ent + ".length\" data=\"250\"/> "
-             "(unstretched length, m, > 0)";
-    }
-    if (in.fairlead.empty()) {
-      return at + "no fairlead; add <text name=\"" + ent + ".fairlead\" data=\"<site>\"/>";
-    }
-    if (in.anchor.empty() == !in.hasAnchorP) {
-      return at + "give exactly one anchor: a site, <text name=\"" + ent +
-             ".anchor\" data=\"<site>\"/>, or a world point, <numeric name=\"" + ent +
-             ".anchor\" data=\"x y z\"/>";
-    }
-    MoorLine L;
-    L.line.name = ln;
-    L.line.t = types[in.type];
-    L.line.len = in.len;
-    L.line.nseg = in.nseg;
-    int id;
-    if (!in.anchor.empty()) {
-      e = site(m, ln, "anchor", in.anchor, &id);
-      if (!e.empty()) return e;
-      siteEnd(m, id, &L.end[0]);
-      for (int k = 0; k < 3; k++) L.end[0].p[k] = rest[3 * id + k];
-    } else {
-      for (int k = 0; k < 3; k++) L.end[0].p[k] = in.anchorP[k];
-    }
-    e = site(m, ln, "fairlead", in.fairlead, &id);
+    e = lineInError(ln, in, types, tset);
     if (!e.empty()) return e;
-    siteEnd(m, id, &L.end[1]);
-    for (int k = 0; k < 3; k++) L.end[1].p[k] = rest[3 * id + k];
+    MoorLine L;
+    e = buildLine(m, ln, in, types, rest, &L);
+    if (!e.empty()) return e;
     mo->line.push_back(L);
   }
-  // the bed: at the sea's depth; in a deep sea (no depth) at the lowest
-  // anchor that cannot move, and none when every anchor moves
-  double low = INFINITY;
-  for (const MoorLine& L : mo->line) {
-    if (!L.end[0].moves) low = std::fmin(low, L.end[0].p[2]);
-  }
-  if (sea.depth > 0) {
-    mo->bed.z = sea.level - sea.depth;
-  } else {
-    mo->defaultBed = true;
-    mo->bed.z = std::isfinite(low) ? low : -1e30;
-  }
-  for (const MoorLine& L : mo->line) {
-    for (const LineEnd& n : L.end) if (n.moves) mo->body.push_back(n.body);
-  }
-  std::sort(mo->body.begin(), mo->body.end());
-  mo->body.erase(std::unique(mo->body.begin(), mo->body.end()), mo->body.end());
-  LineWater w = {&sea, &mo->bed, sea.level, 0};
-  for (MoorLine& L : mo->line) {
-    Line& l = L.line;
-    for (int k = 0; k < 2; k++) {
-      if (L.end[k].moves || L.end[k].p[2] >= mo->bed.z - 1e-6) continue;
-      return "mjbuoy: " + lineWho(l.name) + ": its " + (k ? "fairlead" : "anchor") +
-             " at z = " + fmt(L.end[k].p[2]) + " m is below the seabed at z = " +
-             fmt(mo->bed.z) + " m (mjbuoy.sea.level - mjbuoy.sea.depth); raise it or set "
-             "mjbuoy.sea.depth";
-    }
-    e = lineDerive(w, &l);
-    if (!e.empty()) return e;
-    double span = 0;
-    for (int k = 0; k < 3; k++) span += std::pow(L.end[1].p[k] - L.end[0].p[k], 2);
-    span = std::sqrt(span);
-    if (span > (1 + kOverStrain) * l.len) {
-      warn->push_back("line \"" + l.name + "\": its ends are " + fmt(span) +
-                      " m apart at the model's rest pose, more than its length " + fmt(l.len) +
-                      " m plus " + fmt(100 * kOverStrain) + "%: it starts overloaded");
-    }
-  }
-  return "";
+  placeBedAndBodies(sea, mo);
+  return deriveLines(sea, mo, warn);
 }
 
 }  // namespace mjb

@@ -124,107 +124,136 @@ static size_t flat(const NcVar& v, const int* ax, const size_t* idx, int n) {
   return f;
 }
 
-static std::string readAll(int id, const std::string& path, CoefFile* f) {
-  HydroCoef& c = f->c;
-  NcVar w, am, bd, dif, fk, hd, sc;
-  bool got, gotD, gotF;
-  std::string e = ncRead(id, path, "omega", &w, &got);
+// the variables of a Capytaine dataset that mjbuoy reads
+struct CapyVars {
+  NcVar w, am, bd, dif, fk, hd;
+  bool gotD = false, gotF = false;  // diffraction_force, Froude_Krylov_force found
+  bool gotDepth = false;            // water_depth found (the last variable looked up)
+};
+
+// the dataset's variables into v, and rho, g and the depth (m) into c; "" or the error
+static std::string readVars(int id, const std::string& path, CapyVars* v, HydroCoef* c) {
+  bool got;
+  std::string e = ncRead(id, path, "omega", &v->w, &got);
   if (e.empty() && !got)
     return "Capytaine file " + path + " has no omega coordinate (save the dataset with "
            "frequencies as omega)";
-  if (e.empty()) e = ncRead(id, path, "added_mass", &am, &got);
-  if (e.empty() && got) e = ncRead(id, path, "radiation_damping", &bd, &got);
+  if (e.empty()) e = ncRead(id, path, "added_mass", &v->am, &got);
+  if (e.empty() && got) e = ncRead(id, path, "radiation_damping", &v->bd, &got);
   if (e.empty() && !got)
     return "Capytaine file " + path + " has no added_mass or radiation_damping";
-  if (e.empty()) e = ncRead(id, path, "diffraction_force", &dif, &gotD);
-  if (e.empty()) e = ncRead(id, path, "Froude_Krylov_force", &fk, &gotF);
-  if (e.empty()) e = ncRead(id, path, "wave_direction", &hd, &got);
+  if (e.empty()) e = ncRead(id, path, "diffraction_force", &v->dif, &v->gotD);
+  if (e.empty()) e = ncRead(id, path, "Froude_Krylov_force", &v->fk, &v->gotF);
+  if (e.empty()) e = ncRead(id, path, "wave_direction", &v->hd, &got);
   if (!e.empty()) return e;
   for (const char* s : {"rho", "g"}) {
     NcVar x;
     e = ncRead(id, path, s, &x, &got);
     if (!e.empty()) return e;
-    if (got && x.v.size() == 1) (*s == 'r' ? c.rho : c.g) = x.v[0];
+    if (got && x.v.size() == 1) (*s == 'r' ? c->rho : c->g) = x.v[0];
   }
   NcVar dp;
   e = ncRead(id, path, "water_depth", &dp, &got);
-  if (got && dp.v.size() == 1 && std::isfinite(dp.v[0])) c.depth = dp.v[0];
+  if (got && dp.v.size() == 1 && std::isfinite(dp.v[0])) c->depth = dp.v[0];
+  v->gotDepth = got;
+  return "";
+}
+
+// added mass and damping over the finite frequencies > 0 (rows, ascending) and A_inf from an
+// infinite one; mr, mi: the modes of radiating_dof and influenced_dof
+static std::string readRadiation(int id, const std::string& path, const CapyVars& v,
+                                 CoefFile* f, std::vector<int>* mr, std::vector<int>* mi,
+                                 std::vector<size_t>* rows) {
+  HydroCoef& c = f->c;
+  const NcVar &w = v.w, &am = v.am, &bd = v.bd;
   int rw = am.axis("omega"), rr = am.axis("radiating_dof"), ri = am.axis("influenced_dof");
   if (rw < 0 || rr < 0 || ri < 0 || am.dim.size() != 3 || bd.dim != am.dim || bd.len != am.len)
     return "Capytaine file " + path + ": added_mass and radiation_damping must be over omega, "
            "radiating_dof and influenced_dof";
-  std::vector<int> mr, mi;
-  e = dofMap(id, path, "radiating_dof", am.len[rr], &mr);
-  if (e.empty()) e = dofMap(id, path, "influenced_dof", am.len[ri], &mi);
+  std::string e = dofMap(id, path, "radiating_dof", am.len[rr], mr);
+  if (e.empty()) e = dofMap(id, path, "influenced_dof", am.len[ri], mi);
   if (!e.empty()) return e;
   // frequencies: 0 left out, infinity is A_inf
-  std::vector<size_t> rows;
   for (size_t k = 0; k < w.v.size(); k++) {
     if (std::isinf(w.v[k])) {
-      for (size_t a = 0; a < mr.size(); a++)
-        for (size_t b = 0; b < mi.size(); b++) {
+      for (size_t a = 0; a < mr->size(); a++)
+        for (size_t b = 0; b < mi->size(); b++) {
           int ax[3] = {rw, rr, ri};
           size_t idx[3] = {k, a, b};
-          c.Ainf[6 * mi[b] + mr[a]] = am.v[flat(am, ax, idx, 3)];
+          c.Ainf[6 * (*mi)[b] + (*mr)[a]] = am.v[flat(am, ax, idx, 3)];
         }
       f->hasAinf = true;
     } else if (w.v[k] > 0) {
-      rows.push_back(k);
+      rows->push_back(k);
     }
   }
-  std::sort(rows.begin(), rows.end(), [&](size_t a, size_t b) { return w.v[a] < w.v[b]; });
-  for (size_t r : rows) c.omega.push_back(w.v[r]);
-  c.A.assign(36 * rows.size(), 0);
-  c.B.assign(36 * rows.size(), 0);
-  for (size_t q = 0; q < rows.size(); q++)
-    for (size_t a = 0; a < mr.size(); a++)
-      for (size_t b = 0; b < mi.size(); b++) {
+  std::sort(rows->begin(), rows->end(), [&](size_t a, size_t b) { return w.v[a] < w.v[b]; });
+  for (size_t r : *rows) c.omega.push_back(w.v[r]);
+  c.A.assign(36 * rows->size(), 0);
+  c.B.assign(36 * rows->size(), 0);
+  for (size_t q = 0; q < rows->size(); q++)
+    for (size_t a = 0; a < mr->size(); a++)
+      for (size_t b = 0; b < mi->size(); b++) {
         int ax[3] = {rw, rr, ri};
-        size_t idx[3] = {rows[q], a, b};
+        size_t idx[3] = {(*rows)[q], a, b};
         size_t s = flat(am, ax, idx, 3);
-        c.A[36 * q + 6 * mi[b] + mr[a]] = am.v[s];
-        c.B[36 * q + 6 * mi[b] + mr[a]] = bd.v[s];
+        c.A[36 * q + 6 * (*mi)[b] + (*mr)[a]] = am.v[s];
+        c.B[36 * q + 6 * (*mi)[b] + (*mr)[a]] = bd.v[s];
       }
-  if (!gotD && !gotF) return "";
-  if (!gotD || !gotF || !got)
+  return "";
+}
+
+// the exciting force X = F_K + F_D and its Froude-Krylov part over rows, headings and mi
+static std::string readExciting(int id, const std::string& path, const CapyVars& v,
+                                const std::vector<size_t>& rows, const std::vector<int>& mi,
+                                CoefFile* f) {
+  HydroCoef& c = f->c;
+  if (!v.gotD || !v.gotF || !v.gotDepth)
     return "Capytaine file " + path + ": an exciting force needs diffraction_force, "
            "Froude_Krylov_force and wave_direction together";
   std::vector<std::string> cx = ncStrings(id, "complex");
   int re = 0, im = 1;
   if (cx.size() == 2 && cx[0] == "im" && cx[1] == "re") re = 1, im = 0;
-  for (NcVar* v : {&dif, &fk}) {
-    int xw = v->axis("omega"), xh = v->axis("wave_direction"), xi = v->axis("influenced_dof"),
-        xc = v->axis("complex");
-    if (xw < 0 || xh < 0 || xi < 0 || xc < 0 || v->dim.size() != 4 || v->len[xi] != mi.size() ||
-        v->len[xc] != 2 || v->len[xw] != w.v.size())
+  for (const NcVar* x : {&v.dif, &v.fk}) {
+    int xw = x->axis("omega"), xh = x->axis("wave_direction"), xi = x->axis("influenced_dof"),
+        xc = x->axis("complex");
+    if (xw < 0 || xh < 0 || xi < 0 || xc < 0 || x->dim.size() != 4 || x->len[xi] != mi.size() ||
+        x->len[xc] != 2 || x->len[xw] != v.w.v.size())
       return "Capytaine file " + path + ": diffraction_force and Froude_Krylov_force must be "
              "over omega, wave_direction, influenced_dof and complex (saved with complex "
              "values separated)";
   }
-  c.heading = hd.v;
-  size_t nh = hd.v.size(), nx = 6 * rows.size() * nh;
+  c.heading = v.hd.v;
+  size_t nh = v.hd.v.size(), nx = 6 * rows.size() * nh;
   for (auto* x : {&c.Xre, &c.Xim, &c.FKre, &c.FKim}) x->assign(nx, 0);
   for (size_t q = 0; q < rows.size(); q++)
     for (size_t h = 0; h < nh; h++)
       for (size_t b = 0; b < mi.size(); b++) {
         size_t o = 6 * (q * nh + h) + mi[b];
         double part[2][2];
-        const NcVar* vs[2] = {&fk, &dif};
+        const NcVar* vs[2] = {&v.fk, &v.dif};
         for (int s = 0; s < 2; s++) {
-          const NcVar& v = *vs[s];
-          int ax[4] = {v.axis("omega"), v.axis("wave_direction"), v.axis("influenced_dof"),
-                       v.axis("complex")};
+          const NcVar& x = *vs[s];
+          int ax[4] = {x.axis("omega"), x.axis("wave_direction"), x.axis("influenced_dof"),
+                       x.axis("complex")};
           for (int k = 0; k < 2; k++) {
             size_t idx[4] = {rows[q], h, b, (size_t)(k ? im : re)};
-            part[s][k] = v.v[flat(v, ax, idx, 4)];
+            part[s][k] = x.v[flat(x, ax, idx, 4)];
           }
         }
         c.FKre[o] = part[0][0], c.FKim[o] = part[0][1];
         c.Xre[o] = part[0][0] + part[1][0], c.Xim[o] = part[0][1] + part[1][1];
       }
   f->hasX = f->hasFK = true;
+  return "";
+}
+
+// the hydrostatic stiffness C (N/m, N, N m) if the dataset has one over mi and mr
+static std::string readStiffness(int id, const std::string& path, const std::vector<int>& mr,
+                                 const std::vector<int>& mi, CoefFile* f) {
   NcVar hs;
-  e = ncRead(id, path, "hydrostatic_stiffness", &hs, &got);
+  bool got;
+  std::string e = ncRead(id, path, "hydrostatic_stiffness", &hs, &got);
   if (e.empty() && got && hs.v.size() == mi.size() * mr.size()) {
     int a0 = hs.axis("influenced_dof"), a1 = hs.axis("radiating_dof");
     for (size_t a = 0; a0 >= 0 && a1 >= 0 && a < mi.size(); a++)
@@ -238,6 +267,20 @@ static std::string readAll(int id, const std::string& path, CoefFile* f) {
   return e;
 }
 
+static std::string readAll(int id, const std::string& path, CoefFile* f) {
+  CapyVars v;
+  std::string e = readVars(id, path, &v, &f->c);
+  if (!e.empty()) return e;
+  std::vector<int> mr, mi;
+  std::vector<size_t> rows;
+  e = readRadiation(id, path, v, f, &mr, &mi, &rows);
+  if (!e.empty()) return e;
+  if (!v.gotD && !v.gotF) return "";
+  e = readExciting(id, path, v, rows, mi, f);
+  if (!e.empty()) return e;
+  return readStiffness(id, path, mr, mi, f);
+}
+
 std::string readCapytaine(const std::string& path, CoefFile* f) {
   int id, st = nc_open(path.c_str(), NC_NOWRITE, &id);
   if (st != NC_NOERR) return ncErr(path, "cannot open", st);
@@ -246,14 +289,17 @@ std::string readCapytaine(const std::string& path, CoefFile* f) {
   return e;
 }
 
-// the dataset of f into the open file id
-static int writeAll(int id, const CoefFile& f) {
-  const HydroCoef& c = f.c;
-  size_t nw = c.omega.size() + (f.hasAinf ? 1 : 0), nh = f.hasX ? c.nh() : 0;
-  int dw, dh = -1, dr, di, dc = -1, st;
+// the variable ids of a dataset being written (-1: not in it)
+struct NcIds {
   int vw, vh = -1, vr, vi, vc = -1, va, vb, vd = -1, vf = -1, vg, vrho, vdep, vs = -1;
+};
+
 #define NC(x) \
   if ((st = (x)) != NC_NOERR) return st
+
+// the global attributes, dimensions and variables of f's dataset (define mode), ids into v
+static int defineDataset(int id, const CoefFile& f, size_t nw, size_t nh, NcIds* v) {
+  int dw, dh = -1, dr, di, dc = -1, st;
   NC(nc_put_att_text(id, NC_GLOBAL, "source", 6, "mjbuoy"));
   const char* conv = "Capytaine's conventions: SI units, time dependence e^{-i omega t}, "
                      "forces about the body frame's origin";
@@ -261,36 +307,43 @@ static int writeAll(int id, const CoefFile& f) {
   NC(nc_def_dim(id, "omega", nw, &dw));
   NC(nc_def_dim(id, "radiating_dof", 6, &dr));
   NC(nc_def_dim(id, "influenced_dof", 6, &di));
-  NC(nc_def_var(id, "omega", NC_DOUBLE, 1, &dw, &vw));
-  NC(nc_def_var(id, "radiating_dof", NC_STRING, 1, &dr, &vr));
-  NC(nc_def_var(id, "influenced_dof", NC_STRING, 1, &di, &vi));
+  NC(nc_def_var(id, "omega", NC_DOUBLE, 1, &dw, &v->vw));
+  NC(nc_def_var(id, "radiating_dof", NC_STRING, 1, &dr, &v->vr));
+  NC(nc_def_var(id, "influenced_dof", NC_STRING, 1, &di, &v->vi));
   int d3[3] = {dw, dr, di};
-  NC(nc_def_var(id, "added_mass", NC_DOUBLE, 3, d3, &va));
-  NC(nc_def_var(id, "radiation_damping", NC_DOUBLE, 3, d3, &vb));
+  NC(nc_def_var(id, "added_mass", NC_DOUBLE, 3, d3, &v->va));
+  NC(nc_def_var(id, "radiation_damping", NC_DOUBLE, 3, d3, &v->vb));
   if (nh) {
     NC(nc_def_dim(id, "wave_direction", nh, &dh));
     NC(nc_def_dim(id, "complex", 2, &dc));
-    NC(nc_def_var(id, "wave_direction", NC_DOUBLE, 1, &dh, &vh));
-    NC(nc_def_var(id, "complex", NC_STRING, 1, &dc, &vc));
+    NC(nc_def_var(id, "wave_direction", NC_DOUBLE, 1, &dh, &v->vh));
+    NC(nc_def_var(id, "complex", NC_STRING, 1, &dc, &v->vc));
     int d4[4] = {dw, dh, di, dc};
-    NC(nc_def_var(id, "diffraction_force", NC_DOUBLE, 4, d4, &vd));
-    NC(nc_def_var(id, "Froude_Krylov_force", NC_DOUBLE, 4, d4, &vf));
+    NC(nc_def_var(id, "diffraction_force", NC_DOUBLE, 4, d4, &v->vd));
+    NC(nc_def_var(id, "Froude_Krylov_force", NC_DOUBLE, 4, d4, &v->vf));
   }
   if (f.hasC) {
     int d2[2] = {di, dr};
-    NC(nc_def_var(id, "hydrostatic_stiffness", NC_DOUBLE, 2, d2, &vs));
+    NC(nc_def_var(id, "hydrostatic_stiffness", NC_DOUBLE, 2, d2, &v->vs));
   }
-  NC(nc_def_var(id, "g", NC_DOUBLE, 0, nullptr, &vg));
-  NC(nc_def_var(id, "rho", NC_DOUBLE, 0, nullptr, &vrho));
-  NC(nc_def_var(id, "water_depth", NC_DOUBLE, 0, nullptr, &vdep));
+  NC(nc_def_var(id, "g", NC_DOUBLE, 0, nullptr, &v->vg));
+  NC(nc_def_var(id, "rho", NC_DOUBLE, 0, nullptr, &v->vrho));
+  NC(nc_def_var(id, "water_depth", NC_DOUBLE, 0, nullptr, &v->vdep));
   NC(nc_enddef(id));
+  return NC_NOERR;
+}
+
+// omega (infinity last for A_inf), the dof names, added mass and damping over nw frequencies
+static int putRadiation(int id, const CoefFile& f, size_t nw, const NcIds& v) {
+  const HydroCoef& c = f.c;
+  int st;
   std::vector<double> w = c.omega, a, b;
   if (f.hasAinf) w.push_back(std::numeric_limits<double>::infinity());
-  NC(nc_put_var_double(id, vw, w.data()));
+  NC(nc_put_var_double(id, v.vw, w.data()));
   const char* dn[6];
   for (int i = 0; i < 6; i++) dn[i] = kDofName[i];
-  NC(nc_put_var_string(id, vr, dn));
-  NC(nc_put_var_string(id, vi, dn));
+  NC(nc_put_var_string(id, v.vr, dn));
+  NC(nc_put_var_string(id, v.vi, dn));
   // (omega, radiating j, influenced i) = mjbuoy's [6 i + j]
   for (size_t q = 0; q < nw; q++)
     for (int j = 0; j < 6; j++)
@@ -299,37 +352,55 @@ static int writeAll(int id, const CoefFile& f) {
         a.push_back(inf ? c.Ainf[6 * i + j] : c.A[36 * q + 6 * i + j]);
         b.push_back(inf ? 0 : c.B[36 * q + 6 * i + j]);
       }
-  NC(nc_put_var_double(id, va, a.data()));
-  NC(nc_put_var_double(id, vb, b.data()));
-  if (nh) {
-    NC(nc_put_var_double(id, vh, c.heading.data()));
-    const char* ri[2] = {"re", "im"};
-    NC(nc_put_var_string(id, vc, ri));
-    std::vector<double> xd, xf;
-    for (size_t q = 0; q < nw; q++)
-      for (size_t h = 0; h < nh; h++)
-        for (int i = 0; i < 6; i++) {
-          if (q == c.omega.size()) {  // no exciting force at infinite frequency
-            for (auto* x : {&xd, &xd, &xf, &xf}) x->push_back(NAN);
-            continue;
-          }
-          size_t o = 6 * (q * nh + h) + i;
-          xd.push_back(c.Xre[o] - c.FKre[o]);
-          xd.push_back(c.Xim[o] - c.FKim[o]);
-          xf.push_back(c.FKre[o]);
-          xf.push_back(c.FKim[o]);
-        }
-    NC(nc_put_var_double(id, vd, xd.data()));
-    NC(nc_put_var_double(id, vf, xf.data()));
-  }
-  if (f.hasC) NC(nc_put_var_double(id, vs, f.C));
-  double inf = std::numeric_limits<double>::infinity();
-  NC(nc_put_var_double(id, vg, &c.g));
-  NC(nc_put_var_double(id, vrho, &c.rho));
-  NC(nc_put_var_double(id, vdep, c.depth > 0 ? &c.depth : &inf));
-#undef NC
+  NC(nc_put_var_double(id, v.va, a.data()));
+  NC(nc_put_var_double(id, v.vb, b.data()));
   return NC_NOERR;
 }
+
+// the headings and the exciting force split as Capytaine's: diffraction X - F_K and
+// Froude-Krylov F_K, NaN at the infinite frequency
+static int putExciting(int id, const HydroCoef& c, size_t nw, size_t nh, const NcIds& v) {
+  int st;
+  NC(nc_put_var_double(id, v.vh, c.heading.data()));
+  const char* ri[2] = {"re", "im"};
+  NC(nc_put_var_string(id, v.vc, ri));
+  std::vector<double> xd, xf;
+  for (size_t q = 0; q < nw; q++)
+    for (size_t h = 0; h < nh; h++)
+      for (int i = 0; i < 6; i++) {
+        if (q == c.omega.size()) {  // no exciting force at infinite frequency
+          for (auto* x : {&xd, &xd, &xf, &xf}) x->push_back(NAN);
+          continue;
+        }
+        size_t o = 6 * (q * nh + h) + i;
+        xd.push_back(c.Xre[o] - c.FKre[o]);
+        xd.push_back(c.Xim[o] - c.FKim[o]);
+        xf.push_back(c.FKre[o]);
+        xf.push_back(c.FKim[o]);
+      }
+  NC(nc_put_var_double(id, v.vd, xd.data()));
+  NC(nc_put_var_double(id, v.vf, xf.data()));
+  return NC_NOERR;
+}
+
+// the dataset of f into the open file id
+static int writeAll(int id, const CoefFile& f) {
+  const HydroCoef& c = f.c;
+  size_t nw = c.omega.size() + (f.hasAinf ? 1 : 0), nh = f.hasX ? c.nh() : 0;
+  int st;
+  NcIds v;
+  NC(defineDataset(id, f, nw, nh, &v));
+  NC(putRadiation(id, f, nw, v));
+  if (nh) NC(putExciting(id, c, nw, nh, v));
+  if (f.hasC) NC(nc_put_var_double(id, v.vs, f.C));
+  double inf = std::numeric_limits<double>::infinity();
+  NC(nc_put_var_double(id, v.vg, &c.g));
+  NC(nc_put_var_double(id, v.vrho, &c.rho));
+  NC(nc_put_var_double(id, v.vdep, c.depth > 0 ? &c.depth : &inf));
+  return NC_NOERR;
+}
+
+#undef NC
 
 std::string writeCapytaine(const std::string& path, const CoefFile& f) {
   AtomicPath ap(path);

@@ -175,21 +175,11 @@ void addRefined(PanelMesh* m, const double (*p)[3], int n, int level) {
   }
 }
 
-}  // namespace
-
-bool hullPanels(const float* vert, int nvert, const int* face, int nface, const double pos[3],
-                const double quat[4], int refine, PanelMesh* body, PanelMesh* lid, std::string* note) {
-  body->vert.clear();
-  body->face.clear();
-  lid->vert.clear();
-  lid->face.clear();
-  note->clear();
+// the vertices rotated by quat and raised by pos[2] (m), those within eps of z = 0 snapped
+// onto it; false with a note if the pose or a vertex is not finite
+bool posedVerts(const float* vert, int nvert, const double pos[3], const double quat[4],
+                std::vector<double>* out, double* epsOut, std::string* note) {
   char b[240];
-  if (refine < 0 || refine > 4) {
-    std::snprintf(b, sizeof b, "hull panels: refine = %d, accepted 0..4", refine);
-    *note = b;
-    return false;
-  }
   // rotation of the body frame (unit quaternion w, x, y, z)
   double w = quat[0], x = quat[1], y = quat[2], z = quat[3];
   double qn = std::sqrt(w * w + x * x + y * y + z * z);
@@ -202,7 +192,8 @@ bool hullPanels(const float* vert, int nvert, const int* face, int nface, const 
                        2 * (x * y + w * z),     1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
                        2 * (x * z - w * y),     2 * (y * z + w * x),     1 - 2 * (x * x + y * y)};
   double scale = 0;
-  std::vector<double> v(3 * nvert);
+  std::vector<double>& v = *out;
+  v.assign(3 * nvert, 0.0);
   for (int i = 0; i < nvert; i++) {
     for (int r = 0; r < 3; r++) {
       v[3 * i + r] = R[3 * r] * vert[3 * i] + R[3 * r + 1] * vert[3 * i + 1] + R[3 * r + 2] * vert[3 * i + 2];
@@ -218,9 +209,15 @@ bool hullPanels(const float* vert, int nvert, const int* face, int nface, const 
   double eps = 1e-9 * (1 + scale);
   for (int i = 0; i < nvert; i++)
     if (std::fabs(v[3 * i + 2]) < eps) v[3 * i + 2] = 0;
-  // clip each triangle to z <= 0 (Sutherland-Hodgman against one plane);
-  // the clipped edges on z = 0 are the waterline segments
-  std::vector<double> seg;  // 6 per segment, in the triangle's order
+  *epsOut = eps;
+  return true;
+}
+
+// clips each triangle to z <= 0 (Sutherland-Hodgman against one plane) into body, refined;
+// the clipped edges on z = 0 are the waterline segments, 6 numbers each, in seg
+bool clipBelow(const std::vector<double>& v, int nvert, const int* face, int nface, double eps,
+               int refine, PanelMesh* body, std::vector<double>* seg, std::string* note) {
+  char b[240];
   for (int f = 0; f < nface; f++) {
     const int* t = face + 3 * f;
     for (int k = 0; k < 3; k++)
@@ -252,7 +249,7 @@ bool hullPanels(const float* vert, int nvert, const int* face, int nface, const 
       const double* a = p[k];
       const double* c = p[(k + 1) % n];
       if (a[2] == 0 && c[2] == 0 && (a[0] != c[0] || a[1] != c[1]))
-        seg.insert(seg.end(), {a[0], a[1], 0.0, c[0], c[1], 0.0});
+        seg->insert(seg->end(), {a[0], a[1], 0.0, c[0], c[1], 0.0});
     }
     double e1[3], e2[3];
     for (int d = 0; d < 3; d++) {
@@ -263,11 +260,12 @@ bool hullPanels(const float* vert, int nvert, const int* face, int nface, const 
     if (std::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]) < eps * eps) continue;  // sliver
     addRefined(body, p, n, refine);
   }
-  if (body->face.empty()) {
-    *note = "hull panels: no triangle is below the mean free surface at this pose";
-    return false;
-  }
-  // lid: fan of the waterline segments about the waterplane centroid
+  return true;
+}
+
+// lid: fan of the waterline segments about the waterplane centroid; a note when there is none
+void waterplaneLid(const std::vector<double>& seg, double eps, int refine, PanelMesh* lid,
+                   std::string* note) {
   int ns = (int)seg.size() / 6;
   double area = 0, cx = 0, cy = 0;
   for (int s = 0; s < ns; s++) {
@@ -279,7 +277,7 @@ bool hullPanels(const float* vert, int nvert, const int* face, int nface, const 
   }
   if (ns < 3 || std::fabs(area) < eps * eps) {
     *note = "hull panels: no waterplane (the hull does not pierce the surface); no lid";
-    return true;
+    return;
   }
   cx /= area, cy /= area;
   for (int s = 0; s < ns; s++) {
@@ -287,7 +285,7 @@ bool hullPanels(const float* vert, int nvert, const int* face, int nface, const 
     double cr = (a[0] - cx) * (a[4] - cy) - (a[3] - cx) * (a[1] - cy);
     if (cr * area < -eps * eps) {
       *note = "hull panels: the waterplane is not star-shaped about its centroid (several hulls?); no lid";
-      return true;
+      return;
     }
   }
   for (int s = 0; s < ns; s++) {
@@ -297,6 +295,33 @@ bool hullPanels(const float* vert, int nvert, const int* face, int nface, const 
     double q[3][3] = {{cx, cy, 0}, {a[0], a[1], 0}, {a[3], a[4], 0}};
     addRefined(lid, q, 3, refine);
   }
+}
+
+}  // namespace
+
+bool hullPanels(const float* vert, int nvert, const int* face, int nface, const double pos[3],
+                const double quat[4], int refine, PanelMesh* body, PanelMesh* lid, std::string* note) {
+  body->vert.clear();
+  body->face.clear();
+  lid->vert.clear();
+  lid->face.clear();
+  note->clear();
+  char b[240];
+  if (refine < 0 || refine > 4) {
+    std::snprintf(b, sizeof b, "hull panels: refine = %d, accepted 0..4", refine);
+    *note = b;
+    return false;
+  }
+  std::vector<double> v;
+  double eps = 0;
+  if (!posedVerts(vert, nvert, pos, quat, &v, &eps, note)) return false;
+  std::vector<double> seg;  // 6 per segment, in the triangle's order
+  if (!clipBelow(v, nvert, face, nface, eps, refine, body, &seg, note)) return false;
+  if (body->face.empty()) {
+    *note = "hull panels: no triangle is below the mean free surface at this pose";
+    return false;
+  }
+  waterplaneLid(seg, eps, refine, lid, note);
   return true;
 }
 

@@ -183,6 +183,96 @@ std::string memoryCost(const HydroCoef& c, double tmem, double dt, const char* n
   return e;
 }
 
+// the index of o's pair whose K is the same as rb's pair p (samples alike), or -1
+int samePair(const RadBody& o, const RadBody& rb, size_t p) {
+  const int nk = rb.nk;
+  if (o.K.size() != o.pair.size() * size_t(o.nk)) return -1;  // a twin: its source is in done
+  for (size_t q = 0; q < o.pair.size(); q++)
+    if (o.nk == nk && std::equal(o.K.begin() + q * nk, o.K.begin() + (q + 1) * nk,
+                                 rb.K.begin() + p * nk))
+      return int(q);
+  return -1;
+}
+
+// pair p's fit copied from an identical K fitted before: an earlier pair of rb, or a pair of a
+// body in done (its modes, in o.ss order, back to poles at step dt); false if there is none
+bool reuseFit(const RadBody& rb, size_t p, const std::vector<RadBody>& done, double dt,
+              std::vector<KFit>* fit) {
+  const int nk = rb.nk;
+  bool found = false;
+  for (size_t q = 0; q < p && !found; q++)
+    if (std::equal(rb.K.begin() + q * nk, rb.K.begin() + (q + 1) * nk, rb.K.begin() + p * nk))
+      (*fit)[p] = (*fit)[q], found = true;
+  for (const RadBody& o : done) {
+    if (found) break;
+    if (o.ss.size() == 0) continue;
+    const int q = samePair(o, rb, p);
+    if (q < 0) continue;
+    // o's modes of pair q, in o.ss order
+    const int oi = o.pair[q] / 6, oj = o.pair[q] % 6;
+    for (int r = 0; r < o.ss.size(); r++) {
+      if (o.ss.i[r] != oi || o.ss.j[r] != oj) continue;
+      (*fit)[p].p.push_back(std::log(o.ss.lam[r]) / dt);
+      (*fit)[p].c.push_back(o.ss.c[r]);
+    }
+    found = true;
+  }
+  return found;
+}
+
+// the fit's scales of pair (i, j): sT for K (L2) and sB for B (peak)
+void pairScales(const HydroCoef& c, const RadBody& rb, int i, int j, double* sT, double* sB) {
+  const int nk = rb.nk;
+  // the pair's scale sqrt(S_i S_j), S_d dof d's own diagonal K (L2) and
+  // B (peak), but at least kFitNoise of the largest diagonal of d's kind
+  // (translation or rotation, the same units): each diagonal is held to
+  // its own size (a slender hull's roll damping is 1e-3 of its yaw
+  // damping and decides the roll decay), a coupling to the size at which
+  // B stays positive semi-definite (|B_ij| <= sqrt(B_ii B_jj)), and only a
+  // diagonal that is noise (yaw of a body of revolution) to the floor
+  double D[6][2] = {}, S[2][2] = {};  // [dof or kind][L2 of K, peak B]
+  for (size_t q = 0; q < rb.pair.size(); q++) {
+    const int d = rb.pair[q] / 6;
+    if (rb.pair[q] != 7 * d) continue;
+    double n2 = 0;
+    for (int k = 0; k < nk; k++) n2 += rb.K[q * nk + k] * rb.K[q * nk + k];
+    D[d][0] = std::sqrt(n2);
+    D[d][1] = maxAbs(c.B, d, d);
+    for (int e = 0; e < 2; e++) S[d / 3][e] = std::max(S[d / 3][e], D[d][e]);
+  }
+  double E[2][2];
+  for (int e = 0; e < 2; e++) {
+    E[0][e] = std::max(D[i][e], kFitNoise * S[i / 3][e]);
+    E[1][e] = std::max(D[j][e], kFitNoise * S[j / 3][e]);
+  }
+  *sT = std::sqrt(E[0][0] * E[1][0]);
+  *sB = std::sqrt(E[0][1] * E[1][1]);
+}
+
+// a fit of K_ij that missed the tolerances: kept with a warning if resampled (hk != dt) and
+// within 3 times them (true), else a note that the memory is the convolution (false)
+bool keepLooseFit(const KFit& fit, double hk, double dt, const char* name, int i, int j,
+                  std::vector<std::string>* note, std::vector<std::string>* warn) {
+  char e[512];
+  if (hk != dt && !fit.p.empty() && fit.errT <= 3 * kFitTolT && fit.errF <= 3 * kFitTolF) {
+    std::snprintf(e, sizeof(e), "radiation: body \"%s\": K_%d%d(t) fitted within %.3g%% "
+                  "(L2 in time) and %.3g%% (B, A), above the tolerances %g%% and %g%%; kept, "
+                  "since at opt.timestep = %g s the convolution would pass %d samples (docs/"
+                  "physics.md section 14, \"Small timesteps\")", name, i + 1, j + 1,
+                  100 * fit.errT, 100 * fit.errF, 100 * kFitTolT, 100 * kFitTolF, dt,
+                  kMaxKernelSamples);
+    warn->push_back(e);
+    return true;
+  }
+  std::snprintf(e, sizeof(e), "radiation: body \"%s\": no fit of K_%d%d(t) by up to %d damped "
+                "exponentials within %g%% (L2 in time) and %g%% (B, A at the table's "
+                "frequencies); best %.3g%%, %.3g%%; its memory is the convolution (docs/physics.md "
+                "section 14)", name, i + 1, j + 1, kFitMaxOrder, 100 * kFitTolT, 100 * kFitTolF,
+                100 * fit.errT, 100 * fit.errF);
+  note->push_back(e);
+  return false;
+}
+
 // rb's memory as a state-space model (docs/physics.md section 14,
 // "State-space memory"): each pair's K fitted, or copied from an identical
 // K fitted before (the transposed pair, another body with the same
@@ -196,81 +286,14 @@ void fitMemory(const HydroCoef& c, double hk, double dt, const std::vector<RadBo
                std::vector<std::string>* warn) {
   rb->ss = SsModes();
   const int nk = rb->nk;
-  auto same = [&](const RadBody& o, int p) {
-    if (o.K.size() != o.pair.size() * size_t(o.nk)) return -1;  // a twin: its source is in done
-    for (size_t q = 0; q < o.pair.size(); q++)
-      if (o.nk == nk && std::equal(o.K.begin() + q * nk, o.K.begin() + (q + 1) * nk,
-                                   rb->K.begin() + p * nk))
-        return int(q);
-    return -1;
-  };
   std::vector<KFit> fit(rb->pair.size());
   for (size_t p = 0; p < rb->pair.size(); p++) {
     const int i = rb->pair[p] / 6, j = rb->pair[p] % 6;
-    bool found = false;
-    for (size_t q = 0; q < p && !found; q++)
-      if (std::equal(rb->K.begin() + q * nk, rb->K.begin() + (q + 1) * nk, rb->K.begin() + p * nk))
-        fit[p] = fit[q], found = true;
-    for (const RadBody& o : done) {
-      if (found) break;
-      if (o.ss.size() == 0) continue;
-      const int q = same(o, p);
-      if (q < 0) continue;
-      // o's modes of pair q, in o.ss order
-      const int oi = o.pair[q] / 6, oj = o.pair[q] % 6;
-      for (int r = 0; r < o.ss.size(); r++) {
-        if (o.ss.i[r] != oi || o.ss.j[r] != oj) continue;
-        fit[p].p.push_back(std::log(o.ss.lam[r]) / dt);
-        fit[p].c.push_back(o.ss.c[r]);
-      }
-      found = true;
-    }
-    // the pair's scale sqrt(S_i S_j), S_d dof d's own diagonal K (L2) and
-    // B (peak), but at least kFitNoise of the largest diagonal of d's kind
-    // (translation or rotation, the same units): each diagonal is held to
-    // its own size (a slender hull's roll damping is 1e-3 of its yaw
-    // damping and decides the roll decay), a coupling to the size at which
-    // B stays positive semi-definite (|B_ij| <= sqrt(B_ii B_jj)), and only a
-    // diagonal that is noise (yaw of a body of revolution) to the floor
+    const bool found = reuseFit(*rb, p, done, dt, &fit);
     double sT = 0, sB = 0;
-    {
-      double D[6][2] = {}, S[2][2] = {};  // [dof or kind][L2 of K, peak B]
-      for (size_t q = 0; q < rb->pair.size(); q++) {
-        const int d = rb->pair[q] / 6;
-        if (rb->pair[q] != 7 * d) continue;
-        double n2 = 0;
-        for (int k = 0; k < nk; k++) n2 += rb->K[q * nk + k] * rb->K[q * nk + k];
-        D[d][0] = std::sqrt(n2);
-        D[d][1] = maxAbs(c.B, d, d);
-        for (int e = 0; e < 2; e++) S[d / 3][e] = std::max(S[d / 3][e], D[d][e]);
-      }
-      double E[2][2];
-      for (int e = 0; e < 2; e++) {
-        E[0][e] = std::max(D[i][e], kFitNoise * S[i / 3][e]);
-        E[1][e] = std::max(D[j][e], kFitNoise * S[j / 3][e]);
-      }
-      sT = std::sqrt(E[0][0] * E[1][0]);
-      sB = std::sqrt(E[0][1] * E[1][1]);
-    }
+    pairScales(c, *rb, i, j, &sT, &sB);
     if (!found && !fitKernel(rb->K.data() + p * nk, nk, hk, c.omega, sT, sB, &fit[p])) {
-      char e[512];
-      if (hk != dt && !fit[p].p.empty() && fit[p].errT <= 3 * kFitTolT &&
-          fit[p].errF <= 3 * kFitTolF) {
-        std::snprintf(e, sizeof(e), "radiation: body \"%s\": K_%d%d(t) fitted within %.3g%% "
-                      "(L2 in time) and %.3g%% (B, A), above the tolerances %g%% and %g%%; kept, "
-                      "since at opt.timestep = %g s the convolution would pass %d samples (docs/"
-                      "physics.md section 14, \"Small timesteps\")", name, i + 1, j + 1,
-                      100 * fit[p].errT, 100 * fit[p].errF, 100 * kFitTolT, 100 * kFitTolF, dt,
-                      kMaxKernelSamples);
-        warn->push_back(e);
-        continue;
-      }
-      std::snprintf(e, sizeof(e), "radiation: body \"%s\": no fit of K_%d%d(t) by up to %d damped "
-                    "exponentials within %g%% (L2 in time) and %g%% (B, A at the table's "
-                    "frequencies); best %.3g%%, %.3g%%; its memory is the convolution (docs/physics.md "
-                    "section 14)", name, i + 1, j + 1, kFitMaxOrder, 100 * kFitTolT, 100 * kFitTolF,
-                    100 * fit[p].errT, 100 * fit[p].errF);
-      note->push_back(e);
+      if (keepLooseFit(fit[p], hk, dt, name, i, j, note, warn)) continue;
       return;
     }
   }
@@ -392,8 +415,10 @@ static bool copyMemory(const std::vector<RadBody>& done, bool quiet, RadBody* rb
   return false;
 }
 
-std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double tmem,
-                         Radiation* r) {
+// why body cannot take radiation (its id, its joints, c, the memory length tmem in s, a step
+// other than r's), else "" with the nearest body at or above it that has dofs in *mover
+static std::string radBodyError(const mjModel* m, int body, const HydroCoef& c, double tmem,
+                                const Radiation& r, int* mover) {
   char e[512];
   if (body <= 0 || body >= m->nbody) {
     std::snprintf(e, sizeof(e), "mjbuoy: radiation: body id %d out of range [1, %d]", body,
@@ -401,9 +426,9 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
     return e;
   }
   const char* name = m->names + m->name_bodyadr[body];
-  int mover = body;
-  while (mover && !m->body_dofnum[mover]) mover = m->body_parentid[mover];
-  if (!mover) {
+  *mover = body;
+  while (*mover && !m->body_dofnum[*mover]) *mover = m->body_parentid[*mover];
+  if (!*mover) {
     std::snprintf(e, sizeof(e), "mjbuoy: radiation: body \"%s\" has no joint between it and the "
                   "world; added mass needs a body free to move", name);
     return e;
@@ -416,49 +441,48 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
                   "range; give (0, %g] s, 0 for automatic or < 0 for none", tmem, name, kMaxMemory);
     return e;
   }
-  if (!r->rb.empty() && r->dt != dt) {
+  if (!r.rb.empty() && r.dt != dt) {
     return "mjbuoy: radiation: opt.timestep changed since the first body was set";
   }
-  r->dt = dt;
+  return "";
+}
 
-  RadBody rb;
-  rb.body = body;
-  std::copy(c.ref, c.ref + 3, rb.ref);
-  std::copy(c.Ainf, c.Ainf + 36, rb.A);
-  std::copy(r->roll, r->roll + 2, rb.roll);
-  for (int i = m->body_dofadr[mover] + m->body_dofnum[mover] - 1; i >= 0; i = m->dof_parentid[i]) {
-    rb.dof.push_back(i);
+// rb's memory of tmem s (0: automatic) at step dt (s) computed anew: kernels, the state-space
+// fit, the reversed kernels of the convolution; "" or why it cannot be had
+static std::string newMemory(const HydroCoef& c, double tmem, double dt, const char* name,
+                             Radiation* r, RadBody* rb) {
+  if (tmem == 0) tmem = memoryLength(c);
+  // a convolution memory is bounded in samples (docs/physics.md section
+  // 14, "Small timesteps"): refused with its cost beyond
+  if (r->conv && tmem > 0 && std::ceil(tmem / dt) + 1 > kMaxKernelSamples &&
+      !memoryPairs(c).empty())
+    return memoryCost(c, tmem, dt, name, "");
+  double hk = dt;
+  kernels(c, tmem, dt, !r->conv, rb, &hk);
+  // a fallback to the exact convolution costs time, not accuracy: it is
+  // noted (a warning) only when the state-space model was asked for
+  std::vector<std::string> quiet;
+  if (rb->nk && !r->conv)
+    fitMemory(c, hk, dt, r->rb, name, rb, r->ssAsked ? &r->note : &quiet, &r->note);
+  // a kernel resampled for the fit cannot serve the convolution
+  if (hk != dt && rb->ss.size() == 0) {
+    const std::vector<std::string>& fn = quiet.empty() ? r->note : quiet;
+    return memoryCost(c, tmem, dt, name, ", and its state-space fit failed" +
+                      (fn.empty() ? std::string() : " (" + fn.back() + ")"));
   }
-  rb.key = memoryKey(c, tmem, dt);
-  if (!copyMemory(r->rb, r->conv || !r->ssAsked, &rb)) {
-    if (tmem == 0) tmem = memoryLength(c);
-    // a convolution memory is bounded in samples (docs/physics.md section
-    // 14, "Small timesteps"): refused with its cost beyond
-    if (r->conv && tmem > 0 && std::ceil(tmem / dt) + 1 > kMaxKernelSamples &&
-        !memoryPairs(c).empty())
-      return memoryCost(c, tmem, dt, name, "");
-    double hk = dt;
-    kernels(c, tmem, dt, !r->conv, &rb, &hk);
-    // a fallback to the exact convolution costs time, not accuracy: it is
-    // noted (a warning) only when the state-space model was asked for
-    std::vector<std::string> quiet;
-    if (rb.nk && !r->conv)
-      fitMemory(c, hk, dt, r->rb, name, &rb, r->ssAsked ? &r->note : &quiet, &r->note);
-    // a kernel resampled for the fit cannot serve the convolution
-    if (hk != dt && rb.ss.size() == 0) {
-      const std::vector<std::string>& fn = quiet.empty() ? r->note : quiet;
-      return memoryCost(c, tmem, dt, name, ", and its state-space fit failed" +
-                        (fn.empty() ? std::string() : " (" + fn.back() + ")"));
-    }
-    // the convolution runs forward over the history (radstep.cc, radMemory)
-    auto kr = std::make_shared<std::vector<double>>(rb.K.size());
-    for (size_t p = 0; p < rb.pair.size(); p++)
-      std::reverse_copy(rb.K.begin() + p * rb.nk, rb.K.begin() + (p + 1) * rb.nk,
-                        kr->begin() + p * rb.nk);
-    rb.Kr = std::move(kr);
-  }
-  clearSimple(m, rb.dof, r);
+  // the convolution runs forward over the history (radstep.cc, radMemory)
+  auto kr = std::make_shared<std::vector<double>>(rb->K.size());
+  for (size_t p = 0; p < rb->pair.size(); p++)
+    std::reverse_copy(rb->K.begin() + p * rb->nk, rb->K.begin() + (p + 1) * rb->nk,
+                      kr->begin() + p * rb->nk);
+  rb->Kr = std::move(kr);
+  return "";
+}
 
+// rb in r, in place of the body's earlier entry; then the mode offsets and the sizes that
+// stepping needs (dofs, history samples, modes)
+static void placeBody(RadBody&& rb, Radiation* r) {
+  const int body = rb.body;
   auto it = std::find_if(r->rb.begin(), r->rb.end(), [&](const RadBody& x) { return x.body == body; });
   if (it != r->rb.end()) {
     *it = std::move(rb);
@@ -476,6 +500,32 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
     // only its first and newest samples (the clock counts to 2)
     r->nh = std::max(r->nh, x.ss.size() ? std::min(x.nk, 2) : x.nk);
   }
+}
+
+std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double tmem,
+                         Radiation* r) {
+  int mover = 0;
+  std::string err = radBodyError(m, body, c, tmem, *r, &mover);
+  if (!err.empty()) return err;
+  const char* name = m->names + m->name_bodyadr[body];
+  const double dt = m->opt.timestep;
+  r->dt = dt;
+
+  RadBody rb;
+  rb.body = body;
+  std::copy(c.ref, c.ref + 3, rb.ref);
+  std::copy(c.Ainf, c.Ainf + 36, rb.A);
+  std::copy(r->roll, r->roll + 2, rb.roll);
+  for (int i = m->body_dofadr[mover] + m->body_dofnum[mover] - 1; i >= 0; i = m->dof_parentid[i]) {
+    rb.dof.push_back(i);
+  }
+  rb.key = memoryKey(c, tmem, dt);
+  if (!copyMemory(r->rb, r->conv || !r->ssAsked, &rb)) {
+    err = newMemory(c, tmem, dt, name, r, &rb);
+    if (!err.empty()) return err;
+  }
+  clearSimple(m, rb.dof, r);
+  placeBody(std::move(rb), r);
   return "";
 }
 

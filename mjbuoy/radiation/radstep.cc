@@ -266,6 +266,155 @@ void radImmersion(const Radiation& r, const double* part, const char* bad, const
   }
 }
 
+namespace {
+
+// moves the history's ring (head, count) on a new step or a restart
+void advanceHistory(const Radiation& r, int tick, RadState* s) {
+  if (tick == kTickRestart) {
+    s->head = 0;
+    s->count = 0;
+  }
+  if (tick == kTickNew) s->head = (s->head + 1) % r.nh;
+  if (tick == kTickNew || tick == kTickRestart) s->count = std::min(s->count + 1, r.nh);
+}
+
+// whether qM lacks A_inf: rebuilt since the last add (pos: mj_fwdPosition's count)
+bool massLacksAdded(const Radiation& r, const mjModel* m, const mjData* d, const RadState* s,
+                    long pos) {
+  // with the same count mj_crb may still have rebuilt qM since (a reset in
+  // between): then some body's diagonal sum is not the one left after adding
+  bool addM = pos != s->mstamp;
+  for (size_t ib = 0; ib < r.rb.size() && !addM; ib++)
+    addM = !(diagSum(m, d, r.rb[ib]) == s->mdiag[ib]);
+  return addM;
+}
+
+// body velocity relative to the current (nu, bias) and to current and waves (nw, bw); false if
+// one is not finite
+bool waterRelative(const RadBody& rb, const mjModel* m, const mjData* d, const Sea& sea,
+                   const double cur[3], double* J, double nu[6], double bias[6], double nw[6],
+                   double bw[6]) {
+  kinematics(rb, m, d, J, nu, bias);
+  // the Kirchhoff terms see the water at the COM (current and waves), the
+  // memory only the current (docs/physics.md section 14, "Kirchhoff terms
+  // in waves")
+  double uw[3];
+  sea.velocity(d->xipos + 3 * rb.body, d->time, uw);
+  for (int j = 0; j < 6; j++) {
+    nw[j] = nu[j];
+    bw[j] = bias[j];
+  }
+  relative(d->xmat + 9 * rb.body, uw, nw, bw);
+  relative(d->xmat + 9 * rb.body, cur, nu, bias);
+  return std::isfinite(dot6(nu, nu)) && std::isfinite(dot6(bias, bias)) &&
+         std::isfinite(dot6(nw, nw)) && std::isfinite(dot6(bw, bw));
+}
+
+// adds s J^T A_inf J to the body's dofs in qM (kg, kg m, kg m^2)
+void addBodyMass(const RadBody& rb, const mjModel* m, mjData* d, RadState* s, double si,
+                 const double* J) {
+  const int n = rb.dof.size();
+  // M(dof[a], dof[b]) += J_a^T A J_b, b an ancestor (later in the chain)
+  double* AJ = s->ajac.data();
+  for (int k = 0; k < n; k++) mul6(rb.A, J + 6 * k, AJ + 6 * k);
+  for (int a = 0; a < n; a++) {
+    const int adr = m->dof_Madr[rb.dof[a]];
+    for (int b = a; b < n; b++) d->qM[adr + b - a] += si * dot6(J + 6 * a, AJ + 6 * b);
+  }
+}
+
+// the wrench without memory (N, N m): s times the Kirchhoff terms, water entry, viscous roll
+void instantWrench(const Radiation& r, const RadBody& rb, size_t ib, int tick, double si,
+                   double t, double h, const double nw[6], const double bw[6],
+                   const double nu[6], RadState* s, double W[6]) {
+  kirchhoff(rb.A, nw, bw, W);
+  for (int j = 0; j < 6; j++) W[j] *= si;  // linear in A: the terms of s A_inf
+  // water entry: the hull takes up the momentum s A nu_w of the water
+  // it wets as s rises, -ds/dt A nu_w; on exit the water keeps its own
+  // (docs/physics.md section 14, "Water entry")
+  const double ds = immRate(tick, si, t, s->tcur, h, s->sstep.data() + 2 * ib);
+  if (r.entry && ds > 0) {
+    double P[6];
+    mul6(rb.A, nw, P);
+    for (int j = 0; j < 6; j++) W[j] -= ds * P[j];
+  }
+  // viscous roll damping about the body's x axis, on the wetted share
+  // (docs/physics.md section 14, "Viscous roll damping")
+  const double p = nu[3];
+  W[3] -= si * (rb.roll[0] + rb.roll[1] * std::fabs(p)) * p;
+}
+
+// memory force fm (N, N m) of the wetted velocity s nu; the step's first call records nu and
+// evaluates the state space or the convolution
+void memoryForce(const Radiation& r, const RadBody& rb, size_t ib, int tick, bool moved,
+                 double h, const double nu[6], RadState* s, double* fm) {
+  double* hist = s->hist.data() + 6 * r.nh * ib;
+  if (rb.ss.size() && tick != kTickMid) {
+    // state-space memory (radss.cc), on the same clock as the history
+    SsState st{s->ssX.data() + rb.soff, s->ssPw.data() + rb.soff, s->ssNu.data() + 12 * ib,
+               s->ssNu.data() + 12 * ib + 6};
+    const cplx* lam = moved ? s->ssLam.data() + rb.soff : nullptr;
+    if (tick == kTickRestart) {
+      ssRestart(rb.ss, st, nu);
+    } else if (tick == kTickNew) {
+      ssNew(rb.ss, st, nu, lam);
+    } else {
+      ssSame(st, nu, s->count == 1);
+    }
+    ssForce(rb.ss, st, h, fm, lam);
+  } else if (rb.nk && moved) {
+    std::memset(fm, 0, 6 * sizeof(double));
+  } else if (rb.nk && tick != kTickMid) {
+    for (int j = 0; j < 6; j++) hist[r.nh * j + s->head] = nu[j];
+    memoryFrom(rb, hist, r.nh, s->head, convSamples(rb, s->count), r.dt,
+               s->pre.data() + 3 * s->poff[ib], fm);
+  }
+}
+
+// names a body whose radiation force is not finite, once, within the notices' reserve
+void noteNotFinite(const RadBody& rb, size_t ib, const mjModel* m, const mjData* d,
+                   RadState* s, std::string* notices) {
+  if (s->told[ib]) return;
+  s->told[ib] = 1;
+  char line[256];
+  std::snprintf(line, sizeof(line),
+                "body \"%s\": radiation force not finite at t = %g s; mjbuoy leaves it out\n",
+                m->names + m->name_bodyadr[rb.body], d->time);
+  // within the capacity reserved in makeState: no allocation while stepping
+  if (notices->size() + std::strlen(line) < notices->capacity()) *notices += line;
+}
+
+// one body's radiation: s A_inf into qM (if addM), the wrench into qfrc_passive
+void radiateBody(const Radiation& r, const mjModel* m, mjData* d, RadState* s, const Sea& sea,
+                 const double cur[3], size_t ib, int tick, bool moved, bool addM,
+                 std::string* notices) {
+  const RadBody& rb = r.rb[ib];
+  const int n = rb.dof.size();
+  const double h = m->opt.timestep;
+  const double si = s->imm[ib];  // immersion factor (radImmersion)
+  double* J = s->jac.data();
+  double nu[6], bias[6], nw[6], bw[6];
+  if (!waterRelative(rb, m, d, sea, cur, J, nu, bias, nw, bw)) return;
+  if (addM) addBodyMass(rb, m, d, s, si, J);
+
+  double W[6];
+  instantWrench(r, rb, ib, tick, si, d->time, h, nw, bw, nu, s, W);
+  // the memory's input is the wetted surface's velocity s nu: a dry
+  // body radiates no waves (docs/physics.md, "Immersion factor")
+  for (int j = 0; j < 6; j++) nu[j] *= si;
+  double* fm = s->fmem.data() + 6 * ib;
+  memoryForce(r, rb, ib, tick, moved, h, nu, s, fm);
+  for (int j = 0; j < 6; j++) W[j] += si * fm[j];
+
+  if (!std::isfinite(dot6(W, W))) {
+    noteNotFinite(rb, ib, m, d, s, notices);
+    return;
+  }
+  for (int k = 0; k < n; k++) d->qfrc_passive[rb.dof[k]] += dot6(J + 6 * k, W);
+}
+
+}  // namespace
+
 void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s, const Sea& sea,
                    std::string* notices, Pool* pool) {
   const double cur[3] = {sea.current[0], sea.current[1], 0};
@@ -275,113 +424,14 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
   const double h = m->opt.timestep;
   const bool moved = h != r.dt;
   if (moved) timestepMoved(r, m, h, s, notices);
-  if (tick == kTickRestart) {
-    s->head = 0;
-    s->count = 0;
-  }
-  if (tick == kTickNew) s->head = (s->head + 1) % r.nh;
-  if (tick == kTickNew || tick == kTickRestart) s->count = std::min(s->count + 1, r.nh);
+  advanceHistory(r, tick, s);
   // qM is rebuilt by every mj_fwdPosition; a second callback after the same
   // one (mj_forwardSkip from the velocity stage) finds A_inf in it already
   const long pos = d->timer[mjTIMER_POSITION].number;
-  // with the same count mj_crb may still have rebuilt qM since (a reset in
-  // between): then some body's diagonal sum is not the one left after adding
-  bool addM = pos != s->mstamp;
-  for (size_t ib = 0; ib < r.rb.size() && !addM; ib++)
-    addM = !(diagSum(m, d, r.rb[ib]) == s->mdiag[ib]);
+  const bool addM = massLacksAdded(r, m, d, s, pos);
   if (tick != kTickMid && !moved) preParts(r, s, pool);
-  for (size_t ib = 0; ib < r.rb.size(); ib++) {
-    const RadBody& rb = r.rb[ib];
-    const int n = rb.dof.size();
-    const double si = s->imm[ib];  // immersion factor (radImmersion)
-    double* J = s->jac.data();
-    double nu[6], bias[6];
-    kinematics(rb, m, d, J, nu, bias);
-    // the Kirchhoff terms see the water at the COM (current and waves), the
-    // memory only the current (docs/physics.md section 14, "Kirchhoff terms
-    // in waves")
-    double nw[6], bw[6], uw[3];
-    sea.velocity(d->xipos + 3 * rb.body, d->time, uw);
-    for (int j = 0; j < 6; j++) {
-      nw[j] = nu[j];
-      bw[j] = bias[j];
-    }
-    relative(d->xmat + 9 * rb.body, uw, nw, bw);
-    relative(d->xmat + 9 * rb.body, cur, nu, bias);
-    if (!std::isfinite(dot6(nu, nu)) || !std::isfinite(dot6(bias, bias)) ||
-        !std::isfinite(dot6(nw, nw)) || !std::isfinite(dot6(bw, bw))) {
-      continue;
-    }
-
-    if (addM) {
-      // M(dof[a], dof[b]) += J_a^T A J_b, b an ancestor (later in the chain)
-      double* AJ = s->ajac.data();
-      for (int k = 0; k < n; k++) mul6(rb.A, J + 6 * k, AJ + 6 * k);
-      for (int a = 0; a < n; a++) {
-        const int adr = m->dof_Madr[rb.dof[a]];
-        for (int b = a; b < n; b++) d->qM[adr + b - a] += si * dot6(J + 6 * a, AJ + 6 * b);
-      }
-    }
-
-    double W[6];
-    kirchhoff(rb.A, nw, bw, W);
-    for (int j = 0; j < 6; j++) W[j] *= si;  // linear in A: the terms of s A_inf
-    // water entry: the hull takes up the momentum s A nu_w of the water
-    // it wets as s rises, -ds/dt A nu_w; on exit the water keeps its own
-    // (docs/physics.md section 14, "Water entry")
-    const double ds = immRate(tick, si, d->time, s->tcur, h, s->sstep.data() + 2 * ib);
-    if (r.entry && ds > 0) {
-      double P[6];
-      mul6(rb.A, nw, P);
-      for (int j = 0; j < 6; j++) W[j] -= ds * P[j];
-    }
-    // viscous roll damping about the body's x axis, on the wetted share
-    // (docs/physics.md section 14, "Viscous roll damping")
-    const double p = nu[3];
-    W[3] -= si * (rb.roll[0] + rb.roll[1] * std::fabs(p)) * p;
-    // the memory's input is the wetted surface's velocity s nu: a dry
-    // body radiates no waves (docs/physics.md, "Immersion factor")
-    for (int j = 0; j < 6; j++) nu[j] *= si;
-
-    // memory: the step's first call records nu and evaluates the convolution
-    double* fm = s->fmem.data() + 6 * ib;
-    double* hist = s->hist.data() + 6 * r.nh * ib;
-    if (rb.ss.size() && tick != kTickMid) {
-      // state-space memory (radss.cc), on the same clock as the history
-      SsState st{s->ssX.data() + rb.soff, s->ssPw.data() + rb.soff, s->ssNu.data() + 12 * ib,
-                 s->ssNu.data() + 12 * ib + 6};
-      const cplx* lam = moved ? s->ssLam.data() + rb.soff : nullptr;
-      if (tick == kTickRestart) {
-        ssRestart(rb.ss, st, nu);
-      } else if (tick == kTickNew) {
-        ssNew(rb.ss, st, nu, lam);
-      } else {
-        ssSame(st, nu, s->count == 1);
-      }
-      ssForce(rb.ss, st, h, fm, lam);
-    } else if (rb.nk && moved) {
-      std::memset(fm, 0, 6 * sizeof(double));
-    } else if (rb.nk && tick != kTickMid) {
-      for (int j = 0; j < 6; j++) hist[r.nh * j + s->head] = nu[j];
-      memoryFrom(rb, hist, r.nh, s->head, convSamples(rb, s->count), r.dt,
-                 s->pre.data() + 3 * s->poff[ib], fm);
-    }
-    for (int j = 0; j < 6; j++) W[j] += si * fm[j];
-
-    if (!std::isfinite(dot6(W, W))) {
-      if (!s->told[ib]) {
-        s->told[ib] = 1;
-        char line[256];
-        std::snprintf(line, sizeof(line),
-                      "body \"%s\": radiation force not finite at t = %g s; mjbuoy leaves it out\n",
-                      m->names + m->name_bodyadr[rb.body], d->time);
-        // within the capacity reserved in makeState: no allocation while stepping
-        if (notices->size() + std::strlen(line) < notices->capacity()) *notices += line;
-      }
-      continue;
-    }
-    for (int k = 0; k < n; k++) d->qfrc_passive[rb.dof[k]] += dot6(J + 6 * k, W);
-  }
+  for (size_t ib = 0; ib < r.rb.size(); ib++)
+    radiateBody(r, m, d, s, sea, cur, ib, tick, moved, addM, notices);
   if (addM) {
     // as mj_fwdPosition does after mj_crb: the integrators, the constraint
     // solver and mj_implicit then all see M + J^T A J
