@@ -1,0 +1,325 @@
+// mean wave drift from the panel solution (docs/physics.md section 16)
+#include "radiation/drift.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <mutex>
+#include <tuple>
+
+#include <Eigen/Dense>
+
+namespace mjb {
+
+namespace {
+
+const double kPi = 3.14159265358979323846;
+const int kTheta = 360;  // Kochin-function angles (periodic trapezoid: spectral)
+
+// column c of a column-major n-row matrix
+const dcplx* col(const dcplx* a, int n, int c) { return a + (size_t)n * c; }
+
+// headings of the field's solve
+int nhead(const PanelField& f) { return f.out->nh(); }
+
+// the total disturbance's source strength or potential on row i: the
+// diffraction column of heading h plus the radiation columns times the
+// body velocity -i omega xi
+dcplx total(const dcplx* a, int n, int i, int h, const PanelField& f, const dcplx* xi) {
+  dcplx s = col(a, n, 6 + h)[i];
+  for (int j = 0; j < 6; j++) s += dcplx(0, -f.omega) * xi[j] * col(a, n, j)[i];
+  return s;
+}
+
+// incident potential per unit amplitude at x (panel frame), heading beta:
+// phi0 = -i g/omega e^{K z} e^{i K (x - ref) . (cos b, sin b)}
+dcplx incident(const PanelField& f, const double* x, double beta, dcplx grad[3]) {
+  const double* r = f.out->ref;
+  double cb = std::cos(beta), sb = std::sin(beta);
+  double ph = f.K * ((x[0] - r[0]) * cb + (x[1] - r[1]) * sb);
+  dcplx p = dcplx(0, -f.out->g / f.omega) * std::exp(f.K * x[2]) * dcplx(std::cos(ph), std::sin(ph));
+  if (grad) {
+    grad[0] = dcplx(0, f.K * cb) * p;
+    grad[1] = dcplx(0, f.K * sb) * p;
+    grad[2] = f.K * p;
+  }
+  return p;
+}
+
+// displacement xi_t + alpha x (x - ref) of the body point x [m/m]
+void pointMotion(const dcplx* xi, const double* x, const double* ref, dcplx d[3]) {
+  double r[3] = {x[0] - ref[0], x[1] - ref[1], x[2] - ref[2]};
+  d[0] = xi[0] + xi[4] * r[2] - xi[5] * r[1];
+  d[1] = xi[1] + xi[5] * r[0] - xi[3] * r[2];
+  d[2] = xi[2] + xi[3] * r[1] - xi[4] * r[0];
+}
+
+// body panels sharing a vertex with each body panel (vertices matched by
+// position, 1e-9 of the mesh size, so split meshes connect)
+std::vector<std::vector<int>> neighbours(const PanelField& f) {
+  const std::vector<Panel>& pn = *f.pn;
+  double lo = 1e300, hi = -1e300;
+  for (int i = 0; i < f.nb; i++)
+    for (int v = 0; v < pn[i].nv; v++)
+      for (int k = 0; k < 3; k++) lo = std::fmin(lo, pn[i].v[v][k]), hi = std::fmax(hi, pn[i].v[v][k]);
+  double q = 1e-9 * (hi - lo) + 1e-300;
+  std::map<std::tuple<long long, long long, long long>, std::vector<int>> at;
+  for (int i = 0; i < f.nb; i++)
+    for (int v = 0; v < pn[i].nv; v++) {
+      const double* p = pn[i].v[v];
+      at[std::make_tuple(std::llround(p[0] / q), std::llround(p[1] / q), std::llround(p[2] / q))]
+          .push_back(i);
+    }
+  std::vector<std::vector<int>> nb(f.nb);
+  for (auto& e : at)
+    for (int i : e.second)
+      for (int j : e.second)
+        if (i != j) nb[i].push_back(j);
+  for (auto& v : nb) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+  }
+  return nb;
+}
+
+// total potential on the body panels and its gradient at their centroids
+// for heading h: the normal part from the body condition (dphi/dn = the
+// body's normal velocity), the tangential part a weighted least-squares
+// fit to the neighbours' potentials (docs/physics.md section 16)
+void surfaceField(const PanelField& f, const std::vector<std::vector<int>>& nbr, int h,
+                  const dcplx* xi, std::vector<dcplx>* phi, std::vector<dcplx>* grad) {
+  const std::vector<Panel>& pn = *f.pn;
+  const double beta = f.out->heading[h];
+  int nb = f.nb;
+  phi->resize(nb);
+  grad->resize(3 * nb);
+  std::vector<dcplx> vn(nb);
+  for (int i = 0; i < nb; i++) {
+    (*phi)[i] = total(f.phi, nb, i, h, f, xi) + incident(f, pn[i].c, beta, nullptr);
+    dcplx d[3];
+    pointMotion(xi, pn[i].c, f.out->ref, d);
+    vn[i] = dcplx(0, -f.omega) * (d[0] * pn[i].n[0] + d[1] * pn[i].n[1] + d[2] * pn[i].n[2]);
+  }
+  for (int i = 0; i < nb; i++) {
+    const Panel& p = pn[i];
+    // tangent basis
+    double a[3] = {1, 0, 0};
+    if (std::fabs(p.n[0]) > 0.8) a[0] = 0, a[1] = 1;
+    double d0 = a[0] * p.n[0] + a[1] * p.n[1] + a[2] * p.n[2];
+    double t1[3], t2[3];
+    for (int k = 0; k < 3; k++) t1[k] = a[k] - d0 * p.n[k];
+    double l1 = std::sqrt(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]);
+    for (int k = 0; k < 3; k++) t1[k] /= l1;
+    t2[0] = p.n[1] * t1[2] - p.n[2] * t1[1];
+    t2[1] = p.n[2] * t1[0] - p.n[0] * t1[2];
+    t2[2] = p.n[0] * t1[1] - p.n[1] * t1[0];
+    double m00 = 0, m01 = 0, m11 = 0;
+    dcplx r0 = 0, r1 = 0;
+    for (int j : nbr[i]) {
+      double d[3] = {pn[j].c[0] - p.c[0], pn[j].c[1] - p.c[1], pn[j].c[2] - p.c[2]};
+      double u = d[0] * t1[0] + d[1] * t1[1] + d[2] * t1[2];
+      double v = d[0] * t2[0] + d[1] * t2[1] + d[2] * t2[2];
+      double dn = d[0] * p.n[0] + d[1] * p.n[1] + d[2] * p.n[2];
+      double w = 1 / (u * u + v * v + dn * dn);
+      // the neighbour's potential less its normal offset's part
+      dcplx df = (*phi)[j] - (*phi)[i] - vn[i] * dn;
+      m00 += w * u * u, m01 += w * u * v, m11 += w * v * v;
+      r0 += w * u * df, r1 += w * v * df;
+    }
+    double det = m00 * m11 - m01 * m01;
+    dcplx g1 = 0, g2 = 0;
+    if (det > 1e-12 * (m00 * m11 + 1e-300)) {
+      g1 = (m11 * r0 - m01 * r1) / det;
+      g2 = (m00 * r1 - m01 * r0) / det;
+    }
+    for (int k = 0; k < 3; k++) (*grad)[3 * i + k] = g1 * t1[k] + g2 * t2[k] + vn[i] * p.n[k];
+  }
+}
+
+}  // namespace
+
+bool driftRao(const PanelField& f, const DriftBody& b, std::vector<dcplx>* xi) {
+  int nh = nhead(f);
+  xi->assign(6 * nh, 0);
+  if (!b.free) return true;
+  double w = f.omega;
+  Eigen::Matrix<dcplx, 6, 6> Z;
+  const double* A = &f.out->A[36 * f.w];
+  const double* B = &f.out->B[36 * f.w];
+  for (int i = 0; i < 6; i++)
+    for (int j = 0; j < 6; j++)
+      Z(i, j) = dcplx(-w * w * (b.M[6 * i + j] + A[6 * i + j]) + b.C[6 * i + j], -w * B[6 * i + j]);
+  Eigen::FullPivLU<Eigen::Matrix<dcplx, 6, 6>> lu(Z);
+  if (!lu.isInvertible()) return false;
+  for (int h = 0; h < nh; h++) {
+    Eigen::Matrix<dcplx, 6, 1> X;
+    for (int k = 0; k < 6; k++) {
+      int o = (f.w * nh + h) * 6 + k;
+      X(k) = dcplx(f.out->Xre[o], f.out->Xim[o]);
+    }
+    Eigen::Matrix<dcplx, 6, 1> s = lu.solve(X);
+    for (int k = 0; k < 6; k++) {
+      if (!std::isfinite(s(k).real()) || !std::isfinite(s(k).imag())) return false;
+      (*xi)[6 * h + k] = s(k);
+    }
+  }
+  return true;
+}
+
+void driftFar(const PanelField& f, const std::vector<dcplx>& xi, double* out) {
+  const std::vector<Panel>& pn = *f.pn;
+  const double* ref = f.out->ref;
+  int n = f.nb + f.nl, nh = nhead(f);
+  double K = f.K, g = f.out->g, rho = f.out->rho;
+  // far field of the sources: phi ~ 2 pi i K e^{Kz} H0(K r) H(theta) with
+  // H = sum sigma dS e^{K z} e^{-i K (x cos th + y sin th)}; elevation
+  // eta_s = a(theta) e^{iKr} / sqrt(r), a = (i omega / g) 2 pi i K
+  // sqrt(2 / (pi K)) e^{-i pi/4} H (docs/physics.md section 16)
+  const dcplx ca = dcplx(0, f.omega / g) * dcplx(0, 2 * kPi * K) * std::sqrt(2 / (kPi * K)) *
+                   std::polar(1.0, -kPi / 4);
+  std::vector<dcplx> s(n), a(kTheta), ad(kTheta);
+  for (int h = 0; h < nh; h++) {
+    for (int i = 0; i < n; i++) s[i] = total(f.sig, n, i, h, f, &xi[6 * h]) * pn[i].area;
+    auto kochin = [&](double th, dcplx* H, dcplx* Hd) {
+      double c = std::cos(th), sn = std::sin(th);
+      *H = 0, *Hd = 0;
+      for (int i = 0; i < n; i++) {
+        double x = pn[i].c[0] - ref[0], y = pn[i].c[1] - ref[1], z = pn[i].c[2];
+        dcplx e = s[i] * std::exp(K * z) * std::polar(1.0, -K * (x * c + y * sn));
+        *H += e;
+        *Hd += dcplx(0, -K * (-x * sn + y * c)) * e;
+      }
+      *H *= ca, *Hd *= ca;
+    };
+    double ix = 0, iy = 0, im = 0, dth = 2 * kPi / kTheta;
+    for (int t = 0; t < kTheta; t++) {
+      double th = t * dth;
+      kochin(th, &a[t], &ad[t]);
+      double q = std::norm(a[t]);
+      ix += q * std::cos(th) * dth;
+      iy += q * std::sin(th) * dth;
+      im += (ad[t] * std::conj(a[t])).imag() * dth;
+    }
+    double beta = f.out->heading[h];
+    dcplx ab, adb;
+    kochin(beta, &ab, &adb);
+    const dcplx e4 = std::polar(1.0, -kPi / 4);
+    double sk = 2 * std::sqrt(2 * kPi / K);
+    double cross = sk * (std::conj(ab) * e4).real();
+    // Maruo: F = -(rho g / 4) [int |a|^2 (cos, sin) dth + 2 sqrt(2 pi/K) (cos b, sin b) Re(a*(b) e^{-i pi/4})]
+    out[3 * h + 0] = -(rho * g / 4) * (ix + std::cos(beta) * cross);
+    out[3 * h + 1] = -(rho * g / 4) * (iy + std::sin(beta) * cross);
+    // Newman: Mz = -(rho g / 4K) [int Im(a' a*) dth - 2 sqrt(2 pi/K) Im(e^{-i pi/4} a'*(b))]
+    out[3 * h + 2] = -(rho * g / (4 * K)) * (im - sk * (e4 * std::conj(adb)).imag());
+  }
+}
+
+void driftNear(const PanelField& f, const DriftBody& b, const std::vector<dcplx>& xi,
+               double* out) {
+  const std::vector<Panel>& pn = *f.pn;
+  const double* ref = f.out->ref;
+  int nb = f.nb, nh = nhead(f);
+  double rho = f.out->rho, g = f.out->g, w = f.omega;
+  std::vector<std::vector<int>> nbr = neighbours(f);
+  std::vector<dcplx> phi, grad;
+  for (int h = 0; h < nh; h++) {
+    const dcplx* x = &xi[6 * h];
+    surfaceField(f, nbr, h, x, &phi, &grad);
+    double F[3] = {0, 0, 0};
+    auto add = [&](const double* at, const double* fo) {
+      F[0] += fo[0], F[1] += fo[1];
+      F[2] += (at[0] - ref[0]) * fo[1] - (at[1] - ref[1]) * fo[0];
+    };
+    for (int i = 0; i < nb; i++) {
+      const Panel& p = pn[i];
+      const dcplx* gi = &grad[3 * i];
+      // velocity squared: -rho/2 |grad Phi|^2 pressure, mean (rho/4) |grad phi|^2 n dS
+      double q = std::norm(gi[0]) + std::norm(gi[1]) + std::norm(gi[2]);
+      // pressure gradient: -rho X . grad Phi_t, mean (rho/2) Re(X . conj(-i w grad phi)) n dS
+      dcplx d[3];
+      pointMotion(x, p.c, ref, d);
+      double pg = 0;
+      for (int k = 0; k < 3; k++) pg += (d[k] * std::conj(dcplx(0, -w) * gi[k])).real();
+      double s = (rho / 4) * q + (rho / 2) * pg;
+      double fo[2] = {s * p.n[0] * p.area, s * p.n[1] * p.area};
+      add(p.c, fo);
+      // waterline: edges of the panel on z = 0, -(rho g/4) |zeta_r|^2 n dl,
+      // zeta = (i w / g) phi at z = 0 (2-point Gauss along the edge)
+      double tol = 1e-6 * (1 + p.diam);
+      for (int e = 0; e < p.nv; e++) {
+        const double* v0 = p.v[e];
+        const double* v1 = p.v[(e + 1) % p.nv];
+        if (std::fabs(v0[2]) > tol || std::fabs(v1[2]) > tol) continue;
+        double ex = v1[0] - v0[0], ey = v1[1] - v0[1], L = std::hypot(ex, ey);
+        if (!(L > 0)) continue;
+        double nx = ey / L, ny = -ex / L;
+        if (nx * p.n[0] + ny * p.n[1] < 0) nx = -nx, ny = -ny;
+        for (int gp = 0; gp < 2; gp++) {
+          double u = 0.5 + (gp ? 0.5 : -0.5) / std::sqrt(3.0), at[3];
+          for (int k = 0; k < 3; k++) at[k] = v0[k] + u * (v1[k] - v0[k]);
+          dcplx ph = phi[i];
+          for (int k = 0; k < 3; k++) ph += gi[k] * (at[k] - p.c[k]);
+          dcplx dz[3];
+          pointMotion(x, at, ref, dz);
+          dcplx zr = dcplx(0, w / g) * ph - dz[2];
+          double c = -(rho * g / 4) * std::norm(zr) * 0.5 * L;
+          double fw[2] = {c * nx, c * ny};
+          add(at, fw);
+        }
+      }
+    }
+    if (b.free) {
+      // rotation: mean of alpha x F1, F1 = M xdd = -w^2 M xi (the first-order
+      // force on the body), and of the moment's alpha x M1 + xi x F1 (z part)
+      dcplx F1[6];
+      for (int r = 0; r < 6; r++) {
+        F1[r] = 0;
+        for (int c = 0; c < 6; c++) F1[r] += -w * w * b.M[6 * r + c] * x[c];
+      }
+      auto crossm = [](const dcplx* a, const dcplx* c, int k) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        return 0.5 * (a[i] * std::conj(c[j]) - a[j] * std::conj(c[i])).real();
+      };
+      F[0] += crossm(x + 3, F1, 0);
+      F[1] += crossm(x + 3, F1, 1);
+      F[2] += crossm(x + 3, F1 + 3, 2) + crossm(x, F1, 2);
+    }
+    for (int k = 0; k < 3; k++) out[3 * h + k] = F[k];
+  }
+}
+
+std::string panelSolveDrift(const PanelMesh& body, const PanelMesh& lid,
+                            const std::vector<double>& omega, const std::vector<double>& heading,
+                            const DriftBody& b, HydroCoef* out, DriftTable* dt) {
+  int nh = (int)heading.size(), nw = (int)omega.size();
+  dt->far.assign(3 * nh * nw, 0);
+  dt->near.assign(3 * nh * nw, 0);
+  std::mutex mu;
+  std::string bad;
+  PanelFieldFn fn = [&](const PanelField& f) {
+    std::vector<dcplx> xi;
+    if (!driftRao(f, b, &xi)) {
+      std::lock_guard<std::mutex> l(mu);
+      char s[160];
+      std::snprintf(s, sizeof s, "drift: singular motion equations at omega = %g rad/s", f.omega);
+      bad = s;
+      return;
+    }
+    driftFar(f, xi, &dt->far[3 * nh * f.w]);
+    driftNear(f, b, xi, &dt->near[3 * nh * f.w]);
+  };
+  std::string err;
+  if (!panelSolve(body, lid, omega, heading, out, &err, &fn)) return err;
+  if (!bad.empty()) return bad;
+  for (size_t i = 0; i < dt->far.size(); i++)
+    if (!std::isfinite(dt->far[i]) || !std::isfinite(dt->near[i])) {
+      char s[160];
+      std::snprintf(s, sizeof s, "drift: non-finite mean drift at omega = %g rad/s",
+                    omega[i / (3 * nh)]);
+      return s;
+    }
+  return "";
+}
+
+}  // namespace mjb

@@ -1,0 +1,147 @@
+// mean wave drift from the panel solution (docs/physics.md section 16):
+// the near field (Pinkster 1980, direct pressure integration) against the
+// far field (Maruo 1960), and a restrained deep-draft vertical cylinder
+// against Havelock's (1940) analytic drift on a vertical cylinder
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <vector>
+
+#include "radiation/drift.h"
+#include "radiation/panelmesh.h"
+
+namespace {
+
+using mjb::DriftBody;
+using mjb::DriftTable;
+using mjb::HydroCoef;
+using mjb::PanelMesh;
+
+const double kPi = 3.14159265358979323846;
+const double kRho = 1025, kG = 9.81;
+
+// Havelock, T. H. (1940) "The pressure of water waves upon a fixed
+// obstacle", Proc. R. Soc. Lond. A 175:409-421: a vertical circular
+// cylinder of radius a through the whole (deep) water column in a wave of
+// amplitude A, wave number k. Its surface elevation (MacCamy & Fuchs 1954,
+// deep water) is zeta = A c(theta), c = sum eps_n i^n 2i / (pi x H_n'(x))
+// cos(n theta), x = k a; on the wall phi_r = 0 and phi ~ e^{kz}, so the
+// mean pressure integration gives
+//   F / (rho g A^2 a) = int [-|c|^2 / 8 + |c'|^2 / (8 x^2)] cos(theta) dtheta
+// (waterline term -rho g/4 |zeta|^2 plus the velocity term rho/4 |grad
+// phi|^2 integrated over depth): independent of the panel solver. It tends
+// to the reflection limit 2/3 for short waves (Faltinsen 1990, "Sea loads
+// on ships and offshore structures", eq. 5.23: (1/2) rho g A^2 (4a/3))
+double havelock(double x) {
+  int N = (int)x + 30, nt = 720;
+  std::vector<std::complex<double>> an(N);
+  std::complex<double> in(1, 0);
+  // H_n'(x) = (H_{n-1} - H_{n+1}) / 2, H_{-1} = -H_1
+  auto H = [&](int m) {
+    double s = m < 0 ? -1 : 1;
+    m = std::abs(m);
+    return s * std::complex<double>(std::cyl_bessel_j(m, x), std::cyl_neumann(m, x));
+  };
+  for (int n = 0; n < N; n++) {
+    std::complex<double> hd = 0.5 * (H(n - 1) - H(n + 1));
+    an[n] = (n ? 2.0 : 1.0) * in * std::complex<double>(0, 2) / (kPi * x * hd);
+    in *= std::complex<double>(0, 1);
+  }
+  double f = 0;
+  for (int t = 0; t < nt; t++) {
+    double th = 2 * kPi * t / nt;
+    std::complex<double> c = 0, cd = 0;
+    for (int n = 0; n < N; n++) {
+      c += an[n] * std::cos(n * th);
+      cd += -an[n] * double(n) * std::sin(n * th);
+    }
+    f += (-std::norm(c) / 8 + std::norm(cd) / (8 * x * x)) * std::cos(th);
+  }
+  return f * 2 * kPi / nt;
+}
+
+TEST(MeanDrift, HavelockReference) {
+  // the reference itself: short waves reach the reflection limit 2/3
+  // (Faltinsen 1990 eq. 5.23); long waves pass with little drift
+  EXPECT_NEAR(havelock(80), 2.0 / 3, 0.005);
+  EXPECT_LT(havelock(0.25), 0.1);
+}
+
+// omegas of the wave numbers kR for radius R (deep water, omega^2 = g k)
+std::vector<double> omegas(const std::vector<double>& kR, double R) {
+  std::vector<double> w;
+  for (double k : kR) w.push_back(std::sqrt(kG * k / R));
+  return w;
+}
+
+// a restrained deep-draft cylinder (draft 5 R: e^{-kT} < 0.01 at kR >= 1,
+// the wave does not reach under it) against Havelock's wall-to-bottom
+// cylinder, far and near field, head and beam seas
+TEST(MeanDrift, FixedCylinderHavelock) {
+  const double R = 1, T = 5;
+  PanelMesh body, lid;
+  mjb::cylinderMesh(R, T, 40, 4, 48, &body, &lid);
+  std::vector<double> kR = {1.0, 1.5, 2.0};
+  HydroCoef c;
+  c.rho = kRho;
+  c.g = kG;
+  DriftBody fixed;
+  DriftTable dt;
+  std::vector<double> head = {0, kPi / 2};
+  ASSERT_EQ(mjb::panelSolveDrift(body, lid, omegas(kR, R), head, fixed, &c, &dt), "");
+  for (size_t w = 0; w < kR.size(); w++) {
+    double ref = havelock(kR[w]), s = kRho * kG * R;
+    double far = dt.far[3 * (2 * w)] / s, near = dt.near[3 * (2 * w)] / s;
+    double fary = dt.far[3 * (2 * w + 1) + 1] / s;
+    std::printf("kR %.2f Havelock %.4f far %.4f near %.4f far(beam, y) %.4f\n", kR[w], ref, far,
+                near, fary);
+    EXPECT_NEAR(far, ref, 0.05 * ref);
+    EXPECT_NEAR(near, ref, 0.05 * ref);
+    EXPECT_NEAR(fary, ref, 0.05 * ref);
+  }
+}
+
+// rigid-body mass matrix about the origin of a body of mass m, COM (0, 0,
+// zg), principal inertia I about its COM
+void massMatrix(double m, double zg, const double I[3], double* M) {
+  for (int i = 0; i < 36; i++) M[i] = 0;
+  for (int k = 0; k < 3; k++) M[7 * k] = m;
+  M[4] = M[24] = m * zg;
+  M[9] = M[19] = -m * zg;
+  M[21] = I[0] + m * zg * zg;
+  M[28] = I[1] + m * zg * zg;
+  M[35] = I[2];
+}
+
+// a freely floating hemisphere (COM at its centre of buoyancy): the near
+// field (Pinkster 1980, with its motion terms) against the far field
+// (Maruo 1960), both from the same first-order solution, within 5%
+TEST(MeanDrift, FreeHemisphereNearFar) {
+  const double R = 1;
+  PanelMesh body, lid;
+  mjb::hemisphereMesh(R, 16, 48, &body, &lid);
+  DriftBody b;
+  b.free = true;
+  double m = kRho * 2 * kPi / 3, zg = -3 * R / 8, I[3] = {0.4 * m, 0.4 * m, 0.4 * m};
+  massMatrix(m, zg, I, b.M);
+  // hydrostatics of a hemisphere: heave rho g pi R^2; roll and pitch rho g
+  // (I_wp + V (z_B - z_G)) = rho g pi R^4 / 4 with z_G = z_B
+  b.C[14] = kRho * kG * kPi * R * R;
+  b.C[21] = b.C[28] = kRho * kG * kPi * R * R * R * R / 4;
+  std::vector<double> kR = {0.7, 0.9, 1.2, 1.6, 2.0};
+  HydroCoef c;
+  c.rho = kRho;
+  c.g = kG;
+  DriftTable dt;
+  ASSERT_EQ(mjb::panelSolveDrift(body, lid, omegas(kR, R), {0.0}, b, &c, &dt), "");
+  for (size_t w = 0; w < kR.size(); w++) {
+    double s = kRho * kG * R, far = dt.far[3 * w] / s, near = dt.near[3 * w] / s;
+    std::printf("kR %.2f far %.4f near %.4f\n", kR[w], far, near);
+    EXPECT_GT(far, 0);
+    EXPECT_NEAR(near, far, 0.05 * far);
+  }
+}
+
+}  // namespace
