@@ -1,4 +1,4 @@
-// mean wave drift from the panel solution (docs/physics.md section 16):
+// mean wave drift from the panel solution (docs/physics.md section 17):
 // the near field (Pinkster 1980, direct pressure integration) against the
 // far field (Maruo 1960), and a restrained deep-draft vertical cylinder
 // against Havelock's (1940) analytic drift on a vertical cylinder

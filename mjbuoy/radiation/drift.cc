@@ -1,4 +1,4 @@
-// mean wave drift from the panel solution (docs/physics.md section 16)
+// mean wave drift from the panel solution (docs/physics.md section 17)
 #include "radiation/drift.h"
 
 #include <algorithm>
@@ -15,7 +15,7 @@ namespace mjb {
 namespace {
 
 const double kPi = 3.14159265358979323846;
-const int kTheta = 360;  // Kochin-function angles (periodic trapezoid: spectral)
+const int kTheta = 720;  // most Kochin-function angles (periodic trapezoid: spectral)
 
 // column c of a column-major n-row matrix
 const dcplx* col(const dcplx* a, int n, int c) { return a + (size_t)n * c; }
@@ -86,7 +86,7 @@ std::vector<std::vector<int>> neighbours(const PanelField& f) {
 // total potential on the body panels and its gradient at their centroids
 // for heading h: the normal part from the body condition (dphi/dn = the
 // body's normal velocity), the tangential part a weighted least-squares
-// fit to the neighbours' potentials (docs/physics.md section 16)
+// fit to the neighbours' potentials (docs/physics.md section 17)
 void surfaceField(const PanelField& f, const std::vector<std::vector<int>>& nbr, int h,
                   const dcplx* xi, std::vector<dcplx>* phi, std::vector<dcplx>* grad) {
   const std::vector<Panel>& pn = *f.pn;
@@ -175,25 +175,34 @@ void driftFar(const PanelField& f, const std::vector<dcplx>& xi, double* out) {
   // far field of the sources: phi ~ 2 pi i K e^{Kz} H0(K r) H(theta) with
   // H = sum sigma dS e^{K z} e^{-i K (x cos th + y sin th)}; elevation
   // eta_s = a(theta) e^{iKr} / sqrt(r), a = (i omega / g) 2 pi i K
-  // sqrt(2 / (pi K)) e^{-i pi/4} H (docs/physics.md section 16)
+  // sqrt(2 / (pi K)) e^{-i pi/4} H (docs/physics.md section 17)
   const dcplx ca = dcplx(0, f.omega / g) * dcplx(0, 2 * kPi * K) * std::sqrt(2 / (kPi * K)) *
                    std::polar(1.0, -kPi / 4);
-  std::vector<dcplx> s(n), a(kTheta), ad(kTheta);
+  // the Kochin function is a trigonometric polynomial of degree about
+  // K r_max in theta (r_max the panels' largest horizontal distance from
+  // ref): the periodic trapezoid rule with 4 K r_max + 64 points integrates
+  // |a|^2 exactly to rounding
+  double rmax = 0;
+  for (int i = 0; i < n; i++)
+    rmax = std::fmax(rmax, std::hypot(pn[i].c[0] - ref[0], pn[i].c[1] - ref[1]) + pn[i].diam);
+  const int nth = std::min(kTheta, 4 * (int)std::ceil(K * rmax) + 64);
+  std::vector<dcplx> s(n), a(nth), ad(nth);
   for (int h = 0; h < nh; h++) {
-    for (int i = 0; i < n; i++) s[i] = total(f.sig, n, i, h, f, &xi[6 * h]) * pn[i].area;
+    for (int i = 0; i < n; i++)
+      s[i] = total(f.sig, n, i, h, f, &xi[6 * h]) * pn[i].area * std::exp(K * pn[i].c[2]);
     auto kochin = [&](double th, dcplx* H, dcplx* Hd) {
       double c = std::cos(th), sn = std::sin(th);
       *H = 0, *Hd = 0;
       for (int i = 0; i < n; i++) {
-        double x = pn[i].c[0] - ref[0], y = pn[i].c[1] - ref[1], z = pn[i].c[2];
-        dcplx e = s[i] * std::exp(K * z) * std::polar(1.0, -K * (x * c + y * sn));
+        double x = pn[i].c[0] - ref[0], y = pn[i].c[1] - ref[1];
+        dcplx e = s[i] * std::polar(1.0, -K * (x * c + y * sn));
         *H += e;
         *Hd += dcplx(0, -K * (-x * sn + y * c)) * e;
       }
       *H *= ca, *Hd *= ca;
     };
-    double ix = 0, iy = 0, im = 0, dth = 2 * kPi / kTheta;
-    for (int t = 0; t < kTheta; t++) {
+    double ix = 0, iy = 0, im = 0, dth = 2 * kPi / nth;
+    for (int t = 0; t < nth; t++) {
       double th = t * dth;
       kochin(th, &a[t], &ad[t]);
       double q = std::norm(a[t]);

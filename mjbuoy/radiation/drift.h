@@ -1,5 +1,5 @@
 // mean (second-order) wave drift force and moment in regular waves, from
-// the panel solver's first-order solution (docs/physics.md section 16):
+// the panel solver's first-order solution (docs/physics.md section 17):
 // far field (Maruo 1960, Newman 1967) and near field (Pinkster 1980)
 #ifndef MJBUOY_DRIFT_H_
 #define MJBUOY_DRIFT_H_

@@ -1,0 +1,86 @@
+// mean wave drift in the time domain (docs/physics.md section 17, "Time
+// domain"): a hemisphere held by a horizontal spring in a regular wave
+// settles where the spring balances the mean drift force of the attach
+// table, x = F / k (Hooke; the steady mean of Newman's sum for one
+// component is A^2 T, Newman 1974)
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "api/buoy.h"
+#include "radiation/driftstep.h"
+#include "hemisphere.h"
+#include "testutil.h"
+
+namespace {
+
+using mjbt::Scene;
+
+const double kR = 1, kRho = 1025, kA = 0.04, kKR = 1.2, kSpring = 300;
+
+// the hemisphere (8 x 24 mesh, rim at the waterline) on a slide joint
+// along x with stiffness kSpring [N/m] (damped at half critical so the
+// surge settles), in one Airy wave along +x; drift on or off
+std::string heldModel(bool drift) {
+  const double m = kRho * 2.0 / 3.0 * M_PI * kR * kR * kR, lam = 2 * M_PI * kR / kKR;
+  std::ostringstream s;
+  s.precision(17);
+  s << "<mujoco><option timestep=\"0.005\"/><asset>"
+    << mjbt::hemisphereMeshXML(kR * mjbt::hemisphereAreaScale(24), 8, 24, 0.3)
+    << "</asset><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
+    << "<numeric name=\"mjbuoy.sea.density\" data=\"" << kRho << "\"/>" << mjbt::kNoDragEntries
+    << "<numeric name=\"mjbuoy.airy.w\" data=\"" << kA << " " << lam << " 0 0\"/>"
+    << "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+    << "<text name=\"mjbuoy.radiation.drift\" data=\"" << (drift ? "on" : "off") << "\"/>"
+    << "<numeric name=\"mjbuoy.radiation.omega\" data=\"0.7 7 12\"/>"
+    << "<numeric name=\"mjbuoy.radiation.panels\" data=\"0\"/>"
+    << "</custom><worldbody><body name=\"hemi\">"
+    << "<joint name=\"x\" type=\"slide\" axis=\"1 0 0\" stiffness=\"" << kSpring
+    << "\" damping=\"" << 2 * std::sqrt(kSpring * 1.5 * m) << "\"/>"
+    << "<inertial pos=\"0 0 -0.3\" mass=\"" << m << "\" diaginertia=\"" << 0.4 * m << " "
+    << 0.4 * m << " " << 0.4 * m << "\"/>"
+    << "<geom name=\"hull\" type=\"mesh\" mesh=\"hemi\" contype=\"0\" conaffinity=\"0\"/>"
+    << "</body></worldbody></mujoco>";
+  return s.str();
+}
+
+// mean surge offset [m] over whole wave periods after 60 s
+double meanOffset(Scene& s) {
+  const double w = std::sqrt(mjbt::kG * kKR / kR), T = 2 * M_PI / w;
+  const double t0 = 60, t1 = t0 + T * std::ceil(30 / T);
+  const long n = std::lround(t1 / s.m->opt.timestep);
+  double sum = 0;
+  long cnt = 0;
+  for (long i = 0; i < n; i++) {
+    mj_step(s.m, s.d);
+    if (!std::isfinite(s.d->qpos[0])) return NAN;
+    if (s.d->time < t0 - 1e-9) continue;
+    sum += s.d->qpos[0];
+    cnt++;
+  }
+  return sum / cnt;
+}
+
+TEST(MeanDriftTime, SpringHeldOffsetIsDriftOverStiffness) {
+  Scene on(heldModel(true)), off(heldModel(false));
+  ASSERT_TRUE(on.ok() && off.ok()) << on.err << off.err;
+  // the table's drift at the wave: F = A^2 T(omega, 0)
+  const mjb::Buoy* B = mjb::buoyOf(on.b);
+  ASSERT_EQ(B->diff.db.size(), 1u);
+  const mjb::DiffBody& db = B->diff.db[0];
+  ASSERT_FALSE(db.T.empty());
+  ASSERT_TRUE(mjb::buoyOf(off.b)->diff.db[0].T.empty());
+  double T[3];
+  mjb::driftAt(db, db.iw[0], db.tw[0], 0, T);
+  const double F = kA * kA * T[0];
+  const double xon = meanOffset(on), xoff = meanOffset(off);
+  std::printf("drift F %.3f N, F/k %.5f m; offset on %.5f off %.5f, on - off %.5f m\n", F,
+              F / kSpring, xon, xoff, xon - xoff);
+  EXPECT_GT(F, 0);  // along the waves (Maruo 1960)
+  EXPECT_NEAR(xon - xoff, F / kSpring, 0.05 * F / kSpring);
+}
+
+}  // namespace
