@@ -5,6 +5,8 @@
 // component is A^2 T, Newman 1974)
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <sstream>
 #include <string>
 
@@ -81,6 +83,37 @@ TEST(MeanDriftTime, SpringHeldOffsetIsDriftOverStiffness) {
               F / kSpring, xon, xoff, xon - xoff);
   EXPECT_GT(F, 0);  // along the waves (Maruo 1960)
   EXPECT_NEAR(xon - xoff, F / kSpring, 0.05 * F / kSpring);
+}
+
+// the drift table is cached next to the coefficients: a second attach
+// reads both (no solve) and gets the same table, bit for bit
+TEST(MeanDriftTime, TableIsCachedWithTheCoefficients) {
+  char dir[] = "/tmp/mjbuoy-drift-XXXXXX";
+  ASSERT_TRUE(mkdtemp(dir));
+  const std::string xml = std::string("<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
+      "<text name=\"mjbuoy.radiation\" data=\"on\"/><text name=\"mjbuoy.radiation.cache\" data=\"") +
+      dir + "\"/><numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 4\"/>"
+      "</custom><worldbody><body name=\"boat\"><freejoint/>"
+      "<geom name=\"hull\" type=\"box\" size=\"0.5 0.5 0.25\" mass=\"256.25\"/>"
+      "</body></worldbody></mujoco>";
+  std::vector<double> T0;
+  {
+    Scene a(xml);
+    ASSERT_TRUE(a.ok()) << a.err;
+    EXPECT_EQ(mjb::buoyOf(a.b)->radcache.miss, 1);
+    T0 = mjb::buoyOf(a.b)->diff.db.at(0).T;
+  }
+  Scene b(xml);
+  ASSERT_TRUE(b.ok()) << b.err;
+  EXPECT_EQ(mjb::buoyOf(b.b)->radcache.hit, 1);
+  EXPECT_EQ(mjb::buoyOf(b.b)->radcache.miss, 0);
+  const std::vector<double>& T1 = mjb::buoyOf(b.b)->diff.db.at(0).T;
+  ASSERT_EQ(T0.size(), T1.size());
+  ASSERT_FALSE(T0.empty());
+  EXPECT_EQ(std::memcmp(T0.data(), T1.data(), T0.size() * sizeof(double)), 0);
+  // the box is pushed along head waves (Maruo 1960): T_x(beta = 0) > 0
+  EXPECT_GT(T1[3 * (3 * mjb::kDiffHeadings) + 0], 0);
+  std::system((std::string("rm -rf '") + dir + "'").c_str());
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "radiation/drift.h"
+#include "radiation/driftstep.h"
 #include "radiation/panelmesh.h"
 
 namespace {
@@ -142,6 +143,65 @@ TEST(MeanDrift, FreeHemisphereNearFar) {
     EXPECT_GT(far, 0);
     EXPECT_NEAR(near, far, 0.05 * far);
   }
+}
+
+// Newman's (1974) approximation: the O(N) factorised sum against the
+// direct double sum sum_ij A_i A_j (T_i + T_j) / 2 cos(theta_i - theta_j)
+// over component pairs, and one component's steady mean A^2 T
+TEST(MeanDrift, NewmanSumMatchesPairs) {
+  mjb::Diffraction df;
+  mjb::DiffBody b;
+  b.body = 1;
+  b.c.omega = {1, 2, 3};
+  for (int h = 0; h < mjb::kDiffHeadings; h++) b.c.heading.push_back(2 * kPi * h / mjb::kDiffHeadings);
+  for (int w = 0; w < 3; w++)
+    for (int h = 0; h < mjb::kDiffHeadings; h++) {
+      double be = b.c.heading[h];
+      b.T.push_back((1 + w) * 100 * std::cos(be));
+      b.T.push_back((2 - w) * 50 * std::sin(be));
+      b.T.push_back(30 + 10 * w * std::cos(2 * be));
+    }
+  df.db.push_back(b);
+  mjb::Sea sea;
+  const double amp[3] = {0.5, 0.3, 0.2}, om[3] = {1.3, 1.5, 2.4}, dir[3] = {0, 20, -35},
+               ph[3] = {0.1, 2.0, 4.0};
+  for (int j = 0; j < 3; j++) {
+    mjb::Wave w{};
+    w.amp = amp[j], w.omega = om[j], w.k = om[j] * om[j] / kG, w.dir = dir[j], w.ph = ph[j];
+    w.dx = std::cos(dir[j] * kPi / 180), w.dy = std::sin(dir[j] * kPi / 180), w.kind = 1;
+    sea.waves.push_back(w);
+  }
+  mjb::diffSea(sea, &df);
+  const mjb::DiffBody& d = df.db[0];
+  const double x[3] = {0.7, -0.4, 0}, psi = 0.2;
+  for (double t : {0.0, 3.1, 17.9}) {
+    double F[6] = {0, 0, 0, 0, 0, 0}, want[3] = {0, 0, 0}, Ti[3][3], th[3];
+    mjb::driftNewman(d, sea, x, psi, t, F);
+    for (int i = 0; i < 3; i++) {
+      const mjb::Wave& w = sea.waves[i];
+      mjb::driftAt(d, d.iw[i], d.tw[i], w.dir * kPi / 180 - psi, Ti[i]);
+      th[i] = w.k * (w.dx * x[0] + w.dy * x[1]) + w.ph - w.omega * t;
+    }
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++)
+        for (int k = 0; k < 3; k++)
+          want[k] += amp[i] * amp[j] * 0.5 * (Ti[i][k] + Ti[j][k]) * std::cos(th[i] - th[j]);
+    EXPECT_NEAR(F[0], want[0], 1e-9 * std::fabs(want[0]) + 1e-12);
+    EXPECT_NEAR(F[1], want[1], 1e-9 * std::fabs(want[1]) + 1e-12);
+    EXPECT_NEAR(F[5], want[2], 1e-9 * std::fabs(want[2]) + 1e-12);
+  }
+  // one component: the steady mean drift, A^2 T, at any time
+  sea.waves.resize(1);
+  double T0[3], F1[6] = {0, 0, 0, 0, 0, 0}, F2[6] = {0, 0, 0, 0, 0, 0};
+  mjb::driftAt(d, d.iw[0], d.tw[0], -psi, T0);
+  mjb::driftNewman(d, sea, x, psi, 0.0, F1);
+  mjb::driftNewman(d, sea, x, psi, 5.3, F2);
+  EXPECT_NEAR(F1[0], amp[0] * amp[0] * T0[0], 1e-9 * std::fabs(T0[0]));
+  EXPECT_NEAR(F2[0], F1[0], 1e-9 * std::fabs(T0[0]));
+  // the heading interpolation: T at beta = 0 of row 0 is its table entry
+  double Tr[3];
+  mjb::driftAt(d, 0, 0, 0, Tr);
+  EXPECT_NEAR(Tr[0], 100, 1e-9);
 }
 
 }  // namespace
