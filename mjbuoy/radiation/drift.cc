@@ -186,35 +186,36 @@ void driftFar(const PanelField& f, const std::vector<dcplx>& xi, double* out) {
   for (int i = 0; i < n; i++)
     rmax = std::fmax(rmax, std::hypot(pn[i].c[0] - ref[0], pn[i].c[1] - ref[1]) + pn[i].diam);
   const int nth = std::min(kTheta, 4 * (int)std::ceil(K * rmax) + 64);
-  std::vector<dcplx> s(n), a(nth), ad(nth);
-  for (int h = 0; h < nh; h++) {
+  // angles: the nth of the grid, then each heading; E(t, i) the phase
+  // factor of panel i at angle t, Ed the same times d/dtheta's factor, so
+  // that every heading's H and H' are one product each (E S)
+  const int na = nth + nh;
+  Eigen::MatrixXcd E(na, n), Ed(na, n), S(n, nh);
+  for (int t = 0; t < na; t++) {
+    double th = t < nth ? 2 * kPi * t / nth : f.out->heading[t - nth];
+    double c = std::cos(th), sn = std::sin(th);
+    for (int i = 0; i < n; i++) {
+      double x = pn[i].c[0] - ref[0], y = pn[i].c[1] - ref[1];
+      E(t, i) = ca * std::polar(1.0, -K * (x * c + y * sn));
+      Ed(t, i) = dcplx(0, -K * (-x * sn + y * c)) * E(t, i);
+    }
+  }
+  for (int h = 0; h < nh; h++)
     for (int i = 0; i < n; i++)
-      s[i] = total(f.sig, n, i, h, f, &xi[6 * h]) * pn[i].area * std::exp(K * pn[i].c[2]);
-    auto kochin = [&](double th, dcplx* H, dcplx* Hd) {
-      double c = std::cos(th), sn = std::sin(th);
-      *H = 0, *Hd = 0;
-      for (int i = 0; i < n; i++) {
-        double x = pn[i].c[0] - ref[0], y = pn[i].c[1] - ref[1];
-        dcplx e = s[i] * std::polar(1.0, -K * (x * c + y * sn));
-        *H += e;
-        *Hd += dcplx(0, -K * (-x * sn + y * c)) * e;
-      }
-      *H *= ca, *Hd *= ca;
-    };
-    double ix = 0, iy = 0, im = 0, dth = 2 * kPi / nth;
+      S(i, h) = total(f.sig, n, i, h, f, &xi[6 * h]) * pn[i].area * std::exp(K * pn[i].c[2]);
+  Eigen::MatrixXcd a = E * S, ad = Ed * S;
+  const dcplx e4 = std::polar(1.0, -kPi / 4);
+  const double sk = 2 * std::sqrt(2 * kPi / K), dth = 2 * kPi / nth;
+  for (int h = 0; h < nh; h++) {
+    double ix = 0, iy = 0, im = 0;
     for (int t = 0; t < nth; t++) {
-      double th = t * dth;
-      kochin(th, &a[t], &ad[t]);
-      double q = std::norm(a[t]);
+      double th = t * dth, q = std::norm(a(t, h));
       ix += q * std::cos(th) * dth;
       iy += q * std::sin(th) * dth;
-      im += (ad[t] * std::conj(a[t])).imag() * dth;
+      im += (ad(t, h) * std::conj(a(t, h))).imag() * dth;
     }
-    double beta = f.out->heading[h];
-    dcplx ab, adb;
-    kochin(beta, &ab, &adb);
-    const dcplx e4 = std::polar(1.0, -kPi / 4);
-    double sk = 2 * std::sqrt(2 * kPi / K);
+    const double beta = f.out->heading[h];
+    const dcplx ab = a(nth + h, h), adb = ad(nth + h, h);
     double cross = sk * (std::conj(ab) * e4).real();
     // Maruo: F = -(rho g / 4) [int |a|^2 (cos, sin) dth + 2 sqrt(2 pi/K) (cos b, sin b) Re(a*(b) e^{-i pi/4})]
     out[3 * h + 0] = -(rho * g / 4) * (ix + std::cos(beta) * cross);
@@ -300,7 +301,7 @@ void driftNear(const PanelField& f, const DriftBody& b, const std::vector<dcplx>
 
 std::string panelSolveDrift(const PanelMesh& body, const PanelMesh& lid,
                             const std::vector<double>& omega, const std::vector<double>& heading,
-                            const DriftBody& b, HydroCoef* out, DriftTable* dt) {
+                            const DriftBody& b, HydroCoef* out, DriftTable* dt, bool near) {
   int nh = (int)heading.size(), nw = (int)omega.size();
   dt->far.assign(3 * nh * nw, 0);
   dt->near.assign(3 * nh * nw, 0);
@@ -316,7 +317,7 @@ std::string panelSolveDrift(const PanelMesh& body, const PanelMesh& lid,
       return;
     }
     driftFar(f, xi, &dt->far[3 * nh * f.w]);
-    driftNear(f, b, xi, &dt->near[3 * nh * f.w]);
+    if (near) driftNear(f, b, xi, &dt->near[3 * nh * f.w]);
   };
   std::string err;
   if (!panelSolve(body, lid, omega, heading, out, &err, &fn)) return err;

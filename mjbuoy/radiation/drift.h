@@ -46,10 +46,12 @@ struct DriftTable {
   std::vector<double> far, near;
 };
 
-// panelSolve with the drift table filled alongside out ("" or the error)
+// panelSolve with the drift table filled alongside out ("" or the error);
+// near false: the far field only (near left 0; the time domain uses the far)
 std::string panelSolveDrift(const PanelMesh& body, const PanelMesh& lid,
                             const std::vector<double>& omega, const std::vector<double>& heading,
-                            const DriftBody& b, HydroCoef* out, DriftTable* dt);
+                            const DriftBody& b, HydroCoef* out, DriftTable* dt,
+                            bool near = true);
 
 }  // namespace mjb
 

@@ -272,7 +272,7 @@ static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
   }
   B->radcache.miss++;
   if (dt) {
-    *err = panelSolveDrift(body, lid, omega, head, *db, c, dt);
+    *err = panelSolveDrift(body, lid, omega, head, *db, c, dt, false);  // far field only
     if (!err->empty()) return false;
   } else if (!panelSolve(body, lid, omega, head, c, err)) {
     return false;
