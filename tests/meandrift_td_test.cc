@@ -86,7 +86,8 @@ TEST(MeanDriftTime, SpringHeldOffsetIsDriftOverStiffness) {
 }
 
 // the drift table is cached next to the coefficients: a second attach
-// reads both (no solve) and gets the same table, bit for bit
+// reads both (no solve) and gets the same table, bit for bit; a cache
+// holding the coefficients without the table solves again, silently
 TEST(MeanDriftTime, TableIsCachedWithTheCoefficients) {
   char dir[] = "/tmp/mjbuoy-drift-XXXXXX";
   ASSERT_TRUE(mkdtemp(dir));
@@ -98,9 +99,15 @@ TEST(MeanDriftTime, TableIsCachedWithTheCoefficients) {
       "</body></worldbody></mujoco>";
   std::vector<double> T0;
   {
+    // the coefficients' file alone (drift off) is a plain miss for drift on
+    std::string off = xml;
+    off.insert(off.find("</custom>"), "<text name=\"mjbuoy.radiation.drift\" data=\"off\"/>");
+    Scene z(off);
+    ASSERT_TRUE(z.ok()) << z.err;
     Scene a(xml);
     ASSERT_TRUE(a.ok()) << a.err;
     EXPECT_EQ(mjb::buoyOf(a.b)->radcache.miss, 1);
+    EXPECT_STREQ(mjb_warnings(a.b), "");
     T0 = mjb::buoyOf(a.b)->diff.db.at(0).T;
   }
   Scene b(xml);

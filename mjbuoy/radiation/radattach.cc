@@ -256,7 +256,11 @@ static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
       bool dok = !dt || (radCacheLoad(dir, dkey, &gotd, &dnote) &&
                          driftUnpack(gotd, (int)omega.size(), (int)head.size(), dt));
       if (note.empty() && dok) return *c = std::move(got), B->radcache.hit++, true;
-      note = "radiation cache: " + radCachePath(dir, key) + " " + note + "; recomputed and "
+      // no drift file yet (drift was off, or another process is writing
+      // it): a plain miss; a drift file that cannot be used: named
+      std::string bad = note.empty() ? dnote : note;
+      std::string path = radCachePath(dir, note.empty() ? dkey : key);
+      note = bad.empty() ? "" : "radiation cache: " + path + " " + bad + "; recomputed and "
              "rewritten";
     }
     if (!note.empty()) B->cfg.warn.push_back(who.substr(8) + ": " + note);
