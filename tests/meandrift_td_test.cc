@@ -91,8 +91,10 @@ TEST(MeanDriftTime, SpringHeldOffsetIsDriftOverStiffness) {
 TEST(MeanDriftTime, TableIsCachedWithTheCoefficients) {
   char dir[] = "/tmp/mjbuoy-drift-XXXXXX";
   ASSERT_TRUE(mkdtemp(dir));
-  const std::string xml = std::string("<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
-      "<text name=\"mjbuoy.radiation\" data=\"on\"/><text name=\"mjbuoy.radiation.cache\" data=\"") +
+  const std::string xml =
+      std::string("<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"hull\"/>"
+                  "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+                  "<text name=\"mjbuoy.radiation.cache\" data=\"") +
       dir + "\"/><numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 4\"/>"
       "</custom><worldbody><body name=\"boat\"><freejoint/>"
       "<geom name=\"hull\" type=\"box\" size=\"0.5 0.5 0.25\" mass=\"256.25\"/>"

@@ -179,7 +179,8 @@ TEST(MeanDrift, NewmanSumMatchesPairs) {
   mjb::DiffBody b;
   b.body = 1;
   b.c.omega = {1, 2, 3};
-  for (int h = 0; h < mjb::kDiffHeadings; h++) b.c.heading.push_back(2 * kPi * h / mjb::kDiffHeadings);
+  for (int h = 0; h < mjb::kDiffHeadings; h++)
+    b.c.heading.push_back(2 * kPi * h / mjb::kDiffHeadings);
   for (int w = 0; w < 3; w++)
     for (int h = 0; h < mjb::kDiffHeadings; h++) {
       double be = b.c.heading[h];

@@ -38,7 +38,7 @@ dcplx incident(const PanelField& f, const double* x, double beta, dcplx grad[3])
   const double* r = f.out->ref;
   double cb = std::cos(beta), sb = std::sin(beta);
   double ph = f.K * ((x[0] - r[0]) * cb + (x[1] - r[1]) * sb);
-  dcplx p = dcplx(0, -f.out->g / f.omega) * std::exp(f.K * x[2]) * dcplx(std::cos(ph), std::sin(ph));
+  dcplx p = dcplx(0, -f.out->g / f.omega) * std::exp(f.K * x[2]) * std::polar(1.0, ph);
   if (grad) {
     grad[0] = dcplx(0, f.K * cb) * p;
     grad[1] = dcplx(0, f.K * sb) * p;
@@ -62,7 +62,8 @@ std::vector<std::vector<int>> neighbours(const PanelField& f) {
   double lo = 1e300, hi = -1e300;
   for (int i = 0; i < f.nb; i++)
     for (int v = 0; v < pn[i].nv; v++)
-      for (int k = 0; k < 3; k++) lo = std::fmin(lo, pn[i].v[v][k]), hi = std::fmax(hi, pn[i].v[v][k]);
+      for (int k = 0; k < 3; k++)
+        lo = std::fmin(lo, pn[i].v[v][k]), hi = std::fmax(hi, pn[i].v[v][k]);
   double q = 1e-9 * (hi - lo) + 1e-300;
   std::map<std::tuple<long long, long long, long long>, std::vector<int>> at;
   for (int i = 0; i < f.nb; i++)
@@ -217,7 +218,8 @@ void driftFar(const PanelField& f, const std::vector<dcplx>& xi, double* out) {
     const double beta = f.out->heading[h];
     const dcplx ab = a(nth + h, h), adb = ad(nth + h, h);
     double cross = sk * (std::conj(ab) * e4).real();
-    // Maruo: F = -(rho g / 4) [int |a|^2 (cos, sin) dth + 2 sqrt(2 pi/K) (cos b, sin b) Re(a*(b) e^{-i pi/4})]
+    // Maruo: F = -(rho g / 4) [int |a|^2 (cos, sin) dth
+    //   + 2 sqrt(2 pi/K) (cos b, sin b) Re(a*(b) e^{-i pi/4})]
     out[3 * h + 0] = -(rho * g / 4) * (ix + std::cos(beta) * cross);
     out[3 * h + 1] = -(rho * g / 4) * (iy + std::sin(beta) * cross);
     // Newman: Mz = -(rho g / 4K) [int Im(a' a*) dth - 2 sqrt(2 pi/K) Im(e^{-i pi/4} a'*(b))]
