@@ -101,6 +101,11 @@ TEST(MeanDrift, FixedCylinderHavelock) {
     EXPECT_NEAR(far, ref, 0.05 * ref);
     EXPECT_NEAR(near, ref, 0.05 * ref);
     EXPECT_NEAR(fary, ref, 0.05 * ref);
+    // a fixed body's Froude-Krylov drift is zero: |eta_I| is constant on the
+    // closed waterline and |grad phi_I|^2 depends on z alone, so both
+    // integrate to 0 (divergence theorem; docs/physics.md section 17)
+    double fk = std::hypot(dt.fk[3 * (2 * w)], dt.fk[3 * (2 * w) + 1]) / s;
+    EXPECT_LT(fk, 0.01 * ref) << "kR " << kR[w];
   }
 }
 

@@ -144,25 +144,31 @@ bool driftRao(const PanelField& f, const DriftBody& b, std::vector<dcplx>* xi) {
   int nh = nhead(f);
   xi->assign(6 * nh, 0);
   if (!b.free) return true;
+  int id[6], n = 0;
+  for (int k = 0; k < 6; k++)
+    if (b.dof[k]) id[n++] = k;
+  if (!n) return true;
   double w = f.omega;
-  Eigen::Matrix<dcplx, 6, 6> Z;
+  Eigen::MatrixXcd Z(n, n);
   const double* A = &f.out->A[36 * f.w];
   const double* B = &f.out->B[36 * f.w];
-  for (int i = 0; i < 6; i++)
-    for (int j = 0; j < 6; j++)
-      Z(i, j) = dcplx(-w * w * (b.M[6 * i + j] + A[6 * i + j]) + b.C[6 * i + j], -w * B[6 * i + j]);
-  Eigen::FullPivLU<Eigen::Matrix<dcplx, 6, 6>> lu(Z);
+  for (int r = 0; r < n; r++)
+    for (int c = 0; c < n; c++) {
+      int o = 6 * id[r] + id[c];
+      Z(r, c) = dcplx(-w * w * (b.M[o] + A[o]) + b.C[o], -w * (B[o] + b.D[o]));
+    }
+  Eigen::FullPivLU<Eigen::MatrixXcd> lu(Z);
   if (!lu.isInvertible()) return false;
   for (int h = 0; h < nh; h++) {
-    Eigen::Matrix<dcplx, 6, 1> X;
-    for (int k = 0; k < 6; k++) {
-      int o = (f.w * nh + h) * 6 + k;
-      X(k) = dcplx(f.out->Xre[o], f.out->Xim[o]);
+    Eigen::VectorXcd X(n);
+    for (int r = 0; r < n; r++) {
+      int o = (f.w * nh + h) * 6 + id[r];
+      X(r) = dcplx(f.out->Xre[o], f.out->Xim[o]);
     }
-    Eigen::Matrix<dcplx, 6, 1> s = lu.solve(X);
-    for (int k = 0; k < 6; k++) {
-      if (!std::isfinite(s(k).real()) || !std::isfinite(s(k).imag())) return false;
-      (*xi)[6 * h + k] = s(k);
+    Eigen::VectorXcd s = lu.solve(X);
+    for (int r = 0; r < n; r++) {
+      if (!std::isfinite(s(r).real()) || !std::isfinite(s(r).imag())) return false;
+      (*xi)[6 * h + id[r]] = s(r);
     }
   }
   return true;
@@ -301,12 +307,122 @@ void driftNear(const PanelField& f, const DriftBody& b, const std::vector<dcplx>
   }
 }
 
+// the waterline edges of body panel p (both ends on z = 0): their
+// 2-point Gauss points at[2][3], the edge length L and its outward
+// horizontal normal (nx, ny); false if e is not one
+namespace {
+
+bool waterEdge(const Panel& p, int e, double at[2][3], double* L, double* nx, double* ny) {
+  double tol = 1e-6 * (1 + p.diam);
+  const double* v0 = p.v[e];
+  const double* v1 = p.v[(e + 1) % p.nv];
+  if (std::fabs(v0[2]) > tol || std::fabs(v1[2]) > tol) return false;
+  double ex = v1[0] - v0[0], ey = v1[1] - v0[1];
+  *L = std::hypot(ex, ey);
+  if (!(*L > 0)) return false;
+  *nx = ey / *L, *ny = -ex / *L;
+  if (*nx * p.n[0] + *ny * p.n[1] < 0) *nx = -*nx, *ny = -*ny;
+  for (int gp = 0; gp < 2; gp++) {
+    double u = 0.5 + (gp ? 0.5 : -0.5) / std::sqrt(3.0);
+    for (int k = 0; k < 3; k++) at[gp][k] = v0[k] + u * (v1[k] - v0[k]);
+  }
+  return true;
+}
+
+// the mean of alpha x F1 (Fx, Fy) and of alpha x M1 + xi x F1 (Mz), added
+// to F: Pinkster's rotation term for the first-order force F1 [6]
+void rotationTerm(const dcplx* x, const dcplx* F1, double F[3]) {
+  auto crossm = [](const dcplx* a, const dcplx* c, int k) {
+    int i = (k + 1) % 3, j = (k + 2) % 3;
+    return 0.5 * (a[i] * std::conj(c[j]) - a[j] * std::conj(c[i])).real();
+  };
+  F[0] += crossm(x + 3, F1, 0);
+  F[1] += crossm(x + 3, F1, 1);
+  F[2] += crossm(x + 3, F1 + 3, 2) + crossm(x, F1, 2);
+}
+
+}  // namespace
+
+void driftFK(const PanelField& f, const DriftBody& b, const std::vector<dcplx>& xi, double* out) {
+  const std::vector<Panel>& pn = *f.pn;
+  const double* ref = f.out->ref;
+  const int nh = nhead(f);
+  const double rho = f.out->rho, g = f.out->g, w = f.omega;
+  for (int h = 0; h < nh; h++) {
+    const dcplx* x = &xi[6 * h];
+    const double beta = f.out->heading[h];
+    double F[3] = {0, 0, 0};
+    dcplx F1[6] = {0, 0, 0, 0, 0, 0};  // first-order Froude-Krylov force, then + hydrostatic
+    auto add = [&](const double* at, double fx, double fy) {
+      F[0] += fx, F[1] += fy;
+      F[2] += (at[0] - ref[0]) * fy - (at[1] - ref[1]) * fx;
+    };
+    for (int i = 0; i < f.nb; i++) {
+      const Panel& p = pn[i];
+      dcplx gi[3], d[3];
+      const dcplx ph = incident(f, p.c, beta, gi);
+      pointMotion(x, p.c, ref, d);
+      // velocity squared (rho/4) |grad phi_I|^2 and pressure gradient
+      // (rho/2) Re(X . conj(-i w grad phi_I)), as driftNear's with phi_I
+      double q = std::norm(gi[0]) + std::norm(gi[1]) + std::norm(gi[2]), pg = 0;
+      for (int k = 0; k < 3; k++) pg += (d[k] * std::conj(dcplx(0, -w) * gi[k])).real();
+      const double s = ((rho / 4) * q + (rho / 2) * pg) * p.area;
+      add(p.c, s * p.n[0], s * p.n[1]);
+      // F1 = -int p1 n dS, p1 = i w rho phi_I (moment about ref)
+      const dcplx p1 = dcplx(0, w * rho) * ph * p.area;
+      const double r[3] = {p.c[0] - ref[0], p.c[1] - ref[1], p.c[2] - ref[2]};
+      const double rn[3] = {r[1] * p.n[2] - r[2] * p.n[1], r[2] * p.n[0] - r[0] * p.n[2],
+                            r[0] * p.n[1] - r[1] * p.n[0]};
+      for (int k = 0; k < 3; k++) F1[k] -= p1 * p.n[k], F1[3 + k] -= p1 * rn[k];
+      // waterline -(rho g/4) |eta_I - X_3|^2 n dl, eta_I = (i w / g) phi_I(z = 0)
+      for (int e = 0; e < p.nv; e++) {
+        double at[2][3], L, nx, ny;
+        if (!waterEdge(p, e, at, &L, &nx, &ny)) continue;
+        for (int gp = 0; gp < 2; gp++) {
+          dcplx dz[3];
+          pointMotion(x, at[gp], ref, dz);
+          const dcplx zr = dcplx(0, w / g) * incident(f, at[gp], beta, nullptr) - dz[2];
+          const double c = -(rho * g / 4) * std::norm(zr) * 0.5 * L;
+          add(at[gp], c * nx, c * ny);
+        }
+      }
+    }
+    if (b.free) {
+      // rotation: F1 the first-order Froude-Krylov plus hydrostatic force
+      for (int r = 0; r < 6; r++)
+        for (int c = 0; c < 6; c++) F1[r] -= b.Cb[6 * r + c] * x[c];
+      rotationTerm(x, F1, F);
+    }
+    for (int k = 0; k < 3; k++) out[3 * h + k] = F[k];
+  }
+}
+
+void driftPhase(const PanelField& f, const DriftBody& b, const std::vector<dcplx>& xi,
+                double* out) {
+  const int nh = nhead(f);
+  for (int h = 0; h < nh; h++) {
+    const double beta = f.out->heading[h];
+    dcplx u[3];
+    pointMotion(&xi[6 * h], b.com, f.out->ref, u);
+    // U: the COM's displacement along the wave; mean of Re(X_D e^{iK U}) is
+    // (1/2) Re(i K X_D conj(U)) (X_D = X - FK, the diffraction force)
+    const dcplx U = std::cos(beta) * u[0] + std::sin(beta) * u[1];
+    const int to[3] = {0, 1, 5};
+    for (int k = 0; k < 3; k++) {
+      const int o = (f.w * nh + h) * 6 + to[k];
+      const dcplx XD(f.out->Xre[o] - f.out->FKre[o], f.out->Xim[o] - f.out->FKim[o]);
+      out[3 * h + k] += 0.5 * (dcplx(0, f.K) * XD * std::conj(U)).real();
+    }
+  }
+}
+
 std::string panelSolveDrift(const PanelMesh& body, const PanelMesh& lid,
                             const std::vector<double>& omega, const std::vector<double>& heading,
                             const DriftBody& b, HydroCoef* out, DriftTable* dt, bool near) {
   int nh = (int)heading.size(), nw = (int)omega.size();
   dt->far.assign(3 * nh * nw, 0);
   dt->near.assign(3 * nh * nw, 0);
+  dt->fk.assign(3 * nh * nw, 0);
   std::mutex mu;
   std::string bad;
   PanelFieldFn fn = [&](const PanelField& f) {
@@ -319,13 +435,16 @@ std::string panelSolveDrift(const PanelMesh& body, const PanelMesh& lid,
       return;
     }
     driftFar(f, xi, &dt->far[3 * nh * f.w]);
+    driftFK(f, b, xi, &dt->fk[3 * nh * f.w]);
+    driftPhase(f, b, xi, &dt->fk[3 * nh * f.w]);
     if (near) driftNear(f, b, xi, &dt->near[3 * nh * f.w]);
   };
   std::string err;
   if (!panelSolve(body, lid, omega, heading, out, &err, &fn)) return err;
   if (!bad.empty()) return bad;
   for (size_t i = 0; i < dt->far.size(); i++)
-    if (!std::isfinite(dt->far[i]) || !std::isfinite(dt->near[i])) {
+    if (!std::isfinite(dt->far[i]) || !std::isfinite(dt->near[i]) ||
+        !std::isfinite(dt->fk[i])) {
       char s[160];
       std::snprintf(s, sizeof s, "drift: non-finite mean drift at omega = %g rad/s",
                     omega[i / (3 * nh)]);

@@ -9,14 +9,35 @@
 
 namespace mjb {
 
+// a root on slide joints alone, each along a world axis, its parent the
+// world: b's dofs the joints' axes, D their damping [N s/m]; else false
+// (a restrained body)
+static bool slideDofs(const mjModel* m, const mjData* d, int root, DriftBody* b) {
+  if (m->body_parentid[root] != 0) return false;
+  for (int k = 0; k < 6; k++) b->dof[k] = false;
+  for (int j = 0; j < m->body_jntnum[root]; j++) {
+    int jj = m->body_jntadr[root] + j, k = -1;
+    if (m->jnt_type[jj] != mjJNT_SLIDE) return false;
+    for (int a = 0; a < 3; a++)
+      if (std::fabs(std::fabs(d->xaxis[3 * jj + a]) - 1) < 1e-9) k = a;
+    if (k < 0 || b->dof[k]) return false;
+    b->dof[k] = true;
+    b->D[7 * k] = m->dof_damping[m->jnt_dofadr[jj]];
+  }
+  return true;
+}
+
 void driftDynamics(const mjModel* m, const mjData* d, int root, const PanelMesh& body,
                    const double o[3], double rho, double g, DriftBody* b) {
   *b = DriftBody();
-  if (!m->body_jntnum[root] || m->jnt_type[m->body_jntadr[root]] != mjJNT_FREE) return;
+  if (!m->body_jntnum[root]) return;
+  bool freej = m->jnt_type[m->body_jntadr[root]] == mjJNT_FREE;
+  if (!freej && !slideDofs(m, d, root, b)) return;
   double I[6], G[3], mass;
   if (!groupInertia(m, d, root, I, G, &mass)) return;
   b->free = true;
   double r[3] = {G[0] - o[0], G[1] - o[1], G[2] - o[2]};
+  for (int k = 0; k < 3; k++) b->com[k] = r[k];
   // M about the frame's origin: [m 1, -m [r]x; m [r]x, I_G + m (|r|^2 1 - r r^T)]
   const double X[9] = {0, -r[2], r[1], r[2], 0, -r[0], -r[1], r[0], 0};
   const double IG[9] = {I[0], I[3], I[4], I[3], I[1], I[5], I[4], I[5], I[2]};
@@ -58,17 +79,25 @@ void driftDynamics(const mjModel* m, const mjData* d, int root, const PanelMesh&
   C[6 * 2 + 4] = C[6 * 4 + 2] = -rho * g * sx;
   for (int i = 0; i < 3; i++)
     for (int j = 0; j < 3; j++) C[6 * (3 + i) + 3 + j] = C3[3 * i + j];
+  std::memcpy(b->Cb, b->C, sizeof b->Cb);
   C[6 * 3 + 3] -= mass * g * r[2];
   C[6 * 4 + 4] -= mass * g * r[2];
   C[6 * 3 + 5] += mass * g * r[0];
   C[6 * 4 + 5] += mass * g * r[1];
+  // the slide joints' springs (their damping is in D already)
+  for (int j = 0; j < m->body_jntnum[root] && !freej; j++) {
+    int jj = m->body_jntadr[root] + j;
+    for (int k = 0; k < 3; k++)
+      if (std::fabs(d->xaxis[3 * jj + k]) > 0.5) C[7 * k] += m->jnt_stiffness[jj];
+  }
 }
 
 std::string driftCacheKey(const std::string& ckey, const DriftBody& b) {
-  std::string k = ckey + "drift1";
+  std::string k = ckey + "drift2";
   k.push_back(b.free ? 1 : 0);
-  k.append((const char*)b.M, sizeof b.M);
-  k.append((const char*)b.C, sizeof b.C);
+  for (bool f : b.dof) k.push_back(f ? 1 : 0);
+  for (const double* v : {b.M, b.C, b.D, b.Cb}) k.append((const char*)v, 36 * sizeof(double));
+  k.append((const char*)b.com, sizeof b.com);
   return k;
 }
 
@@ -92,6 +121,7 @@ HydroCoef driftPack(const DriftTable& dt, const HydroCoef& like) {
     for (int k = 0; k < 3; k++) {
       c.Xre[6 * i + to[k]] = dt.far[3 * i + k];
       c.Xim[6 * i + to[k]] = dt.near[3 * i + k];
+      c.FKre[6 * i + to[k]] = dt.fk[3 * i + k];
     }
   }
   return c;
@@ -99,15 +129,21 @@ HydroCoef driftPack(const DriftTable& dt, const HydroCoef& like) {
 
 bool driftUnpack(const HydroCoef& c, int nw, int nh, DriftTable* dt) {
   size_t n = (size_t)nw * nh;
-  if (c.nw() != nw || c.nh() != nh || c.Xre.size() != 6 * n || c.Xim.size() != 6 * n) return false;
+  if (c.nw() != nw || c.nh() != nh || c.Xre.size() != 6 * n || c.Xim.size() != 6 * n ||
+      c.FKre.size() != 6 * n)
+    return false;
   dt->far.assign(3 * n, 0);
   dt->near.assign(3 * n, 0);
+  dt->fk.assign(3 * n, 0);
   for (size_t i = 0; i < n; i++) {
     const int to[3] = {0, 1, 5};
     for (int k = 0; k < 3; k++) {
       dt->far[3 * i + k] = c.Xre[6 * i + to[k]];
       dt->near[3 * i + k] = c.Xim[6 * i + to[k]];
-      if (!std::isfinite(dt->far[3 * i + k]) || !std::isfinite(dt->near[3 * i + k])) return false;
+      dt->fk[3 * i + k] = c.FKre[6 * i + to[k]];
+      if (!std::isfinite(dt->far[3 * i + k]) || !std::isfinite(dt->near[3 * i + k]) ||
+          !std::isfinite(dt->fk[3 * i + k]))
+        return false;
     }
   }
   return true;

@@ -11,17 +11,21 @@ std::string setDrift(int body, const DriftTable& dt, const double ref[3], const 
   for (DiffBody& b : df->db) {
     if (b.body != body) continue;
     const size_t n = 3 * (size_t)b.c.nw() * b.c.nh();
-    if (dt.far.size() != n)
+    if (dt.far.size() != n || dt.fk.size() != n)
       return "mjbuoy: drift: the drift table needs 3 values per frequency and heading of the "
              "diffraction table";
-    b.T = dt.far;
+    // the step's pressure integration and diffraction phase give dt.fk itself
+    b.Tfar = dt.far;
+    b.T.resize(n);
+    for (size_t i = 0; i < n; i++) b.T[i] = dt.far[i] - dt.fk[i];
     // Mz about the COM: Mz(ref) - (com - ref) x F
     const double dx = com[0] - ref[0], dy = com[1] - ref[1];
-    for (size_t i = 0; i < n; i += 3) {
-      b.T[i + 2] -= dx * b.T[i + 1] - dy * b.T[i];
-      for (int k = 0; k < 3; k++)
-        if (!std::isfinite(b.T[i + k])) return "mjbuoy: drift: the drift table is not finite";
-    }
+    for (std::vector<double>* t : {&b.T, &b.Tfar})
+      for (size_t i = 0; i < n; i += 3) {
+        (*t)[i + 2] -= dx * (*t)[i + 1] - dy * (*t)[i];
+        for (int k = 0; k < 3; k++)
+          if (!std::isfinite((*t)[i + k])) return "mjbuoy: drift: the drift table is not finite";
+      }
     return "";
   }
   return "mjbuoy: drift: the body has no diffraction table (turn mjbuoy.radiation.diffraction "

@@ -13,8 +13,10 @@
 
 namespace mjb {
 
-// the drift table T of body's diffraction entry: far-field drift per unit
-// amplitude squared, (Fx, Fy, Mz) per (omega, heading) of its diffraction
+// the drift table T of body's diffraction entry: the far-field drift less
+// the part the step gives by itself (dt.fk: Froude-Krylov drift and the
+// diffraction force's phase), per unit amplitude squared (Tfar: the far
+// field alone), (Fx, Fy, Mz) per (omega, heading) of its diffraction
 // table, computed about ref (panel frame, the table's axes), the moment
 // moved to com [m] (same frame). "" or the error
 std::string setDrift(int body, const DriftTable& dt, const double ref[3], const double com[3],
