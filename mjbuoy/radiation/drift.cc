@@ -138,6 +138,38 @@ void surfaceField(const PanelField& f, const std::vector<std::vector<int>>& nbr,
   }
 }
 
+// the waterline edges of body panel p (both ends on z = 0): their
+// 2-point Gauss points at[2][3], the edge length L and its outward
+// horizontal normal (nx, ny); false if e is not one
+bool waterEdge(const Panel& p, int e, double at[2][3], double* L, double* nx, double* ny) {
+  double tol = 1e-6 * (1 + p.diam);
+  const double* v0 = p.v[e];
+  const double* v1 = p.v[(e + 1) % p.nv];
+  if (std::fabs(v0[2]) > tol || std::fabs(v1[2]) > tol) return false;
+  double ex = v1[0] - v0[0], ey = v1[1] - v0[1];
+  *L = std::hypot(ex, ey);
+  if (!(*L > 0)) return false;
+  *nx = ey / *L, *ny = -ex / *L;
+  if (*nx * p.n[0] + *ny * p.n[1] < 0) *nx = -*nx, *ny = -*ny;
+  for (int gp = 0; gp < 2; gp++) {
+    double u = 0.5 + (gp ? 0.5 : -0.5) / std::sqrt(3.0);
+    for (int k = 0; k < 3; k++) at[gp][k] = v0[k] + u * (v1[k] - v0[k]);
+  }
+  return true;
+}
+
+// the mean of alpha x F1 (Fx, Fy) and of alpha x M1 + xi x F1 (Mz), added
+// to F: Pinkster's rotation term for the first-order force F1 [6]
+void rotationTerm(const dcplx* x, const dcplx* F1, double F[3]) {
+  auto crossm = [](const dcplx* a, const dcplx* c, int k) {
+    int i = (k + 1) % 3, j = (k + 2) % 3;
+    return 0.5 * (a[i] * std::conj(c[j]) - a[j] * std::conj(c[i])).real();
+  };
+  F[0] += crossm(x + 3, F1, 0);
+  F[1] += crossm(x + 3, F1, 1);
+  F[2] += crossm(x + 3, F1 + 3, 2) + crossm(x, F1, 2);
+}
+
 }  // namespace
 
 bool driftRao(const PanelField& f, const DriftBody& b, std::vector<dcplx>* xi) {
@@ -264,26 +296,18 @@ void driftNear(const PanelField& f, const DriftBody& b, const std::vector<dcplx>
       add(p.c, fo);
       // waterline: edges of the panel on z = 0, -(rho g/4) |zeta_r|^2 n dl,
       // zeta = (i w / g) phi at z = 0 (2-point Gauss along the edge)
-      double tol = 1e-6 * (1 + p.diam);
       for (int e = 0; e < p.nv; e++) {
-        const double* v0 = p.v[e];
-        const double* v1 = p.v[(e + 1) % p.nv];
-        if (std::fabs(v0[2]) > tol || std::fabs(v1[2]) > tol) continue;
-        double ex = v1[0] - v0[0], ey = v1[1] - v0[1], L = std::hypot(ex, ey);
-        if (!(L > 0)) continue;
-        double nx = ey / L, ny = -ex / L;
-        if (nx * p.n[0] + ny * p.n[1] < 0) nx = -nx, ny = -ny;
+        double at[2][3], L, nx, ny;
+        if (!waterEdge(p, e, at, &L, &nx, &ny)) continue;
         for (int gp = 0; gp < 2; gp++) {
-          double u = 0.5 + (gp ? 0.5 : -0.5) / std::sqrt(3.0), at[3];
-          for (int k = 0; k < 3; k++) at[k] = v0[k] + u * (v1[k] - v0[k]);
           dcplx ph = phi[i];
-          for (int k = 0; k < 3; k++) ph += gi[k] * (at[k] - p.c[k]);
+          for (int k = 0; k < 3; k++) ph += gi[k] * (at[gp][k] - p.c[k]);
           dcplx dz[3];
-          pointMotion(x, at, ref, dz);
+          pointMotion(x, at[gp], ref, dz);
           dcplx zr = dcplx(0, w / g) * ph - dz[2];
           double c = -(rho * g / 4) * std::norm(zr) * 0.5 * L;
           double fw[2] = {c * nx, c * ny};
-          add(at, fw);
+          add(at[gp], fw);
         }
       }
     }
@@ -295,53 +319,11 @@ void driftNear(const PanelField& f, const DriftBody& b, const std::vector<dcplx>
         F1[r] = 0;
         for (int c = 0; c < 6; c++) F1[r] += -w * w * b.M[6 * r + c] * x[c];
       }
-      auto crossm = [](const dcplx* a, const dcplx* c, int k) {
-        int i = (k + 1) % 3, j = (k + 2) % 3;
-        return 0.5 * (a[i] * std::conj(c[j]) - a[j] * std::conj(c[i])).real();
-      };
-      F[0] += crossm(x + 3, F1, 0);
-      F[1] += crossm(x + 3, F1, 1);
-      F[2] += crossm(x + 3, F1 + 3, 2) + crossm(x, F1, 2);
+      rotationTerm(x, F1, F);
     }
     for (int k = 0; k < 3; k++) out[3 * h + k] = F[k];
   }
 }
-
-// the waterline edges of body panel p (both ends on z = 0): their
-// 2-point Gauss points at[2][3], the edge length L and its outward
-// horizontal normal (nx, ny); false if e is not one
-namespace {
-
-bool waterEdge(const Panel& p, int e, double at[2][3], double* L, double* nx, double* ny) {
-  double tol = 1e-6 * (1 + p.diam);
-  const double* v0 = p.v[e];
-  const double* v1 = p.v[(e + 1) % p.nv];
-  if (std::fabs(v0[2]) > tol || std::fabs(v1[2]) > tol) return false;
-  double ex = v1[0] - v0[0], ey = v1[1] - v0[1];
-  *L = std::hypot(ex, ey);
-  if (!(*L > 0)) return false;
-  *nx = ey / *L, *ny = -ex / *L;
-  if (*nx * p.n[0] + *ny * p.n[1] < 0) *nx = -*nx, *ny = -*ny;
-  for (int gp = 0; gp < 2; gp++) {
-    double u = 0.5 + (gp ? 0.5 : -0.5) / std::sqrt(3.0);
-    for (int k = 0; k < 3; k++) at[gp][k] = v0[k] + u * (v1[k] - v0[k]);
-  }
-  return true;
-}
-
-// the mean of alpha x F1 (Fx, Fy) and of alpha x M1 + xi x F1 (Mz), added
-// to F: Pinkster's rotation term for the first-order force F1 [6]
-void rotationTerm(const dcplx* x, const dcplx* F1, double F[3]) {
-  auto crossm = [](const dcplx* a, const dcplx* c, int k) {
-    int i = (k + 1) % 3, j = (k + 2) % 3;
-    return 0.5 * (a[i] * std::conj(c[j]) - a[j] * std::conj(c[i])).real();
-  };
-  F[0] += crossm(x + 3, F1, 0);
-  F[1] += crossm(x + 3, F1, 1);
-  F[2] += crossm(x + 3, F1 + 3, 2) + crossm(x, F1, 2);
-}
-
-}  // namespace
 
 void driftFK(const PanelField& f, const DriftBody& b, const std::vector<dcplx>& xi, double* out) {
   const std::vector<Panel>& pn = *f.pn;
