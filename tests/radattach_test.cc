@@ -109,6 +109,8 @@ TEST(RadAttach, BadEntriesAreRefusedByName) {
       {"<text name=\"mjbuoy.radiation\" data=\"yes\"/>", "mjbuoy.radiation\"> data = \"yes\""},
       {"<text name=\"mjbuoy.radiation.diffraction\" data=\"1\"/>",
        "mjbuoy.radiation.diffraction\"> data = \"1\" is not a switch; give \"on\" or \"off\""},
+      {"<text name=\"mjbuoy.radiation.drift\" data=\"mean\"/>",
+       "mjbuoy.radiation.drift\"> data = \"mean\" is not a switch; give \"on\" or \"off\""},
       {"<text name=\"mjbuoy.radiation.entry\" data=\"yes\"/>",
        "mjbuoy.radiation.entry\"> data = \"yes\" is not a switch; give \"on\" or \"off\""},
       {"<text name=\"mjbuoy.radiation.body.nobody\" data=\"on\"/>", "body \"nobody\", which does not exist"},

@@ -13,6 +13,8 @@
 #include "radiation/coefpsd.h"
 #include "radiation/coefxform.h"
 #include "radiation/diffract.h"
+#include "radiation/driftattach.h"
+#include "radiation/driftstep.h"
 #include "hull/eqdraft.h"
 #include "hull/jointeq.h"
 #include "radiation/hydrostatic.h"
@@ -245,18 +247,29 @@ static void checkCoef(Buoy* B, const std::string& who, bool file, int np, HydroC
 // whose payload fits it (radCacheCheck) is used as it is, else the
 // solution is computed, after its memory is estimated (radmem.h), and
 // stored; every cache problem is a warning, never an error
+// db, dt: the drift table too (driftattach.h), cached in its own file
 static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
                         const PanelMesh& lid, const std::vector<double>& omega,
-                        const std::vector<double>& head, HydroCoef* c, std::string* err) {
-  std::string dir = radCacheDir(B->cfg.rad.cache), key, note;
+                        const std::vector<double>& head, HydroCoef* c, std::string* err,
+                        const DriftBody* db = nullptr, DriftTable* dt = nullptr) {
+  std::string dir = radCacheDir(B->cfg.rad.cache), key, note, dkey;
   if (!dir.empty()) {
     key = radCacheKey(body, lid, omega, head, *c);
-    HydroCoef got;
+    if (dt) dkey = driftCacheKey(key, *db);
+    HydroCoef got, gotd;
+    std::string dnote;
     if (radCacheLoad(dir, key, &got, &note)) {
       // a file whose checksum holds can still not fit its key: replaced
       note = radCacheCheck(body, omega, head, *c, got);
-      if (note.empty()) return *c = std::move(got), B->radcache.hit++, true;
-      note = "radiation cache: " + radCachePath(dir, key) + " " + note + "; recomputed and "
+      // the drift table's file, else both are solved again
+      bool dok = !dt || (radCacheLoad(dir, dkey, &gotd, &dnote) &&
+                         driftUnpack(gotd, (int)omega.size(), (int)head.size(), dt));
+      if (note.empty() && dok) return *c = std::move(got), B->radcache.hit++, true;
+      // no drift file yet (drift was off, or another process is writing
+      // it): a plain miss; a drift file that cannot be used: named
+      std::string bad = note.empty() ? dnote : note;
+      std::string path = radCachePath(dir, note.empty() ? dkey : key);
+      note = bad.empty() ? "" : "radiation cache: " + path + " " + bad + "; recomputed and "
              "rewritten";
     }
     if (!note.empty()) B->cfg.warn.push_back(who.substr(8) + ": " + note);
@@ -271,9 +284,15 @@ static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
     return false;
   }
   B->radcache.miss++;
-  if (!panelSolve(body, lid, omega, head, c, err)) return false;
+  if (dt) {
+    *err = panelSolveDrift(body, lid, omega, head, *db, c, dt, false);  // far field only
+    if (!err->empty()) return false;
+  } else if (!panelSolve(body, lid, omega, head, c, err)) {
+    return false;
+  }
   if (dir.empty()) return true;
-  if (radCacheStore(dir, key, *c, &note)) {
+  if (radCacheStore(dir, key, *c, &note) &&
+      (!dt || radCacheStore(dir, dkey, driftPack(*dt, *c), &note))) {
     B->radcache.write++;
   } else {
     B->cfg.warn.push_back(who.substr(8) + ": " + note);
@@ -661,7 +680,32 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   // headings relative to the body's yaw (docs/physics.md section 15)
   std::vector<double> head;
   for (int h = 0; rc.diffraction && h < kDiffHeadings; h++) head.push_back(2 * M_PI * h / kDiffHeadings);
-  if (!cachedSolve(B, who, body, lid, omega, head, &c, &err)) {
+  // mean drift: its table from the same solve, with the group's motions
+  DriftBody db;
+  DriftTable dt;
+  bool drift = rc.diffraction && rc.drift;
+  // the drift's Kochin function is deep water's (e^(K z)): said where the
+  // sea's main components feel the seabed (k h < 3: their profile and
+  // dispersion differ from deep water's by more than about e^(-2 k h) = 0.25%)
+  if (drift && c.depth > 0) {
+    double amax = 0, khmin = 1e300, wmin = 0;
+    for (const Wave& w : B->cfg.sea.waves) amax = std::max(amax, w.amp);
+    for (const Wave& w : B->cfg.sea.waves)
+      if (w.amp >= 0.1 * amax && w.k * c.depth < khmin) khmin = w.k * c.depth, wmin = w.omega;
+    if (khmin < 3) {
+      B->cfg.warn.push_back(who.substr(8) + ": its mean wave drift is deep water's (Maruo and "
+                            "Newman), but at mjbuoy.sea.depth " + fmt(c.depth) + " m the sea's "
+                            "components of " + fmt(wmin) + " rad/s have k h = " + fmt(khmin) +
+                            " < 3 and feel the seabed: their drift is approximate "
+                            "(docs/physics.md section 18, \"Limits\")");
+    }
+  }
+  if (drift) {
+    const double o[3] = {d->xpos[3 * root], d->xpos[3 * root + 1], B->cfg.sea.level - dz};
+    driftDynamics(m, d, root, body, o, c.rho, c.g, &db);
+  }
+  if (!cachedSolve(B, who, body, lid, omega, head, &c, &err, drift ? &db : nullptr,
+                   drift ? &dt : nullptr)) {
     if (!(rc.given && rc.on) && !namedOn(*B, root))
       return skipGroup(B, root, who.substr(8) + " is off: panel solver: " + err);
     return who + ": panel solver: " + err;
@@ -689,7 +733,15 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   for (auto* v : {&c.heading, &c.Xre, &c.Xim, &c.FKre, &c.FKim}) v->clear();
   err = coefTransform(&c, p, Rd, pn);
   if (!err.empty()) return who + ": " + err;
-  return finishGroup(B, d, root, who, body, dz, Rd, std::move(c), cx, false);
+  err = finishGroup(B, d, root, who, body, dz, Rd, std::move(c), cx, false);
+  if (!err.empty() || !drift) return err;
+  bool has = false;  // a skipped group has no diffraction table
+  for (const DiffBody& x : B->diff.db) has = has || x.body == root;
+  if (!has) return "";
+  // the drift table next to the diffraction table, its moment about the COM p
+  const double ref0[3] = {0, 0, 0};
+  err = setDrift(root, dt, ref0, p, &B->diff);
+  return err.empty() ? "" : who + ": " + err;
 }
 
 // attachRadiation's work, which may throw (std::bad_alloc)

@@ -1,6 +1,7 @@
-// radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, diffraction, entry, cache, memorymodel,
-// omega, refine, panels, memory, rolldamping, rollzeta}, mjbuoy.radiation.body.<body> and
-// mjbuoy.radiation.{file, fileorigin, ulen}.<body> (schema: docs/mjcf.md)
+// radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, diffraction, drift, entry, cache,
+// memorymodel, omega, refine, panels, memory, rolldamping, rollzeta},
+// mjbuoy.radiation.body.<body> and mjbuoy.radiation.{file, fileorigin, ulen}.<body>
+// (schema: docs/mjcf.md)
 #include "api/radconfig.h"
 
 #include <algorithm>
@@ -144,6 +145,8 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
     r->lid = v;
   } else if (!std::strcmp(key, "radiation.diffraction")) {
     r->diffraction = v;
+  } else if (!std::strcmp(key, "radiation.drift")) {
+    r->drift = v;
   } else if (!std::strcmp(key, "radiation.entry")) {
     r->entry = v;
   } else if (!std::strncmp(key, "radiation.body.", 15)) {
@@ -156,7 +159,9 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
   } else {
     return "mjbuoy: unknown entry " + tag("text", name) +
            "; radiation text entries are mjbuoy.radiation, mjbuoy.radiation.lid, "
-           "mjbuoy.radiation.diffraction, mjbuoy.radiation.entry, mjbuoy.radiation.cache, mjbuoy.radiation.memorymodel, mjbuoy.radiation.body.<body> and mjbuoy.radiation.file.<body> (see docs/mjcf.md)";
+           "mjbuoy.radiation.diffraction, mjbuoy.radiation.drift, mjbuoy.radiation.entry, "
+           "mjbuoy.radiation.cache, mjbuoy.radiation.memorymodel, mjbuoy.radiation.body.<body> "
+           "and mjbuoy.radiation.file.<body> (see docs/mjcf.md)";
   }
   return "";
 }

@@ -34,6 +34,7 @@ struct RadConfig {
   int budget() const { return panelsGiven ? panels : refineGiven ? 0 : panels; }
   bool lid = true;              // interior lid against irregular frequencies
   bool diffraction = true;      // diffraction excitation (docs/physics.md section 15)
+  bool drift = true;            // mean and slow wave drift, with diffraction (section 18)
   double memory = 0;            // memory length [s]; 0: automatic
   bool conv = false;            // mjbuoy.radiation.memorymodel: statespace (default) or convolution
   bool ssAsked = false;         // memorymodel = statespace given explicitly: warn on a fallback

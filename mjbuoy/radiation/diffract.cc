@@ -1,5 +1,6 @@
 // diffraction excitation (diffract.h, docs/physics.md section 15)
 #include "radiation/diffract.h"
+#include "radiation/driftstep.h"
 
 #include <cmath>
 #include <cstdio>
@@ -133,6 +134,7 @@ static void bodyWrench(const DiffBody& b, const Sea& sea, const double x[3], dou
     const double A = r * w.amp, c = A * std::cos(ph), s = A * std::sin(ph);
     for (int k = 0; k < 6; k++) F[k] += re[k] * c - im[k] * s;
   }
+  driftNewman(b, sea, x, psi, t, F);  // mean and slow drift (empty table: none)
 }
 
 void diffractionStep(const Diffraction& df, const Sea& sea, const mjModel* m, const mjData* d,

@@ -27,6 +27,8 @@ struct DiffBody {
                            //   -1 below the first (D linear from 0), -2 above the last (none)
   std::vector<double> tw;  // weight of the next row
   int ri = -1;             // its body's index in Radiation::rb (immersion factor)
+  std::vector<double> T;   // mean drift (driftstep.h): Fx, Fy, Mz per (omega, heading); empty: off
+  std::vector<double> Tfar;  // the total (far-field) drift, same layout; T = Tfar - the step's own
 };
 
 struct Diffraction {

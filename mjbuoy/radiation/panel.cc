@@ -479,6 +479,8 @@ struct Freq {
   bool outer;        // frequencies run in parallel: fill serially
   const Group* gr;  // rows: the reduced solve; else all rows
   std::vector<int> rows;
+  const PanelFieldFn* field;  // the drift's hook (or nullptr)
+  const PanelMesh* body;
 };
 
 // the source strengths of M sig = rhs on the full mesh from the
@@ -596,9 +598,12 @@ bool solveOmega(const Freq& f, int w) {
       out->Xre[o] = (fk + fd).real();
       out->Xim[o] = (fk + fd).imag();
     }
-  return finiteAll(&out->A[36 * w], 36) && finiteAll(&out->B[36 * w], 36) &&
-         finiteAll(out->Xre.data() + 6 * w * nh, 6 * nh) &&  // data(): no headings is allowed
-         finiteAll(out->Xim.data() + 6 * w * nh, 6 * nh);
+  bool ok = finiteAll(&out->A[36 * w], 36) && finiteAll(&out->B[36 * w], 36) &&
+            finiteAll(out->Xre.data() + 6 * w * nh, 6 * nh) &&  // data(): no headings is allowed
+            finiteAll(out->Xim.data() + 6 * w * nh, 6 * nh);
+  if (ok && f.field)
+    (*f.field)(PanelField{&pb.pn, nb, pb.nl, w, om, K, sig.data(), phi.data(), f.body, out});
+  return ok;
 }
 
 // finite depth: every body vertex above the seabed z = -h
@@ -665,7 +670,8 @@ int panelMirrors(const PanelMesh& body, const PanelMesh& lid) {
 }
 
 bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,
-                const std::vector<double>& heading, HydroCoef* out, std::string* err) {
+                const std::vector<double>& heading, HydroCoef* out, std::string* err,
+                const PanelFieldFn* field) {
   Problem pb;
   if (!buildPanels(body, false, &pb, err)) return false;
   pb.nb = (int)pb.pn.size();
@@ -772,7 +778,8 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
   // a mirror-symmetric mesh (about y = c, x = c or both): reduced systems
   Group gr;
   bool sym = gSymmetry && (gr = symmetryGroup(pb), gr.img.size() > 1);
-  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &fds, &omega, &heading, out, nw > 1, &gr, {}};
+  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &fds, &omega, &heading, out, nw > 1, &gr, {}, field,
+          &body};
   if (sym) {
     fq.rows = gr.rows;
   } else {

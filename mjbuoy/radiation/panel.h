@@ -4,10 +4,13 @@
 #ifndef MJBUOY_PANEL_H_
 #define MJBUOY_PANEL_H_
 
+#include <complex>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "radiation/hydrocoef.h"
+#include "radiation/rankine.h"
 
 namespace mjb {
 
@@ -18,6 +21,24 @@ struct PanelMesh {
   int nface() const { return (int)face.size() / 4; }
 };
 
+// one frequency's solved field, for the mean drift (drift.h): panels (body
+// first, then lid; body panel i is body face i), source strengths sig
+// (n = nb + nl rows) and the body panels' potentials phi (nb rows), both
+// column-major with 6 radiation columns (per unit velocity) then one per
+// heading (diffraction, per unit wave amplitude); out holds this
+// frequency's A, B and X (row w)
+struct PanelField {
+  const std::vector<Panel>* pn;
+  int nb, nl, w;
+  double omega, K;
+  const std::complex<double>* sig;
+  const std::complex<double>* phi;
+  const PanelMesh* body;
+  const HydroCoef* out;
+};
+// called once per frequency, possibly from several threads at once
+typedef std::function<void(const PanelField&)> PanelFieldFn;
+
 // body: the mean wetted surface (z <= 0), panels counterclockwise seen from
 //   the water (normals out of the body);
 // lid: the waterplane inside the waterline (z = 0, normals up), for the
@@ -26,8 +47,10 @@ struct PanelMesh {
 // the body above z = -depth) and ref of out are inputs.
 // Fills out's omega, A, B, Ainf, heading, X, FK. Returns false with a message
 // naming the bad entry on invalid input or a non-finite result.
+// field: when given, called with each frequency's solved field
 bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,
-                const std::vector<double>& heading, HydroCoef* out, std::string* err);
+                const std::vector<double>& heading, HydroCoef* out, std::string* err,
+                const PanelFieldFn* field = nullptr);
 
 // a panel mesh mirror-symmetric about one vertical plane (within 1e-6 of
 // its size) is solved as two half-size systems, about two as four

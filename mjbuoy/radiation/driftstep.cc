@@ -1,0 +1,77 @@
+// wave drift in the time domain (driftstep.h, docs/physics.md section 18)
+#include "radiation/driftstep.h"
+
+#include <cmath>
+#include <complex>
+
+namespace mjb {
+
+std::string setDrift(int body, const DriftTable& dt, const double ref[3], const double com[3],
+                     Diffraction* df) {
+  for (DiffBody& b : df->db) {
+    if (b.body != body) continue;
+    const size_t n = 3 * (size_t)b.c.nw() * b.c.nh();
+    if (dt.far.size() != n || dt.fk.size() != n)
+      return "mjbuoy: drift: the drift table needs 3 values per frequency and heading of the "
+             "diffraction table";
+    // the step's pressure integration and diffraction phase give dt.fk itself
+    b.Tfar = dt.far;
+    b.T.resize(n);
+    for (size_t i = 0; i < n; i++) b.T[i] = dt.far[i] - dt.fk[i];
+    // Mz about the COM: Mz(ref) - (com - ref) x F
+    const double dx = com[0] - ref[0], dy = com[1] - ref[1];
+    for (std::vector<double>* t : {&b.T, &b.Tfar})
+      for (size_t i = 0; i < n; i += 3) {
+        (*t)[i + 2] -= dx * (*t)[i + 1] - dy * (*t)[i];
+        for (int k = 0; k < 3; k++)
+          if (!std::isfinite((*t)[i + k])) return "mjbuoy: drift: the drift table is not finite";
+      }
+    return "";
+  }
+  return "mjbuoy: drift: the body has no diffraction table (turn mjbuoy.radiation.diffraction "
+         "on)";
+}
+
+void driftAt(const DiffBody& b, int iw, double tw, double beta, double T[3]) {
+  T[0] = T[1] = T[2] = 0;
+  if (iw == -2 || b.T.empty()) return;
+  const int nh = b.c.nh();
+  int idx[4];
+  double hw[4];
+  headingWeights(beta, nh, idx, hw);
+  // as diffAt: below the table, row 0 weighted omega / omega_0
+  const int r0 = iw < 0 ? 0 : iw;
+  const double w0 = iw < 0 ? tw : 1 - tw, w1 = iw < 0 ? 0 : tw;
+  for (int r = 0; r < 2; r++) {
+    const double wr = r ? w1 : w0;
+    if (wr == 0) continue;
+    for (int k = 0; k < 4; k++) {
+      const double* p = &b.T[3 * ((size_t)(r0 + r) * nh + idx[k])];
+      for (int d = 0; d < 3; d++) T[d] += wr * hw[k] * p[d];
+    }
+  }
+}
+
+void driftNewman(const DiffBody& b, const Sea& sea, const double x[3], double psi, double t,
+                 double F[6]) {
+  if (b.T.empty()) return;
+  typedef std::complex<double> cd;
+  cd P[3] = {0, 0, 0}, Q = 0;
+  const size_t n = sea.waves.size() < b.iw.size() ? sea.waves.size() : b.iw.size();
+  for (size_t j = 0; j < n; j++) {
+    if (b.iw[j] == -2) continue;
+    const Wave& w = sea.waves[j];
+    double T[3];
+    driftAt(b, b.iw[j], b.tw[j], w.dir * (M_PI / 180) - psi, T);
+    // the component's phase at the COM, as the diffraction force's
+    const double ph = w.k * (w.dx * x[0] + w.dy * x[1]) + w.ph - w.omega * t;
+    const cd a = std::polar(w.amp, ph);
+    for (int k = 0; k < 3; k++) P[k] += T[k] * a;
+    Q += a;
+  }
+  F[0] += (P[0] * std::conj(Q)).real();
+  F[1] += (P[1] * std::conj(Q)).real();
+  F[5] += (P[2] * std::conj(Q)).real();
+}
+
+}  // namespace mjb

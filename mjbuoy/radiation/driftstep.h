@@ -1,0 +1,40 @@
+// mean and slowly varying wave drift in the time domain (docs/physics.md
+// section 18, "Time domain"): the drift table of a body next to its
+// diffraction table, summed over the sea's components by Newman's (1974)
+// approximation
+#ifndef MJBUOY_DRIFTSTEP_H_
+#define MJBUOY_DRIFTSTEP_H_
+
+#include <string>
+
+#include "radiation/diffract.h"
+#include "radiation/drift.h"
+#include "sea/sea.h"
+
+namespace mjb {
+
+// the drift table T of body's diffraction entry: the far-field drift less
+// the part the step gives by itself (dt.fk: Froude-Krylov drift and the
+// diffraction force's phase), per unit amplitude squared (Tfar: the far
+// field alone), (Fx, Fy, Mz) per (omega, heading) of its diffraction
+// table, computed about ref (panel frame, the table's axes), the moment
+// moved to com [m] (same frame). "" or the error
+std::string setDrift(int body, const DriftTable& dt, const double ref[3], const double com[3],
+                     Diffraction* df);
+
+// T of b at row (iw, tw) (diffRow) and heading beta [rad] (table axes):
+// Fx, Fy, Mz
+void driftAt(const DiffBody& b, int iw, double tw, double beta, double T[3]);
+
+// Newman's approximation of the difference-frequency force at the COM x
+// (world) and time t [s], added to F (surge, sway of F[0..1], yaw F[5];
+// table axes turned by psi [rad]):
+//   F(t) = sum_ij A_i A_j (T_i + T_j) / 2 cos(theta_i - theta_j)
+//        = Re[(sum_i a_i T_i) conj(sum_j a_j)],  a_j = A_j e^{i theta_j},
+// O(N) per step; one component gives the steady mean drift A^2 T
+void driftNewman(const DiffBody& b, const Sea& sea, const double x[3], double psi, double t,
+                 double F[6]);
+
+}  // namespace mjb
+
+#endif  // MJBUOY_DRIFTSTEP_H_
