@@ -121,6 +121,34 @@ double hullHeight(const mjData* d, const EqWater& w) {
   return hi > lo ? hi - lo : 0;
 }
 
+// why no balance was found: the joint still pushed hardest (Q [N or N m],
+// s its step cap) after the search
+std::string unbalanced(const mjModel* m, const std::vector<int>& jnt,
+                       const std::vector<double>& Q, const std::vector<double>& s) {
+  int worst = 0;
+  for (int k = 0; k < (int)jnt.size(); k++)
+    if (std::fabs(Q[k] * s[k]) > std::fabs(Q[worst] * s[worst])) worst = k;
+  return "gravity, its joints' springs and the flat-water buoyancy do not balance along "
+         "its joints (" + jointName(m, jnt[worst]) + " is still " +
+         "pushed with " + fmt(Q[worst]) + (m->jnt_type[jnt[worst]] == mjJNT_SLIDE ? " N" :
+         " N m") + " after 200 steps: it sinks, flies off or is held by nothing)";
+}
+
+// "" or the first limited joint whose equilibrium q lies outside its range
+std::string beyondRange(const mjModel* m, const std::vector<int>& jnt,
+                        const std::vector<double>& q) {
+  for (int k = 0; k < (int)jnt.size(); k++) {
+    const int j = jnt[k];
+    if (!m->jnt_limited[j]) continue;
+    const double lo = m->jnt_range[2 * j], hi = m->jnt_range[2 * j + 1];
+    if (q[k] < lo || q[k] > hi) {
+      return "its equilibrium " + fmt(q[k]) + " along " + jointName(m, j) +
+             " is beyond the joint's range [" + fmt(lo) + ", " + fmt(hi) + "]";
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 std::string jointEquilibrium(const mjModel* m, mjData* d, const EqWater& w,
@@ -191,27 +219,12 @@ std::string jointEquilibrium(const mjModel* m, mjData* d, const EqWater& w,
   }
   std::string why;
   if (!done) {
-    int worst = 0;
-    for (int k = 0; k < n; k++)
-      if (std::fabs(Q[k] * s[k]) > std::fabs(Q[worst] * s[worst])) worst = k;
-    why = "gravity, its joints' springs and the flat-water buoyancy do not balance along "
-          "its joints (" + jointName(m, jnt[worst]) + " is still " +
-          "pushed with " + fmt(Q[worst]) + (m->jnt_type[jnt[worst]] == mjJNT_SLIDE ? " N" :
-          " N m") + " after 200 steps: it sinks, flies off or is held by nothing)";
+    why = unbalanced(m, jnt, Q, s);
   } else if (set(q), jacobian(q), !stable(n, J, s)) {
     why = "its only balance of gravity, joint springs and flat-water buoyancy along its "
           "joints is unstable";
   }
-  for (int k = 0; why.empty() && k < n; k++) {
-    const int j = jnt[k];
-    if (!m->jnt_limited[j]) continue;
-    const double lo = m->jnt_range[2 * j], hi = m->jnt_range[2 * j + 1];
-    if (q[k] < lo || q[k] > hi) {
-      why = "its equilibrium " + fmt(q[k]) + " along " + jointName(m, j) +
-            " is beyond the joint's range [" +
-            fmt(lo) + ", " + fmt(hi) + "]";
-    }
-  }
+  if (why.empty()) why = beyondRange(m, jnt, q);
   set(why.empty() ? q : q0);
   mj_kinematics(m, d);
   mj_comPos(m, d);
