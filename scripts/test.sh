@@ -87,13 +87,13 @@ if [ $run_fuzz = 1 ]; then
   fuzz_build() {
     CC=clang CXX=clang++ cmake -S . -B "$fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DMJBUOY_FUZZ=ON >/dev/null &&
-      cmake --build "$fuzz" -j"$jobs" --target fuzz_kernel fuzz_config fuzz_scenario fuzz_gl 2>&1 |
+      cmake --build "$fuzz" -j"$jobs" --target fuzz_kernel fuzz_config fuzz_setsea fuzz_scenario fuzz_gl 2>&1 |
       { grep -E "error|Error" || true; } &&
       test -x "$fuzz/tests/fuzz/fuzz_kernel"
   }
   phase "fuzz build" fuzz_build
-  # the four targets at once, each for MJBUOY_FUZZ_SECONDS (CMake cache,
-  # 60): one minute of wall time whatever the core count
+  # the five targets four at a time, each for MJBUOY_FUZZ_SECONDS (CMake
+  # cache, 60): two minutes of wall time whatever the core count
   phase "fuzz runs" ctest --test-dir "$fuzz" --output-on-failure -j4 -L fuzz
 fi
 
