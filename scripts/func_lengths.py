@@ -26,11 +26,7 @@ HEAD = re.compile(r'^(?!(?:namespace|struct|class|enum|union|extern|typedef|usin
                   r'(?:->\s*[\w:<>*& ]+)?\s*\{\s*$')
 NAME = re.compile(r'([~\w:]+)\s*\(')
 # the functions past the limit still to split; the list may only shrink
-KNOWN = {
-    ('mjbuoy/api/radattach.cc', 'solveGroup'),
-    ('mjbuoy/radiation/panel.cc', 'panelSolve'),
-    ('mjbuoy/radiation/panel.cc', 'solveOmega'),
-}
+KNOWN = set()
 
 
 def blank(text):

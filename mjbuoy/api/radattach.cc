@@ -601,6 +601,116 @@ static std::string importGroup(Buoy* B, const mjData* d, int root, const std::st
   return finishGroup(B, d, root, who, body, dz, Rd, std::move(c), cx, true);
 }
 
+// the error of a group whose hull gives no wet panels (note: why) at the
+// pose at; on by default only: the body keeps running without radiation
+static std::string noPanels(Buoy* B, int root, const std::string& who, const std::string& note,
+                            const std::string& at) {
+  const mjModel* m = B->m;
+  const RadConfig& rc = B->cfg.rad;
+  if (!(rc.given && rc.on) && !namedOn(*B, root)) {
+    return skipGroup(B, root, who.substr(8) + " is off: " + note + " at " + at + " (mean sea "
+                     "level " + fmt(B->cfg.sea.level) + " m); place the body at its "
+                     "floating position in the model for added mass and radiation "
+                     "damping, or set <text name=\"mjbuoy.radiation.body." +
+                     bodyName(m, root) + "\" data=\"off\"/>");
+  }
+  return who + ": " + note + " at " + at + " (mean sea level " + fmt(B->cfg.sea.level) +
+         " m); place the body at its floating position in the model, "
+         "or turn radiation off for it with <text name=\"mjbuoy.radiation.body." +
+         bodyName(m, root) + "\" data=\"off\"/>";
+}
+
+// skips a group of np wet panels, above the budget of radiation solves by
+// default: on by default only within the cost bound (seconds at attach)
+static std::string overBudget(Buoy* B, int root, const std::string& who, int np, int budget) {
+  return skipGroup(B, root, who.substr(8) + " is off: " + std::to_string(np) + " wet panels, "
+                   "above the " + std::to_string(budget) + " radiation solves by default; "
+                   "set <numeric name=\"mjbuoy.radiation.panels\" data=\"" +
+                   std::to_string(std::min(20000, (np + 99) / 100 * 100)) + "\"/> or switch "
+                   "it on explicitly with <text name=\"mjbuoy.radiation\" data=\"on\"/> "
+                   "(minutes, cached), or coarsen the hull below the waterline");
+}
+
+// the group's frequencies [rad/s]: mjbuoy.radiation.omega's uniform set,
+// else the default for the hull's waterplane radius and panel size
+static std::vector<double> groupOmega(const RadConfig& rc, const PanelMesh& body, double g) {
+  std::vector<double> omega;
+  if (rc.omega[2] > 0) {
+    int n = (int)rc.omega[2];
+    for (int i = 0; i < n; i++) omega.push_back(rc.omega[0] + (rc.omega[1] - rc.omega[0]) * i / (n - 1));
+  } else {
+    omega = defaultOmega(waterplaneRadius(body), panelEdge90(body), g);
+  }
+  return omega;
+}
+
+// the drift's Kochin function is deep water's (e^(K z)): said where the
+// sea's main components feel the seabed at depth [m] (k h < 3: their profile
+// and dispersion differ from deep water's by more than about e^(-2 k h) = 0.25%)
+static void warnDriftDepth(Buoy* B, const std::string& who, double depth) {
+  double amax = 0, khmin = 1e300, wmin = 0;
+  for (const Wave& w : B->cfg.sea.waves) amax = std::max(amax, w.amp);
+  for (const Wave& w : B->cfg.sea.waves)
+    if (w.amp >= 0.1 * amax && w.k * depth < khmin) khmin = w.k * depth, wmin = w.omega;
+  if (khmin < 3) {
+    B->cfg.warn.push_back(who.substr(8) + ": its mean wave drift is deep water's (Maruo and "
+                          "Newman), but at mjbuoy.sea.depth " + fmt(depth) + " m the sea's "
+                          "components of " + fmt(wmin) + " rad/s have k h = " + fmt(khmin) +
+                          " < 3 and feel the seabed: their drift is approximate "
+                          "(docs/physics.md section 18, \"Limits\")");
+  }
+}
+
+// the drift table dt next to the group's diffraction table, its moment
+// about the COM p [m] (panel frame); none for a skipped group
+static std::string attachDrift(Buoy* B, int root, const std::string& who, const DriftTable& dt,
+                               const double p[3]) {
+  bool has = false;  // a skipped group has no diffraction table
+  for (const DiffBody& x : B->diff.db) has = has || x.body == root;
+  if (!has) return "";
+  const double ref0[3] = {0, 0, 0};
+  std::string err = setDrift(root, dt, ref0, p, &B->diff);
+  return err.empty() ? "" : who + ": " + err;
+}
+
+// the solved coefficients c to the root's COM and body axes, the exciting
+// force about the COM in world axes, then the group's radiation and (drift)
+// its drift table dt; posz: the panel frame's height of the root [m]
+static std::string placeGroup(Buoy* B, const mjData* d, int root, const std::string& who,
+                              const PanelMesh& body, double dz, double posz, HydroCoef* cp,
+                              bool drift, const DriftTable& dt) {
+  const mjModel* m = B->m;
+  const RadConfig& rc = B->cfg.rad;
+  HydroCoef& c = *cp;
+  std::string err;
+  // panel frame: world axes, origin (x_root, y_root, sea level); the root's
+  // COM there is R ipos + (0, 0, pos z) (pos z at the panel pose, with dz);
+  // body axes: R's columns
+  const mjtNum* R = d->xmat + 9 * root;
+  const mjtNum* ip = m->body_ipos + 3 * root;
+  double p[3], Rd[9], pn[3] = {ip[0], ip[1], ip[2]};
+  mju_rotVecMat(p, ip, R);
+  p[2] += posz;
+  for (int i = 0; i < 9; i++) Rd[i] = R[i];
+  // the exciting force about the COM, kept in world axes at qpos0 (any
+  // initial rotation; the step turns it with the body's yaw)
+  HydroCoef cx;
+  if (rc.diffraction) {
+    cx = c;
+    const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    err = coefTransform(&cx, p, I, p);
+    if (!err.empty()) return who + ": " + err;
+    cx.A.clear();
+    cx.B.clear();
+  }
+  for (auto* v : {&c.heading, &c.Xre, &c.Xim, &c.FKre, &c.FKim}) v->clear();
+  err = coefTransform(&c, p, Rd, pn);
+  if (!err.empty()) return who + ": " + err;
+  err = finishGroup(B, d, root, who, body, dz, Rd, std::move(c), cx, false);
+  if (!err.empty() || !drift) return err;
+  return attachDrift(B, root, who, dt, p);
+}
+
 // coefficients of one group; "" or the error
 static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   const mjModel* m = B->m;
@@ -621,20 +731,8 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   PanelMesh body, lid;
   std::string note;
   if (!hullPanels(v.data(), v.size() / 3, f.data(), f.size() / 3, pos, d->xquat + 4 * root,
-                  rc.refine, &body, &lid, &note)) {
-    if (!(rc.given && rc.on) && !namedOn(*B, root)) {
-      // on by default only: the body keeps running without radiation
-      return skipGroup(B, root, who.substr(8) + " is off: " + note + " at " + at + " (mean sea "
-                       "level " + fmt(B->cfg.sea.level) + " m); place the body at its "
-                       "floating position in the model for added mass and radiation "
-                       "damping, or set <text name=\"mjbuoy.radiation.body." +
-                       bodyName(m, root) + "\" data=\"off\"/>");
-    }
-    return who + ": " + note + " at " + at + " (mean sea level " + fmt(B->cfg.sea.level) +
-           " m); place the body at its floating position in the model, "
-           "or turn radiation off for it with <text name=\"mjbuoy.radiation.body." +
-           bodyName(m, root) + "\" data=\"off\"/>";
-  }
+                  rc.refine, &body, &lid, &note))
+    return noPanels(B, root, who, note, at);
   if (const RadConfig::File* rf = fileOf(*B, root))
     return importGroup(B, d, root, who, *rf, body, dz);
   if (!rc.refineGiven) autoRefine(rc, v, f, pos, d->xquat + 4 * root, &body, &lid, &note);
@@ -645,15 +743,8 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   if (budget > 0 && solveSize(body, lid, rc.lid) > budget)
     coarsenGroup(B, who, v, f, pos, d->xquat + 4 * root, &body, &lid, &note, &np);
   if (budget > 0 && solveSize(body, lid, rc.lid) > budget && !(rc.given && rc.on) &&
-      !namedOn(*B, root)) {
-    // on by default only within the cost bound (seconds at attach)
-    return skipGroup(B, root, who.substr(8) + " is off: " + std::to_string(np) + " wet panels, "
-                     "above the " + std::to_string(budget) + " radiation solves by default; "
-                     "set <numeric name=\"mjbuoy.radiation.panels\" data=\"" +
-                     std::to_string(std::min(20000, (np + 99) / 100 * 100)) + "\"/> or switch "
-                     "it on explicitly with <text name=\"mjbuoy.radiation\" data=\"on\"/> "
-                     "(minutes, cached), or coarsen the hull below the waterline");
-  }
+      !namedOn(*B, root))
+    return overBudget(B, root, who, np, budget);
   if (!rc.lid) {
     lid = PanelMesh();
   } else if (!lid.nface() && piercesSurface(body)) {
@@ -662,13 +753,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
     B->cfg.warn.push_back(who.substr(8) + ": no interior lid (" + note +
                           "); its coefficients may be spoiled near irregular frequencies");
   }
-  std::vector<double> omega;
-  if (rc.omega[2] > 0) {
-    int n = (int)rc.omega[2];
-    for (int i = 0; i < n; i++) omega.push_back(rc.omega[0] + (rc.omega[1] - rc.omega[0]) * i / (n - 1));
-  } else {
-    omega = defaultOmega(waterplaneRadius(body), panelEdge90(body), B->cfg.sea.g);
-  }
+  std::vector<double> omega = groupOmega(rc, body, B->cfg.sea.g);
   HydroCoef c;
   c.rho = B->cfg.sea.rho;
   c.g = B->cfg.sea.g;
@@ -684,22 +769,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   DriftBody db;
   DriftTable dt;
   bool drift = rc.diffraction && rc.drift;
-  // the drift's Kochin function is deep water's (e^(K z)): said where the
-  // sea's main components feel the seabed (k h < 3: their profile and
-  // dispersion differ from deep water's by more than about e^(-2 k h) = 0.25%)
-  if (drift && c.depth > 0) {
-    double amax = 0, khmin = 1e300, wmin = 0;
-    for (const Wave& w : B->cfg.sea.waves) amax = std::max(amax, w.amp);
-    for (const Wave& w : B->cfg.sea.waves)
-      if (w.amp >= 0.1 * amax && w.k * c.depth < khmin) khmin = w.k * c.depth, wmin = w.omega;
-    if (khmin < 3) {
-      B->cfg.warn.push_back(who.substr(8) + ": its mean wave drift is deep water's (Maruo and "
-                            "Newman), but at mjbuoy.sea.depth " + fmt(c.depth) + " m the sea's "
-                            "components of " + fmt(wmin) + " rad/s have k h = " + fmt(khmin) +
-                            " < 3 and feel the seabed: their drift is approximate "
-                            "(docs/physics.md section 18, \"Limits\")");
-    }
-  }
+  if (drift && c.depth > 0) warnDriftDepth(B, who, c.depth);
   if (drift) {
     const double o[3] = {d->xpos[3 * root], d->xpos[3 * root + 1], B->cfg.sea.level - dz};
     driftDynamics(m, d, root, body, o, c.rho, c.g, &db);
@@ -710,38 +780,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
       return skipGroup(B, root, who.substr(8) + " is off: panel solver: " + err);
     return who + ": panel solver: " + err;
   }
-  // panel frame: world axes, origin (x_root, y_root, sea level); the root's
-  // COM there is R ipos + (0, 0, pos z) (pos z at the panel pose, with dz);
-  // body axes: R's columns
-  const mjtNum* R = d->xmat + 9 * root;
-  const mjtNum* ip = m->body_ipos + 3 * root;
-  double p[3], Rd[9], pn[3] = {ip[0], ip[1], ip[2]};
-  mju_rotVecMat(p, ip, R);
-  p[2] += pos[2];
-  for (int i = 0; i < 9; i++) Rd[i] = R[i];
-  // the exciting force about the COM, kept in world axes at qpos0 (any
-  // initial rotation; the step turns it with the body's yaw)
-  HydroCoef cx;
-  if (rc.diffraction) {
-    cx = c;
-    const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-    err = coefTransform(&cx, p, I, p);
-    if (!err.empty()) return who + ": " + err;
-    cx.A.clear();
-    cx.B.clear();
-  }
-  for (auto* v : {&c.heading, &c.Xre, &c.Xim, &c.FKre, &c.FKim}) v->clear();
-  err = coefTransform(&c, p, Rd, pn);
-  if (!err.empty()) return who + ": " + err;
-  err = finishGroup(B, d, root, who, body, dz, Rd, std::move(c), cx, false);
-  if (!err.empty() || !drift) return err;
-  bool has = false;  // a skipped group has no diffraction table
-  for (const DiffBody& x : B->diff.db) has = has || x.body == root;
-  if (!has) return "";
-  // the drift table next to the diffraction table, its moment about the COM p
-  const double ref0[3] = {0, 0, 0};
-  err = setDrift(root, dt, ref0, p, &B->diff);
-  return err.empty() ? "" : who + ": " + err;
+  return placeGroup(B, d, root, who, body, dz, pos[2], &c, drift, dt);
 }
 
 // attachRadiation's work, which may throw (std::bad_alloc)

@@ -509,28 +509,39 @@ MatC groupSolve(const Group& gr, const MatC& M, const MatC& rhs) {
   return sig;
 }
 
-bool solveOmega(const Freq& f, int w) {
+// one frequency's system: the influence matrix M of the rows f.rows, the
+// right-hand sides (6 radiation modes, nh diffraction problems), the
+// incident potential phi0 [m^2/s per m of amplitude] and the wave part WS
+// of the source potential (WD: of the normal velocity)
+struct OmegaSystem {
+  MatC WS, WD, M, rhs, phi0;
+  int nrb;  // body rows (the rest: lid rows)
+};
+
+// assembles frequency w's system (docs/physics.md section 13)
+void assembleOmega(const Freq& f, int w, OmegaSystem* s) {
   const Problem& pb = *f.pb;
   const Rankine& rk = *f.rk;
-  const MatR &Nn = *f.Nn, &Na = *f.Na;
+  const MatR& Nn = *f.Nn;
   const std::vector<double>& heading = *f.heading;
   const std::vector<int>& rows = f.rows;
-  HydroCoef* out = f.out;
+  const HydroCoef* out = f.out;
   int n = pb.nb + pb.nl, nb = pb.nb, nh = (int)heading.size(), nr = (int)rows.size();
   const double* ref = out->ref;
-  double rho = out->rho, grav = out->g;
+  double grav = out->g;
   double om = (*f.omega)[w], K = om * om / grav;
   const GreenFd* fd = f.fd->empty() || !((*f.fd)[w].h > 0) ? nullptr : &(*f.fd)[w];
   double kw = fd ? fd->k0 : K;  // the incident wave's wavenumber
-  MatC WS, WD;
+  MatC &WS = s->WS, &WD = s->WD;
   waveMatrices(pb, rows, f.tab, fd, K, !f.outer, &WS, &WD);
-  int nrb = (int)WD.rows();
+  int nrb = s->nrb = (int)WD.rows();
   // lid rows: the damped lid, dphi/dz(0-) = K (1 + i w) phi on the lid's
   // interior side, w 0 at the waterline (docs/physics.md section 13); with
   // dphi/dz(0-) = K phi + 4 pi sigma (the free-surface condition of G plus
   // the jump of the doubled source sheet): -i w K phi + 4 pi sigma = 0
   std::vector<int> rb(rows.begin(), rows.begin() + nrb), rl(rows.begin() + nrb, rows.end());
-  MatC M(nr, n);
+  MatC& M = s->M;
+  M.resize(nr, n);
   M.topRows(nrb) = (rk.Dd(rb, Eigen::all) + rk.Di(rb, Eigen::all)).cast<cplx>() + WD;
   if (nr > nrb)
     M.bottomRows(nr - nrb) =
@@ -539,11 +550,13 @@ bool solveOmega(const Freq& f, int w) {
   for (int r = 0; r < nr; r++) M(r, rows[r]) += rows[r] < nb ? -2 * kPi : 4 * kPi;
   // right-hand sides: 6 radiation modes (dphi/dn = n_j), nh diffraction
   // problems (dphi_D/dn = -dphi_0/dn)
-  MatC rhs = MatC::Zero(n, 6 + nh);
+  MatC& rhs = s->rhs;
+  rhs = MatC::Zero(n, 6 + nh);
   rhs.block(0, 0, nb, 6) = Nn.cast<cplx>();
   // incident potential per unit amplitude: phi0 = -i g/omega Z(z) e^{ik(x cos b + y sin b)},
   // Z = e^{kz} in deep water, cosh(k (z + h)) / cosh(k h) at depth h
-  MatC phi0(nb, nh);
+  MatC& phi0 = s->phi0;
+  phi0.resize(nb, nh);
   for (int h = 0; h < nh; h++) {
     double cb = std::cos(heading[h]), sb = std::sin(heading[h]);
     for (int i = 0; i < nb; i++) {
@@ -559,21 +572,42 @@ bool solveOmega(const Freq& f, int w) {
       rhs(i, 6 + h) = -dn;
     }
   }
+}
+
+// solves system s for the source strengths sig (all panels) and returns
+// the potentials on the body panels (6 radiation modes, nh diffraction)
+MatC solvePotentials(const Freq& f, const OmegaSystem& s, MatC* sig) {
+  const Problem& pb = *f.pb;
+  const Rankine& rk = *f.rk;
+  const std::vector<int>& rows = f.rows;
+  int n = pb.nb + pb.nl, nb = pb.nb, nh = (int)f.heading->size(), nr = (int)rows.size();
+  int nrb = s.nrb;
+  std::vector<int> rb(rows.begin(), rows.begin() + nrb);
   bool sym = nr < n;
-  MatC sig = sym ? groupSolve(*f.gr, M, rhs) : MatC(M.partialPivLu().solve(rhs));
-  MatC S = (rk.Sd(rb, Eigen::all) + rk.Si(rb, Eigen::all)).cast<cplx>() + WS.topRows(nrb);
+  *sig = sym ? groupSolve(*f.gr, s.M, s.rhs) : MatC(s.M.partialPivLu().solve(s.rhs));
+  MatC S = (rk.Sd(rb, Eigen::all) + rk.Si(rb, Eigen::all)).cast<cplx>() + s.WS.topRows(nrb);
   MatC phi(nb, 6 + nh);
   if (!sym) {
-    phi = S * sig;
+    phi = S * *sig;
   } else {
     // phi(g i) = sum_j S(i, g j) sig(j) = (S sig(g .))(i), g its own inverse
     MatC sg(n, 6 + nh);
     for (const std::vector<int>& g : f.gr->img) {
-      for (int j = 0; j < n; j++) sg.row(j) = sig.row(g[j]);
+      for (int j = 0; j < n; j++) sg.row(j) = sig->row(g[j]);
       MatC pg = S * sg;
       for (int r = 0; r < nrb; r++) phi.row(g[rows[r]]) = pg.row(r);
     }
   }
+  return phi;
+}
+
+// frequency w's added mass [kg], damping [kg/s] and exciting force [N/m]
+// from the body potentials phi and the incident potential phi0
+void integrateForces(const Freq& f, int w, const MatC& phi0, const MatC& phi) {
+  const MatR& Na = *f.Na;
+  HydroCoef* out = f.out;
+  int nb = f.pb->nb, nh = (int)f.heading->size();
+  double rho = out->rho, om = (*f.omega)[w];
   // radiation force per unit velocity: -i omega rho int phi_j n_i dS
   //   = i omega A_ij - B_ij
   MatC P = Na.transpose().cast<cplx>() * phi;
@@ -598,6 +632,22 @@ bool solveOmega(const Freq& f, int w) {
       out->Xre[o] = (fk + fd).real();
       out->Xim[o] = (fk + fd).imag();
     }
+}
+
+// frequency w: assembly, solve, forces; false if a coefficient is not finite
+bool solveOmega(const Freq& f, int w) {
+  const Problem& pb = *f.pb;
+  HydroCoef* out = f.out;
+  int nb = pb.nb, nh = (int)f.heading->size();
+  double om = (*f.omega)[w], K = om * om / out->g;
+  MatC sig, phi, phi0;
+  {
+    OmegaSystem s;
+    assembleOmega(f, w, &s);
+    phi = solvePotentials(f, s, &sig);
+    phi0 = std::move(s.phi0);
+  }
+  integrateForces(f, w, phi0, phi);
   bool ok = finiteAll(&out->A[36 * w], 36) && finiteAll(&out->B[36 * w], 36) &&
             finiteAll(out->Xre.data() + 6 * w * nh, 6 * nh) &&  // data(): no headings is allowed
             finiteAll(out->Xim.data() + 6 * w * nh, 6 * nh);
@@ -655,24 +705,12 @@ void addInfiniteImages(const Problem& pb, MatR* S, MatR* D) {
   });
 }
 
-}  // namespace
-
-void panelSymmetryUse(bool on) { gSymmetry = on; }
-
-int panelMirrors(const PanelMesh& body, const PanelMesh& lid) {
-  Problem pb;
-  std::string err;
-  if (!buildPanels(body, false, &pb, &err)) return 0;
-  pb.nb = (int)pb.pn.size();
-  if (!pb.nb || !buildPanels(lid, true, &pb, &err)) return 0;
-  pb.nl = (int)pb.pn.size() - pb.nb;
-  return symmetryGroup(pb).planes;
-}
-
-bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,
-                const std::vector<double>& heading, HydroCoef* out, std::string* err,
-                const PanelFieldFn* field) {
-  Problem pb;
+// the problem of body and lid: panels, lid weights, seabed depth and
+// quadrature rules; checks the frequencies [rad/s], headings [rad] and water
+bool setupProblem(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,
+                  const std::vector<double>& heading, const HydroCoef& out, Problem* pbp,
+                  std::string* err) {
+  Problem& pb = *pbp;
   if (!buildPanels(body, false, &pb, err)) return false;
   pb.nb = (int)pb.pn.size();
   if (pb.nb == 0) {
@@ -701,64 +739,66 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
       *err = b;
       return false;
     }
-  if (!(out->rho > 0) || !(out->g > 0) || !(out->depth >= 0) || !std::isfinite(out->depth)) {
+  if (!(out.rho > 0) || !(out.g > 0) || !(out.depth >= 0) || !std::isfinite(out.depth)) {
     *err = "panel: rho and g must be > 0 and depth >= 0 (0: deep water), finite";
     return false;
   }
-  pb.h = out->depth;
+  pb.h = out.depth;
   if (!bodyAboveSeabed(pb, err)) return false;
-  int n = pb.nb + pb.nl, nb = pb.nb, nh = (int)heading.size(), nw = (int)omega.size();
+  int n = pb.nb + pb.nl, nb = pb.nb;
   pb.near.resize(n);
   pb.self.resize(n);
   for (int j = 0; j < n; j++) {
     panelRule(pb.pn[j], &pb.near[j]);
     if (j >= nb) duffyRule(pb.pn[j], &pb.self[j]);
   }
-  const double* ref = out->ref;
-  double rho = out->rho, grav = out->g;
-  // generalized normals times area, body panels
-  MatR Nn(nb, 6), Na(nb, 6);
+  return true;
+}
+
+// generalized normals of the body panels about ref [m]: Nn (unit), Na (times area, m^2)
+void bodyNormals(const Problem& pb, const double ref[3], MatR* Nn, MatR* Na) {
+  int nb = pb.nb;
+  Nn->resize(nb, 6);
+  Na->resize(nb, 6);
   for (int i = 0; i < nb; i++) {
     double gn[6];
     genNormal(pb.pn[i], ref, gn);
     for (int k = 0; k < 6; k++) {
-      Nn(i, k) = gn[k];
-      Na(i, k) = gn[k] * pb.pn[i].area;
+      (*Nn)(i, k) = gn[k];
+      (*Na)(i, k) = gn[k] * pb.pn[i].area;
     }
   }
-  Rankine rk;
-  rankineMatrices(pb, &rk);
+}
 
-  // infinite frequency: G = 1/r - 1/r' (phi = 0 on z = 0), body only
-  {
-    MatR M = rk.Dd.leftCols(nb) - rk.Di.leftCols(nb);
-    MatR S = rk.Sd.topLeftCorner(nb, nb) - rk.Si.topLeftCorner(nb, nb);
-    if (pb.h > 0 && bottomNear(pb)) addInfiniteImages(pb, &S, &M);
-    M.diagonal().array() -= 2 * kPi;
-    MatR sig = M.partialPivLu().solve(Nn);
-    MatR phi = S * sig;
-    MatR Ai = -rho * Na.transpose() * phi;
-    for (int a = 0; a < 6; a++)
-      for (int b = 0; b < 6; b++) out->Ainf[6 * a + b] = Ai(a, b);
-    if (!finiteAll(out->Ainf, 36)) {
-      *err = "panel: non-finite infinite-frequency added mass (check the mesh for coincident panels)";
-      return false;
-    }
+// infinite-frequency added mass out->Ainf [kg]: G = 1/r - 1/r' (phi = 0 on
+// z = 0), body only
+bool infiniteAddedMass(const Problem& pb, const Rankine& rk, const MatR& Nn, const MatR& Na,
+                       HydroCoef* out, std::string* err) {
+  int nb = pb.nb;
+  double rho = out->rho;
+  MatR M = rk.Dd.leftCols(nb) - rk.Di.leftCols(nb);
+  MatR S = rk.Sd.topLeftCorner(nb, nb) - rk.Si.topLeftCorner(nb, nb);
+  if (pb.h > 0 && bottomNear(pb)) addInfiniteImages(pb, &S, &M);
+  M.diagonal().array() -= 2 * kPi;
+  MatR sig = M.partialPivLu().solve(Nn);
+  MatR phi = S * sig;
+  MatR Ai = -rho * Na.transpose() * phi;
+  for (int a = 0; a < 6; a++)
+    for (int b = 0; b < 6; b++) out->Ainf[6 * a + b] = Ai(a, b);
+  if (!finiteAll(out->Ainf, 36)) {
+    *err = "panel: non-finite infinite-frequency added mass (check the mesh for coincident panels)";
+    return false;
   }
+  return true;
+}
 
-  out->omega = omega;
-  out->heading = heading;
-  out->A.assign(36 * nw, 0);
-  out->B.assign(36 * nw, 0);
-  out->Xre.assign(6 * nw * nh, 0);
-  out->Xim.assign(6 * nw * nh, 0);
-  out->FKre.assign(6 * nw * nh, 0);
-  out->FKim.assign(6 * nw * nh, 0);
-  // finite depth: the kernel of each frequency (greenfd.h), the table up to
-  // the largest propagating wavenumber
-  // (a frequency out of the seabed's reach: the deep-water function, a
-  // kernel with h = 0)
-  std::vector<GreenFd> fds(pb.h > 0 ? nw : 0);
+// finite depth: the kernel of each frequency [rad/s] (greenfd.h); none in
+// deep water; a frequency out of the seabed's reach: the deep-water
+// function, a kernel with h = 0
+bool depthKernels(const Problem& pb, const std::vector<double>& omega, double grav,
+                  std::vector<GreenFd>* fdp, std::string* err) {
+  std::vector<GreenFd>& fds = *fdp;
+  fds.resize(pb.h > 0 ? omega.size() : 0);
   for (size_t w = 0; w < fds.size(); w++)
     if (omega[w] * omega[w] / grav * pb.h >= kReachKh && !bottomNear(pb)) {
       fds[w].h = 0;
@@ -769,23 +809,27 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
       *err = b;
       return false;
     }
-  double kmax = omega.back() * omega.back() / grav;
-  for (const GreenFd& f : fds) kmax = std::fmax(kmax, f.k0);
-  std::shared_ptr<const GreenTable> tab = waveTable(pb, kmax);
-  // frequencies in parallel (each with a serial fill; one frequency: a
-  // parallel fill): every frequency is computed by the same operations in
-  // the same order whatever the thread, so results do not depend on it
-  // a mirror-symmetric mesh (about y = c, x = c or both): reduced systems
-  Group gr;
-  bool sym = gSymmetry && (gr = symmetryGroup(pb), gr.img.size() > 1);
-  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &fds, &omega, &heading, out, nw > 1, &gr, {}, field,
-          &body};
-  if (sym) {
-    fq.rows = gr.rows;
-  } else {
-    for (int i = 0; i < n; i++) fq.rows.push_back(i);
-  }
-  // a failed allocation on a worker thread is reported, never an abort
+  return true;
+}
+
+// the rows to solve: a mirror-symmetric mesh (about y = c, x = c or both)
+// its group's (reduced systems, *gr), else all
+std::vector<int> solveRows(const Problem& pb, Group* gr) {
+  bool sym = gSymmetry && (*gr = symmetryGroup(pb), gr->img.size() > 1);
+  if (sym) return gr->rows;
+  std::vector<int> rows;
+  for (int i = 0; i < pb.nb + pb.nl; i++) rows.push_back(i);
+  return rows;
+}
+
+// every frequency of fq, in parallel (each with a serial fill; one
+// frequency: a parallel fill): every frequency is computed by the same
+// operations in the same order whatever the thread, so results do not
+// depend on it; a failed allocation on a worker thread is reported, never
+// an abort
+bool solveFrequencies(const Freq& fq, std::string* err) {
+  const std::vector<double>& omega = *fq.omega;
+  int nw = (int)omega.size(), n = fq.pb->nb + fq.pb->nl;
   std::vector<char> bad(nw, 0);
   parallelRows(nw, [&](int w) {
     try {
@@ -804,6 +848,54 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
       return false;
     }
   return true;
+}
+
+}  // namespace
+
+void panelSymmetryUse(bool on) { gSymmetry = on; }
+
+int panelMirrors(const PanelMesh& body, const PanelMesh& lid) {
+  Problem pb;
+  std::string err;
+  if (!buildPanels(body, false, &pb, &err)) return 0;
+  pb.nb = (int)pb.pn.size();
+  if (!pb.nb || !buildPanels(lid, true, &pb, &err)) return 0;
+  pb.nl = (int)pb.pn.size() - pb.nb;
+  return symmetryGroup(pb).planes;
+}
+
+bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,
+                const std::vector<double>& heading, HydroCoef* out, std::string* err,
+                const PanelFieldFn* field) {
+  Problem pb;
+  if (!setupProblem(body, lid, omega, heading, *out, &pb, err)) return false;
+  int nh = (int)heading.size(), nw = (int)omega.size();
+  double grav = out->g;
+  MatR Nn, Na;
+  bodyNormals(pb, out->ref, &Nn, &Na);
+  Rankine rk;
+  rankineMatrices(pb, &rk);
+  if (!infiniteAddedMass(pb, rk, Nn, Na, out, err)) return false;
+
+  out->omega = omega;
+  out->heading = heading;
+  out->A.assign(36 * nw, 0);
+  out->B.assign(36 * nw, 0);
+  out->Xre.assign(6 * nw * nh, 0);
+  out->Xim.assign(6 * nw * nh, 0);
+  out->FKre.assign(6 * nw * nh, 0);
+  out->FKim.assign(6 * nw * nh, 0);
+  // the table up to the largest propagating wavenumber
+  std::vector<GreenFd> fds;
+  if (!depthKernels(pb, omega, grav, &fds, err)) return false;
+  double kmax = omega.back() * omega.back() / grav;
+  for (const GreenFd& f : fds) kmax = std::fmax(kmax, f.k0);
+  std::shared_ptr<const GreenTable> tab = waveTable(pb, kmax);
+  Group gr;
+  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &fds, &omega, &heading, out, nw > 1, &gr, {}, field,
+          &body};
+  fq.rows = solveRows(pb, &gr);
+  return solveFrequencies(fq, err);
 }
 
 }  // namespace mjb
