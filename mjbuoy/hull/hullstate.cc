@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "mjbuoy.h"
+#include "util/stepclock.h"
 
 namespace mjb {
 
@@ -65,21 +66,10 @@ size_t hullStateBytes(const HullSet& hs, size_t nw) {
 // records nothing. Time going backwards, or the step counter
 // timer[mjTIMER_STEP] dropping (mj_resetData zeroes it), restarts
 int stepClock(const mjModel* m, const mjData* d, HullState* s) {
-  long k = d->timer[mjTIMER_STEP].number;
-  int r;
-  if (s->key < 0 || k < s->key || d->time < s->tcur) {
-    s->hasPrev = false;
-    r = kRestart;
-  } else if (d->time - s->tcur >= 0.75 * m->opt.timestep) {
-    s->tprev = s->tcur;
-    s->hasPrev = true;
-    r = kNewStep;
-  } else {
-    s->key = k;
-    return d->time == s->tcur ? kSameStep : kMidStep;
-  }
-  s->key = k;
-  s->tcur = d->time;
+  const double was = s->tcur;
+  const int r = stepTick(m, d, s);  // the same states, in the same order
+  if (r == kTickRestart) s->hasPrev = false;
+  if (r == kTickNew) s->tprev = was, s->hasPrev = true;
   return r;
 }
 

@@ -74,7 +74,7 @@ size_t hullStateBytes(const HullSet& hs, size_t nw);
 // current history to the previous), kRestart after mj_resetData or time
 // going backwards (no previous history), kMidStep for an intermediate RK4
 // stage (records nothing)
-enum { kSameStep = 0, kNewStep, kRestart, kMidStep };
+enum { kSameStep = 0, kNewStep, kRestart, kMidStep };  // util/stepclock.h's StepTick
 int stepClock(const mjModel* m, const mjData* d, HullState* s);
 
 // the weights L of the last n (0 to 3) steps' label offsets, taken at times

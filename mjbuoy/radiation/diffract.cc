@@ -94,27 +94,14 @@ void headingWeights(double beta, int n, int idx[4], double w[4]) {
 
 void diffAt(const DiffBody& b, int iw, double tw, double beta, double re[6], double im[6]) {
   for (int k = 0; k < 6; k++) re[k] = im[k] = 0;
-  if (iw == -2) return;
   const int nh = b.c.nh();
-  int idx[4];
-  double hw[4];
-  headingWeights(beta, nh, idx, hw);
-  // rows r0 (weight 1 - tw) and r0 + 1 (tw); below the table only row 0,
-  // weighted tw (D linear from 0 at omega = 0)
-  const int r0 = iw < 0 ? 0 : iw;
-  const double w0 = iw < 0 ? tw : 1 - tw, w1 = iw < 0 ? 0 : tw;
-  for (int r = 0; r < 2; r++) {
-    const double wr = r ? w1 : w0;
-    if (wr == 0) continue;
-    for (int k = 0; k < 4; k++) {
-      const double* p = &b.D[2 * 6 * ((size_t)(r0 + r) * nh + idx[k])];
-      const double f = wr * hw[k];
-      for (int dof = 0; dof < 6; dof++) {
-        re[dof] += f * p[2 * dof];
-        im[dof] += f * p[2 * dof + 1];
-      }
+  eachTableWeight(nh, iw, tw, beta, [&](size_t row, int ih, double f) {
+    const double* p = &b.D[2 * 6 * (row * nh + ih)];
+    for (int dof = 0; dof < 6; dof++) {
+      re[dof] += f * p[2 * dof];
+      im[dof] += f * p[2 * dof + 1];
     }
-  }
+  });
 }
 
 // the wrench of one body in the frame turned by psi from the table's, at t

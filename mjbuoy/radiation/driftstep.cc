@@ -34,22 +34,13 @@ std::string setDrift(int body, const DriftTable& dt, const double ref[3], const 
 
 void driftAt(const DiffBody& b, int iw, double tw, double beta, double T[3]) {
   T[0] = T[1] = T[2] = 0;
-  if (iw == -2 || b.T.empty()) return;
+  if (b.T.empty()) return;
   const int nh = b.c.nh();
-  int idx[4];
-  double hw[4];
-  headingWeights(beta, nh, idx, hw);
   // as diffAt: below the table, row 0 weighted omega / omega_0
-  const int r0 = iw < 0 ? 0 : iw;
-  const double w0 = iw < 0 ? tw : 1 - tw, w1 = iw < 0 ? 0 : tw;
-  for (int r = 0; r < 2; r++) {
-    const double wr = r ? w1 : w0;
-    if (wr == 0) continue;
-    for (int k = 0; k < 4; k++) {
-      const double* p = &b.T[3 * ((size_t)(r0 + r) * nh + idx[k])];
-      for (int d = 0; d < 3; d++) T[d] += wr * hw[k] * p[d];
-    }
-  }
+  eachTableWeight(nh, iw, tw, beta, [&](size_t row, int ih, double f) {
+    const double* p = &b.T[3 * (row * nh + ih)];
+    for (int d = 0; d < 3; d++) T[d] += f * p[d];
+  });
 }
 
 void driftNewman(const DiffBody& b, const Sea& sea, const double x[3], double psi, double t,
