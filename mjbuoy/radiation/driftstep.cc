@@ -60,9 +60,11 @@ void driftNewman(const DiffBody& b, const Sea& sea, const double x[3], double ps
     for (int k = 0; k < 3; k++) P[k] += T[k] * a;
     Q += a;
   }
-  F[0] += (P[0] * std::conj(Q)).real();
-  F[1] += (P[1] * std::conj(Q)).real();
-  F[5] += (P[2] * std::conj(Q)).real();
+  // quadratic in the amplitudes, so the start-up ramp enters squared (sea.h)
+  const double r = sea.gain(t), r2 = r * r;
+  F[0] += r2 * (P[0] * std::conj(Q)).real();
+  F[1] += r2 * (P[1] * std::conj(Q)).real();
+  F[5] += r2 * (P[2] * std::conj(Q)).real();
 }
 
 }  // namespace mjb
