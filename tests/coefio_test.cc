@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <netcdf.h>
 
 #include "api/buoy.h"
 #include "api/coefexport.h"
@@ -122,6 +123,33 @@ TEST(CoefIO, CapytaineReadsBackBitForBit) {
   EXPECT_EQ(g.c.FKre, f.c.FKre);
   EXPECT_TRUE(g.hasC);
   for (int k = 0; k < 36; k++) EXPECT_EQ(g.C[k], f.C[k]);
+}
+
+// water_depth is optional in a Capytaine dataset (deep water without it):
+// a file without it reads back the same coefficients, exciting force
+// included; one without wave_direction has no exciting force to read
+TEST(CoefIO, CapytaineWithoutWaterDepth) {
+  std::string dir = tmpDir(), p = dir + "/s.nc";
+  CoefFile f = synthetic(), g;
+  CoefOpt o;
+  ASSERT_EQ(mjb::writeCoefFile(p, o, f), "");
+  // rename a variable in place (netCDF keeps its data)
+  auto rename = [&](const char* from, const char* to) {
+    int id, var;
+    ASSERT_EQ(nc_open(p.c_str(), NC_WRITE, &id), NC_NOERR);
+    ASSERT_EQ(nc_redef(id), NC_NOERR);
+    ASSERT_EQ(nc_inq_varid(id, from, &var), NC_NOERR) << from;
+    ASSERT_EQ(nc_rename_var(id, var, to), NC_NOERR);
+    ASSERT_EQ(nc_close(id), NC_NOERR);
+  };
+  rename("water_depth", "unused_depth");
+  ASSERT_EQ(mjb::readCoefFile(p, o, &g), "");
+  expectSame(f, g, 2.3e-16);
+  EXPECT_EQ(g.c.depth, 0);
+  rename("wave_direction", "unused_direction");
+  CoefFile h;
+  const std::string e = mjb::readCoefFile(p, o, &h);
+  EXPECT_NE(e.find("wave_direction"), std::string::npos) << e;
 }
 
 TEST(CoefIO, BemioReadsBack) {

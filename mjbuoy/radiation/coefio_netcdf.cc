@@ -128,7 +128,7 @@ static size_t flat(const NcVar& v, const int* ax, const size_t* idx, int n) {
 struct CapyVars {
   NcVar w, am, bd, dif, fk, hd;
   bool gotD = false, gotF = false;  // diffraction_force, Froude_Krylov_force found
-  bool gotDepth = false;            // water_depth found (the last variable looked up)
+  bool gotH = false;                // wave_direction found
 };
 
 // the dataset's variables into v, and rho, g and the depth (m) into c; "" or the error
@@ -144,7 +144,7 @@ static std::string readVars(int id, const std::string& path, CapyVars* v, HydroC
     return "Capytaine file " + path + " has no added_mass or radiation_damping";
   if (e.empty()) e = ncRead(id, path, "diffraction_force", &v->dif, &v->gotD);
   if (e.empty()) e = ncRead(id, path, "Froude_Krylov_force", &v->fk, &v->gotF);
-  if (e.empty()) e = ncRead(id, path, "wave_direction", &v->hd, &got);
+  if (e.empty()) e = ncRead(id, path, "wave_direction", &v->hd, &v->gotH);
   if (!e.empty()) return e;
   for (const char* s : {"rho", "g"}) {
     NcVar x;
@@ -155,7 +155,6 @@ static std::string readVars(int id, const std::string& path, CapyVars* v, HydroC
   NcVar dp;
   e = ncRead(id, path, "water_depth", &dp, &got);
   if (got && dp.v.size() == 1 && std::isfinite(dp.v[0])) c->depth = dp.v[0];
-  v->gotDepth = got;
   return "";
 }
 
@@ -208,7 +207,7 @@ static std::string readExciting(int id, const std::string& path, const CapyVars&
                                 const std::vector<size_t>& rows, const std::vector<int>& mi,
                                 CoefFile* f) {
   HydroCoef& c = f->c;
-  if (!v.gotD || !v.gotF || !v.gotDepth)
+  if (!v.gotD || !v.gotF || !v.gotH)
     return "Capytaine file " + path + ": an exciting force needs diffraction_force, "
            "Froude_Krylov_force and wave_direction together";
   std::vector<std::string> cx = ncStrings(id, "complex");
