@@ -495,6 +495,32 @@ TEST(CoefImport, WamitWithoutFroudeKrylovUsesTheHulls) {
   std::printf("without .3fk: largest qpos difference %.3g over %d steps\n", worst, n);
 }
 
+// a file's water depth is compared with the model's: one of another depth
+// (here 40 m against deep water) is named with both depths; the same depth
+// is silent
+TEST(CoefImport, FileOfAnotherDepthIsNamed) {
+  mjbt::Scene own(hemiXML(""));
+  ASSERT_TRUE(own.ok()) << own.err;
+  CoefFile f;
+  ASSERT_EQ(mjb::exportCoef(*mjb::buoyOf(own.b), own.body("hemi"), &f), "");
+  f.c.depth = 40;
+  std::string dir = tmpDir();
+  CoefOpt o;
+  ASSERT_EQ(mjb::writeCoefFile(dir + "/h.nc", o, f), "");
+  const std::string file = "<text name=\"mjbuoy.radiation.file.hemi\" data=\"" + dir +
+                           "/h.nc\"/><numeric name=\"mjbuoy.radiation.fileorigin.hemi\" "
+                           "data=\"0 0 -0.3\"/>";
+  mjbt::Scene deep(hemiXML(file));
+  ASSERT_TRUE(deep.ok()) << deep.err;
+  const std::string w = mjb_warnings(deep.b);
+  EXPECT_NE(w.find("is for water 40 m deep, the model's sea for deep water (mjbuoy.sea.depth)"),
+            std::string::npos) << w;
+  mjbt::Scene same(hemiXML(file + "<numeric name=\"mjbuoy.sea.depth\" data=\"40\"/>"));
+  ASSERT_TRUE(same.ok()) << same.err;
+  EXPECT_EQ(std::string(mjb_warnings(same.b)).find("m deep"), std::string::npos)
+      << mjb_warnings(same.b);
+}
+
 TEST(CoefImport, EntriesAreChecked) {
   mjbt::Scene s(hemiXML("<numeric name=\"mjbuoy.radiation.ulen.hemi\" data=\"2\"/>"));
   EXPECT_FALSE(s.ok());

@@ -583,6 +583,7 @@ static std::string importGroup(Buoy* B, const mjData* d, int root, const std::st
   in.ulen = rf.ulen;
   in.rho = B->cfg.sea.rho;
   in.g = B->cfg.sea.g;
+  in.depth = B->cfg.sea.depth > 0 ? B->cfg.sea.depth : 0;
   double Rd[9];
   for (int i = 0; i < 9; i++) in.R[i] = Rd[i] = d->xmat[9 * root + i];
   for (int k = 0; k < 3; k++) in.com[k] = B->m->body_ipos[3 * root + k];

@@ -160,6 +160,11 @@ static std::string excitation(const RadImport& in, const CoefFile& f, HydroCoef*
   return "";
 }
 
+// "water D m deep" or "deep water" (depth 0)
+static std::string depthText(double depth) {
+  return depth > 0 ? "water " + fmt(depth) + " m deep" : "deep water";
+}
+
 std::string importCoef(const RadImport& in, HydroCoef* c, HydroCoef* cx,
                        std::vector<std::string>* warn) {
   CoefOpt o;
@@ -181,10 +186,11 @@ std::string importCoef(const RadImport& in, HydroCoef* c, HydroCoef* cx,
   if (std::fabs(f.c.g / in.g - 1) > 1e-6)
     warn->push_back(who + " is for g = " + fmt(f.c.g) + " m/s^2, the model's is " + fmt(in.g) +
                     " m/s^2; its coefficients are used as they are");
-  if (f.c.depth > 0)
-    warn->push_back(who + " is for water " + fmt(f.c.depth) + " m deep; mjbuoy's radiation and "
-                    "diffraction use it as it is, with deep-water waves");
-  f.c.depth = 0;
+  if (std::fabs(f.c.depth - in.depth) > 1e-6 * std::max(f.c.depth, in.depth))
+    warn->push_back(who + " is for " + depthText(f.c.depth) + ", the model's sea for " +
+                    depthText(in.depth) + " (mjbuoy.sea.depth); its coefficients are used as "
+                    "they are: give the file of the model's depth");
+  f.c.depth = in.depth;
   f.c.g = in.g;
   if (!f.hasAinf) {
     // the highest frequency's added mass stands in: A(omega) tends to A_inf

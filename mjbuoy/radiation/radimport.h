@@ -20,6 +20,7 @@ struct RadImport {
   double origin[3] = {0, 0, 0};   // the file's origin in the body frame [m]; its axes: the body's
   double ulen = 1;                // WAMIT's ULEN [m]
   double rho = 1025, g = 9.81;    // the model's water
+  double depth = 0;               // the model's water depth [m] (mjbuoy.sea.depth; 0: deep)
   double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // body to world rotation at qpos0 (row-major)
   double com[3] = {0, 0, 0};      // the body's COM in its frame [m]
   bool diffraction = true;        // cx wanted
@@ -35,7 +36,8 @@ struct RadImport {
 // kDiffHeadings uniform headings (setDiffraction's table), interpolated
 // from the file's (periodic linear in heading; none farther than
 // kImportGap from a file heading). A file of another density is scaled to
-// the model's, with a warning; other g or finite depth are warned about.
+// the model's, with a warning; another g or another water depth than the
+// model's is warned about (a file without a depth counts as deep water).
 // "" or the error naming the file and the fix
 std::string importCoef(const RadImport& in, HydroCoef* c, HydroCoef* cx,
                        std::vector<std::string>* warn);
