@@ -497,7 +497,7 @@ TEST(CoefImport, WamitWithoutFroudeKrylovUsesTheHulls) {
 
 // a file's water depth is compared with the model's: one of another depth
 // (here 40 m against deep water) is named with both depths; the same depth
-// is silent
+// is silent. A file has no drift table: with drift on, that is said
 TEST(CoefImport, FileOfAnotherDepthIsNamed) {
   mjbt::Scene own(hemiXML(""));
   ASSERT_TRUE(own.ok()) << own.err;
@@ -519,6 +519,16 @@ TEST(CoefImport, FileOfAnotherDepthIsNamed) {
   ASSERT_TRUE(same.ok()) << same.err;
   EXPECT_EQ(std::string(mjb_warnings(same.b)).find("m deep"), std::string::npos)
       << mjb_warnings(same.b);
+  // a file holds no drift table: with drift on (the default) that is said
+  EXPECT_EQ(std::string(mjb_warnings(same.b)).find("has no mean wave drift"), std::string::npos);
+  std::string on = hemiXML(file + "<numeric name=\"mjbuoy.sea.depth\" data=\"40\"/>");
+  const std::string off = "<text name=\"mjbuoy.radiation.drift\" data=\"off\"/>";
+  ASSERT_NE(on.find(off), std::string::npos);
+  on.erase(on.find(off), off.size());
+  mjbt::Scene drift(on);
+  ASSERT_TRUE(drift.ok()) << drift.err;
+  EXPECT_NE(std::string(mjb_warnings(drift.b)).find("has no mean wave drift"), std::string::npos)
+      << mjb_warnings(drift.b);
 }
 
 TEST(CoefImport, EntriesAreChecked) {

@@ -599,6 +599,13 @@ static std::string importGroup(Buoy* B, const mjData* d, int root, const std::st
   std::string err = importCoef(in, &c, &cx, &warn);
   for (const std::string& w : warn) B->cfg.warn.push_back(who.substr(8) + ": " + w);
   if (!err.empty()) return who + ": " + err;
+  // the drift table comes from the panel solution's potentials, which a
+  // coefficient file does not hold (docs/physics.md section 18)
+  if (B->cfg.rad.diffraction && B->cfg.rad.drift)
+    B->cfg.warn.push_back(who.substr(8) + ": has no mean wave drift: its coefficients come from "
+                          "file " + rf.path + ", which holds no drift table (drift needs "
+                          "mjbuoy's own panel solution: remove mjbuoy.radiation.file for it, or "
+                          "set mjbuoy.radiation.drift off to silence this)");
   return finishGroup(B, d, root, who, body, dz, Rd, std::move(c), cx, true);
 }
 
