@@ -176,7 +176,8 @@ int main(int argc, char** argv) {
   app.add_flag("--show-wet", showWet,
                "draw the wet part of each hull (below the exact surface) in magenta");
   bool printSea = false;
-  app.add_flag("--print-sea", printSea, "print the sea's wave components and wind, then exit");
+  app.add_flag("--print-sea", printSea, "print the sea's wave components and wind, then exit "
+               "(radiation is not solved for it unless --set mjbuoy.radiation=... asks)");
   std::vector<std::string> sets, spectra;
   bool calm = false;
   app.add_option("--set", sets, "NAME=VALUE: set or override the mjbuoy.* custom entry NAME "
@@ -259,6 +260,11 @@ int main(int argc, char** argv) {
 
   mjbsim::Edits edits;
   {
+    // the sea's table needs no panel solution (seconds to minutes cold)
+    if (printSea && std::none_of(sets.begin(), sets.end(), [](const std::string& s) {
+          return s.rfind("mjbuoy.radiation=", 0) == 0;
+        }))
+      sets.push_back("mjbuoy.radiation=off");
     std::string e = mjbsim::parseEdits(sets, spectra, calm, &edits);
     if (!e.empty()) {
       std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
