@@ -188,4 +188,46 @@ TEST(PanelGroup, BadInputIsNamed) {
   EXPECT_NE(err.find("no frequencies"), std::string::npos) << err;
 }
 
+// two equal cylinders on the x axis: the union is mirror-symmetric about
+// y = 0 and about the plane between them, which swaps the bodies; the
+// reduced solve (panel.cc groupSolve) must give the full system's
+// coefficients (the reduction is exact: M(g i, g j) = M(i, j)), and the
+// swap maps body 1's block to body 2's with x and the moments about z and
+// y mirrored (surge, roll, yaw change sign with x -> -x: for modes a, b,
+// A_2a2b = s_a s_b A_1a1b, s = (-1, 1, 1, 1, -1, -1))
+TEST(PanelGroup, MirrorPairMatchesFullSolve) {
+  auto run = [](bool sym) {
+    mjb::panelSymmetryUse(sym);
+    PanelGroupCoef g = solveCylinders({0, 0, 3.5, 0}, {1.0, 2.5}, {0.4});
+    mjb::panelSymmetryUse(true);
+    return g;
+  };
+  // the union has both mirrors (else the comparison below compares the
+  // full solve with itself)
+  PanelMesh b, l, u;
+  mjb::cylinderMesh(1, 1, 4, 3, 16, &b, &l);
+  for (const PanelMesh& m : {b, moved(b, 3.5, 0)}) {
+    int v0 = (int)u.vert.size() / 3;
+    u.vert.insert(u.vert.end(), m.vert.begin(), m.vert.end());
+    for (int i : m.face) u.face.push_back(i < 0 ? i : i + v0);
+  }
+  EXPECT_EQ(mjb::panelMirrors(u, PanelMesh()), 3);
+  PanelGroupCoef r = run(true), f = run(false);
+  double amax = 0, bmax = 0;
+  for (double a : f.A) amax = std::fmax(amax, std::fabs(a));
+  for (double b : f.B) bmax = std::fmax(bmax, std::fabs(b));
+  for (size_t i = 0; i < f.A.size(); i++) {
+    EXPECT_NEAR(r.A[i], f.A[i], 1e-8 * amax) << i;
+    EXPECT_NEAR(r.B[i], f.B[i], 1e-8 * bmax) << i;
+  }
+  for (size_t i = 0; i < f.Xre.size(); i++) EXPECT_NEAR(r.Xre[i], f.Xre[i], 1e-6 * amax) << i;
+  const double sg[6] = {-1, 1, 1, 1, -1, -1};
+  for (int w = 0; w < 2; w++) {
+    Mat a = block(f.A, 12, w);
+    for (int i = 0; i < 6; i++)
+      for (int j = 0; j < 6; j++)
+        EXPECT_NEAR(a(6 + i, 6 + j), sg[i] * sg[j] * a(i, j), 0.01 * a.cwiseAbs().maxCoeff());
+  }
+}
+
 }  // namespace
