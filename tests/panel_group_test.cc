@@ -230,4 +230,43 @@ TEST(PanelGroup, MirrorPairMatchesFullSolve) {
   }
 }
 
+// panelGroupBody: a body far from the other (640 m at 30 degrees, kd = 147
+// at omega 1.5 rad/s) has the single body's coefficients, its exciting
+// force referred to its own position (amplitude at its ref: the phase
+// factor e^{-i k D . r}), within 1% of the largest entry at two headings
+TEST(PanelGroup, FarBodyIsTheSingleBody) {
+  const double om = 1.5, d = 640, c = std::cos(kPi / 6), s = std::sin(kPi / 6);
+  PanelMesh b, l;
+  mjb::cylinderMesh(1, 1, 4, 3, 16, &b, &l);
+  HydroCoef one;
+  one.rho = kRho;
+  one.g = kG;
+  std::string err;
+  ASSERT_TRUE(mjb::panelSolve(b, l, {om}, {0.0, 0.7}, &one, &err)) << err;
+  PanelGroupCoef g = solveCylinders({0, 0, d * c, d * s}, {om}, {0.0, 0.7});
+  HydroCoef two;
+  ASSERT_TRUE(mjb::panelGroupBody(g, 1, &two));
+  EXPECT_FALSE(mjb::panelGroupBody(g, 2, &two));
+  ASSERT_TRUE(mjb::panelGroupBody(g, 1, &two));
+  EXPECT_DOUBLE_EQ(two.ref[0], d * c);
+  auto maxAbs = [](const std::vector<double>& v) {
+    double m = 0;
+    for (double x : v) m = std::fmax(m, std::fabs(x));
+    return m;
+  };
+  for (int i = 0; i < 36; i++) {
+    EXPECT_NEAR(two.A[i], one.A[i], 0.01 * maxAbs(one.A)) << i;
+    EXPECT_NEAR(two.B[i], one.B[i], 0.01 * maxAbs(one.B)) << i;
+    EXPECT_NEAR(two.Ainf[i], one.Ainf[i], 0.01 * maxAbs(one.A)) << i;
+  }
+  double xm = std::fmax(maxAbs(one.Xre), maxAbs(one.Xim)), worst = 0;
+  for (size_t i = 0; i < one.Xre.size(); i++) {
+    double e = std::hypot(two.Xre[i] - one.Xre[i], two.Xim[i] - one.Xim[i]) / xm;
+    worst = std::fmax(worst, e);
+    EXPECT_LT(e, 0.01) << i;
+    EXPECT_LT(std::hypot(two.FKre[i] - one.FKre[i], two.FKim[i] - one.FKim[i]), 1e-6 * xm) << i;
+  }
+  std::printf("[group] far body: worst |X - X_single| / max |X| %.4f\n", worst);
+}
+
 }  // namespace

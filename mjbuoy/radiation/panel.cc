@@ -22,6 +22,7 @@
 #include "radiation/greenfd.h"
 #include "radiation/greentab.h"
 #include "radiation/rankine.h"
+#include "sea/spectra.h"
 
 namespace mjb {
 
@@ -980,6 +981,46 @@ bool panelSolveGroup(const std::vector<PanelMesh>& bodies, const std::vector<Pan
   CoefView cv{nm, out->rho, out->g, origin, out->A.data(), out->B.data(), out->Ainf.data(),
               out->Xre.data(), out->Xim.data(), out->FKre.data(), out->FKim.data()};
   return solveProblem(pb, out->ref.data(), omega, heading, cv, nullptr, nullptr, nullptr, err);
+}
+
+bool panelGroupBody(const PanelGroupCoef& g, int k, HydroCoef* out) {
+  int nm = g.nm(), nw = (int)g.omega.size(), nh = (int)g.heading.size();
+  if (k < 0 || 6 * k >= nm) return false;
+  const double* r = &g.ref[3 * k];
+  for (int c = 0; c < 3; c++) out->ref[c] = r[c];
+  out->rho = g.rho, out->g = g.g, out->depth = g.depth;
+  out->omega = g.omega;
+  out->heading = g.heading;
+  out->A.resize(36 * nw);
+  out->B.resize(36 * nw);
+  for (int w = 0; w < nw; w++)
+    for (int a = 0; a < 6; a++)
+      for (int b = 0; b < 6; b++) {
+        size_t o = (size_t)nm * nm * w + (size_t)nm * (6 * k + a) + 6 * k + b;
+        out->A[36 * w + 6 * a + b] = g.A[o];
+        out->B[36 * w + 6 * a + b] = g.B[o];
+      }
+  for (int a = 0; a < 6; a++)
+    for (int b = 0; b < 6; b++) out->Ainf[6 * a + b] = g.Ainf[nm * (6 * k + a) + 6 * k + b];
+  out->Xre.resize(6 * nw * nh);
+  out->Xim.resize(6 * nw * nh);
+  out->FKre.resize(6 * nw * nh);
+  out->FKim.resize(6 * nw * nh);
+  for (int w = 0; w < nw; w++) {
+    // amplitude a at the origin is a e^{i k D . r} at r: X_r = X_0 e^{-i k D . r}
+    double kw = waveNumber(g.omega[w], g.g, g.depth);
+    for (int h = 0; h < nh; h++) {
+      double ph = -kw * (r[0] * std::cos(g.heading[h]) + r[1] * std::sin(g.heading[h]));
+      cplx e(std::cos(ph), std::sin(ph));
+      for (int a = 0; a < 6; a++) {
+        size_t i = (size_t)(w * nh + h) * nm + 6 * k + a, o = (size_t)(w * nh + h) * 6 + a;
+        cplx x = cplx(g.Xre[i], g.Xim[i]) * e, fk = cplx(g.FKre[i], g.FKim[i]) * e;
+        out->Xre[o] = x.real(), out->Xim[o] = x.imag();
+        out->FKre[o] = fk.real(), out->FKim[o] = fk.imag();
+      }
+    }
+  }
+  return true;
 }
 
 }  // namespace mjb

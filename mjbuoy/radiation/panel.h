@@ -77,6 +77,14 @@ bool panelSolveGroup(const std::vector<PanelMesh>& bodies, const std::vector<Pan
                      const std::vector<double>& omega, const std::vector<double>& heading,
                      PanelGroupCoef* out, std::string* err);
 
+// body k of a solved group as one body's coefficients (hydrocoef.h): its
+// own 6x6 blocks of A, B, Ainf (the others held fixed: their scattering
+// included, their motion not) and its exciting force with the wave's
+// amplitude moved to its ref (times e^{-i k (x cos b + y sin b)}, k the
+// wavenumber at the group's depth); ref, rho, g, depth copied. False when
+// k is outside 0 .. N - 1
+bool panelGroupBody(const PanelGroupCoef& g, int k, HydroCoef* out);
+
 // a panel mesh mirror-symmetric about one vertical plane (within 1e-6 of
 // its size) is solved as two half-size systems, about two as four
 // quarter-size ones; off (tests): always the full system. Default on
