@@ -22,6 +22,7 @@
 #include "radiation/greenfd.h"
 #include "radiation/greentab.h"
 #include "radiation/rankine.h"
+#include "sea/spectra.h"
 
 namespace mjb {
 
@@ -133,6 +134,7 @@ struct Problem {
   int nb = 0, nl = 0;
   std::vector<std::vector<QPoint>> near, self;
   std::vector<double> lidw;  // per lid panel: its damping weight w (panellid.h)
+  std::vector<int> bodyEnd;  // per body of a group: one past its last body panel
   double h = 0;              // water depth [m]; 0: deep water
   double gn[6];  // scratch
 };
@@ -466,6 +468,16 @@ Group symmetryGroup(const Problem& pb) {
   return g;
 }
 
+// where a solve writes: nm radiation modes (6 per body), row-major nm x nm
+// matrices per frequency, nm exciting-force entries per (omega, heading);
+// wref the point where the incident wave's amplitude is given [m]
+struct CoefView {
+  int nm = 6;
+  double rho = 0, g = 0;
+  const double* wref = nullptr;
+  double *A, *B, *Ainf, *Xre, *Xim, *FKre, *FKim;
+};
+
 // one frequency's radiation and diffraction solve (panelSolve's inputs);
 // false on a non-finite result
 struct Freq {
@@ -481,6 +493,7 @@ struct Freq {
   std::vector<int> rows;
   const PanelFieldFn* field;  // the drift's hook (or nullptr)
   const PanelMesh* body;
+  CoefView cv;
 };
 
 // the source strengths of M sig = rhs on the full mesh from the
@@ -525,10 +538,10 @@ void assembleOmega(const Freq& f, int w, OmegaSystem* s) {
   const MatR& Nn = *f.Nn;
   const std::vector<double>& heading = *f.heading;
   const std::vector<int>& rows = f.rows;
-  const HydroCoef* out = f.out;
   int n = pb.nb + pb.nl, nb = pb.nb, nh = (int)heading.size(), nr = (int)rows.size();
-  const double* ref = out->ref;
-  double grav = out->g;
+  int nm = f.cv.nm;
+  const double* ref = f.cv.wref;
+  double grav = f.cv.g;
   double om = (*f.omega)[w], K = om * om / grav;
   const GreenFd* fd = f.fd->empty() || !((*f.fd)[w].h > 0) ? nullptr : &(*f.fd)[w];
   double kw = fd ? fd->k0 : K;  // the incident wave's wavenumber
@@ -548,11 +561,12 @@ void assembleOmega(const Freq& f, int w, OmegaSystem* s) {
         K * ((rk.Sd(rl, Eigen::all) + rk.Si(rl, Eigen::all)).cast<cplx>() + WS.bottomRows(nr - nrb));
   for (int r = nrb; r < nr; r++) M.row(r) *= cplx(0, -pb.lidw[rows[r] - nb]);
   for (int r = 0; r < nr; r++) M(r, rows[r]) += rows[r] < nb ? -2 * kPi : 4 * kPi;
-  // right-hand sides: 6 radiation modes (dphi/dn = n_j), nh diffraction
-  // problems (dphi_D/dn = -dphi_0/dn)
+  // right-hand sides: nm radiation modes (dphi/dn = n_j on the moving
+  // body's panels, 0 on the others'), nh diffraction problems
+  // (dphi_D/dn = -dphi_0/dn)
   MatC& rhs = s->rhs;
-  rhs = MatC::Zero(n, 6 + nh);
-  rhs.block(0, 0, nb, 6) = Nn.cast<cplx>();
+  rhs = MatC::Zero(n, nm + nh);
+  rhs.block(0, 0, nb, nm) = Nn.cast<cplx>();
   // incident potential per unit amplitude: phi0 = -i g/omega Z(z) e^{ik(x cos b + y sin b)},
   // Z = e^{kz} in deep water, cosh(k (z + h)) / cosh(k h) at depth h
   MatC& phi0 = s->phi0;
@@ -569,7 +583,7 @@ void assembleOmega(const Freq& f, int w, OmegaSystem* s) {
       // (no Zz / Z: both underflow to 0 for a body far down)
       cplx dn = a * (cplx(0, kw * cb) * Z * p.n[0] + cplx(0, kw * sb) * Z * p.n[1] +
                      kw * Zz * p.n[2]);
-      rhs(i, 6 + h) = -dn;
+      rhs(i, nm + h) = -dn;
     }
   }
 }
@@ -581,17 +595,17 @@ MatC solvePotentials(const Freq& f, const OmegaSystem& s, MatC* sig) {
   const Rankine& rk = *f.rk;
   const std::vector<int>& rows = f.rows;
   int n = pb.nb + pb.nl, nb = pb.nb, nh = (int)f.heading->size(), nr = (int)rows.size();
-  int nrb = s.nrb;
+  int nrb = s.nrb, nc = f.cv.nm + nh;
   std::vector<int> rb(rows.begin(), rows.begin() + nrb);
   bool sym = nr < n;
   *sig = sym ? groupSolve(*f.gr, s.M, s.rhs) : MatC(s.M.partialPivLu().solve(s.rhs));
   MatC S = (rk.Sd(rb, Eigen::all) + rk.Si(rb, Eigen::all)).cast<cplx>() + s.WS.topRows(nrb);
-  MatC phi(nb, 6 + nh);
+  MatC phi(nb, nc);
   if (!sym) {
     phi = S * *sig;
   } else {
     // phi(g i) = sum_j S(i, g j) sig(j) = (S sig(g .))(i), g its own inverse
-    MatC sg(n, 6 + nh);
+    MatC sg(n, nc);
     for (const std::vector<int>& g : f.gr->img) {
       for (int j = 0; j < n; j++) sg.row(j) = sig->row(g[j]);
       MatC pg = S * sg;
@@ -605,41 +619,41 @@ MatC solvePotentials(const Freq& f, const OmegaSystem& s, MatC* sig) {
 // from the body potentials phi and the incident potential phi0
 void integrateForces(const Freq& f, int w, const MatC& phi0, const MatC& phi) {
   const MatR& Na = *f.Na;
-  HydroCoef* out = f.out;
-  int nb = f.pb->nb, nh = (int)f.heading->size();
-  double rho = out->rho, om = (*f.omega)[w];
+  const CoefView& cv = f.cv;
+  int nb = f.pb->nb, nh = (int)f.heading->size(), nm = cv.nm;
+  double rho = cv.rho, om = (*f.omega)[w];
   // radiation force per unit velocity: -i omega rho int phi_j n_i dS
   //   = i omega A_ij - B_ij
   MatC P = Na.transpose().cast<cplx>() * phi;
-  for (int a = 0; a < 6; a++)
-    for (int b = 0; b < 6; b++) {
-      out->A[36 * w + 6 * a + b] = -rho * P(a, b).real();
-      out->B[36 * w + 6 * a + b] = -rho * om * P(a, b).imag();
+  for (int a = 0; a < nm; a++)
+    for (int b = 0; b < nm; b++) {
+      cv.A[nm * nm * w + nm * a + b] = -rho * P(a, b).real();
+      cv.B[nm * nm * w + nm * a + b] = -rho * om * P(a, b).imag();
     }
   // exciting force: -i omega rho int (phi0 + phiD) n dS
   for (int h = 0; h < nh; h++)
-    for (int a = 0; a < 6; a++) {
+    for (int a = 0; a < nm; a++) {
       cplx fk = 0, fd = 0;
       for (int i = 0; i < nb; i++) {
         fk += phi0(i, h) * Na(i, a);
-        fd += phi(i, 6 + h) * Na(i, a);
+        fd += phi(i, nm + h) * Na(i, a);
       }
       fk *= cplx(0, -om * rho);
       fd *= cplx(0, -om * rho);
-      int o = (w * nh + h) * 6 + a;
-      out->FKre[o] = fk.real();
-      out->FKim[o] = fk.imag();
-      out->Xre[o] = (fk + fd).real();
-      out->Xim[o] = (fk + fd).imag();
+      int o = (w * nh + h) * nm + a;
+      cv.FKre[o] = fk.real();
+      cv.FKim[o] = fk.imag();
+      cv.Xre[o] = (fk + fd).real();
+      cv.Xim[o] = (fk + fd).imag();
     }
 }
 
 // frequency w: assembly, solve, forces; false if a coefficient is not finite
 bool solveOmega(const Freq& f, int w) {
   const Problem& pb = *f.pb;
-  HydroCoef* out = f.out;
-  int nb = pb.nb, nh = (int)f.heading->size();
-  double om = (*f.omega)[w], K = om * om / out->g;
+  const CoefView& cv = f.cv;
+  int nb = pb.nb, nh = (int)f.heading->size(), nm = cv.nm, nm2 = nm * nm;
+  double om = (*f.omega)[w], K = om * om / cv.g;
   MatC sig, phi, phi0;
   {
     OmegaSystem s;
@@ -648,11 +662,11 @@ bool solveOmega(const Freq& f, int w) {
     phi0 = std::move(s.phi0);
   }
   integrateForces(f, w, phi0, phi);
-  bool ok = finiteAll(&out->A[36 * w], 36) && finiteAll(&out->B[36 * w], 36) &&
-            finiteAll(out->Xre.data() + 6 * w * nh, 6 * nh) &&  // data(): no headings is allowed
-            finiteAll(out->Xim.data() + 6 * w * nh, 6 * nh);
+  bool ok = finiteAll(cv.A + nm2 * w, nm2) && finiteAll(cv.B + nm2 * w, nm2) &&
+            finiteAll(cv.Xre + nm * w * nh, nm * nh) &&  // no headings is allowed
+            finiteAll(cv.Xim + nm * w * nh, nm * nh);
   if (ok && f.field)
-    (*f.field)(PanelField{&pb.pn, nb, pb.nl, w, om, K, sig.data(), phi.data(), f.body, out});
+    (*f.field)(PanelField{&pb.pn, nb, pb.nl, w, om, K, sig.data(), phi.data(), f.body, f.out});
   return ok;
 }
 
@@ -707,24 +721,41 @@ void addInfiniteImages(const Problem& pb, MatR* S, MatR* D) {
 
 // the problem of body and lid: panels, lid weights, seabed depth and
 // quadrature rules; checks the frequencies [rad/s], headings [rad] and water
-bool setupProblem(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,
+// a group (docs/physics.md section 13, "Interaction"): body k's panels are
+// pb.bodyEnd[k - 1] .. pb.bodyEnd[k] - 1, then every body's lid panels
+bool setupProblem(const std::vector<const PanelMesh*>& bodies,
+                  const std::vector<const PanelMesh*>& lids, const std::vector<double>& omega,
                   const std::vector<double>& heading, const HydroCoef& out, Problem* pbp,
                   std::string* err) {
   Problem& pb = *pbp;
-  if (!buildPanels(body, false, &pb, err)) return false;
+  int nbody = (int)bodies.size();
+  for (int k = 0; k < nbody; k++) {
+    size_t start = pb.pn.size();
+    bool built = buildPanels(*bodies[k], false, &pb, err);
+    if (!built || pb.pn.size() == start) {
+      if (built) *err = "panel body: no panels";
+      if (nbody > 1) *err = "group body " + std::to_string(k) + ": " + *err;
+      return false;
+    }
+    pb.bodyEnd.push_back((int)pb.pn.size());
+  }
   pb.nb = (int)pb.pn.size();
-  if (pb.nb == 0) {
-    *err = "panel body: no panels";
-    return false;
+  for (int k = 0; k < nbody; k++) {
+    size_t start = pb.pn.size();
+    if (!buildPanels(*lids[k], true, &pb, err)) {
+      if (nbody > 1) *err = "group body " + std::to_string(k) + ": " + *err;
+      return false;
+    }
+    int nk = (int)(pb.pn.size() - start);
+    std::vector<double> xy(2 * nk);
+    for (int j = 0; j < nk; j++) {
+      xy[2 * j] = pb.pn[start + j].c[0];
+      xy[2 * j + 1] = pb.pn[start + j].c[1];
+    }
+    std::vector<double> w = lidWeights(*lids[k], xy);
+    pb.lidw.insert(pb.lidw.end(), w.begin(), w.end());
   }
-  if (!buildPanels(lid, true, &pb, err)) return false;
   pb.nl = (int)pb.pn.size() - pb.nb;
-  std::vector<double> xy(2 * pb.nl);
-  for (int k = 0; k < pb.nl; k++) {
-    xy[2 * k] = pb.pn[pb.nb + k].c[0];
-    xy[2 * k + 1] = pb.pn[pb.nb + k].c[1];
-  }
-  pb.lidw = lidWeights(lid, xy);
   for (size_t w = 0; w < omega.size(); w++)
     if (!(omega[w] > 0 && std::isfinite(omega[w])) || (w && !(omega[w] > omega[w - 1]))) {
       char b[200];
@@ -755,17 +786,20 @@ bool setupProblem(const PanelMesh& body, const PanelMesh& lid, const std::vector
   return true;
 }
 
-// generalized normals of the body panels about ref [m]: Nn (unit), Na (times area, m^2)
-void bodyNormals(const Problem& pb, const double ref[3], MatR* Nn, MatR* Na) {
-  int nb = pb.nb;
-  Nn->resize(nb, 6);
-  Na->resize(nb, 6);
-  for (int i = 0; i < nb; i++) {
+// generalized normals of the body panels about their body's ref [m] (3 per
+// body): Nn (unit), Na (times area, m^2); body k's modes are columns
+// 6 k .. 6 k + 5, zero on the other bodies' panels
+void bodyNormals(const Problem& pb, const double* ref, MatR* Nn, MatR* Na) {
+  int nb = pb.nb, nm = 6 * (int)pb.bodyEnd.size();
+  Nn->setZero(nb, nm);
+  Na->setZero(nb, nm);
+  for (int i = 0, k = 0; i < nb; i++) {
+    while (i >= pb.bodyEnd[k]) k++;
     double gn[6];
-    genNormal(pb.pn[i], ref, gn);
-    for (int k = 0; k < 6; k++) {
-      (*Nn)(i, k) = gn[k];
-      (*Na)(i, k) = gn[k] * pb.pn[i].area;
+    genNormal(pb.pn[i], ref + 3 * k, gn);
+    for (int c = 0; c < 6; c++) {
+      (*Nn)(i, 6 * k + c) = gn[c];
+      (*Na)(i, 6 * k + c) = gn[c] * pb.pn[i].area;
     }
   }
 }
@@ -773,9 +807,9 @@ void bodyNormals(const Problem& pb, const double ref[3], MatR* Nn, MatR* Na) {
 // infinite-frequency added mass out->Ainf [kg]: G = 1/r - 1/r' (phi = 0 on
 // z = 0), body only
 bool infiniteAddedMass(const Problem& pb, const Rankine& rk, const MatR& Nn, const MatR& Na,
-                       HydroCoef* out, std::string* err) {
-  int nb = pb.nb;
-  double rho = out->rho;
+                       const CoefView& cv, std::string* err) {
+  int nb = pb.nb, nm = cv.nm;
+  double rho = cv.rho;
   MatR M = rk.Dd.leftCols(nb) - rk.Di.leftCols(nb);
   MatR S = rk.Sd.topLeftCorner(nb, nb) - rk.Si.topLeftCorner(nb, nb);
   if (pb.h > 0 && bottomNear(pb)) addInfiniteImages(pb, &S, &M);
@@ -783,9 +817,9 @@ bool infiniteAddedMass(const Problem& pb, const Rankine& rk, const MatR& Nn, con
   MatR sig = M.partialPivLu().solve(Nn);
   MatR phi = S * sig;
   MatR Ai = -rho * Na.transpose() * phi;
-  for (int a = 0; a < 6; a++)
-    for (int b = 0; b < 6; b++) out->Ainf[6 * a + b] = Ai(a, b);
-  if (!finiteAll(out->Ainf, 36)) {
+  for (int a = 0; a < nm; a++)
+    for (int b = 0; b < nm; b++) cv.Ainf[nm * a + b] = Ai(a, b);
+  if (!finiteAll(cv.Ainf, nm * nm)) {
     *err = "panel: non-finite infinite-frequency added mass (check the mesh for coincident panels)";
     return false;
   }
@@ -850,6 +884,32 @@ bool solveFrequencies(const Freq& fq, std::string* err) {
   return true;
 }
 
+// the solve of set-up problem pb into cv: body refs (3 per body), the
+// infinite-frequency added mass, then every frequency; out, field and body
+// for the drift's hook (single body only)
+bool solveProblem(const Problem& pb, const double* refs, const std::vector<double>& omega,
+                  const std::vector<double>& heading, const CoefView& cv, HydroCoef* out,
+                  const PanelFieldFn* field, const PanelMesh* body, std::string* err) {
+  int nw = (int)omega.size();
+  double grav = cv.g;
+  MatR Nn, Na;
+  bodyNormals(pb, refs, &Nn, &Na);
+  Rankine rk;
+  rankineMatrices(pb, &rk);
+  if (!infiniteAddedMass(pb, rk, Nn, Na, cv, err)) return false;
+  // the table up to the largest propagating wavenumber
+  std::vector<GreenFd> fds;
+  if (!depthKernels(pb, omega, grav, &fds, err)) return false;
+  double kmax = omega.back() * omega.back() / grav;
+  for (const GreenFd& f : fds) kmax = std::fmax(kmax, f.k0);
+  std::shared_ptr<const GreenTable> tab = waveTable(pb, kmax);
+  Group gr;
+  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &fds, &omega, &heading, out, nw > 1, &gr, {}, field,
+          body, cv};
+  fq.rows = solveRows(pb, &gr);
+  return solveFrequencies(fq, err);
+}
+
 }  // namespace
 
 void panelSymmetryUse(bool on) { gSymmetry = on; }
@@ -868,15 +928,8 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
                 const std::vector<double>& heading, HydroCoef* out, std::string* err,
                 const PanelFieldFn* field) {
   Problem pb;
-  if (!setupProblem(body, lid, omega, heading, *out, &pb, err)) return false;
+  if (!setupProblem({&body}, {&lid}, omega, heading, *out, &pb, err)) return false;
   int nh = (int)heading.size(), nw = (int)omega.size();
-  double grav = out->g;
-  MatR Nn, Na;
-  bodyNormals(pb, out->ref, &Nn, &Na);
-  Rankine rk;
-  rankineMatrices(pb, &rk);
-  if (!infiniteAddedMass(pb, rk, Nn, Na, out, err)) return false;
-
   out->omega = omega;
   out->heading = heading;
   out->A.assign(36 * nw, 0);
@@ -885,17 +938,89 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
   out->Xim.assign(6 * nw * nh, 0);
   out->FKre.assign(6 * nw * nh, 0);
   out->FKim.assign(6 * nw * nh, 0);
-  // the table up to the largest propagating wavenumber
-  std::vector<GreenFd> fds;
-  if (!depthKernels(pb, omega, grav, &fds, err)) return false;
-  double kmax = omega.back() * omega.back() / grav;
-  for (const GreenFd& f : fds) kmax = std::fmax(kmax, f.k0);
-  std::shared_ptr<const GreenTable> tab = waveTable(pb, kmax);
-  Group gr;
-  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &fds, &omega, &heading, out, nw > 1, &gr, {}, field,
-          &body};
-  fq.rows = solveRows(pb, &gr);
-  return solveFrequencies(fq, err);
+  CoefView cv{6, out->rho, out->g, out->ref, out->A.data(), out->B.data(), out->Ainf,
+              out->Xre.data(), out->Xim.data(), out->FKre.data(), out->FKim.data()};
+  return solveProblem(pb, out->ref, omega, heading, cv, out, field, &body, err);
+}
+
+bool panelSolveGroup(const std::vector<PanelMesh>& bodies, const std::vector<PanelMesh>& lids,
+                     const std::vector<double>& omega, const std::vector<double>& heading,
+                     PanelGroupCoef* out, std::string* err) {
+  int nbody = (int)bodies.size(), nm = 6 * nbody;
+  if (omega.empty()) {
+    *err = "panel group: no frequencies (give at least one omega > 0)";
+    return false;
+  }
+  if (nbody < 1 || lids.size() != bodies.size() || out->ref.size() != 3 * bodies.size()) {
+    *err = "panel group: give one body mesh, one lid mesh (may be empty) and 3 ref "
+           "coordinates per body";
+    return false;
+  }
+  for (double r : out->ref)
+    if (!std::isfinite(r)) {
+      *err = "panel group: a body's ref is not finite";
+      return false;
+    }
+  std::vector<const PanelMesh*> bp, lp;
+  for (int k = 0; k < nbody; k++) bp.push_back(&bodies[k]), lp.push_back(&lids[k]);
+  HydroCoef water;
+  water.rho = out->rho, water.g = out->g, water.depth = out->depth;
+  Problem pb;
+  if (!setupProblem(bp, lp, omega, heading, water, &pb, err)) return false;
+  int nh = (int)heading.size(), nw = (int)omega.size();
+  out->omega = omega;
+  out->heading = heading;
+  out->A.assign(nm * nm * nw, 0);
+  out->B.assign(nm * nm * nw, 0);
+  out->Ainf.assign(nm * nm, 0);
+  out->Xre.assign(nm * nw * nh, 0);
+  out->Xim.assign(nm * nw * nh, 0);
+  out->FKre.assign(nm * nw * nh, 0);
+  out->FKim.assign(nm * nw * nh, 0);
+  static const double origin[3] = {0, 0, 0};
+  CoefView cv{nm, out->rho, out->g, origin, out->A.data(), out->B.data(), out->Ainf.data(),
+              out->Xre.data(), out->Xim.data(), out->FKre.data(), out->FKim.data()};
+  return solveProblem(pb, out->ref.data(), omega, heading, cv, nullptr, nullptr, nullptr, err);
+}
+
+bool panelGroupBody(const PanelGroupCoef& g, int k, HydroCoef* out) {
+  int nm = g.nm(), nw = (int)g.omega.size(), nh = (int)g.heading.size();
+  if (k < 0 || 6 * k >= nm) return false;
+  const double* r = &g.ref[3 * k];
+  for (int c = 0; c < 3; c++) out->ref[c] = r[c];
+  out->rho = g.rho, out->g = g.g, out->depth = g.depth;
+  out->omega = g.omega;
+  out->heading = g.heading;
+  out->A.resize(36 * nw);
+  out->B.resize(36 * nw);
+  for (int w = 0; w < nw; w++)
+    for (int a = 0; a < 6; a++)
+      for (int b = 0; b < 6; b++) {
+        size_t o = (size_t)nm * nm * w + (size_t)nm * (6 * k + a) + 6 * k + b;
+        out->A[36 * w + 6 * a + b] = g.A[o];
+        out->B[36 * w + 6 * a + b] = g.B[o];
+      }
+  for (int a = 0; a < 6; a++)
+    for (int b = 0; b < 6; b++) out->Ainf[6 * a + b] = g.Ainf[nm * (6 * k + a) + 6 * k + b];
+  out->Xre.resize(6 * nw * nh);
+  out->Xim.resize(6 * nw * nh);
+  out->FKre.resize(6 * nw * nh);
+  out->FKim.resize(6 * nw * nh);
+  for (int w = 0; w < nw; w++) {
+    // amplitude a at the origin is a e^{i k D . r} at r: X_r = X_0 e^{-i k D . r}
+    double kw = waveNumber(g.omega[w], g.g, g.depth);
+    for (int h = 0; h < nh; h++) {
+      double ph = -kw * (r[0] * std::cos(g.heading[h]) + r[1] * std::sin(g.heading[h]));
+      cplx e(std::cos(ph), std::sin(ph));
+      for (int a = 0; a < 6; a++) {
+        size_t i = (size_t)(w * nh + h) * nm + 6 * k + a, o = (size_t)(w * nh + h) * 6 + a;
+        cplx x = cplx(g.Xre[i], g.Xim[i]) * e, fk = cplx(g.FKre[i], g.FKim[i]) * e;
+        out->Xre[o] = x.real(), out->Xim[o] = x.imag();
+        out->FKre[o] = fk.real(), out->FKim[o] = fk.imag();
+      }
+    }
+  }
+  return true;
 }
 
 }  // namespace mjb

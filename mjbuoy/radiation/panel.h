@@ -52,6 +52,39 @@ bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<d
                 const std::vector<double>& heading, HydroCoef* out, std::string* err,
                 const PanelFieldFn* field = nullptr);
 
+// hydrodynamic coefficients of a group of N bodies solved together
+// (docs/physics.md section 13, "Interaction"): nm = 6 N modes, body k's
+// surge..yaw about ref[3 k..3 k + 2] are modes 6 k .. 6 k + 5, forces and
+// moments along the group frame's axes; nm x nm matrices row-major per
+// frequency, block (i, j) the force on body i per motion of body j; the
+// exciting force nm per (omega, heading): ((iw * nh) + ih) * nm + mode, per
+// unit wave amplitude at the group frame's origin (hydrocoef.h's phase)
+struct PanelGroupCoef {
+  std::vector<double> ref;  // input: 3 per body [m], the group frame
+  double rho = 1025, g = 9.81, depth = 0;  // input, as in HydroCoef
+  std::vector<double> omega, heading;
+  std::vector<double> A, B, Ainf;        // nm * nm per frequency; Ainf once
+  std::vector<double> Xre, Xim, FKre, FKim;
+  int nm() const { return (int)ref.size() / 3 * 6; }
+};
+
+// the group's bodies as one boundary-value problem: bodies[k] and lids[k]
+// (may be empty) as panelSolve's body and lid, all in the group frame
+// (z = 0 the mean free surface); one factorisation per frequency serves the
+// 6 N radiation modes and the diffraction headings. Returns false with a
+// message naming the bad entry
+bool panelSolveGroup(const std::vector<PanelMesh>& bodies, const std::vector<PanelMesh>& lids,
+                     const std::vector<double>& omega, const std::vector<double>& heading,
+                     PanelGroupCoef* out, std::string* err);
+
+// body k of a solved group as one body's coefficients (hydrocoef.h): its
+// own 6x6 blocks of A, B, Ainf (the others held fixed: their scattering
+// included, their motion not) and its exciting force with the wave's
+// amplitude moved to its ref (times e^{-i k (x cos b + y sin b)}, k the
+// wavenumber at the group's depth); ref, rho, g, depth copied. False when
+// k is outside 0 .. N - 1
+bool panelGroupBody(const PanelGroupCoef& g, int k, HydroCoef* out);
+
 // a panel mesh mirror-symmetric about one vertical plane (within 1e-6 of
 // its size) is solved as two half-size systems, about two as four
 // quarter-size ones; off (tests): always the full system. Default on
