@@ -221,3 +221,88 @@ TEST(Diffraction, KernerPressureIsWarnedAbout) {
 }
 
 }  // namespace
+
+namespace {
+
+// the heave diffraction force of the box of boxModel (yaw 0) towed along +x
+// at speed u [m/s] from x = 0, in the model's wave (or the one set by
+// mjb_setSea), sampled every 1 ms for 20 s
+std::vector<double> towedHeave(Scene& s, double u, std::vector<double>* t) {
+  std::vector<double> f;
+  t->clear();
+  for (int i = 0; i <= 20000; i++) {
+    const double ti = 1e-3 * i;
+    s.d->qpos[0] = u * ti;
+    double w[6];
+    wrenchAt(s, ti, w);
+    t->push_back(ti);
+    f.push_back(w[2]);
+  }
+  return f;
+}
+
+// mean period [s] between the first and last upward zero crossing of f(t)
+double crossingPeriod(const std::vector<double>& t, const std::vector<double>& f) {
+  double t0 = -1, t1 = -1;
+  int n = 0;
+  for (size_t i = 1; i < f.size(); i++) {
+    if (f[i - 1] < 0 && f[i] >= 0) {
+      const double tc = t[i - 1] + (t[i] - t[i - 1]) * f[i - 1] / (f[i - 1] - f[i]);
+      if (t0 < 0) t0 = tc;
+      t1 = tc;
+      n++;
+    }
+  }
+  return n > 1 ? (t1 - t0) / (n - 1) : NAN;
+}
+
+// amplitude of f(t) at frequency w [rad/s]: c0 + c1 cos(w t) + c2 sin(w t)
+// by least squares, sqrt(c1^2 + c2^2)
+double amplitudeAt(const std::vector<double>& t, const std::vector<double>& f, double w) {
+  Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < f.size(); i++) {
+    Eigen::Vector3d b(1, std::cos(w * t[i]), std::sin(w * t[i]));
+    N += b * b.transpose();
+    r += b * f[i];
+  }
+  Eigen::Vector3d c = N.ldlt().solve(r);
+  return std::hypot(c[1], c[2]);
+}
+
+// forward speed (docs/physics.md section 15, "Forward speed"): a hull
+// towed at U through a regular head wave (travelling towards -x) meets
+// the crests at the encounter frequency w_e = w + k U (the Doppler shift
+// of the phase k D . x - w t at x = U t, D = -x; Salvesen, Tuck and
+// Faltinsen 1970, "Ship motions and sea loads", Trans. SNAME 78, eq. 1;
+// here w 3.205 rad/s, k 1.047 rad/m, U 1 m/s: w_e 4.252 rad/s, 33% above
+// w); its diffraction force oscillates at w_e, with the amplitude of the
+// held hull in the same wave (the table read at the wave's own w and k,
+// as STF's incident wave keeps them), not that of the held hull in the
+// wave of frequency w_e (a wave 1.76 times shorter)
+TEST(Diffraction, TowedHullFeelsTheEncounterFrequency) {
+  Scene s(boxModel(0, 180));
+  ASSERT_TRUE(s.ok()) << s.err;
+  const double u = 1, k = 2 * M_PI / 6, w = std::sqrt(kG * k), we = w + k * u;
+  std::vector<double> t;
+  const std::vector<double> towed = towedHeave(s, u, &t), held = towedHeave(s, 0, &t);
+  const double Te = crossingPeriod(t, towed), T0 = crossingPeriod(t, held);
+  EXPECT_NEAR(Te / (2 * M_PI / we), 1, 0.005);
+  EXPECT_NEAR(T0 / (2 * M_PI / w), 1, 0.005);
+  const double at = amplitudeAt(t, towed, we), ah = amplitudeAt(t, held, w);
+  EXPECT_NEAR(at / ah, 1, 1e-6);
+  // the held box in the wave of frequency w_e (length 2 pi g / w_e^2)
+  const double wave[5] = {0.1, 2 * M_PI * kG / (we * we), 180, 0, 0};
+  mjbSea sea = {};
+  sea.wave = wave;
+  sea.nwave = 1;
+  char err[256] = "";
+  ASSERT_EQ(mjb_setSea(s.b, &sea, err, sizeof err), 1) << err;
+  const double ae = amplitudeAt(t, towedHeave(s, 0, &t), we);
+  EXPECT_GT(std::fabs(ae / ah - 1), 0.05);
+  std::printf("[encounter] T_e %.5f s (2 pi / w_e %.5f), held T %.5f s (2 pi / w %.5f); heave "
+              "amplitude towed %.2f N, held %.2f N, held in the w_e wave %.2f N\n",
+              Te, 2 * M_PI / we, T0, 2 * M_PI / w, at, ah, ae);
+}
+
+}  // namespace

@@ -820,6 +820,7 @@ std::string mjb::setHydroCoef(mjbBuoy* b, int body, const HydroCoef& c, double t
     std::unique_lock<std::shared_mutex> run(b->run);
     std::unique_lock<std::shared_mutex> lk(b->mu);
     b->b.rad.conv = b->b.cfg.rad.conv;
+    b->b.rad.speed = b->b.cfg.rad.speed;
     std::copy(b->b.cfg.rad.roll, b->b.cfg.rad.roll + 2, b->b.rad.roll);
     e = setRadiation(b->b.m, body, c, tmem, &b->b.rad);
     for (std::string& n : b->b.rad.note) b->b.warnings += "mjbuoy: warning: " + n + "\n";

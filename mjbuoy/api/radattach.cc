@@ -535,6 +535,7 @@ static std::string finishGroup(Buoy* B, const mjData* d, int root, const std::st
   B->rad.ssAsked = rc.ssAsked;
   std::copy(rc.roll, rc.roll + 2, B->rad.roll);
   B->rad.entry = rc.entry;
+  B->rad.speed = rc.speed;
   if (addedMassIndefinite(c.Ainf)) {
     if (imported)
       return who + ": the coefficient file's infinite-frequency added mass is not positive "

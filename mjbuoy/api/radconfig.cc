@@ -134,6 +134,18 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
     r->ssAsked = !r->conv;
     return "";
   }
+  if (!std::strcmp(key, "radiation.speed")) {
+    const char* kind[3] = {"off", "auto", "on"};
+    for (int k = 0; k < 3; k++) {
+      if (!std::strcmp(text, kind[k])) {
+        r->speed = k;
+        return "";
+      }
+    }
+    return "mjbuoy: " + tag("text", name) + " data = \"" + text + "\" is not a forward-speed "
+           "setting; give \"auto\" (hulls slender along x), \"on\" (every radiating body) or "
+           "\"off\", e.g. data=\"auto\"";
+  }
   if (!std::strncmp(key, "radiation.file.", 15)) return parseFile(m, name, text, r);
   bool v = false;
   std::string e = onOff(name, text, &v);
@@ -160,6 +172,7 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
     return "mjbuoy: unknown entry " + tag("text", name) +
            "; radiation text entries are mjbuoy.radiation, mjbuoy.radiation.lid, "
            "mjbuoy.radiation.diffraction, mjbuoy.radiation.drift, mjbuoy.radiation.entry, "
+           "mjbuoy.radiation.speed, "
            "mjbuoy.radiation.cache, mjbuoy.radiation.memorymodel, mjbuoy.radiation.body.<body> "
            "and mjbuoy.radiation.file.<body> (see docs/mjcf.md)";
   }

@@ -53,6 +53,10 @@ struct RadConfig {
   // factor rises (docs/physics.md section 14, "Water entry"); on by
   // default: without it every entry creates (1/2) ds nu^T A_inf nu of energy
   bool entry = true;
+  // mjbuoy.radiation.speed: Salvesen-Tuck-Faltinsen's forward-speed memory
+  // terms (docs/physics.md section 14, "Forward speed"): 0 off, 1 auto (the
+  // default: hulls slender along x, the bodies strip theory is for), 2 on
+  int speed = 1;
   // mjbuoy.radiation.file.<body>: the body's coefficients read from a file
   // of another tool instead of the panel solver (docs/interchange.md), with
   // mjbuoy.radiation.fileorigin.<body> (the file's origin in the body frame

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "radiation/radspeed.h"
 #include "radiation/radtail.h"
 
 namespace mjb {
@@ -103,6 +104,8 @@ std::string checkCoef(const HydroCoef& c) {
   return "";
 }
 
+}  // namespace
+
 // K over n samples tapered to zero over its last quarter, then
 // less c sin^2(pi t / T_m) with c such that its trapezoid sum, the
 // memory's gain for a steady velocity, is B(0) = 0 (docs/physics.md
@@ -119,6 +122,8 @@ void steadyZero(double* K, int n) {
   }
   for (int k = 0; k < n; k++) K[k] -= sk / sg * std::pow(std::sin(M_PI * k / (n - 1)), 2);
 }
+
+namespace {
 
 // the pairs (i, j) whose B_ij is not zero (within 1e-12 of the largest)
 std::vector<int> memoryPairs(const HydroCoef& c) {
@@ -491,6 +496,7 @@ static void placeBody(RadBody&& rb, Radiation* r) {
   }
   r->maxdof = 0;
   r->nh = 1;
+  r->nsh = 1;
   r->nmode = 0;
   for (RadBody& x : r->rb) {
     x.soff = r->nmode;
@@ -499,6 +505,7 @@ static void placeBody(RadBody&& rb, Radiation* r) {
     // the history ring serves the convolution; a state-space body needs
     // only its first and newest samples (the clock counts to 2)
     r->nh = std::max(r->nh, x.ss.size() ? std::min(x.nk, 2) : x.nk);
+    r->nsh = std::max(r->nsh, x.nls);
   }
 }
 
@@ -524,6 +531,11 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
     err = newMemory(c, tmem, dt, name, r, &rb);
     if (!err.empty()) return err;
   }
+  // forward speed: a memory-carrying body slender along x (or any, speed 2),
+  // at any speed (0 at rest)
+  const bool slender = c.Ainf[0] <= kSlenderA11 * c.Ainf[7];
+  if ((r->speed == 2 || (r->speed == 1 && slender)) && tmem >= 0)
+    speedKernels(c, tmem == 0 ? memoryLength(c) : tmem, dt, &rb.Ls, &rb.nls);
   clearSimple(m, rb.dof, r);
   placeBody(std::move(rb), r);
   return "";
@@ -537,6 +549,7 @@ void restoreModel(const mjModel* m, const Radiation& r) {
 void radMakeState(const Radiation& r, RadState* s) {
   s->hist.assign(6 * r.rb.size() * r.nh, 0);
   s->fmem.assign(6 * r.rb.size(), 0);
+  s->shist.assign(2 * r.rb.size() * r.nsh, 0);
   s->jac.assign(6 * r.maxdof, 0);
   s->ajac.assign(6 * r.maxdof, 0);
   s->told.assign(r.rb.size(), 0);
@@ -562,6 +575,7 @@ void radRestart(RadState* s) {
   std::fill(s->imm.begin(), s->imm.end(), 1.0);
   std::fill(s->sstep.begin(), s->sstep.end(), 1.0);
   s->head = s->count = 0;
+  s->shead = s->scount = 0;
   s->dtTold = false;
   s->key = -1;
   s->tcur = 0;

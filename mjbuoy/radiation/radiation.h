@@ -51,6 +51,10 @@ struct RadBody {
   // radattach.cc, docs/physics.md section 14, "Viscous roll damping")
   double roll[2] = {0, 0};
   double c44 = 0;
+  // forward speed (radspeed.h): L_22 then L_33, nls samples each at dt
+  // [N s/m]; empty: no speed terms (off, or no memory)
+  std::vector<double> Ls;
+  int nls = 0;
   // what K and ss were computed from: memory length asked [s], step [s],
   // frequencies and B; a later body with the same key copies them
   std::vector<double> key;
@@ -73,6 +77,11 @@ struct Radiation {
   // the water's momentum taken up as the immersion factor rises
   // (mjbuoy.radiation.entry; docs/physics.md section 14, "Water entry")
   bool entry = false;
+  // Salvesen-Tuck-Faltinsen's forward-speed memory terms (mjbuoy.radiation.speed;
+  // docs/physics.md section 14, "Forward speed"): 0 off, 1 hulls slender along x
+  // (A11_inf <= kSlenderA11 A22_inf), 2 every body; and their ring's length (>= 1)
+  int speed = 1;
+  int nsh = 1;
   int nmode = 0;             // state-space modes of all bodies
   std::vector<std::string> note;  // fits that fell back to the convolution (when ssAsked)
 };
@@ -102,6 +111,10 @@ struct RadState {
   std::vector<double> imm;   // per body: immersion factor of this call, in [0, 1]
   std::vector<double> sstep; // per body 2: immersion factor at the last step's time, this step's
   int head = 0, count = 0;   // newest sample, samples held
+  // per body 2 rings of nsh: the wetted sway and heave velocities (body axes, at ref)
+  // the forward-speed terms read (radspeed.h); their newest sample and count
+  std::vector<double> shist;
+  int shead = 0, scount = 0;
   long key = -1;             // mjTIMER_STEP count at the last call (-1: none)
   double tcur = 0;           // time of the current step [s]
   long mstamp = -1;          // mjTIMER_POSITION count whose qM holds A_inf
@@ -128,6 +141,16 @@ void retardation(const HydroCoef& c, int i, int j, double dt, int n, double* K,
 // no tail), for callers that build several pairs of one c: the exponents'
 // fit is done once, not once per pair
 void retardationP(const HydroCoef& c, const double* p, int i, int j, double dt, int n, double* K);
+
+// a hull is slender along x, as strip theory's forward-speed terms assume,
+// when A11_inf <= kSlenderA11 A22_inf: a prolate spheroid of length over
+// beam 2.5 or more (Lamb 1932, "Hydrodynamics", sec. 373: k1 0.21, k2 0.70
+// at 2; k1 0.12, k2 0.80 at 3)
+const double kSlenderA11 = 0.2;
+
+// K over n samples tapered to zero over its last quarter, less the
+// sin^2 that makes its trapezoid sum 0 (docs/physics.md section 14, "Steady gain")
+void steadyZero(double* K, int n);
 
 // memory length [s] for c when none is given: the time after which every
 // |K_ij| stays below 1% of the largest |K| (at most kMaxMemory)

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "radiation/radiation.h"
+#include "radiation/radspeed.h"
 #include "sea/sea.h"
 #include "util/stepclock.h"
 #include "util/vmath.h"
@@ -371,6 +372,28 @@ void memoryForce(const Radiation& r, const RadBody& rb, size_t ib, int tick, boo
   }
 }
 
+// moves the forward-speed terms' ring on a new step or a restart (as advanceHistory)
+void advanceSpeedHistory(const Radiation& r, int tick, RadState* s) {
+  if (tick == kTickRestart) s->shead = s->scount = 0;
+  if (tick == kTickNew) s->shead = (s->shead + 1) % r.nsh;
+  if (tick == kTickNew || tick == kTickRestart) s->scount = std::min(s->scount + 1, r.nsh);
+}
+
+// Salvesen-Tuck-Faltinsen's forward-speed terms that body axes and the
+// Kirchhoff terms leave out: pitch U (L33 * w), yaw -U (L22 * v), U the
+// surge speed through the water, w and v the wetted heave and sway
+// velocities recorded (docs/physics.md section 14, "Forward speed"); added to fm
+void speedForce(const Radiation& r, const RadBody& rb, size_t ib, double u, const double nu[6],
+                RadState* s, double* fm) {
+  double* ring = s->shist.data() + 2 * r.nsh * ib;
+  ring[s->shead] = nu[1];
+  ring[r.nsh + s->shead] = nu[2];
+  const double cv = speedConv(rb.Ls, rb.nls, 0, ring, r.nsh, s->shead, s->scount, r.dt);
+  const double cw = speedConv(rb.Ls, rb.nls, 1, ring + r.nsh, r.nsh, s->shead, s->scount, r.dt);
+  fm[4] += u * cw;
+  fm[5] -= u * cv;
+}
+
 // names a body whose radiation force is not finite, once, within the notices' reserve
 void noteNotFinite(const RadBody& rb, size_t ib, const mjModel* m, const mjData* d,
                    RadState* s, std::string* notices) {
@@ -401,9 +424,13 @@ void radiateBody(const Radiation& r, const mjModel* m, mjData* d, RadState* s, c
   instantWrench(r, rb, ib, tick, si, d->time, h, nw, bw, nu, s, W);
   // the memory's input is the wetted surface's velocity s nu: a dry
   // body radiates no waves (docs/physics.md, "Immersion factor")
+  const double u = nu[0];  // surge speed through the water [m/s]
   for (int j = 0; j < 6; j++) nu[j] *= si;
   double* fm = s->fmem.data() + 6 * ib;
   memoryForce(r, rb, ib, tick, moved, h, nu, s, fm);
+  // at the step of attach only, like the convolution
+  if (rb.nls && (rb.nk || rb.ss.size()) && !moved && tick != kTickMid)
+    speedForce(r, rb, ib, u, nu, s, fm);
   for (int j = 0; j < 6; j++) W[j] += si * fm[j];
 
   if (!std::isfinite(dot6(W, W))) {
@@ -425,6 +452,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
   const bool moved = h != r.dt;
   if (moved) timestepMoved(r, m, h, s, notices);
   advanceHistory(r, tick, s);
+  advanceSpeedHistory(r, tick, s);
   // qM is rebuilt by every mj_fwdPosition; a second callback after the same
   // one (mj_forwardSkip from the velocity stage) finds A_inf in it already
   const long pos = d->timer[mjTIMER_POSITION].number;
