@@ -38,6 +38,21 @@ const float kSky[3] = {0.80f, 0.87f, 0.93f};     // at the horizon
 const float kZenith[3] = {0.36f, 0.56f, 0.82f};  // 45 degrees up and above
 const float kSea[4] = {0.06f, 0.34f, 0.44f, 0.70f};
 
+// the factor g > 1 with 1 + g + ... + g^(half - 1) = ratio: the grid's
+// spacing grows by g a step to cover ratio first spacings in half steps
+// (uniform, g = 1, when half steps are enough); by bisection
+double growth(double ratio, int half) {
+  if (ratio <= half) return 1;
+  double lo = 1, hi = 2;
+  auto sum = [&](double g) { return (std::pow(g, half) - 1) / (g - 1); };
+  while (sum(hi) < ratio) hi *= 2;
+  for (int it = 0; it < 60; it++) {
+    double mid = 0.5 * (lo + hi);
+    (sum(mid) < ratio ? lo : hi) = mid;
+  }
+  return hi;
+}
+
 }  // namespace
 
 const float kWetRgba[4] = {0.85f, 0.10f, 0.75f, 1};
@@ -244,22 +259,18 @@ void SeaPainter::drawSea(const mjvGLCamera& c, const mjvCamera& cam) {
   }
   double R = extent_ > 0 ? extent_ : std::max(60.0, 6 * dist);
   double ds0 = std::max(0.05, dist / 80);
-  // axis samples: 0, +-ds0, ... growing by 3% a step up to R
-  int half = 0;
-  for (double s = 0, step = ds0; s < R; step *= 1.03) {
-    s = std::min(R, s + step);
-    half++;
-  }
-  int n = 2 * half + 1;
+  // a level-of-detail grid of a fixed (2 kHalf + 1)^2 vertices: spacing ds0
+  // at the centre, growing by a factor g a step out to R, so that its cost
+  // (components x vertices, once a frame) depends neither on the pixels nor
+  // on the distance
+  const int half = kHalf, n = 2 * half + 1;
+  const double g = growth(R / ds0, half);
   u_.resize(n);
   u_[half] = 0;
-  {
-    int i = 1;
-    for (double s = 0, step = ds0; s < R; step *= 1.03, i++) {
-      s = std::min(R, s + step);
-      u_[half + i] = s;
-      u_[half - i] = -s;
-    }
+  for (int i = 1; i <= half; i++) {
+    double step = ds0 * std::pow(g, i - 1);
+    u_[half + i] = i == half ? R : u_[half + i - 1] + step;
+    u_[half - i] = -u_[half + i];
   }
   const std::vector<double>& u = u_;
   // snap the centre so that the near grid does not swim with the camera
@@ -304,18 +315,36 @@ void SeaPainter::drawSea(const mjvGLCamera& c, const mjvCamera& cam) {
       o4[3] = alpha + fog * (1 - alpha);
     }
   }
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_FALSE);
-  for (int j = 0; j + 1 < n; j++) {
-    glBegin(GL_TRIANGLE_STRIP);
+  // one vertex array, drawn as strips through an index list built once
+  xyz_.resize((size_t)3 * n * n);
+  for (int j = 0; j < n; j++) {
     for (int i = 0; i < n; i++) {
-      for (int jj = j + 1; jj >= j; jj--) {
-        glColor4fv(&col_[4 * (jj * n + i)]);
-        glVertex3d(cx + u[i], cy + u[jj], z[jj * n + i]);
+      float* p = &xyz_[3 * (j * n + i)];
+      p[0] = (float)(cx + u[i]);
+      p[1] = (float)(cy + u[j]);
+      p[2] = z[j * n + i];
+    }
+  }
+  if (strip_.size() != (size_t)2 * n * (n - 1)) {
+    strip_.resize((size_t)2 * n * (n - 1));
+    for (int j = 0; j + 1 < n; j++) {
+      for (int i = 0; i < n; i++) {
+        strip_[2 * (j * n + i)] = (j + 1) * n + i;
+        strip_[2 * (j * n + i) + 1] = j * n + i;
       }
     }
-    glEnd();
   }
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_FALSE);
+  glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glVertexPointer(3, GL_FLOAT, 0, xyz_.data());
+  glColorPointer(4, GL_FLOAT, 0, col_.data());
+  for (int j = 0; j + 1 < n; j++) {
+    glDrawElements(GL_TRIANGLE_STRIP, 2 * n, GL_UNSIGNED_INT, &strip_[(size_t)2 * j * n]);
+  }
+  glPopClientAttrib();
 }
 
 void addForceArrows(const mjModel* m, const mjbBuoy* b, const mjData* d, mjvScene* scn) {

@@ -5,6 +5,7 @@
 #include <link.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,7 +21,9 @@
 #include "modelload.h"
 #include "mjbuoy_version.h"
 #include "outfile.h"
+#include "radnotice.h"
 #include "render.h"
+#include "simsea.h"
 
 namespace mjbview {
 namespace {
@@ -75,20 +78,36 @@ void printBodies(const View* v, const char* when) {
   }
 }
 
-void overlay(View* v, mjrRect vp, double t, bool paused, int slow) {
-  char val[512];
-  std::snprintf(val, sizeof(val), "%.2f s%s\n%.2fx%s\n%s\n%s\n%s", t, paused ? " (paused)" : "",
-                v->rtf, slow ? (std::string(" (slow motion 1/") + std::to_string((int)kSlow[slow]) +
-                                ")").c_str() : "",
-                v->info.c_str(), v->seaState.c_str(),
-                (std::string(v->forces ? "forces " : "") + (v->wet ? "wet" : "")).c_str());
-  mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, vp, "Time\nReal time\nmjbuoy\nSea\nShowing", val,
-              &v->con);
+// --print-rtf: the real-time factor the physics thread kept, and the drawing's cost
+void printRtf(const View* v) {
+  double wall = v->rtfWall1 - v->rtfWall0, sim = v->rtfSim1 - v->rtfSim0;
+  double n = std::max(1L, v->nframe);
+  std::printf("mjbuoy-view: real-time factor %.3f (%.3f s simulated in %.3f s wall); %ld frames, "
+              "%.1f fps, per frame %.2f ms MuJoCo's scene, %.2f ms sea\n",
+              wall > 0 ? sim / wall : 0.0, sim, wall, v->nframe, wall > 0 ? v->nframe / wall : 0.0,
+              1e3 * v->renderSec / n, 1e3 * v->seaSec / n);
+}
+
+void overlay(View* v, mjrRect vp, double t, bool paused, int slow, const std::string& ctrl) {
+  char time[64], rate[96];
+  std::snprintf(time, sizeof(time), "%.2f s%s", t, paused ? " (paused)" : "");
+  std::snprintf(rate, sizeof(rate), "%.2fx%s", v->rtf, slow ? (" (slow motion 1/" +
+                std::to_string((int)kSlow[slow]) + ")").c_str() : "");
+  std::string titles = "Time\nReal time\nmjbuoy\nSea\nWind\nRadiation\nShowing";
+  std::string vals = std::string(time) + "\n" + rate + "\n" + v->info + "\n" +
+                     v->seaState + "\n" + v->windState + "\n" + v->radState + "\n" +
+                     (v->forces ? "forces " : "") + (v->wet ? "wet" : "");
+  if (!ctrl.empty()) {
+    titles += "\nActuator";
+    vals += "\n" + ctrl;
+  }
+  mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, vp, titles.c_str(), vals.c_str(), &v->con);
   if (v->help) {
     mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, vp,
-                "Space\nRight arrow\nBackspace\n- / +\nF\nW\nDouble-click\nCtrl + drag\n"
-                "Drag / scroll\nCtrl+Q",
-                "pause\nstep (paused)\nreset\nslower / faster\nforce arrows\nwet hull parts\n"
+                "Space\nRight arrow\nBackspace\n- / +\nUp / Down\n[ / ]\n0\nF\nW\n"
+                "Double-click\nCtrl + drag\nDrag / scroll\nCtrl+Q",
+                "pause\nstep (paused)\nreset\nslower / faster\nactuator control up / down\n"
+                "previous / next actuator\nevery control to 0\nforce arrows\nwet hull parts\n"
                 "select body (right: look at)\nperturb selected body (right: move, left: turn)\n"
                 "camera (left: rotate, right: move, middle: zoom)\nquit",
                 &v->con);
@@ -112,6 +131,7 @@ int run(View* v) {
     double t;
     bool paused;
     int slow;
+    std::string ctrl;
     {
       std::lock_guard<std::mutex> lk(v->mtx);
       if (v->frame) {
@@ -129,6 +149,7 @@ int run(View* v) {
       t = v->d->time;
       paused = v->paused;
       slow = v->slow;
+      if (v->m->nu) ctrl = describeCtrl(v->m, v->act, v->ctrl[v->act]);
     }
     double now = glfwGetTime();
     if (now - rtfWall >= 0.5 || t < rtfSim) {
@@ -138,9 +159,15 @@ int run(View* v) {
     }
     mjrRect vp = {0, 0, 0, 0};
     glfwGetFramebufferSize(v->win, &vp.width, &vp.height);
+    double r0 = glfwGetTime();
     mjr_render(vp, &v->scn, &v->con);
+    double r1 = glfwGetTime();
     v->sea.draw(v->scn, v->cam, vp, v->wet);
-    overlay(v, vp, t, paused, slow);
+    if (v->o.printRtf) glFinish();  // the sea's cost, not the next call's
+    v->renderSec += r1 - r0;
+    v->seaSec += glfwGetTime() - r1;
+    v->nframe++;
+    overlay(v, vp, t, paused, slow, ctrl);
     const double eps = 1e-9 * std::fmax(1.0, v->o.shotTime);
     if (shotPending && t >= v->o.shotTime - eps) {
       shotPending = false;
@@ -150,6 +177,10 @@ int run(View* v) {
     }
     glfwSwapBuffers(v->win);
     double wait = lastSwap + period - glfwGetTime();
+    // physics behind the clock: draw at most a third of the time, leaving
+    // the cores to the physics thread (the real-time factor comes first)
+    const double cost = glfwGetTime() - lastSwap;
+    if (!paused && v->rtf < 0.95 / kSlow[slow]) wait = std::max(wait, 2 * cost);
     if (wait > 0) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
     lastSwap = glfwGetTime();
     if (!shotPending && v->o.exitAfter >= 0 && t >= v->o.exitAfter - 1e-9 * std::fmax(1.0, t)) {
@@ -181,11 +212,23 @@ void pinLibraries() {}
 // the window, its GL context (GLFW's default: a compatibility profile, which
 // MuJoCo 2.2's fixed-function renderer needs), MuJoCo's scene and context
 bool openWindow(View* v) {
-  glfwWindowHint(GLFW_SAMPLES, 4);
   std::string title = "mjbuoy-view: " + v->o.model;
+  glfwWindowHint(GLFW_SAMPLES, v->o.msaa < 0 ? 4 : v->o.msaa);
   v->win = glfwCreateWindow(v->o.width, v->o.height, title.c_str(), nullptr, nullptr);
   if (!v->win) return false;
   glfwMakeContextCurrent(v->win);
+  // a software renderer (Mesa's llvmpipe) pays for every sample on the CPU
+  // the physics needs: without --msaa, no multisampling there
+  const char* r = (const char*)glGetString(GL_RENDERER);
+  if (v->o.msaa < 0 && r && (std::strstr(r, "llvmpipe") || std::strstr(r, "softpipe"))) {
+    std::fprintf(stderr, "mjbuoy-view: software renderer (%s): no multisampling (--msaa 4 "
+                 "asks for it)\n", r);
+    glfwDestroyWindow(v->win);
+    glfwWindowHint(GLFW_SAMPLES, 0);
+    v->win = glfwCreateWindow(v->o.width, v->o.height, title.c_str(), nullptr, nullptr);
+    if (!v->win) return false;
+    glfwMakeContextCurrent(v->win);
+  }
   pinLibraries();
   glfwSwapInterval(1);  // render at the display's rate
   mjv_defaultCamera(&v->cam);
@@ -216,6 +259,12 @@ int parse(int argc, char** argv, Options* o) {
   app.add_flag("--show-forces", o->forces, "start with force arrows on (key F)");
   app.add_flag("--show-wet", o->wet, "start with the wet hull parts coloured (key W)");
   app.add_flag("--paused", o->paused, "start paused (key Space)");
+  app.add_flag("--print-rtf", o->printRtf, "print the real-time factor the physics thread "
+               "kept (simulated s per wall s, first step to last) and the mean drawing cost "
+               "per frame at exit");
+  mjbtool::addSeaOptions(app, &o->sea);
+  app.add_option("--msaa", o->msaa, "multisampling samples per pixel (default 4, 0 on a "
+                 "software renderer such as Mesa's llvmpipe)")->check(mjbtool::Finite(0, 16));
   app.add_option("--width", o->width, "window width [pixels]")->check(mjbtool::Finite(64, 8192));
   app.add_option("--height", o->height, "window height [pixels]")->check(mjbtool::Finite(64, 8192));
   int rc = mjbtool::parseArgs(app, argc, argv, 2);  // docs: invalid input exits 2
@@ -247,17 +296,25 @@ int main(int argc, char** argv) {
     }
   }
   char err[1024] = "";
+  mjbsim::Edits edits;  // --set, --spectrum, --calm: the validator mjbuoy-sim uses
   {
-    std::string e;
-    v.m = mjbtool::loadModel(v.o.model, nullptr, "", &e);
+    std::string e = mjbsim::parseEdits(v.o.sea.sets, v.o.sea.spectra, v.o.sea.calm, &edits);
+    std::string xml;
+    if (e.empty() && !edits.empty()) mjbsim::editedModel(v.o.model, edits, &xml, &e);
+    if (e.empty()) v.m = mjbtool::loadModel(v.o.model, edits.empty() ? nullptr : &xml, "", &e);
     if (!v.m) {
       std::fprintf(stderr, "mjbuoy-view: %s\n", e.c_str());
       return 1;
     }
   }
+  {
+    std::string plan = mjbtool::radiationPlan(v.m);  // the panel solve is no silent wait
+    if (!plan.empty()) std::fprintf(stderr, "mjbuoy-view: %s\n", plan.c_str());
+  }
   v.b = mjb_attach(v.m, v.o.backend.empty() ? nullptr : v.o.backend.c_str(), err, sizeof(err));
   if (!v.b) {
-    std::fprintf(stderr, "mjbuoy-view: %s: %s\n", v.o.model.c_str(), err);
+    std::fprintf(stderr, "mjbuoy-view: %s: %s\n", v.o.model.c_str(),
+                 mjbsim::blame(edits, err).c_str());
     mj_deleteModel(v.m);
     return 1;
   }
@@ -286,7 +343,11 @@ int main(int argc, char** argv) {
                 info.nbody == 1 ? "y" : "ies", info.ntri);
   v.info = buf;
   v.seaState = mjbview::describeSea(v.m);
-  std::printf("mjbuoy-view: %s: %s; sea: %s\n", v.o.model.c_str(), buf, v.seaState.c_str());
+  v.windState = mjbview::describeWind(v.m);
+  v.radState = mjbtool::radiationState(v.b);
+  v.ctrl.assign(v.m->nu, 0);
+  std::printf("mjbuoy-view: %s: %s; sea: %s; wind: %s; radiation: %s\n", v.o.model.c_str(), buf,
+              v.seaState.c_str(), v.windState.c_str(), v.radState.c_str());
   v.forces = v.o.forces;
   v.wet = v.o.wet;
   v.paused = v.o.paused;
@@ -308,6 +369,7 @@ int main(int argc, char** argv) {
   v.quit = true;
   sim.join();
 
+  if (v.o.printRtf) mjbview::printRtf(&v);
   if (v.o.printFinal) {
     mjbview::printCamera(&v, "final");
     mjbview::printBodies(&v, "final");
