@@ -11,7 +11,9 @@ check_view.py VIEW MODEL CASE, run inside xvfb-run (CTest does that), CASE:
   screenshot_gl  the same with the gl backend: its EGL context (physics
               thread) and the window's GLX context (main thread) coexist
   errors      an unwritable or malformed --screenshot and a missing X server
-              give clear errors before anything is written
+              give clear errors before anything is written; bad --set and
+              --spectrum values get mjbuoy-sim's very message (one
+              validator), and --calm --spectrum reaches the overlay's sea
   guarded     the checks every tool runs: a scene that diverges in its first
               step (barges of 1e-7 kg, tests/check_tools.py "diverge") makes
               the viewer stop with exit 1 saying MuJoCo reset it (it exited
@@ -208,6 +210,29 @@ def errors(view, model, tmp):
         print(p.stderr)
         check(p.returncode != 0 and want in p.stderr,
               "%s: exit %d with \"%s\"" % (" ".join(args), p.returncode, want))
+    check(os.listdir(tmp) == [], "nothing written into the directory")
+    # --set, --spectrum and --calm: mjbuoy-sim's validator (tools/sim/simsea.h
+    # parseEdits, seaopts.h), so the same bad value gets the same message
+    sim = os.path.join(os.path.dirname(view), "mjbuoy-sim")
+    for args in (["--spectrum", "jonswap:hs=abc"], ["--spectrum", "nosuch:hs=1"],
+                 ["--set", "mjbuoy.wave.swell"], ["--set", "mjbuoy.spectrum.x.hs=-1"]):
+        pv = subprocess.run([view, model] + args, capture_output=True, text=True, timeout=300)
+        ps = subprocess.run([sim, model, "--duration", "0.01"] + args, capture_output=True,
+                            text=True, timeout=300)
+        ev = pv.stderr.replace("mjbuoy-view: ", "").strip()
+        es = ps.stderr.replace("mjbuoy-sim: ", "").strip()
+        print(pv.stderr)
+        check(pv.returncode != 0 and ps.returncode != 0 and ev and ev == es,
+              "%s: refused with mjbuoy-sim's message" % " ".join(args))
+    # a valid edit reaches the scene: the calm swell replaced by a 6-component
+    # JONSWAP spectrum, every component linear (docs/mjcf.md section 8)
+    args = ["--calm", "--spectrum", "jonswap:hs=0.4,tp=5,components=6", "--set",
+            "mjbuoy.radiation=off", "--exit-after", "0.01"]
+    p = subprocess.run([view, model] + args, capture_output=True, text=True, timeout=300)
+    print(p.stdout + p.stderr)
+    check(p.returncode == 0 and "sea: 6 linear wave components (JONSWAP Hs 0.4 m Tp 5 s)"
+          in p.stdout and "Gerstner" not in p.stdout, "%s: the overlay's sea is the edited one"
+          % " ".join(args))
     check(os.listdir(tmp) == [], "nothing written into the directory")
     p = subprocess.run([view, model], capture_output=True, text=True, timeout=300,
                        env=dict(os.environ, DISPLAY=":99999"))
