@@ -70,8 +70,8 @@ struct Progress {
       int tenth = (int)(10 * fr + 1e-9);
       if (tenth == lastTenth) return;
       lastTenth = tenth;
-      std::fprintf(stderr, "mjbuoy-sim: %3d%% (sim %.2f of %.2f s, %.1f s elapsed, about %.1f s left)\n",
-                   10 * tenth, t, total, el, eta);
+      std::fprintf(stderr, "mjbuoy-sim: %3d%% (sim %.2f of %.2f s, %.1f s elapsed, about %.1f s "
+                   "left, %.2fx real time)\n", 10 * tenth, t, total, el, eta, el > 0 ? t / el : 0);
     }
   }
   void done() {
