@@ -17,7 +17,10 @@ struct SceneArgs {
   std::string json;     // also write the row as JSON ("": none)
 };
 
-// the scene's table row on stdout (and JSON); the exit status
+// the scene's table row on stdout (and JSON): hydro wall and CPU ms per step,
+// full step wall ms and CPU ms of all threads (over the cores: about the
+// wall time of an idle machine, which a loaded one exceeds), real-time
+// factor; the exit status
 int benchScene(const SceneArgs& a);
 
 // the scene run by this bench and the bench `base`, alternating as child
