@@ -124,7 +124,8 @@ bool writeJson(const SceneArgs& a, const Row& r) {
   }
   std::fprintf(of.file(), "[\n  {\"scene\": \"%s\", \"backend\": \"%s\", \"hulls\": %d, "
                "\"triangles\": %d, \"timestep_s\": %.9g, \"hydro_ms\": %.6f, "
-               "\"hydro_cpu_ms\": %.6f, \"step_ms\": %.6f, \"step_cpu_ms\": %.6f, \"rtf\": %.6f}\n]\n",
+               "\"hydro_cpu_ms\": %.6f, \"step_ms\": %.6f, \"step_cpu_ms\": %.6f, "
+               "\"rtf\": %.6f}\n]\n",
                a.file.c_str(), r.backend.c_str(), r.nhull, r.ntri, r.dt, r.hydro, r.cpu, r.step,
                r.stepCpu, r.rtf());
   if (!of.commit(&e)) {

@@ -243,6 +243,38 @@ bool openWindow(View* v) {
   return true;
 }
 
+// the model with the edits of --set, --spectrum and --calm (the validator
+// mjbuoy-sim uses), attached; the panel solve announced first; false after
+// saying why
+bool loadScene(View* v) {
+  char err[1024] = "";
+  mjbsim::Edits edits;  // --set, --spectrum, --calm: the validator mjbuoy-sim uses
+  {
+    std::string e = mjbsim::parseEdits(v->o.sea.sets, v->o.sea.spectra, v->o.sea.calm, &edits);
+    std::string xml;
+    if (e.empty() && !edits.empty()) mjbsim::editedModel(v->o.model, edits, &xml, &e);
+    if (e.empty()) v->m = mjbtool::loadModel(v->o.model, edits.empty() ? nullptr : &xml, "", &e);
+    if (!v->m) {
+      std::fprintf(stderr, "mjbuoy-view: %s\n", e.c_str());
+      return false;
+    }
+  }
+  {
+    std::string plan = mjbtool::radiationPlan(v->m);  // the panel solve is no silent wait
+    if (!plan.empty()) std::fprintf(stderr, "mjbuoy-view: %s\n", plan.c_str());
+  }
+  const char* be = v->o.backend.empty() ? nullptr : v->o.backend.c_str();
+  v->b = mjb_attach(v->m, be, err, sizeof(err));
+  if (!v->b) {
+    std::fprintf(stderr, "mjbuoy-view: %s: %s\n", v->o.model.c_str(),
+                 mjbsim::blame(edits, err).c_str());
+    mj_deleteModel(v->m);
+    return false;
+  }
+  std::fputs(mjb_warnings(v->b), stderr);
+  return true;
+}
+
 int parse(int argc, char** argv, Options* o) {
   CLI::App app{"Interactive viewer of an mjbuoy MJCF scene (GLFW window)."};
   app.set_version_flag("--version", std::string("mjbuoy-view ") + MJBUOY_VERSION_STRING);
@@ -295,30 +327,7 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  char err[1024] = "";
-  mjbsim::Edits edits;  // --set, --spectrum, --calm: the validator mjbuoy-sim uses
-  {
-    std::string e = mjbsim::parseEdits(v.o.sea.sets, v.o.sea.spectra, v.o.sea.calm, &edits);
-    std::string xml;
-    if (e.empty() && !edits.empty()) mjbsim::editedModel(v.o.model, edits, &xml, &e);
-    if (e.empty()) v.m = mjbtool::loadModel(v.o.model, edits.empty() ? nullptr : &xml, "", &e);
-    if (!v.m) {
-      std::fprintf(stderr, "mjbuoy-view: %s\n", e.c_str());
-      return 1;
-    }
-  }
-  {
-    std::string plan = mjbtool::radiationPlan(v.m);  // the panel solve is no silent wait
-    if (!plan.empty()) std::fprintf(stderr, "mjbuoy-view: %s\n", plan.c_str());
-  }
-  v.b = mjb_attach(v.m, v.o.backend.empty() ? nullptr : v.o.backend.c_str(), err, sizeof(err));
-  if (!v.b) {
-    std::fprintf(stderr, "mjbuoy-view: %s: %s\n", v.o.model.c_str(),
-                 mjbsim::blame(edits, err).c_str());
-    mj_deleteModel(v.m);
-    return 1;
-  }
-  std::fputs(mjb_warnings(v.b), stderr);
+  if (!mjbview::loadScene(&v)) return 1;
   std::string e;
   if (!v.sea.init(v.m, v.b, &e)) {
     std::fprintf(stderr, "mjbuoy-view: %s: %s\n", v.o.model.c_str(), e.c_str());
