@@ -67,7 +67,8 @@ void printCamera(const View* v, const char* when) {
               c.distance, c.azimuth, c.elevation, v->m->vis.global.fovy);
 }
 
-// positions and orientations of every body (world body excluded), time first
+// positions and orientations of every body (world body excluded), time
+// first, then every actuator's control
 void printBodies(const View* v, const char* when) {
   std::printf("mjbuoy-view: %s time %.9f\n", when, v->d->time);
   for (int i = 1; i < v->m->nbody; i++) {
@@ -75,6 +76,11 @@ void printBodies(const View* v, const char* when) {
     const mjtNum* q = v->d->xquat + 4 * i;
     std::printf("mjbuoy-view: %s body %s pos %.9g %.9g %.9g quat %.9g %.9g %.9g %.9g\n", when,
                 mj_id2name(v->m, mjOBJ_BODY, i), p[0], p[1], p[2], q[0], q[1], q[2], q[3]);
+  }
+  for (int a = 0; a < v->m->nu; a++) {  // the controls the last step used
+    const char* name = mj_id2name(v->m, mjOBJ_ACTUATOR, a);
+    std::printf("mjbuoy-view: %s ctrl %s %.9g\n", when, name ? name : std::to_string(a).c_str(),
+                v->d->ctrl[a]);
   }
 }
 
