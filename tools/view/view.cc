@@ -223,12 +223,17 @@ bool openWindow(View* v) {
   v->win = glfwCreateWindow(v->o.width, v->o.height, title.c_str(), nullptr, nullptr);
   if (!v->win) return false;
   glfwMakeContextCurrent(v->win);
-  // a software renderer (Mesa's llvmpipe) pays for every sample on the CPU
-  // the physics needs: without --msaa, no multisampling there
+  // a software renderer (Mesa's llvmpipe) pays for every sample and the
+  // shadow map's pass on the CPU the physics needs: there, no multisampling
+  // without --msaa and no shadows without --shadows
   const char* r = (const char*)glGetString(GL_RENDERER);
-  if (v->o.msaa < 0 && r && (std::strstr(r, "llvmpipe") || std::strstr(r, "softpipe"))) {
-    std::fprintf(stderr, "mjbuoy-view: software renderer (%s): no multisampling (--msaa 4 "
-                 "asks for it)\n", r);
+  const bool software = r && (std::strstr(r, "llvmpipe") || std::strstr(r, "softpipe"));
+  if (software && (v->o.msaa < 0 || !v->o.shadows)) {
+    std::fprintf(stderr, "mjbuoy-view: software renderer (%s):%s%s\n", r,
+                 v->o.msaa < 0 ? " no multisampling (--msaa 4 asks for it)" : "",
+                 v->o.shadows ? "" : " no shadows (--shadows asks for them)");
+  }
+  if (software && v->o.msaa < 0) {
     glfwDestroyWindow(v->win);
     glfwWindowHint(GLFW_SAMPLES, 0);
     v->win = glfwCreateWindow(v->o.width, v->o.height, title.c_str(), nullptr, nullptr);
@@ -243,6 +248,7 @@ bool openWindow(View* v) {
   mjv_defaultScene(&v->scn);
   mjr_defaultContext(&v->con);
   mjv_makeScene(v->m, &v->scn, v->m->ngeom + v->m->nbody + 2000);
+  if (software && !v->o.shadows) v->scn.flags[mjRND_SHADOW] = 0;
   mjr_makeContext(v->m, &v->con, mjFONTSCALE_100);
   mjr_setBuffer(mjFB_WINDOW, &v->con);
   installInput(v);
@@ -301,6 +307,8 @@ int parse(int argc, char** argv, Options* o) {
                "kept (simulated s per wall s, first step to last) and the mean drawing cost "
                "per frame at exit");
   mjbtool::addSeaOptions(app, &o->sea);
+  app.add_flag("--shadows", o->shadows, "MuJoCo's shadows on a software renderer too (such "
+               "as Mesa's llvmpipe, where they are off by default: a pass on the CPU)");
   app.add_option("--msaa", o->msaa, "multisampling samples per pixel (default 4, 0 on a "
                  "software renderer such as Mesa's llvmpipe)")->check(mjbtool::Finite(0, 16));
   app.add_option("--width", o->width, "window width [pixels]")->check(mjbtool::Finite(64, 8192));

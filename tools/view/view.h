@@ -38,6 +38,7 @@ struct Options {
   bool printRtf = false;  // --print-rtf: the real-time factor and frame costs at exit
   int width = 1280, height = 800;
   int msaa = -1;          // --msaa samples; < 0: 4, or 0 on a software renderer
+  bool shadows = false;   // --shadows: MuJoCo's shadows on a software renderer too
   mjbtool::SeaArgs sea;   // --set, --spectrum, --calm (seaopts.h)
 };
 
