@@ -91,6 +91,10 @@ bool SeaPainter::init(mjModel* m, const mjbBuoy* b, std::string* err) {
     *err = e;
     return false;
   }
+  // the surface stays within level -+ the sum of the amplitudes
+  level_ = cfg.sea.level;
+  amp_ = 0;
+  for (const mjb::Wave& w : cfg.sea.waves) amp_ += std::fabs(w.amp);
   size_t nv = 0;
   for (int g : cfg.geom) {
     std::vector<std::string> warn;
@@ -146,7 +150,7 @@ void SeaPainter::draw(const mjvScene& scn, const mjvCamera& cam, mjrRect vp, boo
   }
   if (!skybox_) drawSky(c, halfw);
   if (wet) drawWet();
-  drawSea(c, cam);
+  drawSea(c, cam, halfw);
   glMatrixMode(GL_PROJECTION);
   glPopMatrix();
   glMatrixMode(GL_MODELVIEW);
@@ -244,7 +248,58 @@ void SeaPainter::drawWet() {
 // geometrically outwards, heights from the exact surface, shaded on the CPU
 // (sun, sky reflection by a Fresnel term, highlight), faded into the sky
 // colour at its edge
-void SeaPainter::drawSea(const mjvGLCamera& c, const mjvCamera& cam) {
+// vis_: 1 for the grid vertices (cx + u_[i], cy + u_[j]) whose heights
+// between level_ -+ amp_ project into the view (5% margin), dilated by two
+// cells; the cost of the sea's heights is then the visible part's
+void SeaPainter::markVisible(const mjvGLCamera& c, double halfw, double cx, double cy, int n) {
+  V3 eye = v3(c.pos[0], c.pos[1], c.pos[2]);
+  V3 F = unit(v3(c.forward[0], c.forward[1], c.forward[2]));
+  V3 U = unit(v3(c.up[0], c.up[1], c.up[2]));
+  V3 S = unit(cross(F, U));
+  U = cross(S, F);
+  const double nr = c.frustum_near, m = 0.05 * (c.frustum_top - c.frustum_bottom);
+  const double xlo = c.frustum_center - halfw - m, xhi = c.frustum_center + halfw + m;
+  const double ylo = c.frustum_bottom - m, yhi = c.frustum_top + m;
+  std::vector<char> seen((size_t)n * n, 0);
+  for (int j = 0; j < n; j++) {
+    for (int i = 0; i < n; i++) {
+      bool in = false;
+      for (double h : {level_ - amp_, level_ + amp_}) {
+        V3 d = v3(cx + u_[i], cy + u_[j], h) - eye;
+        double f = dot(d, F);
+        if (f <= nr) continue;
+        double x = nr * dot(d, S) / f, y = nr * dot(d, U) / f;
+        in = in || (x >= xlo && x <= xhi && y >= ylo && y <= yhi);
+      }
+      // a column seen edge-on: its ends above and below the view
+      if (!in) {
+        V3 d0 = v3(cx + u_[i], cy + u_[j], level_ - amp_) - eye;
+        V3 d1 = v3(cx + u_[i], cy + u_[j], level_ + amp_) - eye;
+        double f0 = dot(d0, F), f1 = dot(d1, F);
+        if (f0 > nr && f1 > nr) {
+          double x = nr * dot(d0, S) / f0;
+          double y0 = nr * dot(d0, U) / f0, y1 = nr * dot(d1, U) / f1;
+          in = x >= xlo && x <= xhi && y0 < ylo && y1 > yhi;
+        }
+      }
+      seen[(size_t)j * n + i] = in;
+    }
+  }
+  vis_.assign((size_t)n * n, 0);
+  const int r = 2;
+  for (int j = 0; j < n; j++) {
+    for (int i = 0; i < n; i++) {
+      if (!seen[(size_t)j * n + i]) continue;
+      for (int jj = std::max(0, j - r); jj <= std::min(n - 1, j + r); jj++) {
+        for (int ii = std::max(0, i - r); ii <= std::min(n - 1, i + r); ii++) {
+          vis_[(size_t)jj * n + ii] = 1;
+        }
+      }
+    }
+  }
+}
+
+void SeaPainter::drawSea(const mjvGLCamera& c, const mjvCamera& cam, double halfw) {
   V3 eye = v3(c.pos[0], c.pos[1], c.pos[2]);
   double cx = cam.lookat[0], cy = cam.lookat[1], dist = cam.distance;
   if (cam.type == mjCAMERA_FIXED) {
@@ -279,8 +334,14 @@ void SeaPainter::drawSea(const mjvGLCamera& c, const mjvCamera& cam) {
   z_.resize((size_t)n * n);
   col_.resize((size_t)4 * n * n);
   std::vector<float>& z = z_;
+  // heights where the picture needs them: vertices whose column of possible
+  // surface heights meets the view, and two cells around them (triangles
+  // across the view's edge); the rest, unseen, lie at the mean level
+  markVisible(c, halfw, cx, cy, n);
   for (int j = 0; j < n; j++) {
-    for (int i = 0; i < n; i++) z[j * n + i] = mjb_seaHeight(b_, cx + u[i], cy + u[j], time_);
+    for (int i = 0; i < n; i++) {
+      z[j * n + i] = vis_[j * n + i] ? mjb_seaHeight(b_, cx + u[i], cy + u[j], time_) : level_;
+    }
   }
   // the sea's own sun: low (30 degrees) ahead and to the left of the view,
   // so that slopes shade and the far water glitters; a light from straight

@@ -48,7 +48,8 @@ class SeaPainter {
  private:
   void drawSky(const mjvGLCamera& c, double halfw);
   void drawWet();
-  void drawSea(const mjvGLCamera& c, const mjvCamera& cam);
+  void drawSea(const mjvGLCamera& c, const mjvCamera& cam, double halfw);
+  void markVisible(const mjvGLCamera& c, double halfw, double cx, double cy, int n);
 
   const mjModel* m_ = nullptr;
   const mjbBuoy* b_ = nullptr;
@@ -68,6 +69,8 @@ class SeaPainter {
   std::vector<double> u_;              // scratch: sea grid axis
   std::vector<float> z_, col_;         // scratch: sea grid heights and colours
   std::vector<float> xyz_;             // scratch: sea grid vertices
+  std::vector<char> vis_;              // scratch: sea grid vertices in view (their heights)
+  double level_ = 0, amp_ = 0;         // mean level, sum of amplitudes: the surface's band [m]
   std::vector<unsigned> strip_;        // sea grid strips' vertex indices, row by row
   static const int kHalf = 48;         // sea grid vertices each side of the centre
 };

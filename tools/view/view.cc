@@ -167,6 +167,7 @@ int run(View* v) {
     glfwGetFramebufferSize(v->win, &vp.width, &vp.height);
     double r0 = glfwGetTime();
     mjr_render(vp, &v->scn, &v->con);
+    if (v->o.printRtf) glFinish();  // MuJoCo's drawing timed apart from the sea's
     double r1 = glfwGetTime();
     v->sea.draw(v->scn, v->cam, vp, v->wet);
     if (v->o.printRtf) glFinish();  // the sea's cost, not the next call's
