@@ -24,9 +24,13 @@ TOOLS = [
    "then every sensor by its name (`<sensor>.0`, `.1`, ... when it has several values)."),
   ("mjbuoy-view", [], "An interactive window (GLFW, X11) with the sea drawn live; "
    "physics runs in real time on its own thread. Keys: Space pause, Right arrow one step, "
-   "Backspace reset, `-` / `+` slower / faster, F force arrows, W wet part, H help; "
-   "double-click selects a body, Ctrl + drag pulls or turns it. Headless, run it under "
-   "`xvfb-run -a`."),
+   "Backspace reset, `-` / `+` slower / faster, Up / Down the chosen actuator's control "
+   "(a twentieth of its ctrlrange a press), `[` / `]` the previous / next actuator, 0 every "
+   "control to 0, F force arrows, W wet part, H help; double-click selects a body, Ctrl + "
+   "drag pulls or turns it. The overlay names the sea (its components by kind, Gerstner or "
+   "linear, and its spectra), the wind, the radiation and the real-time factor the physics "
+   "keeps; when the physics falls behind the clock, drawing yields to it. Headless, run it "
+   "under `xvfb-run -a`."),
   ("mjbuoy-hydro", [], "Prints the radiation coefficients the panel solver finds for "
    "each hull body and fills the radiation cache."),
   ("mjbuoy-scenario", [], "Runs scenario files: a model, a sea and checks on the "
@@ -35,7 +39,8 @@ TOOLS = [
    "Runs a sweep of scenarios locally or on Slurm and merges the results "
    "([Sweeps](sweeps.md), [An RAO sweep](howto-rao.md))."),
   ("mjbuoy-bench", [], "Measures the cost of a step over a grid of boats and hull "
-   "resolutions ([Benchmarks](benchmarks.md))."),
+   "resolutions, or of one scene as it is with `--scene` (hydro, full step and the "
+   "real-time factor) ([Benchmarks](benchmarks.md))."),
   ("mjbuoy-hullgen", [], "Writes Wigley hull meshes (OBJ) of a given resolution."),
 ]
 

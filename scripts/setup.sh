@@ -49,5 +49,11 @@ fi
 
 build=${MJBUOY_BUILD:-build}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j"$(nproc)" 2>&1 | grep -E "error|warning|Error" || true
+if [ "${MJBUOY_BUILD_PROGRESS:-0}" = 1 ]; then
+  # scripts/demo.sh: a line per target built, with the percentage done
+  cmake --build "$build" -j"$(nproc)" 2>&1 |
+    grep --line-buffered -E "^\[ *[0-9]+%\] Built target|error|warning|Error" || true
+else
+  cmake --build "$build" -j"$(nproc)" 2>&1 | grep -E "error|warning|Error" || true
+fi
 test -x "$build/tools/mjbuoy-sim" || { echo "setup: build failed" >&2; exit 1; }

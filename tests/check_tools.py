@@ -42,7 +42,9 @@ directory must hold no temporary files (".NAME.tmp-*").
 """
 import glob
 import hashlib
+import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -621,6 +623,42 @@ def messages(tools, models, tmp):
         p = run([exe("mjbuoy-sim"), model, "--print-sea", "--set", "mjbuoy.wind.speed=" + v], cwd=tmp)
         refused(p, "--set mjbuoy.wind.speed=" + v, "mjbuoy.wind.speed", "finite")
         check("text" not in p.stderr, "--set mjbuoy.wind.speed=%s: not called a text entry" % v)
+
+
+def benchscene(tools, models, tmp):
+    """mjbuoy-bench --scene: a model's own scene timed as it is; its row's
+    fields against the model (one hull, its timestep) and the definitions
+    (the step holds mjbuoy's callback; real-time factor = simulated s per
+    wall s = timestep / step time); the panel solve announced on stderr
+    exactly when the model has radiation; a baseline without --scene named"""
+    bench = os.path.join(tools, "mjbuoy-bench")
+    src = open(os.path.join(models, "barge.xml")).read()
+    dt = float(re.search(r'timestep="([^"]+)"', src).group(1)) if "timestep=" in src else 0.002
+    for rad in ("on", "off"):
+        model = os.path.join(tmp, "barge_%s.xml" % rad)
+        open(model, "w").write(src.replace("<custom>", '<custom><text name="mjbuoy.radiation" '
+                                           'data="%s"/>' % rad, 1))
+        js = os.path.join(tmp, "scene_%s.json" % rad)
+        p = run([bench, "--scene", model, "--steps", "50", "--reps", "1", "--json", js], cwd=tmp)
+        check(p.returncode == 0 and "real-time factor" in p.stdout, "--scene (radiation %s): "
+              "exit 0 and a table with the real-time factor" % rad)
+        if p.returncode != 0:
+            continue
+        row = json.load(open(js))[0]
+        check(row["hulls"] == 1 and abs(row["timestep_s"] - dt) < 1e-12,
+              "one hull and the model's timestep %g s (got %s)" % (dt, row))
+        check(0 < row["hydro_ms"] <= row["step_ms"], "hydro time within the step's")
+        check(abs(row["rtf"] - row["timestep_s"] * 1e3 / row["step_ms"]) <= 1e-4 * row["rtf"],
+              "real-time factor = timestep / step time")
+        said = "radiation is on" in p.stderr
+        check(said == (rad == "on"), "the panel solve announced on stderr: %s (radiation %s)"
+              % (said, rad))
+    fake = os.path.join(tmp, "old-bench")
+    open(fake, "w").write("#!/bin/sh\necho 'The following arguments were not expected: "
+                          "--scene' >&2\nexit 109\n")
+    os.chmod(fake, 0o755)
+    p = run([bench, "--scene", model, "--steps", "5", "--reps", "1", "--baseline", fake], cwd=tmp)
+    refused(p, "--scene with a baseline lacking it", "has no --scene", "both builds")
 
 
 def main():

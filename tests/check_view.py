@@ -11,7 +11,9 @@ check_view.py VIEW MODEL CASE, run inside xvfb-run (CTest does that), CASE:
   screenshot_gl  the same with the gl backend: its EGL context (physics
               thread) and the window's GLX context (main thread) coexist
   errors      an unwritable or malformed --screenshot and a missing X server
-              give clear errors before anything is written
+              give clear errors before anything is written; bad --set and
+              --spectrum values get mjbuoy-sim's very message (one
+              validator), and --calm --spectrum reaches the overlay's sea
   guarded     the checks every tool runs: a scene that diverges in its first
               step (barges of 1e-7 kg, tests/check_tools.py "diverge") makes
               the viewer stop with exit 1 saying MuJoCo reset it (it exited
@@ -26,6 +28,9 @@ check_view.py VIEW MODEL CASE, run inside xvfb-run (CTest does that), CASE:
   close       started --paused, keys Right x 3, BackSpace, Right x 2 leave
               the time at 2 timesteps (0.004 s); ctrl+Q closes the window:
               exit status 0, final poses printed, no sanitizer report
+  actuator    a motor on each barge: Up x 3 sets the first control to 3
+              twentieths of its ctrlrange, ] and Up x 12 the second to its
+              range's top, as the final controls printed show
 MODEL is tests/viewer/two_barges.xml: two 2 x 1 x 0.5 m barges at x = -2, 2.
 Waits are generous and poll (xdotool search --sync): the machine is shared
 and the test also runs under ASan.
@@ -209,6 +214,29 @@ def errors(view, model, tmp):
         check(p.returncode != 0 and want in p.stderr,
               "%s: exit %d with \"%s\"" % (" ".join(args), p.returncode, want))
     check(os.listdir(tmp) == [], "nothing written into the directory")
+    # --set, --spectrum and --calm: mjbuoy-sim's validator (tools/sim/simsea.h
+    # parseEdits, seaopts.h), so the same bad value gets the same message
+    sim = os.path.join(os.path.dirname(view), "mjbuoy-sim")
+    for args in (["--spectrum", "jonswap:hs=abc"], ["--spectrum", "nosuch:hs=1"],
+                 ["--set", "mjbuoy.wave.swell"], ["--set", "mjbuoy.spectrum.x.hs=-1"]):
+        pv = subprocess.run([view, model] + args, capture_output=True, text=True, timeout=300)
+        ps = subprocess.run([sim, model, "--duration", "0.01"] + args, capture_output=True,
+                            text=True, timeout=300)
+        ev = pv.stderr.replace("mjbuoy-view: ", "").strip()
+        es = ps.stderr.replace("mjbuoy-sim: ", "").strip()
+        print(pv.stderr)
+        check(pv.returncode != 0 and ps.returncode != 0 and ev and ev == es,
+              "%s: refused with mjbuoy-sim's message" % " ".join(args))
+    # a valid edit reaches the scene: the calm swell replaced by a 6-component
+    # JONSWAP spectrum, every component linear (docs/mjcf.md section 8)
+    args = ["--calm", "--spectrum", "jonswap:hs=0.4,tp=5,components=6", "--set",
+            "mjbuoy.radiation=off", "--exit-after", "0.01"]
+    p = subprocess.run([view, model] + args, capture_output=True, text=True, timeout=300)
+    print(p.stdout + p.stderr)
+    check(p.returncode == 0 and "sea: 6 linear wave components (JONSWAP Hs 0.4 m Tp 5 s)"
+          in p.stdout and "Gerstner" not in p.stdout, "%s: the overlay's sea is the edited one"
+          % " ".join(args))
+    check(os.listdir(tmp) == [], "nothing written into the directory")
     p = subprocess.run([view, model], capture_output=True, text=True, timeout=300,
                        env=dict(os.environ, DISPLAY=":99999"))
     print(p.stderr)
@@ -383,6 +411,42 @@ def close_case(view, model, tmp):
           "no sanitizer report on stderr")
 
 
+def actuator(view, model, tmp):
+    # a motor of ctrlrange [-300, 300] N on each barge (the motorboat's
+    # thrust, models/motorboat.xml): a key press steps the chosen control by
+    # a twentieth of the range, 30 N, and never past it. Started paused: Up
+    # x 3 on the first (east_thrust: 90 N), ] to the next, Up x 12 on it
+    # (west_thrust: 360 N asked, 300 N kept), one step (Right) to use them
+    src = open(model).read()
+    src = src.replace('<geom name="east_hull"', '<site name="east_s"/><geom name="east_hull"')
+    src = src.replace('<geom name="west_hull"', '<site name="west_s"/><geom name="west_hull"')
+    motors = "".join('<motor name="%s_thrust" site="%s_s" gear="1 0 0 0 0 0" ctrllimited="true" '
+                     'ctrlrange="-300 300"/>' % (b, b) for b in ("east", "west"))
+    src = src.replace("</worldbody>", "</worldbody><actuator>%s</actuator>" % motors)
+    boats = os.path.join(tmp, "motor_barges.xml")
+    open(boats, "w").write(src)
+    v = Viewer([view, boats, "--print-final", "--paused", "--set", "mjbuoy.radiation=off"])
+    start = v.wait_for(r"start camera:", 300)
+    win = window()
+    check(bool(start and win), "the window appears")
+    if win:
+        xdo("windowfocus", win)
+        time.sleep(1)
+        for k in ["Up"] * 3 + ["bracketright"] + ["Up"] * 12 + ["Right"]:
+            xdo("key", k)
+            time.sleep(0.3)
+        time.sleep(2)
+        close(v, win)
+    rc, out, err = v.finish()
+    check(rc == 0, "ctrl+Q: exit status 0 (%d)" % rc)
+    ctrl = dict((m.group(1), float(m.group(2)))
+                for m in re.finditer(r"final ctrl (\S+) (\S+)", out))
+    check(ctrl.get("east_thrust") == 90, "Up x 3: east_thrust = 3 x 600 / 20 = 90 N (%s)"
+          % ctrl.get("east_thrust"))
+    check(ctrl.get("west_thrust") == 300, "] then Up x 12: west_thrust held at its range's "
+          "top, 300 N (%s)" % ctrl.get("west_thrust"))
+
+
 def main():
     view, model, case = sys.argv[1:4]
     if "DISPLAY" not in os.environ:
@@ -391,7 +455,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         {"screenshot": screenshot, "perturb": perturb, "close": close_case,
          "screenshot_gl": lambda *a: screenshot(*a, backend="gl"), "errors": errors,
-         "guarded": guarded}[case](view, model, tmp)
+         "guarded": guarded, "actuator": actuator}[case](view, model, tmp)
     print("FAILED" if failed else "PASSED")
     return 1 if failed else 0
 

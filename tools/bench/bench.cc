@@ -20,8 +20,10 @@
 #include <mujoco/mujoco.h>
 
 #include "benchcmp.h"
+#include "benchscene.h"
 #include "cliopt.h"
 #include "guard.h"
+#include "modelload.h"
 #include "mjbuoy.h"  // and mjbuoy_version.h
 #include "outfile.h"
 #include "roofline.h"
@@ -564,11 +566,39 @@ int main(int argc, char** argv) {
   app.add_option("--baseline", baseline, "another build's mjbuoy-bench binary: run every cell "
                  "with both, one repetition each in turn (A/B/A/B as child processes), and "
                  "print each cell's times and the ratio baseline/this");
+  std::string sceneFile;
+  app.add_option("--scene", sceneFile, "an MJCF scene timed as it is (its own hulls, sea, wind "
+                 "and radiation) instead of the grid: hydro ms, full step ms and the real-time "
+                 "factor (simulated s per wall s); --steps default 500 here, e.g. --scene "
+                 "models/jonswap.xml")
+      ->check(CLI::ExistingFile);
   app.add_option("--meshes", meshes, "directory of wigley_N.obj (default: the installed "
                  "share/mjbuoy/models/meshes beside this executable, else the source tree's)");
   {
     int rc = mjbtool::parseArgs(app, argc, argv, 1);  // docs: invalid input exits 1
     if (rc >= 0) return rc;
+  }
+  if (!sceneFile.empty()) {
+    mjbtool::SceneArgs sa;
+    sa.file = sceneFile;
+    if (app.count("--backend")) sa.backend = backends.front();
+    sa.steps = app.count("--steps") ? steps : 500;
+    sa.reps = reps;
+    sa.json = json;
+    if (!json.empty()) {
+      std::string e;
+      if (!mjbtool::checkOutputs(sceneFile, {{json, "--json", true}}, &e)) {
+        std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
+        return 1;
+      }
+    }
+    if (baseline.empty()) return mjbtool::benchScene(sa);
+    std::string e;
+    if (!mjbtool::checkExecutable(baseline, "--baseline", &e)) {
+      std::fprintf(stderr, "mjbuoy-bench: %s\n", e.c_str());
+      return 1;
+    }
+    return mjbtool::compareScene(sa, baseline);
   }
   if (boats.empty()) boats = grid == "full" ? std::vector<int>{1, 50, 100, 200, 400, 800}
                                             : std::vector<int>{1, 50};

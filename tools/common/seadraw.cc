@@ -38,6 +38,21 @@ const float kSky[3] = {0.80f, 0.87f, 0.93f};     // at the horizon
 const float kZenith[3] = {0.36f, 0.56f, 0.82f};  // 45 degrees up and above
 const float kSea[4] = {0.06f, 0.34f, 0.44f, 0.70f};
 
+// the factor g > 1 with 1 + g + ... + g^(half - 1) = ratio: the grid's
+// spacing grows by g a step to cover ratio first spacings in half steps
+// (uniform, g = 1, when half steps are enough); by bisection
+double growth(double ratio, int half) {
+  if (ratio <= half) return 1;
+  double lo = 1, hi = 2;
+  auto sum = [&](double g) { return (std::pow(g, half) - 1) / (g - 1); };
+  while (sum(hi) < ratio) hi *= 2;
+  for (int it = 0; it < 60; it++) {
+    double mid = 0.5 * (lo + hi);
+    (sum(mid) < ratio ? lo : hi) = mid;
+  }
+  return hi;
+}
+
 }  // namespace
 
 const float kWetRgba[4] = {0.85f, 0.10f, 0.75f, 1};
@@ -76,6 +91,10 @@ bool SeaPainter::init(mjModel* m, const mjbBuoy* b, std::string* err) {
     *err = e;
     return false;
   }
+  // the surface stays within level -+ the sum of the amplitudes
+  level_ = cfg.sea.level;
+  amp_ = 0;
+  for (const mjb::Wave& w : cfg.sea.waves) amp_ += std::fabs(w.amp);
   size_t nv = 0;
   for (int g : cfg.geom) {
     std::vector<std::string> warn;
@@ -131,7 +150,7 @@ void SeaPainter::draw(const mjvScene& scn, const mjvCamera& cam, mjrRect vp, boo
   }
   if (!skybox_) drawSky(c, halfw);
   if (wet) drawWet();
-  drawSea(c, cam);
+  drawSea(c, cam, halfw);
   glMatrixMode(GL_PROJECTION);
   glPopMatrix();
   glMatrixMode(GL_MODELVIEW);
@@ -229,7 +248,58 @@ void SeaPainter::drawWet() {
 // geometrically outwards, heights from the exact surface, shaded on the CPU
 // (sun, sky reflection by a Fresnel term, highlight), faded into the sky
 // colour at its edge
-void SeaPainter::drawSea(const mjvGLCamera& c, const mjvCamera& cam) {
+// vis_: 1 for the grid vertices (cx + u_[i], cy + u_[j]) whose heights
+// between level_ -+ amp_ project into the view (5% margin), dilated by two
+// cells; the cost of the sea's heights is then the visible part's
+void SeaPainter::markVisible(const mjvGLCamera& c, double halfw, double cx, double cy, int n) {
+  V3 eye = v3(c.pos[0], c.pos[1], c.pos[2]);
+  V3 F = unit(v3(c.forward[0], c.forward[1], c.forward[2]));
+  V3 U = unit(v3(c.up[0], c.up[1], c.up[2]));
+  V3 S = unit(cross(F, U));
+  U = cross(S, F);
+  const double nr = c.frustum_near, m = 0.05 * (c.frustum_top - c.frustum_bottom);
+  const double xlo = c.frustum_center - halfw - m, xhi = c.frustum_center + halfw + m;
+  const double ylo = c.frustum_bottom - m, yhi = c.frustum_top + m;
+  std::vector<char> seen((size_t)n * n, 0);
+  for (int j = 0; j < n; j++) {
+    for (int i = 0; i < n; i++) {
+      bool in = false;
+      for (double h : {level_ - amp_, level_ + amp_}) {
+        V3 d = v3(cx + u_[i], cy + u_[j], h) - eye;
+        double f = dot(d, F);
+        if (f <= nr) continue;
+        double x = nr * dot(d, S) / f, y = nr * dot(d, U) / f;
+        in = in || (x >= xlo && x <= xhi && y >= ylo && y <= yhi);
+      }
+      // a column seen edge-on: its ends above and below the view
+      if (!in) {
+        V3 d0 = v3(cx + u_[i], cy + u_[j], level_ - amp_) - eye;
+        V3 d1 = v3(cx + u_[i], cy + u_[j], level_ + amp_) - eye;
+        double f0 = dot(d0, F), f1 = dot(d1, F);
+        if (f0 > nr && f1 > nr) {
+          double x = nr * dot(d0, S) / f0;
+          double y0 = nr * dot(d0, U) / f0, y1 = nr * dot(d1, U) / f1;
+          in = x >= xlo && x <= xhi && y0 < ylo && y1 > yhi;
+        }
+      }
+      seen[(size_t)j * n + i] = in;
+    }
+  }
+  vis_.assign((size_t)n * n, 0);
+  const int r = 2;
+  for (int j = 0; j < n; j++) {
+    for (int i = 0; i < n; i++) {
+      if (!seen[(size_t)j * n + i]) continue;
+      for (int jj = std::max(0, j - r); jj <= std::min(n - 1, j + r); jj++) {
+        for (int ii = std::max(0, i - r); ii <= std::min(n - 1, i + r); ii++) {
+          vis_[(size_t)jj * n + ii] = 1;
+        }
+      }
+    }
+  }
+}
+
+void SeaPainter::drawSea(const mjvGLCamera& c, const mjvCamera& cam, double halfw) {
   V3 eye = v3(c.pos[0], c.pos[1], c.pos[2]);
   double cx = cam.lookat[0], cy = cam.lookat[1], dist = cam.distance;
   if (cam.type == mjCAMERA_FIXED) {
@@ -244,22 +314,18 @@ void SeaPainter::drawSea(const mjvGLCamera& c, const mjvCamera& cam) {
   }
   double R = extent_ > 0 ? extent_ : std::max(60.0, 6 * dist);
   double ds0 = std::max(0.05, dist / 80);
-  // axis samples: 0, +-ds0, ... growing by 3% a step up to R
-  int half = 0;
-  for (double s = 0, step = ds0; s < R; step *= 1.03) {
-    s = std::min(R, s + step);
-    half++;
-  }
-  int n = 2 * half + 1;
+  // a level-of-detail grid of a fixed (2 kHalf + 1)^2 vertices: spacing ds0
+  // at the centre, growing by a factor g a step out to R, so that its cost
+  // (components x vertices, once a frame) depends neither on the pixels nor
+  // on the distance
+  const int half = kHalf, n = 2 * half + 1;
+  const double g = growth(R / ds0, half);
   u_.resize(n);
   u_[half] = 0;
-  {
-    int i = 1;
-    for (double s = 0, step = ds0; s < R; step *= 1.03, i++) {
-      s = std::min(R, s + step);
-      u_[half + i] = s;
-      u_[half - i] = -s;
-    }
+  for (int i = 1; i <= half; i++) {
+    double step = ds0 * std::pow(g, i - 1);
+    u_[half + i] = i == half ? R : u_[half + i - 1] + step;
+    u_[half - i] = -u_[half + i];
   }
   const std::vector<double>& u = u_;
   // snap the centre so that the near grid does not swim with the camera
@@ -268,8 +334,14 @@ void SeaPainter::drawSea(const mjvGLCamera& c, const mjvCamera& cam) {
   z_.resize((size_t)n * n);
   col_.resize((size_t)4 * n * n);
   std::vector<float>& z = z_;
+  // heights where the picture needs them: vertices whose column of possible
+  // surface heights meets the view, and two cells around them (triangles
+  // across the view's edge); the rest, unseen, lie at the mean level
+  markVisible(c, halfw, cx, cy, n);
   for (int j = 0; j < n; j++) {
-    for (int i = 0; i < n; i++) z[j * n + i] = mjb_seaHeight(b_, cx + u[i], cy + u[j], time_);
+    for (int i = 0; i < n; i++) {
+      z[j * n + i] = vis_[j * n + i] ? mjb_seaHeight(b_, cx + u[i], cy + u[j], time_) : level_;
+    }
   }
   // the sea's own sun: low (30 degrees) ahead and to the left of the view,
   // so that slopes shade and the far water glitters; a light from straight
@@ -304,18 +376,36 @@ void SeaPainter::drawSea(const mjvGLCamera& c, const mjvCamera& cam) {
       o4[3] = alpha + fog * (1 - alpha);
     }
   }
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_FALSE);
-  for (int j = 0; j + 1 < n; j++) {
-    glBegin(GL_TRIANGLE_STRIP);
+  // one vertex array, drawn as strips through an index list built once
+  xyz_.resize((size_t)3 * n * n);
+  for (int j = 0; j < n; j++) {
     for (int i = 0; i < n; i++) {
-      for (int jj = j + 1; jj >= j; jj--) {
-        glColor4fv(&col_[4 * (jj * n + i)]);
-        glVertex3d(cx + u[i], cy + u[jj], z[jj * n + i]);
+      float* p = &xyz_[3 * (j * n + i)];
+      p[0] = (float)(cx + u[i]);
+      p[1] = (float)(cy + u[j]);
+      p[2] = z[j * n + i];
+    }
+  }
+  if (strip_.size() != (size_t)2 * n * (n - 1)) {
+    strip_.resize((size_t)2 * n * (n - 1));
+    for (int j = 0; j + 1 < n; j++) {
+      for (int i = 0; i < n; i++) {
+        strip_[2 * (j * n + i)] = (j + 1) * n + i;
+        strip_[2 * (j * n + i) + 1] = j * n + i;
       }
     }
-    glEnd();
   }
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_FALSE);
+  glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glVertexPointer(3, GL_FLOAT, 0, xyz_.data());
+  glColorPointer(4, GL_FLOAT, 0, col_.data());
+  for (int j = 0; j + 1 < n; j++) {
+    glDrawElements(GL_TRIANGLE_STRIP, 2 * n, GL_UNSIGNED_INT, &strip_[(size_t)2 * j * n]);
+  }
+  glPopClientAttrib();
 }
 
 void addForceArrows(const mjModel* m, const mjbBuoy* b, const mjData* d, mjvScene* scn) {

@@ -7,7 +7,9 @@
 // was drawn, optionally the wet part of each hull (its triangles below the
 // exact surface, cut at the surface, in a colour of their own), and the sea:
 // a graded triangle grid around the camera's point of interest with heights
-// from mjb_seaHeight (the exact Gerstner surface the physics uses),
+// from mjb_seaHeight (the exact surface the physics uses: Gerstner and
+// linear components), a fixed 97 x 97 vertices whose spacing grows
+// outwards (its cost: components x vertices a frame, whatever the pixels),
 // semi-transparent, so the wet part of each hull shows through it. Two
 // optional <custom> entries override the sea (mjbuoy-sim.* entries are not
 // mjbuoy.* entries, so the library ignores them):
@@ -46,7 +48,8 @@ class SeaPainter {
  private:
   void drawSky(const mjvGLCamera& c, double halfw);
   void drawWet();
-  void drawSea(const mjvGLCamera& c, const mjvCamera& cam);
+  void drawSea(const mjvGLCamera& c, const mjvCamera& cam, double halfw);
+  void markVisible(const mjvGLCamera& c, double halfw, double cx, double cy, int n);
 
   const mjModel* m_ = nullptr;
   const mjbBuoy* b_ = nullptr;
@@ -65,6 +68,11 @@ class SeaPainter {
   std::vector<double> world_, height_;  // scratch: world vertices, height above the sea
   std::vector<double> u_;              // scratch: sea grid axis
   std::vector<float> z_, col_;         // scratch: sea grid heights and colours
+  std::vector<float> xyz_;             // scratch: sea grid vertices
+  std::vector<char> vis_;              // scratch: sea grid vertices in view (their heights)
+  double level_ = 0, amp_ = 0;         // mean level, sum of amplitudes: the surface's band [m]
+  std::vector<unsigned> strip_;        // sea grid strips' vertex indices, row by row
+  static const int kHalf = 48;         // sea grid vertices each side of the centre
 };
 
 // one arrow per body that mjbuoy pushes on, added to scn: from the centre

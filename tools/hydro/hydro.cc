@@ -20,6 +20,7 @@
 #include "mjbuoy.h"
 #include "modelload.h"
 #include "outfile.h"
+#include "radnotice.h"
 #include "radiation/radiation.h"
 #include "radiation/radtail.h"
 
@@ -223,6 +224,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "mjbuoy-hydro: %s\n", lerr.c_str());
     return 1;
   }
+  std::string plan = mjbtool::radiationPlan(m);  // the panel solve is no silent wait
+  if (!plan.empty()) std::fprintf(stderr, "mjbuoy-hydro: %s\n", plan.c_str());
   mjbBuoy* b = mjb_attach(m, "cpu", err, sizeof err);
   if (!b) {
     std::fprintf(stderr, "mjbuoy-hydro: %s\n", err);

@@ -4,6 +4,7 @@
 // mesh paths (and <compiler meshdir>) resolve as they do for the model
 // itself and nothing is written to disk.
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include "guard.h"
 #include "mjcfedit.h"
 #include "modelload.h"
+#include "radnotice.h"
 #include "scenario.h"
 
 namespace scn {
@@ -228,6 +230,8 @@ std::unique_ptr<Sim> loadScenario(Scenario& s, const std::string& backend) {
   if (energy) sim->m->opt.enableflags |= mjENBL_ENERGY;
 
   std::string be = !backend.empty() ? backend : s.backend;
+  std::string plan = mjbtool::radiationPlan(sim->m);  // the panel solve is no silent wait
+  if (!plan.empty()) std::fprintf(stderr, "mjbuoy-scenario: %s\n", plan.c_str());
   sim->b = mjb_attach(sim->m, be.empty() ? nullptr : be.c_str(), err, sizeof(err));
   if (!sim->b) throw Invalid(s.file, lineOf(s, err), err);
   sim->warnings = mjb_warnings(sim->b);

@@ -25,6 +25,8 @@
 #include "outfile.h"
 #include "plot.h"
 #include "render.h"
+#include "radnotice.h"
+#include "seaopts.h"
 #include "simsea.h"
 
 // roll, pitch, yaw [deg] of rotation matrix R (row-major), marine
@@ -68,8 +70,8 @@ struct Progress {
       int tenth = (int)(10 * fr + 1e-9);
       if (tenth == lastTenth) return;
       lastTenth = tenth;
-      std::fprintf(stderr, "mjbuoy-sim: %3d%% (sim %.2f of %.2f s, %.1f s elapsed, about %.1f s left)\n",
-                   10 * tenth, t, total, el, eta);
+      std::fprintf(stderr, "mjbuoy-sim: %3d%% (sim %.2f of %.2f s, %.1f s elapsed, about %.1f s "
+                   "left, %.2fx real time)\n", 10 * tenth, t, total, el, eta, el > 0 ? t / el : 0);
     }
   }
   void done() {
@@ -178,17 +180,8 @@ int main(int argc, char** argv) {
   bool printSea = false;
   app.add_flag("--print-sea", printSea, "print the sea's wave components and wind, then exit "
                "(radiation is not solved for it unless --set mjbuoy.radiation=... asks)");
-  std::vector<std::string> sets, spectra;
-  bool calm = false;
-  app.add_option("--set", sets, "NAME=VALUE: set or override the mjbuoy.* custom entry NAME "
-                 "(repeatable; numbers make a <numeric>, else <text>, an existing entry keeps "
-                 "its kind), e.g. --set mjbuoy.spectrum.sea.hs=1; the model file is not changed")
-      ->allow_extra_args(false);
-  app.add_option("--spectrum", spectra, "[LABEL=]TYPE[:FIELD=VALUE,...]: add a spectrum "
-                 "(label default cli), e.g. --spectrum jonswap:hs=1,tp=6,spreading=10")
-      ->allow_extra_args(false);
-  app.add_flag("--calm", calm, "delete the model's waves and spectra (mjbuoy.wave.*, "
-               "mjbuoy.airy.*, mjbuoy.spectrum.*) before --set and --spectrum");
+  mjbtool::SeaArgs seaArgs;  // --set, --spectrum, --calm (seaopts.h)
+  mjbtool::addSeaOptions(app, &seaArgs);
   app.add_option("--plot", plot, "plot heave, roll and pitch of the hull bodies (PNG, gnuplot)");
   app.add_option("--progress", progress,
                  "progress on stderr: auto (bar on a terminal, lines when rendering), bar, "
@@ -261,11 +254,12 @@ int main(int argc, char** argv) {
   mjbsim::Edits edits;
   {
     // the sea's table needs no panel solution (seconds to minutes cold)
+    std::vector<std::string>& sets = seaArgs.sets;
     if (printSea && std::none_of(sets.begin(), sets.end(), [](const std::string& s) {
           return s.rfind("mjbuoy.radiation=", 0) == 0;
         }))
       sets.push_back("mjbuoy.radiation=off");
-    std::string e = mjbsim::parseEdits(sets, spectra, calm, &edits);
+    std::string e = mjbsim::parseEdits(seaArgs.sets, seaArgs.spectra, seaArgs.calm, &edits);
     if (!e.empty()) {
       std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
       return 1;
@@ -293,6 +287,10 @@ int main(int argc, char** argv) {
                  "would take 0 steps; give a duration of at least one time step\n",
                  mjbtool::bound(duration).c_str(), mjbtool::bound(m->opt.timestep).c_str());
     return 1;
+  }
+  {
+    std::string plan = mjbtool::radiationPlan(m);  // the panel solve is no silent wait
+    if (!plan.empty()) std::fprintf(stderr, "mjbuoy-sim: %s\n", plan.c_str());
   }
   sc.b = mjb_attach(m, backend.empty() ? nullptr : backend.c_str(), err, sizeof(err));
   if (!sc.b) {
@@ -533,12 +531,14 @@ int main(int argc, char** argv) {
   }
   double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
+  std::fputs(mjb_notices(b, d), stderr);  // the library's run-time notices, each once
   mjbInfo info = mjb_info(b);
   std::printf("mjbuoy-sim: %s\n", model.c_str());
   std::printf("  backend %s on %s: %d hulls on %d bodies, %d triangles\n", info.backend,
               info.renderer, info.nhull, info.nbody, info.ntri);
   std::printf("  sim time %.3f s in %ld steps, wall %.3f s (%.1fx real time)\n", d->time,
               steps, wall, wall > 0 ? d->time / wall : 0.0);
+  std::printf("  radiation %s\n", mjbtool::radiationState(b).c_str());
   const char* sn[8];
   double sms[8];
   int ns = mjb_stageTimes(b, sn, sms, 8);

@@ -5,6 +5,7 @@
 #include <link.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,7 +21,9 @@
 #include "modelload.h"
 #include "mjbuoy_version.h"
 #include "outfile.h"
+#include "radnotice.h"
 #include "render.h"
+#include "simsea.h"
 
 namespace mjbview {
 namespace {
@@ -64,7 +67,8 @@ void printCamera(const View* v, const char* when) {
               c.distance, c.azimuth, c.elevation, v->m->vis.global.fovy);
 }
 
-// positions and orientations of every body (world body excluded), time first
+// positions and orientations of every body (world body excluded), time
+// first, then every actuator's control
 void printBodies(const View* v, const char* when) {
   std::printf("mjbuoy-view: %s time %.9f\n", when, v->d->time);
   for (int i = 1; i < v->m->nbody; i++) {
@@ -73,22 +77,43 @@ void printBodies(const View* v, const char* when) {
     std::printf("mjbuoy-view: %s body %s pos %.9g %.9g %.9g quat %.9g %.9g %.9g %.9g\n", when,
                 mj_id2name(v->m, mjOBJ_BODY, i), p[0], p[1], p[2], q[0], q[1], q[2], q[3]);
   }
+  for (int a = 0; a < v->m->nu; a++) {  // the controls the last step used
+    const char* name = mj_id2name(v->m, mjOBJ_ACTUATOR, a);
+    std::printf("mjbuoy-view: %s ctrl %s %.9g\n", when, name ? name : std::to_string(a).c_str(),
+                v->d->ctrl[a]);
+  }
 }
 
-void overlay(View* v, mjrRect vp, double t, bool paused, int slow) {
-  char val[512];
-  std::snprintf(val, sizeof(val), "%.2f s%s\n%.2fx%s\n%s\n%s\n%s", t, paused ? " (paused)" : "",
-                v->rtf, slow ? (std::string(" (slow motion 1/") + std::to_string((int)kSlow[slow]) +
-                                ")").c_str() : "",
-                v->info.c_str(), v->seaState.c_str(),
-                (std::string(v->forces ? "forces " : "") + (v->wet ? "wet" : "")).c_str());
-  mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, vp, "Time\nReal time\nmjbuoy\nSea\nShowing", val,
-              &v->con);
+// --print-rtf: the real-time factor the physics thread kept, and the drawing's cost
+void printRtf(const View* v) {
+  double wall = v->rtfWall1 - v->rtfWall0, sim = v->rtfSim1 - v->rtfSim0;
+  double n = std::max(1L, v->nframe);
+  std::printf("mjbuoy-view: real-time factor %.3f (%.3f s simulated in %.3f s wall); %ld frames, "
+              "%.1f fps, per frame %.2f ms MuJoCo's scene, %.2f ms sea\n",
+              wall > 0 ? sim / wall : 0.0, sim, wall, v->nframe, wall > 0 ? v->nframe / wall : 0.0,
+              1e3 * v->renderSec / n, 1e3 * v->seaSec / n);
+}
+
+void overlay(View* v, mjrRect vp, double t, bool paused, int slow, const std::string& ctrl) {
+  char time[64], rate[96];
+  std::snprintf(time, sizeof(time), "%.2f s%s", t, paused ? " (paused)" : "");
+  std::snprintf(rate, sizeof(rate), "%.2fx%s", v->rtf, slow ? (" (slow motion 1/" +
+                std::to_string((int)kSlow[slow]) + ")").c_str() : "");
+  std::string titles = "Time\nReal time\nmjbuoy\nSea\nWind\nRadiation\nShowing";
+  std::string vals = std::string(time) + "\n" + rate + "\n" + v->info + "\n" +
+                     v->seaState + "\n" + v->windState + "\n" + v->radState + "\n" +
+                     (v->forces ? "forces " : "") + (v->wet ? "wet" : "");
+  if (!ctrl.empty()) {
+    titles += "\nActuator";
+    vals += "\n" + ctrl;
+  }
+  mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, vp, titles.c_str(), vals.c_str(), &v->con);
   if (v->help) {
     mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, vp,
-                "Space\nRight arrow\nBackspace\n- / +\nF\nW\nDouble-click\nCtrl + drag\n"
-                "Drag / scroll\nCtrl+Q",
-                "pause\nstep (paused)\nreset\nslower / faster\nforce arrows\nwet hull parts\n"
+                "Space\nRight arrow\nBackspace\n- / +\nUp / Down\n[ / ]\n0\nF\nW\n"
+                "Double-click\nCtrl + drag\nDrag / scroll\nCtrl+Q",
+                "pause\nstep (paused)\nreset\nslower / faster\nactuator control up / down\n"
+                "previous / next actuator\nevery control to 0\nforce arrows\nwet hull parts\n"
                 "select body (right: look at)\nperturb selected body (right: move, left: turn)\n"
                 "camera (left: rotate, right: move, middle: zoom)\nquit",
                 &v->con);
@@ -112,6 +137,7 @@ int run(View* v) {
     double t;
     bool paused;
     int slow;
+    std::string ctrl;
     {
       std::lock_guard<std::mutex> lk(v->mtx);
       if (v->frame) {
@@ -129,6 +155,7 @@ int run(View* v) {
       t = v->d->time;
       paused = v->paused;
       slow = v->slow;
+      if (v->m->nu) ctrl = describeCtrl(v->m, v->act, v->ctrl[v->act]);
     }
     double now = glfwGetTime();
     if (now - rtfWall >= 0.5 || t < rtfSim) {
@@ -138,9 +165,16 @@ int run(View* v) {
     }
     mjrRect vp = {0, 0, 0, 0};
     glfwGetFramebufferSize(v->win, &vp.width, &vp.height);
+    double r0 = glfwGetTime();
     mjr_render(vp, &v->scn, &v->con);
+    if (v->o.printRtf) glFinish();  // MuJoCo's drawing timed apart from the sea's
+    double r1 = glfwGetTime();
     v->sea.draw(v->scn, v->cam, vp, v->wet);
-    overlay(v, vp, t, paused, slow);
+    if (v->o.printRtf) glFinish();  // the sea's cost, not the next call's
+    v->renderSec += r1 - r0;
+    v->seaSec += glfwGetTime() - r1;
+    v->nframe++;
+    overlay(v, vp, t, paused, slow, ctrl);
     const double eps = 1e-9 * std::fmax(1.0, v->o.shotTime);
     if (shotPending && t >= v->o.shotTime - eps) {
       shotPending = false;
@@ -150,6 +184,10 @@ int run(View* v) {
     }
     glfwSwapBuffers(v->win);
     double wait = lastSwap + period - glfwGetTime();
+    // physics behind the clock: draw at most a third of the time, leaving
+    // the cores to the physics thread (the real-time factor comes first)
+    const double cost = glfwGetTime() - lastSwap;
+    if (!paused && v->rtf < 0.95 / kSlow[slow]) wait = std::max(wait, 2 * cost);
     if (wait > 0) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
     lastSwap = glfwGetTime();
     if (!shotPending && v->o.exitAfter >= 0 && t >= v->o.exitAfter - 1e-9 * std::fmax(1.0, t)) {
@@ -181,11 +219,28 @@ void pinLibraries() {}
 // the window, its GL context (GLFW's default: a compatibility profile, which
 // MuJoCo 2.2's fixed-function renderer needs), MuJoCo's scene and context
 bool openWindow(View* v) {
-  glfwWindowHint(GLFW_SAMPLES, 4);
   std::string title = "mjbuoy-view: " + v->o.model;
+  glfwWindowHint(GLFW_SAMPLES, v->o.msaa < 0 ? 4 : v->o.msaa);
   v->win = glfwCreateWindow(v->o.width, v->o.height, title.c_str(), nullptr, nullptr);
   if (!v->win) return false;
   glfwMakeContextCurrent(v->win);
+  // a software renderer (Mesa's llvmpipe) pays for every sample and the
+  // shadow map's pass on the CPU the physics needs: there, no multisampling
+  // without --msaa and no shadows without --shadows
+  const char* r = (const char*)glGetString(GL_RENDERER);
+  const bool software = r && (std::strstr(r, "llvmpipe") || std::strstr(r, "softpipe"));
+  if (software && (v->o.msaa < 0 || !v->o.shadows)) {
+    std::fprintf(stderr, "mjbuoy-view: software renderer (%s):%s%s\n", r,
+                 v->o.msaa < 0 ? " no multisampling (--msaa 4 asks for it)" : "",
+                 v->o.shadows ? "" : " no shadows (--shadows asks for them)");
+  }
+  if (software && v->o.msaa < 0) {
+    glfwDestroyWindow(v->win);
+    glfwWindowHint(GLFW_SAMPLES, 0);
+    v->win = glfwCreateWindow(v->o.width, v->o.height, title.c_str(), nullptr, nullptr);
+    if (!v->win) return false;
+    glfwMakeContextCurrent(v->win);
+  }
   pinLibraries();
   glfwSwapInterval(1);  // render at the display's rate
   mjv_defaultCamera(&v->cam);
@@ -194,9 +249,42 @@ bool openWindow(View* v) {
   mjv_defaultScene(&v->scn);
   mjr_defaultContext(&v->con);
   mjv_makeScene(v->m, &v->scn, v->m->ngeom + v->m->nbody + 2000);
+  if (software && !v->o.shadows) v->scn.flags[mjRND_SHADOW] = 0;
   mjr_makeContext(v->m, &v->con, mjFONTSCALE_100);
   mjr_setBuffer(mjFB_WINDOW, &v->con);
   installInput(v);
+  return true;
+}
+
+// the model with the edits of --set, --spectrum and --calm (the validator
+// mjbuoy-sim uses), attached; the panel solve announced first; false after
+// saying why
+bool loadScene(View* v) {
+  char err[1024] = "";
+  mjbsim::Edits edits;  // --set, --spectrum, --calm: the validator mjbuoy-sim uses
+  {
+    std::string e = mjbsim::parseEdits(v->o.sea.sets, v->o.sea.spectra, v->o.sea.calm, &edits);
+    std::string xml;
+    if (e.empty() && !edits.empty()) mjbsim::editedModel(v->o.model, edits, &xml, &e);
+    if (e.empty()) v->m = mjbtool::loadModel(v->o.model, edits.empty() ? nullptr : &xml, "", &e);
+    if (!v->m) {
+      std::fprintf(stderr, "mjbuoy-view: %s\n", e.c_str());
+      return false;
+    }
+  }
+  {
+    std::string plan = mjbtool::radiationPlan(v->m);  // the panel solve is no silent wait
+    if (!plan.empty()) std::fprintf(stderr, "mjbuoy-view: %s\n", plan.c_str());
+  }
+  const char* be = v->o.backend.empty() ? nullptr : v->o.backend.c_str();
+  v->b = mjb_attach(v->m, be, err, sizeof(err));
+  if (!v->b) {
+    std::fprintf(stderr, "mjbuoy-view: %s: %s\n", v->o.model.c_str(),
+                 mjbsim::blame(edits, err).c_str());
+    mj_deleteModel(v->m);
+    return false;
+  }
+  std::fputs(mjb_warnings(v->b), stderr);
   return true;
 }
 
@@ -216,6 +304,14 @@ int parse(int argc, char** argv, Options* o) {
   app.add_flag("--show-forces", o->forces, "start with force arrows on (key F)");
   app.add_flag("--show-wet", o->wet, "start with the wet hull parts coloured (key W)");
   app.add_flag("--paused", o->paused, "start paused (key Space)");
+  app.add_flag("--print-rtf", o->printRtf, "print the real-time factor the physics thread "
+               "kept (simulated s per wall s, first step to last) and the mean drawing cost "
+               "per frame at exit");
+  mjbtool::addSeaOptions(app, &o->sea);
+  app.add_flag("--shadows", o->shadows, "MuJoCo's shadows on a software renderer too (such "
+               "as Mesa's llvmpipe, where they are off by default: a pass on the CPU)");
+  app.add_option("--msaa", o->msaa, "multisampling samples per pixel (default 4, 0 on a "
+                 "software renderer such as Mesa's llvmpipe)")->check(mjbtool::Finite(0, 16));
   app.add_option("--width", o->width, "window width [pixels]")->check(mjbtool::Finite(64, 8192));
   app.add_option("--height", o->height, "window height [pixels]")->check(mjbtool::Finite(64, 8192));
   int rc = mjbtool::parseArgs(app, argc, argv, 2);  // docs: invalid input exits 2
@@ -246,22 +342,7 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  char err[1024] = "";
-  {
-    std::string e;
-    v.m = mjbtool::loadModel(v.o.model, nullptr, "", &e);
-    if (!v.m) {
-      std::fprintf(stderr, "mjbuoy-view: %s\n", e.c_str());
-      return 1;
-    }
-  }
-  v.b = mjb_attach(v.m, v.o.backend.empty() ? nullptr : v.o.backend.c_str(), err, sizeof(err));
-  if (!v.b) {
-    std::fprintf(stderr, "mjbuoy-view: %s: %s\n", v.o.model.c_str(), err);
-    mj_deleteModel(v.m);
-    return 1;
-  }
-  std::fputs(mjb_warnings(v.b), stderr);
+  if (!mjbview::loadScene(&v)) return 1;
   std::string e;
   if (!v.sea.init(v.m, v.b, &e)) {
     std::fprintf(stderr, "mjbuoy-view: %s: %s\n", v.o.model.c_str(), e.c_str());
@@ -286,7 +367,11 @@ int main(int argc, char** argv) {
                 info.nbody == 1 ? "y" : "ies", info.ntri);
   v.info = buf;
   v.seaState = mjbview::describeSea(v.m);
-  std::printf("mjbuoy-view: %s: %s; sea: %s\n", v.o.model.c_str(), buf, v.seaState.c_str());
+  v.windState = mjbview::describeWind(v.m);
+  v.radState = mjbtool::radiationState(v.b);
+  v.ctrl.assign(v.m->nu, 0);
+  std::printf("mjbuoy-view: %s: %s; sea: %s; wind: %s; radiation: %s\n", v.o.model.c_str(), buf,
+              v.seaState.c_str(), v.windState.c_str(), v.radState.c_str());
   v.forces = v.o.forces;
   v.wet = v.o.wet;
   v.paused = v.o.paused;
@@ -308,6 +393,7 @@ int main(int argc, char** argv) {
   v.quit = true;
   sim.join();
 
+  if (v.o.printRtf) mjbview::printRtf(&v);
   if (v.o.printFinal) {
     mjbview::printCamera(&v, "final");
     mjbview::printBodies(&v, "final");

@@ -18,12 +18,15 @@
 #include <atomic>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include <GLFW/glfw3.h>
 #include <mujoco/mujoco.h>
 
 #include "mjbuoy.h"
 #include "seadraw.h"
+#include "seaopts.h"
+#include "viewtext.h"
 
 namespace mjbview {
 
@@ -32,7 +35,11 @@ struct Options {
   double shotTime = -1;   // --screenshot T (s); < 0: none
   double exitAfter = -1;  // --exit-after T (s); < 0: run until closed
   bool printFinal = false, forces = false, wet = false, paused = false;
+  bool printRtf = false;  // --print-rtf: the real-time factor and frame costs at exit
   int width = 1280, height = 800;
+  int msaa = -1;          // --msaa samples; < 0: 4, or 0 on a software renderer
+  bool shadows = false;   // --shadows: MuJoCo's shadows on a software renderer too
+  mjbtool::SeaArgs sea;   // --set, --spectrum, --calm (seaopts.h)
 };
 
 // slow-motion factors: simulated time runs 1/kSlow[slow] times the wall clock
@@ -63,6 +70,11 @@ struct View {
   bool diverged = false;    // MuJoCo reset a diverging state
   bool everDiverged = false;  // ... at any time of the run: exit status 1
   std::atomic<bool> quit{false};
+  std::vector<double> ctrl;  // actuator controls the keys set, copied to d->ctrl each step
+  std::string notices;       // mjb_notices printed so far
+  // the physics thread's real-time record: wall and simulated time of the
+  // first step and of the latest one (--print-rtf)
+  double rtfWall0 = -1, rtfSim0 = 0, rtfWall1 = 0, rtfSim1 = 0;
 
   // main thread only
   bool forces = false, wet = false, help = false;
@@ -72,7 +84,11 @@ struct View {
   double lastPress = -10;
   int lastButton = -1;
   double rtf = 0;  // measured real-time factor
-  std::string info, seaState;
+  int act = 0;     // the actuator the keys drive
+  std::string info, seaState, windState, radState;
+  // frame costs for --print-rtf: frames drawn, seconds in mjr_render and in the sea
+  long nframe = 0;
+  double renderSec = 0, seaSec = 0;
 };
 
 // keyboard, mouse and scroll callbacks of v->win (view_input.cc)
@@ -80,9 +96,6 @@ void installInput(View* v);
 
 // the physics thread's loop, until v->quit (view_sim.cc)
 void physics(View* v);
-
-// one sentence on the sea state of m (calm, or the Gerstner components)
-std::string describeSea(const mjModel* m);
 
 }  // namespace mjbview
 

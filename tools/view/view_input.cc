@@ -49,6 +49,24 @@ void key(GLFWwindow* w, int k, int, int act, int mods) {
     case GLFW_KEY_Q:
       if (mods & GLFW_MOD_CONTROL) glfwSetWindowShouldClose(w, GLFW_TRUE);
       break;
+    case GLFW_KEY_UP:  // drive the chosen actuator, as simulate's control sliders
+    case GLFW_KEY_DOWN:
+      if (v->act < v->m->nu) {
+        double& c = v->ctrl[v->act];
+        c = nudgeCtrl(v->m, v->act, c, k == GLFW_KEY_UP ? 1 : -1);
+      }
+      break;
+    case GLFW_KEY_RIGHT_BRACKET:  // next / previous actuator
+    case GLFW_KEY_LEFT_BRACKET:
+      if (act == GLFW_PRESS && v->m->nu > 0) {
+        v->act = (v->act + (k == GLFW_KEY_RIGHT_BRACKET ? 1 : v->m->nu - 1)) % v->m->nu;
+      }
+      break;
+    case GLFW_KEY_0:  // every control back to 0
+      if (act == GLFW_PRESS) {
+        for (double& c : v->ctrl) c = 0;
+      }
+      break;
     case GLFW_KEY_ESCAPE:  // back to the free camera
       if (act == GLFW_PRESS) v->cam.type = mjCAMERA_FREE;
       break;

@@ -2,9 +2,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <thread>
 
-#include "api/config.h"
 #include "guard.h"
 #include "view.h"
 
@@ -20,10 +20,25 @@ double wallClock() {
 // the viewer owns (mjbuoy never writes it)
 void stepOnce(View* v) {
   mju_zero(v->d->xfrc_applied, 6 * v->m->nbody);
+  if (v->m->nu) mju_copy(v->d->ctrl, v->ctrl.data(), v->m->nu);  // the keys' controls
   mjv_applyPerturbPose(v->m, v->d, &v->pert, 0);  // mocap bodies only
   mjv_applyPerturbForce(v->m, v->d, &v->pert);
   double before = v->d->time;
   mj_step(v->m, v->d);
+  // the real-time record: the first step's wall and simulated time, and the latest
+  double now = wallClock();
+  if (v->rtfWall0 < 0) {
+    v->rtfWall0 = now;
+    v->rtfSim0 = before;
+  }
+  v->rtfWall1 = now;
+  v->rtfSim1 = v->d->time;
+  // the library's run-time notices (a non-finite state, force family...), each once
+  const char* n = mjb_notices(v->b, v->d);
+  if (std::strlen(n) > v->notices.size()) {
+    std::fprintf(stderr, "%s", n + v->notices.size());
+    v->notices = n;
+  }
   std::string why;
   // MuJoCo's reset, as every tool tells it (guard.h)
   if ((v->d->time < before || mjbtool::diverged(v->d, &why)) && !v->diverged) {
@@ -51,6 +66,8 @@ void physics(View* v) {
       if (v->reset) {
         mj_resetData(m, d);
         mj_forward(m, d);
+        v->notices.clear();  // mj_resetData clears them too
+        v->rtfWall0 = -1;
         v->reset = false;
         v->diverged = false;
         synced = false;
@@ -98,37 +115,6 @@ void physics(View* v) {
       std::this_thread::sleep_for(std::chrono::microseconds(v->paused ? 2000 : 500));
     }
   }
-}
-
-std::string describeSea(const mjModel* m) {
-  mjb::Config c;
-  if (!mjb::parseConfig(m, &c).empty()) return "?";
-  char buf[256];
-  if (c.sea.waves.empty()) {
-    std::snprintf(buf, sizeof(buf), "calm, level %g m", c.sea.level);
-  } else {
-    double amax = 0, lmin = 1e300, lmax = 0;
-    size_t ngerstner = 0;  // the rest are linear (Airy) components, e.g. of spectra
-    for (const mjb::Wave& w : c.sea.waves) {
-      amax = std::fmax(amax, w.amp);
-      lmin = std::fmin(lmin, w.len);
-      lmax = std::fmax(lmax, w.len);
-      ngerstner += w.kind == 0;
-    }
-    const size_t n = c.sea.waves.size(), nlinear = n - ngerstner;
-    std::string kinds = !nlinear ? "Gerstner" : !ngerstner ? "linear" :
-                        std::to_string(ngerstner) + " Gerstner, " + std::to_string(nlinear) +
-                        " linear";
-    if (nlinear && ngerstner) kinds = "(" + kinds + ")";
-    std::snprintf(buf, sizeof(buf), "%zu %s wave component%s, A <= %g m, lambda %g-%g m", n,
-                  kinds.c_str(), n > 1 ? "s" : "", amax, lmin, lmax);
-  }
-  std::string s = buf;
-  if (c.sea.current[0] != 0 || c.sea.current[1] != 0) {
-    std::snprintf(buf, sizeof(buf), ", current %g %g m/s", c.sea.current[0], c.sea.current[1]);
-    s += buf;
-  }
-  return s;
 }
 
 }  // namespace mjbview
