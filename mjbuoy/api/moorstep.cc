@@ -68,7 +68,11 @@ void moorStep(const Mooring& mo, const Sea& sea, const mjModel* m, const mjData*
     for (int k = 0; k < 2; k++) endNow(m, d, L.end[k], e[k]);
     if (r == kTickRestart) {
       s->bad[i] = 0;
-      lineRest(w, L.line, e[0], e[1], &ls);
+      if (!lineRest(w, L.line, e[0], e[1], &ls)) {
+        *notices += "mjbuoy: line \"" + L.line.name + "\" at t = " + fmt(d->time) +
+                    " s: no static equilibrium found for its start (its nodes' forces do "
+                    "not balance); it starts from the nearest shape found and settles\n";
+      }
       std::copy(e[0], e[0] + 6, ls.end0);
       std::copy(e[1], e[1] + 6, ls.end1);
     } else if (r == kTickNew && !s->bad[i]) {

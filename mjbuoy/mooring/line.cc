@@ -185,6 +185,7 @@ void lineMake(const Line& l, LineState* s) {
   s->td.assign(l.nseg, 0.0);
   s->tri.assign(2 * l.nseg, 0.0);
   s->wet.assign(l.nseg + 1, 1);
+  s->st.assign(34 * (l.nseg + 1), 0.0);
   s->tw = -1;
 }
 
@@ -470,15 +471,18 @@ bool lineRest(const LineWater& w, const Line& l, const double e0[3], const doubl
     }
   }
   std::fill(s->v.begin(), s->v.end(), 0.0);
-  std::fill(s->tseg.begin(), s->tseg.end(), 0.0);
   for (int k = 0; k < 3; k++) {
     s->end0[k] = e0[k];
     s->end1[k] = e1[k];
     s->end0[3 + k] = s->end1[3 + k] = 0;
   }
+  // the continuous catenary is the start of the discrete line's own
+  // equilibrium: with long segments its nodes' chords fall short of the
+  // stretched arc, and the line would start slack (docs/mooring.md)
+  const bool eq = lineStatic(w, l, s);
   s->bedlen = ok ? c.lb : 0;
   s->tw = -1;
-  return ok;
+  return eq;
 }
 
 }  // namespace mjb
