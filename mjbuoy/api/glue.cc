@@ -888,3 +888,13 @@ int mjb_lineNodes(const mjbBuoy* b, const mjData* d, int line, mjtNum* pos, int 
   }
   return n;
 }
+
+int mjb_lineTensions(const mjbBuoy* b, const mjData* d, int line, mjtNum* t, int max) {
+  if (!b || !d || line < 0 || line >= int(b->b.moor.line.size())) return 0;
+  State* s = state(const_cast<mjbBuoy*>(b), d, false);
+  if (!s || s->moor.key < 0) return 0;
+  const std::vector<double>& T = s->moor.ls[line].tseg;
+  const int n = T.size();
+  for (int i = 0; t && i < std::min(n, max); i++) t[i] = T[i];
+  return n;
+}
