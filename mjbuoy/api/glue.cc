@@ -273,7 +273,7 @@ void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
   }
   // mooring lines: one wrench per body at their ends (moorstep.cc)
   if (!b->b.moor.line.empty()) {
-    mjb::moorStep(b->b.moor, b->b.cfg.sea, m, d, &s->moor, &s->notices);
+    mjb::moorStep(b->b.moor, b->b.cfg.sea, m, d, &s->moor, &s->notices, b->b.pool);
     for (int bd : b->b.moor.body) {
       const mjtNum* w = s->moor.wrench.data() + 6 * bd;
       applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
