@@ -233,6 +233,56 @@ TEST(MooringGlue, HeaveStartsAtRest) {
               "-3 V_F %.6g N\n", t, worst, bound, f0, -3 * c.vf);
 }
 
+// two box hulls, each on three 200-segment lines (1206 nodes, past the
+// 400 at which lines step on the cpu threads), stepped with one thread
+// and with two (the boxes' two hull parts give the second thread a
+// worker): each line is independent of the others, so the nodes and the
+// bodies follow the same path to the bit
+std::string twoHullsOnLines(int threads) {
+  std::ostringstream s;
+  s << "<mujoco><option timestep=\"0.01\"/><custom>"
+    << "<numeric name=\"mjbuoy.sea.depth\" data=\"" << kDepth << "\"/>"
+    << "<numeric name=\"mjbuoy.threads\" data=\"" << threads << "\"/>"
+    << "<text name=\"mjbuoy.radiation\" data=\"off\"/>"
+    << "<text name=\"mjbuoy.hulls\" data=\"h0 h1\"/>" << chainType();
+  for (int b = 0; b < 2; b++) {
+    for (int i = 0; i < 3; i++) {
+      const double a = 2 * M_PI * i / 3, x0 = 100 * b;
+      s << line("b" + std::to_string(b) + "l" + std::to_string(i), x0 + 260 * std::cos(a),
+                260 * std::sin(a), -kDepth, "f" + std::to_string(b), kLen, 200);
+    }
+  }
+  s << "</custom><worldbody>";
+  for (int b = 0; b < 2; b++) {
+    s << "<body pos=\"" << 100 * b << " 0 0\"><freejoint/><geom name=\"h" << b
+      << "\" type=\"box\" size=\"4 4 2\" mass=\"40000\"/><site name=\"f" << b
+      << "\" pos=\"0 0 -2\"/></body>";
+  }
+  s << "</worldbody></mujoco>";
+  return s.str();
+}
+
+TEST(MooringGlue, ThreadsGiveSameLines) {
+  Scene one(twoHullsOnLines(1)), two(twoHullsOnLines(2));
+  ASSERT_TRUE(one.ok()) << one.err;
+  ASSERT_TRUE(two.ok()) << two.err;
+  for (int i = 0; i < 20; i++) {
+    mj_step(one.m, one.d);
+    mj_step(two.m, two.d);
+  }
+  ASSERT_EQ(mjb_lineCount(one.b), 6);
+  for (int l = 0; l < 6; l++) {
+    int n = mjb_lineNodes(one.b, one.d, l, nullptr, 0);
+    ASSERT_EQ(n, 201);
+    std::vector<double> p1(3 * n), p2(3 * n);
+    mjb_lineNodes(one.b, one.d, l, p1.data(), n);
+    mjb_lineNodes(two.b, two.d, l, p2.data(), n);
+    EXPECT_EQ(p1, p2) << "line " << l;
+  }
+  for (int i = 0; i < one.m->nq; i++) EXPECT_EQ(one.d->qpos[i], two.d->qpos[i]) << i;
+  EXPECT_STREQ(mjb_notices(one.b, one.d), "");
+}
+
 std::vector<double> nodes(const Scene& sc, int line) {
   int n = mjb_lineNodes(sc.b, sc.d, line, nullptr, 0);
   std::vector<double> p(3 * n);
