@@ -165,6 +165,14 @@ TEST(MooringLine, StartsOnDiscreteEquilibrium) {
   }
 }
 
+// an end that is not finite has no equilibrium: lineRest says so (the
+// caller names the line) instead of reporting a converged start
+TEST(MooringLine, RestRefusesNonFiniteEnd) {
+  Rig r(chain(), 300, 20, -100, 0);
+  double a[3] = {0, 0, -100}, b[3] = {NAN, 0, -5};
+  EXPECT_FALSE(mjb::lineRest(r.w, r.l, a, b, &r.s));
+}
+
 // the horizontal restoring force of three lines at 120 degrees on a
 // fairlead ring offset by dx: the sum over lines of the catenary's H along
 // each line's horizontal direction (Irvine 1981; Faltinsen 1990, Sea Loads,

@@ -62,7 +62,8 @@ double energy(const Line& l, const NodeLoad& nl, const double* r, double* mag) {
 }
 
 // the gradient (sc.g) and the Hessian's blocks (sc.c diagonal, sc.k per
-// segment) at s->r; returns the largest node residual |g_j| [N]. A taut
+// segment) at s->r; returns the largest node residual |g_j| [N] (NaN when
+// one is not finite). A taut
 // segment's stiffness is EA / l0 q q^T + T / len (I - q q^T)
 double assemble(const Line& l, const NodeLoad& nl, LineState* s, const Scratch& sc) {
   const int n = l.nseg;
@@ -92,6 +93,7 @@ double assemble(const Line& l, const NodeLoad& nl, LineState* s, const Scratch& 
     }
   }
   double res = 0;
+  bool bad = false;
   for (int j = 1; j < n; j++) {
     const double z = s->r[3 * j + 2], pen = nl.bedz - z;
     double* g = sc.g + 3 * j;
@@ -100,9 +102,11 @@ double assemble(const Line& l, const NodeLoad& nl, LineState* s, const Scratch& 
       g[2] -= nl.kb * pen;
       sc.c[9 * j + 8] += nl.kb;
     }
-    res = std::max(res, std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]));
+    const double gn = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if (!(gn <= res)) res = gn;
+    if (!std::isfinite(gn)) bad = true;
   }
-  return res;
+  return bad ? NAN : res;
 }
 
 // inverse of the symmetric 3x3 a into b; false when a is not positive definite
@@ -190,7 +194,7 @@ bool lineStatic(const LineWater& w, const Line& l, LineState* s) {
   const double tol = std::max(1e-6 * nl.wd, 64 * eps * ka * (ext + l.len));
   double mag, e = energy(l, nl, s->r.data(), &mag), mu = 1e-9;
   for (int it = 0; it < 500; it++) {
-    if (!(assemble(l, nl, s, sc) > tol)) return true;
+    if (assemble(l, nl, s, sc) <= tol) return true;  // a NaN residual is not converged
     bool moved = false;
     for (int tries = 0; tries < 40 && !moved; tries++, mu *= 10) {
       if (tries > 0) assemble(l, nl, s, sc);
@@ -215,7 +219,7 @@ bool lineStatic(const LineWater& w, const Line& l, LineState* s) {
     }
     if (!moved) break;
   }
-  return !(assemble(l, nl, s, sc) > tol);
+  return assemble(l, nl, s, sc) <= tol;
 }
 
 }  // namespace mjb
