@@ -278,6 +278,12 @@ MJB_API int mjb_lineCount(const mjbBuoy* b);
 // there is no such line or d has not been stepped
 MJB_API int mjb_lineNodes(const mjbBuoy* b, const mjData* d, int line, mjtNum* pos, int max);
 
+// segment tensions of line `line` in d [N], from the anchor's segment to
+// the fairlead's, after its last step (at rest: its static equilibrium):
+// fills up to max values into t (may be NULL) and returns the line's
+// segment count. 0 when there is no such line or d has not been stepped
+MJB_API int mjb_lineTensions(const mjbBuoy* b, const mjData* d, int line, mjtNum* t, int max);
+
 // the wrench the mooring lines put on each body in the last callback for
 // d: nbody x 6 like mjb_wrench (world-frame force [N], torque about xipos
 // [N m]), the sum over the line ends on each body; zero for bodies with no

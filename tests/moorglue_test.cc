@@ -1,5 +1,6 @@
 // mooring lines in a model: MJCF, the step clock under RK4 and
 // mj_forward, reset and copy, faults, and a moored body's surge period
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -196,6 +197,90 @@ TEST(MooringGlue, StartsAtRest) {
   ASSERT_TRUE(sc.ok()) << sc.err;
   for (int i = 0; i < 400; i++) mj_step(sc.m, sc.d);
   EXPECT_LT(std::fabs(sc.d->qpos[0]), 0.01);
+}
+
+// a buoy of 20 t on a heave slide, its lines' 20 segments 15 m long,
+// held by a constant force: its weight M g plus the lines' pull at t = 0
+// (mjb_lineWrench after mj_forward). The lines start on their static
+// equilibrium, so their pull stays within 0.5% of 3 V_F (V_F the fairlead's
+// vertical tension of the elastic catenary, Irvine 1981; Jonkman 2007 eqs.
+// 4-1 to 4-4; MooringLine.StartsOnDiscreteEquilibrium) and in the first
+// second the buoy moves at most 0.005 x 3 V_F t^2 / (2 M) (constant
+// acceleration; the lines' heave stiffness only holds it closer). Lines
+// started on the catenary's points pull 25% short until they settle
+TEST(MooringGlue, HeaveStartsAtRest) {
+  std::string xml = threeLines(2e4, 250);
+  const std::string surge = "axis=\"1 0 0\"";
+  xml.replace(xml.find(surge), surge.size(), "axis=\"0 0 1\"");
+  Scene sc(xml);
+  ASSERT_TRUE(sc.ok()) << sc.err;
+  const double W = (kMass - 1000 * M_PI * kDiam * kDiam / 4) * 9.81, M = 2e4, t = 1;
+  mjb::Catenary c;
+  ASSERT_TRUE(mjb::catenarySolve(250, kDepth - 5, kLen, kEA, W, true, &c));
+  const int bd = sc.body("buoy");
+  mj_forward(sc.m, sc.d);
+  const double f0 = mjb_lineWrench(sc.b, sc.d)[6 * bd + 2];
+  EXPECT_NEAR(f0, -3 * c.vf, 0.01 * 3 * c.vf);
+  sc.d->xfrc_applied[6 * bd + 2] = M * -sc.m->opt.gravity[2] - f0;
+  double worst = 0;
+  for (int i = 0; i < std::lround(t / sc.m->opt.timestep); i++) {
+    mj_step(sc.m, sc.d);
+    worst = std::max(worst, std::fabs(sc.d->qpos[0]));
+  }
+  const double bound = 0.005 * 3 * c.vf * t * t / (2 * M);
+  EXPECT_LT(worst, bound);
+  std::printf("heave start: largest |z| in %g s %.4g m, bound %.4g m; pull at t = 0 %.6g N, "
+              "-3 V_F %.6g N\n", t, worst, bound, f0, -3 * c.vf);
+}
+
+// two box hulls, each on three 200-segment lines (1206 nodes, past the
+// 400 at which lines step on the cpu threads), stepped with one thread
+// and with two (the boxes' two hull parts give the second thread a
+// worker): each line is independent of the others, so the nodes and the
+// bodies follow the same path to the bit
+std::string twoHullsOnLines(int threads) {
+  std::ostringstream s;
+  s << "<mujoco><option timestep=\"0.01\"/><custom>"
+    << "<numeric name=\"mjbuoy.sea.depth\" data=\"" << kDepth << "\"/>"
+    << "<numeric name=\"mjbuoy.threads\" data=\"" << threads << "\"/>"
+    << "<text name=\"mjbuoy.radiation\" data=\"off\"/>"
+    << "<text name=\"mjbuoy.hulls\" data=\"h0 h1\"/>" << chainType();
+  for (int b = 0; b < 2; b++) {
+    for (int i = 0; i < 3; i++) {
+      const double a = 2 * M_PI * i / 3, x0 = 100 * b;
+      s << line("b" + std::to_string(b) + "l" + std::to_string(i), x0 + 260 * std::cos(a),
+                260 * std::sin(a), -kDepth, "f" + std::to_string(b), kLen, 200);
+    }
+  }
+  s << "</custom><worldbody>";
+  for (int b = 0; b < 2; b++) {
+    s << "<body pos=\"" << 100 * b << " 0 0\"><freejoint/><geom name=\"h" << b
+      << "\" type=\"box\" size=\"4 4 2\" mass=\"40000\"/><site name=\"f" << b
+      << "\" pos=\"0 0 -2\"/></body>";
+  }
+  s << "</worldbody></mujoco>";
+  return s.str();
+}
+
+TEST(MooringGlue, ThreadsGiveSameLines) {
+  Scene one(twoHullsOnLines(1)), two(twoHullsOnLines(2));
+  ASSERT_TRUE(one.ok()) << one.err;
+  ASSERT_TRUE(two.ok()) << two.err;
+  for (int i = 0; i < 20; i++) {
+    mj_step(one.m, one.d);
+    mj_step(two.m, two.d);
+  }
+  ASSERT_EQ(mjb_lineCount(one.b), 6);
+  for (int l = 0; l < 6; l++) {
+    int n = mjb_lineNodes(one.b, one.d, l, nullptr, 0);
+    ASSERT_EQ(n, 201);
+    std::vector<double> p1(3 * n), p2(3 * n);
+    mjb_lineNodes(one.b, one.d, l, p1.data(), n);
+    mjb_lineNodes(two.b, two.d, l, p2.data(), n);
+    EXPECT_EQ(p1, p2) << "line " << l;
+  }
+  for (int i = 0; i < one.m->nq; i++) EXPECT_EQ(one.d->qpos[i], two.d->qpos[i]) << i;
+  EXPECT_STREQ(mjb_notices(one.b, one.d), "");
 }
 
 std::vector<double> nodes(const Scene& sc, int line) {

@@ -273,7 +273,7 @@ void compute(mjbBuoy* b, const mjModel* m, mjData* d) {
   }
   // mooring lines: one wrench per body at their ends (moorstep.cc)
   if (!b->b.moor.line.empty()) {
-    mjb::moorStep(b->b.moor, b->b.cfg.sea, m, d, &s->moor, &s->notices);
+    mjb::moorStep(b->b.moor, b->b.cfg.sea, m, d, &s->moor, &s->notices, b->b.pool);
     for (int bd : b->b.moor.body) {
       const mjtNum* w = s->moor.wrench.data() + 6 * bd;
       applyFT(m, d, w, w + 3, d->xipos + 3 * bd, bd, d->qfrc_passive);
@@ -887,5 +887,15 @@ int mjb_lineNodes(const mjbBuoy* b, const mjData* d, int line, mjtNum* pos, int 
   for (int i = 0; pos && i < std::min(n, max); i++) {
     for (int k = 0; k < 3; k++) pos[3 * i + k] = r[3 * i + k];
   }
+  return n;
+}
+
+int mjb_lineTensions(const mjbBuoy* b, const mjData* d, int line, mjtNum* t, int max) {
+  if (!b || !d || line < 0 || line >= int(b->b.moor.line.size())) return 0;
+  State* s = state(const_cast<mjbBuoy*>(b), d, false);
+  if (!s || s->moor.key < 0) return 0;
+  const std::vector<double>& T = s->moor.ls[line].tseg;
+  const int n = T.size();
+  for (int i = 0; t && i < std::min(n, max); i++) t[i] = T[i];
   return n;
 }

@@ -10,6 +10,7 @@
 
 #include "mooring/mooring.h"
 #include "sea/sea.h"
+#include "util/pool.h"
 
 namespace mjb {
 
@@ -23,9 +24,11 @@ void moorRestart(MoorState* s);
 // one evaluation: on the first call of a new step move the lines from the
 // last step's time to d->time (their ends interpolated between the two),
 // after a restart put them at rest; then fill s->wrench (bodies of
-// mo.body) with the end forces at d's current state. Faults go to notices
+// mo.body) with the end forces at d's current state. Faults go to notices.
+// The lines are independent: with pool (may be NULL) and enough nodes
+// they step on its threads, with the same results
 void moorStep(const Mooring& mo, const Sea& sea, const mjModel* m, const mjData* d,
-              MoorState* s, std::string* notices);
+              MoorState* s, std::string* notices, Pool* pool);
 
 }  // namespace mjb
 

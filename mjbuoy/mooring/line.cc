@@ -185,6 +185,7 @@ void lineMake(const Line& l, LineState* s) {
   s->td.assign(l.nseg, 0.0);
   s->tri.assign(2 * l.nseg, 0.0);
   s->wet.assign(l.nseg + 1, 1);
+  s->st.assign(34 * (l.nseg + 1), 0.0);
   s->tw = -1;
 }
 
@@ -200,14 +201,6 @@ static void setEnds(const Line& l, double a, const double e0[6], const double e1
   }
 }
 
-// a . M_j^-1 b for node j of inverse masses imn across and imt along its
-// tangent q (0 at the ends, whose velocity is given)
-static inline double invMass(const LineState& s, int j, const double* a, const double* b) {
-  const double* q = &s.q[3 * j];
-  const double imn = s.im[2 * j], imt = s.im[2 * j + 1];
-  return imn * dot3(a, b) + (imt - imn) * dot3(a, q) * dot3(b, q);
-}
-
 // v_j += h M_j^-1 f
 static inline void pushNode(LineState* s, int j, double h, const double f[3]) {
   const double* q = &s->q[3 * j];
@@ -220,15 +213,24 @@ static inline void pushNode(LineState* s, int j, double h, const double f[3]) {
 // sub-step (backward Euler in the damping: docs/mooring.md "Integration"):
 // d_s = c q_s . (v'_{s+1} - v'_s), v' = v* + h M^-1 (d_j q_j - d_{j-1} q_{j-1}),
 // a tridiagonal system in the scalars d_s solved by the Thomas algorithm.
-// Segments in fix hold d_s = -tseg_s (their total tension is zero)
+// Its coefficients a . M_j^-1 b = imn_j a . b + (imt_j - imn_j) (a . t_j)
+// (b . t_j) (node j's inverse masses across and along its tangent t_j) take
+// three dot products per segment: q_s . t_s, q_s . t_{s+1} and q_s .
+// q_{s+1} (q_s . q_s = 1 on a taut segment). Segments in fix hold d_s =
+// -tseg_s (their total tension is zero)
 static void dampSolve(const Line& l, double h, const char* fix, LineState* s) {
   const int n = l.nseg;
   const double c0 = l.t.ba / l.l0;
   double* cp = s->tri.data();
   double* dp = cp + n;
+  // carried from segment s - 1: q_{s-1} . t_s and q_{s-1} . q_s
+  double prevAt = 0, prevQq = 0;
   for (int i = 0; i < n; i++) {
     const double* q = &s->qs[3 * i];
     double c = s->tseg[i] > 0 ? c0 : 0, lo = 0, up = 0, diag = 1, rhs = 0;
+    const double at0 = i > 0 ? dot3(q, &s->q[3 * i]) : 0;  // q_s . t_s
+    const double at1 = i + 1 < n ? dot3(q, &s->q[3 * i + 3]) : 0;  // q_s . t_{s+1}
+    const double qq = i + 1 < n ? dot3(q, q + 3) : 0;  // q_s . q_{s+1}
     if (fix && fix[i]) {
       rhs = -s->tseg[i];
     } else if (c > 0) {
@@ -236,14 +238,19 @@ static void dampSolve(const Line& l, double h, const char* fix, LineState* s) {
       const double* vb = &s->v[3 * i + 3];
       rhs = c * (q[0] * (vb[0] - va[0]) + q[1] * (vb[1] - va[1]) + q[2] * (vb[2] - va[2]));
       if (i + 1 < n) {
-        diag += h * c * invMass(*s, i + 1, q, q);
-        up = -h * c * invMass(*s, i + 1, q, q + 3);
+        const double imn = s->im[2 * i + 2], dm = s->im[2 * i + 3] - imn;
+        const double bt = dot3(q + 3, &s->q[3 * i + 3]);  // q_{s+1} . t_{s+1}
+        diag += h * c * (imn + dm * at1 * at1);
+        up = -h * c * (imn * qq + dm * at1 * bt);
       }
       if (i > 0) {
-        diag += h * c * invMass(*s, i, q, q);
-        lo = -h * c * invMass(*s, i, q, q - 3);
+        const double imn = s->im[2 * i], dm = s->im[2 * i + 1] - imn;
+        diag += h * c * (imn + dm * at0 * at0);
+        lo = -h * c * (imn * prevQq + dm * at0 * prevAt);
       }
     }
+    prevAt = at1;
+    prevQq = qq;
     const double iden = 1 / (diag - (i > 0 ? lo * cp[i - 1] : 0));
     cp[i] = up * iden;
     dp[i] = (rhs - (i > 0 ? lo * dp[i - 1] : 0)) * iden;
@@ -387,11 +394,12 @@ void lineStep(const LineWater& w, const Line& l, double t, double dt, const doub
   std::copy(e1, e1 + 6, s->end1);
   // overload, and what rests on the bed
   s->over = 0;
+  const double lmax2 = (1 + kOverStrain) * l.l0 * (1 + kOverStrain) * l.l0;
   for (int i = 0; i < l.nseg; i++) {
     const double* a = &s->r[3 * i];
     const double* b = &s->r[3 * i + 3];
     double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    if (std::sqrt(dot3(d, d)) > (1 + kOverStrain) * l.l0) s->over++;
+    if (dot3(d, d) > lmax2) s->over++;
   }
   s->bedlen = bedLength(w, l, *s);
 }
@@ -470,15 +478,18 @@ bool lineRest(const LineWater& w, const Line& l, const double e0[3], const doubl
     }
   }
   std::fill(s->v.begin(), s->v.end(), 0.0);
-  std::fill(s->tseg.begin(), s->tseg.end(), 0.0);
   for (int k = 0; k < 3; k++) {
     s->end0[k] = e0[k];
     s->end1[k] = e1[k];
     s->end0[3 + k] = s->end1[3 + k] = 0;
   }
+  // the continuous catenary is the start of the discrete line's own
+  // equilibrium: with long segments its nodes' chords fall short of the
+  // stretched arc, and the line would start slack (docs/mooring.md)
+  const bool eq = lineStatic(w, l, s);
   s->bedlen = ok ? c.lb : 0;
   s->tw = -1;
-  return ok;
+  return eq;
 }
 
 }  // namespace mjb

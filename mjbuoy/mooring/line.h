@@ -71,6 +71,7 @@ struct LineState {
   std::vector<double> tri;       // scratch: the tridiagonal solve, 2 per segment
   std::vector<double> tseg;      // tension of each segment after the last step [N]
   std::vector<char> wet;         // per node: below the surface at tw
+  std::vector<double> st;        // scratch: the static solve (lineStatic), 34 per node
   double tw = -1;                // time the water's kinematics were taken [s]; < 0: none
   double end0[6] = {0}, end1[6] = {0};  // ends at the last step: position, velocity
   double bedlen = 0;             // unstretched length resting on the bed [m]
@@ -113,11 +114,20 @@ void lineStep(const LineWater& w, const Line& l, double t, double dt, const doub
 double lineEndForce(const LineWater& w, const Line& l, const LineState& s, int end,
                     const double e[6], double t, double tau, double f[3]);
 
-// put l in place between ends e0 and e1 at rest, on its static equilibrium
-// (catenary.h); false when no equilibrium was found (the nodes then lie on
-// the straight line between the ends)
+// put l in place between ends e0 and e1 at rest, on its discrete static
+// equilibrium (lineStatic) started from the elastic catenary (catenary.h),
+// or from the straight line between the ends when there is no catenary;
+// false when the static solve did not converge
 bool lineRest(const LineWater& w, const Line& l, const double e0[3], const double e1[3],
               LineState* s);
+
+// move the inner nodes of l (ends fixed) from s->r to the discrete static
+// equilibrium of the lumped-mass line in still water: each node's weight,
+// buoyancy, segment tensions and seabed contact balance (Newton on the
+// total potential energy, convex in the positions; docs/mooring.md "Initial
+// state"). Sets s->tseg; returns whether the largest force residual fell
+// below 1e-6 of a node's weight (else the nodes stay at the lowest energy reached)
+bool lineStatic(const LineWater& w, const Line& l, LineState* s);
 
 // unit tangent at inner node j of the nodes r: along the chord of its two
 // neighbours; returns the chord's length [m]

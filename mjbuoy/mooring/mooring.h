@@ -38,6 +38,8 @@ struct MoorState {
   std::vector<double> tend, fend;
   std::vector<char> told;       // per line: overload named (1), non-finite named (2)
   std::vector<char> bad;        // per line: its state is not finite (no force)
+  std::vector<double> eend;     // per line: its ends' position and velocity now, 12
+  std::vector<char> ev;         // per line: what the last evaluation has to report
   long key = -1;                // the step clock (util/stepclock.h)
   double tcur = 0;
 };

@@ -69,6 +69,16 @@ class Sim:
     def sensor_range(self, name: str) -> Tuple[int, int]: ...
     def wrench(self, part: str | int | None = ...) -> F64:
         """mjbuoy's wrench (nbody, 6): force [N], torque about the COM [N m]"""
+    @property
+    def line_count(self) -> int: ...
+    def line_nodes(self, line: int) -> F64:
+        """node positions (nseg + 1, 3) [m], world frame, anchor first"""
+    def line_tensions(self, line: int) -> F64:
+        """segment tensions (nseg,) [N], anchor first"""
+    def line_wrench(self) -> F64:
+        """the mooring lines' wrench (nbody, 6): force [N], torque about the COM [N m]"""
+    @property
+    def seabed(self) -> float | None: ...
     def notices(self) -> str: ...
     @property
     def warnings(self) -> str: ...

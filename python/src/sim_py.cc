@@ -122,6 +122,20 @@ py::array copyRows(const double* p, int n, int cols) {
   return a;
 }
 
+// the node count of mooring line `line` of w: IndexError for no such line,
+// mjbuoy.Error before the first step or forward (what names the method)
+int checkLine(World& w, int line, const char* what) {
+  const int nl = mjb_lineCount(w.b);
+  if (line < 0 || line >= nl) {
+    throw py::index_error(std::string(what) + ": line " + std::to_string(line) +
+                          " out of range: the model has " + std::to_string(nl) +
+                          " mooring line(s), 0 to " + std::to_string(nl - 1));
+  }
+  int n = mjb_lineNodes(w.b, w.d, line, nullptr, 0);
+  if (n == 0) throw Error(std::string(what) + ": no line state yet; step() or forward() first");
+  return n;
+}
+
 }  // namespace
 
 void bindSim(py::module_& mod) {
@@ -268,6 +282,42 @@ pass **{"mjbuoy.spectrum.sea.hs": 1.5}, or spectrum__sea__hs=1.5 ("__" for
         "then torque about the body's centre of mass [N m] (a copy). part: None for the total, "
         "or one force family of mjbuoy.PARTS (\"pressure\", \"viscous\", \"drag\", \"slam\", "
         "\"damping\", \"wind\").");
+  c.def_property_readonly("line_count", [](Sim& s) { return mjb_lineCount(s.world().b); },
+                          "number of mooring lines (mjb_lineCount)");
+  c.def("line_nodes", [](Sim& s, int line) {
+          World& w = s.world();
+          int n = checkLine(w, line, "line_nodes");
+          py::array_t<double> a({n, 3});
+          mjb_lineNodes(w.b, w.d, line, a.mutable_data(), n);
+          return a;
+        }, py::arg("line"),
+        "node positions of mooring line `line` (nseg + 1, 3), world frame [m], anchor first "
+        "(mjb_lineNodes, a copy)");
+  c.def("line_tensions", [](Sim& s, int line) {
+          World& w = s.world();
+          checkLine(w, line, "line_tensions");
+          int n = mjb_lineTensions(w.b, w.d, line, nullptr, 0);
+          py::array_t<double> a(n);
+          mjb_lineTensions(w.b, w.d, line, a.mutable_data(), n);
+          return a;
+        }, py::arg("line"),
+        "segment tensions of mooring line `line` (nseg,) [N], anchor first, after the last "
+        "step (mjb_lineTensions, a copy)");
+  c.def("line_wrench", [](Sim& s) {
+          World& w = s.world();
+          if (mjb_lineCount(w.b) == 0) throw Error("line_wrench: the model has no mooring lines");
+          const mjtNum* p = mjb_lineWrench(w.b, w.d);
+          if (!p) throw Error("no line wrench for this state yet; step() or forward() first");
+          return copyRows(p, w.m->nbody, 6);
+        },
+        "the mooring lines' wrench on each body (nbody, 6) from the last step: world-frame "
+        "force [N], torque about the body's centre of mass [N m] (mjb_lineWrench, a copy); "
+        "not part of wrench()");
+  c.def_property_readonly("seabed", [](Sim& s) -> py::object {
+          mjtNum z = 0;
+          if (!mjb_seabed(s.world().b, &z)) return py::none();
+          return py::float_(z);
+        }, "height z [m] of the seabed (world frame), None without one (mjb_seabed)");
   c.def("notices", [](Sim& s) { World& w = s.world(); return std::string(mjb_notices(w.b, w.d)); },
         "run-time notices (bodies or force families left out as non-finite), one a line");
   c.def_property_readonly("warnings", [](Sim& s) { return std::string(mjb_warnings(s.world().b)); },
