@@ -30,7 +30,10 @@ const double kFitNoise = 3e-3;
 
 // fit n samples K[k] = K(k h) (n >= 4): matrix pencil on samples decimated
 // to at most ~300, residues by least squares with the trapezoid steady gain
-// h sum w_k K_k held, order the smallest meeting kFitTolT and kFitTolF.
+// h sum w_k K_k held, order the smallest meeting kFitTolT and kFitTolF;
+// failing that, residues with rows of B and A - A_inf added, then the
+// pencil's poles moved (stable) to that least squares (Perez and Fossen
+// 2008; docs/physics.md section 14).
 // errT is the L2 error over the samples relative to max(||K||_2, sT); errF
 // the largest error of B and of A - A_inf at the frequencies w (but the
 // last) where the sampled K's B is at least 10% of max(its peak, sB),
