@@ -179,6 +179,15 @@ MJB_API int mjb_stageTimes(const mjbBuoy* b, const char** name, double* ms, int 
 // per line; empty string when there are none
 MJB_API const char* mjb_warnings(const mjbBuoy* b);
 
+// progress of long work inside mjb_attach, one line each (no newline), as
+// it starts: per hull the panel solver solves, the body, its panels,
+// frequencies, headings and the estimated time; per hull the radiation
+// cache answers, the file read. Process-wide, for every later attach; fn
+// is called on the attaching thread, one line at a time. NULL (the
+// default) is silent. The tools print these lines on stderr
+typedef void (*mjbProgress)(const char* line, void* user);
+MJB_API void mjb_setProgress(mjbProgress fn, void* user);
+
 // the exact sea surface height eta(x, y, t) [m] of an attached model
 MJB_API mjtNum mjb_seaHeight(const mjbBuoy* b, mjtNum x, mjtNum y, mjtNum t);
 

@@ -60,6 +60,11 @@ def page(tools):
          "and writes every output to a temporary file beside it, renamed into place only "
          "when the run succeeds; an output that is an input or another output is refused "
          "([Errors and limits](robustness.md)).\n",
+         "Every program that attaches a model with radiation on says on stderr, as the attach "
+         "goes, what the panel solver solves for each distinct hull (the body, its body and lid "
+         "panels and mirror planes, the frequencies, the headings and an estimated time), which "
+         "bodies take the solution of an identical hull, and which solutions the radiation cache "
+         "answers (the file read).\n",
          "This page is generated from the programs' `--help` by "
          "`python3 scripts/gen_tools_doc.py build/tools`; the test `docs.tools` fails "
          "when it is stale.\n"]

@@ -273,6 +273,74 @@ TEST(RadCache, UnwritableDirectoryIsAWarning) {
   EXPECT_GT(coef(s).Ainf[14], 0);
 }
 
+// three free boxes (2 m x 1 m x 0.5 m, half under water) turned by 0, 25
+// and 70 deg about the vertical, apart, with diffraction at 4 frequencies
+std::string fleet(const std::string& dir) {
+  std::string x = "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"h0 h1 h2\"/>"
+                  "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+                  "<text name=\"mjbuoy.radiation.cache\" data=\"" + dir + "\"/>"
+                  "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 4\"/>"
+                  "</custom><worldbody>";
+  const char* yaw[3] = {"0", "25", "70"};
+  for (int i = 0; i < 3; i++) {
+    const std::string n = std::to_string(i);
+    x += "<body name=\"b" + n + "\" pos=\"" + std::to_string(5 * i) + " 0 0\" euler=\"0 0 " +
+         yaw[i] + "\"><freejoint/><geom name=\"h" + n + "\" type=\"box\" size=\"1 0.5 0.25\" "
+         "mass=\"512.5\"/></body>";
+  }
+  return x + "</worldbody></mujoco>";
+}
+
+// the progress lines of an attach (mjb_setProgress)
+void keepLine(const char* line, void* out) { ((std::vector<std::string>*)out)->push_back(line); }
+
+// identical hulls turned about the vertical are solved once: the potential
+// flow problem is invariant under that turn (docs/physics.md section 13,
+// "Identical hulls"), so each box's added mass and damping in its own axes
+// are the unturned box's; the progress lines say what is solved, reused
+// and read from the cache, and nothing once the receiver is removed
+TEST(RadCache, IdenticalHullsSolveOnce) {
+  TmpDir t;
+  std::vector<std::string> lines;
+  // the receiver is removed however the test ends (lines dies with it)
+  struct Quiet {
+    ~Quiet() { mjb_setProgress(nullptr, nullptr); }
+  } quiet;
+  mjb_setProgress(keepLine, &lines);
+  Scene a(fleet(t.path));
+  ASSERT_TRUE(a.ok()) << a.err;
+  EXPECT_EQ(stats(a).miss, 1);
+  EXPECT_EQ(stats(a).same, 2);
+  ASSERT_EQ(lines.size(), 3u);
+  for (const char* w : {"radiation of body \"b0\": panel solver: ", " body and ", " lid panels",
+                        "4 frequencies 1 to 9 rad/s", "36 headings", "deep water: about "})
+    EXPECT_NE(lines[0].find(w), std::string::npos) << w << " in " << lines[0];
+  EXPECT_EQ(lines[1], "radiation of body \"b1\": the same panels as body \"b0\" (an identical "
+                      "hull): its solution");
+  Scene b(fleet(t.path));
+  ASSERT_TRUE(b.ok()) << b.err;
+  EXPECT_EQ(stats(b).hit, 1);
+  ASSERT_EQ(lines.size(), 6u);
+  EXPECT_NE(lines[3].find("radiation of body \"b0\": read from the cache " + t.path + "/"),
+            std::string::npos) << lines[3];
+  mjb_setProgress(nullptr, nullptr);
+  Scene c(fleet(t.path));
+  EXPECT_EQ(lines.size(), 6u);
+  const auto& cf = mjb::buoyOf(a.b)->coef;
+  ASSERT_EQ(cf.size(), 3u);
+  double ba = 0, bb = 0;
+  for (double v : cf[0].second.A) ba = std::max(ba, std::fabs(v));
+  for (double v : cf[0].second.B) bb = std::max(bb, std::fabs(v));
+  for (int i = 1; i < 3; i++) {
+    const mjb::HydroCoef &u = cf[0].second, &v = cf[i].second;
+    ASSERT_EQ(u.A.size(), v.A.size());
+    for (size_t k = 0; k < u.A.size(); k++) {
+      EXPECT_NEAR(v.A[k], u.A[k], 1e-9 * ba) << i << " " << k;
+      EXPECT_NEAR(v.B[k], u.B[k], 1e-9 * bb) << i << " " << k;
+    }
+  }
+}
+
 // where the cache lives: the MJCF entry, else MJBUOY_RADIATION_CACHE, else
 // $XDG_CACHE_HOME/mjbuoy, else ~/.cache/mjbuoy; "off" turns it off
 TEST(RadCache, DirectoryPrecedence) {

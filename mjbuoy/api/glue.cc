@@ -23,6 +23,7 @@
 #include "api/seasetter.h"
 #include "api/moorconfig.h"
 #include "api/moorstep.h"
+#include "api/progress.h"
 #include "sea/wind.h"
 #include "util/fmt.h"
 
@@ -773,6 +774,8 @@ int mjb_stageTimes(const mjbBuoy* b, const char** name, double* ms, int n) {
 const char* mjb_warnings(const mjbBuoy* b) {
   return b ? b->b.warnings.c_str() : "";
 }
+
+void mjb_setProgress(mjbProgress fn, void* user) { mjb::progressSet(fn, user); }
 
 int mjb_setSea(mjbBuoy* b, const mjbSea* sea, char* error, int error_sz) {
   if (!b || !sea) {

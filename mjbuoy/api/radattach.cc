@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "api/buoy.h"
+#include "api/progress.h"
 #include "radiation/coefpsd.h"
 #include "radiation/coefxform.h"
 #include "radiation/diffract.h"
@@ -162,6 +163,15 @@ static bool groupRadiates(const Buoy& B, int root) {
   return B.cfg.rad.groupRadiates(B.m, hb, root);
 }
 
+// w (world axes) in the axes turned by psi about the vertical: Z(-psi) w
+// (t may be w)
+static void toPanel(double psi, const double w[3], double t[3]) {
+  const double c = std::cos(psi), s = std::sin(psi), x = w[0], y = w[1];
+  t[0] = c * x + s * y;
+  t[1] = -s * x + c * y;
+  t[2] = w[2];
+}
+
 // the group's hull vertices in root's frame (float, as hullPanels takes
 // them) and its faces
 static void groupMesh(const Buoy& B, const mjData* d, int root, std::vector<float>* v,
@@ -243,15 +253,88 @@ static void checkCoef(Buoy* B, const std::string& who, bool file, int np, HydroC
       B->cfg.warn[i] += "; " + refineHint(B->cfg.rad, np);
 }
 
+// what the panel solver is about to solve and its estimated time, for the
+// progress line (mjb_setProgress)
+static std::string solveLine(const PanelMesh& body, const PanelMesh& lid,
+                             const std::vector<double>& omega, const std::vector<double>& head,
+                             double depth) {
+  const PanelCost pc = panelCost(body, lid, int(omega.size()), int(head.size()));
+  char b[320];
+  std::snprintf(b, sizeof b, "panel solver: %d body and %d lid panels (%s), %d frequencies "
+                "%.3g to %.3g rad/s, %d headings, %s water: about %.2g s",
+                body.nface(), lid.nface(), pc.ng == 4 ? "two mirror planes: 4 systems" :
+                pc.ng == 2 ? "one mirror plane: 2 systems" : "no mirror symmetry",
+                int(omega.size()), omega.empty() ? 0 : omega.front(),
+                omega.empty() ? 0 : omega.back(), int(head.size()),
+                depth > 0 ? ("depth " + fmt(depth) + " m").c_str() : "deep", pc.seconds);
+  return b;
+}
+
+// a panel solution of this attach, reused by the identical hulls after it
+// (turned about the vertical, the panel frame turns with them: panelYaw)
+struct Solved {
+  std::string who;
+  PanelMesh body, lid;
+  std::vector<double> omega, head;
+  HydroCoef in, c;  // the input (rho, g, depth, ref) and the solution
+  bool drift = false;
+  DriftBody db;
+  DriftTable dt;
+};
+
+// a and b within tol of each other, entry by entry, and of one size
+static bool near(const double* a, const double* b, size_t n, double tol) {
+  for (size_t i = 0; i < n; i++)
+    if (!(std::fabs(a[i] - b[i]) <= tol)) return false;
+  return true;
+}
+static bool near(const std::vector<double>& a, const std::vector<double>& b, double tol) {
+  return a.size() == b.size() && near(a.data(), b.data(), a.size(), tol);
+}
+
+// the largest |x| of n values
+static double most(const double* a, size_t n) {
+  double m = 0;
+  for (size_t i = 0; i < n; i++) m = std::max(m, std::fabs(a[i]));
+  return m;
+}
+
+// whether s solved this problem: the same faces, vertices within 1e-9 of the
+// mesh's size (the rounding of the turn by the yaw, far below the panels'
+// discretisation error), frequencies within 1e-9 relative, the same
+// headings and water, and (drift) the same dynamics within 1e-9 relative
+static bool sameProblem(const Solved& s, const PanelMesh& body, const PanelMesh& lid,
+                        const std::vector<double>& omega, const std::vector<double>& head,
+                        const HydroCoef& in, const DriftBody* db) {
+  if (s.body.face != body.face || s.lid.face != lid.face || s.head != head ||
+      (db != nullptr) != s.drift || s.in.rho != in.rho || s.in.g != in.g ||
+      s.in.depth != in.depth || !near(s.in.ref, in.ref, 3, 0))
+    return false;
+  const double tol = 1e-9 * (1 + most(body.vert.data(), body.vert.size()));
+  if (!near(s.body.vert, body.vert, tol) || !near(s.lid.vert, lid.vert, tol) ||
+      !near(s.omega, omega, 1e-9 * (omega.empty() ? 1 : omega.back())))
+    return false;
+  if (!db) return true;
+  const DriftBody& a = s.db;
+  if (a.free != db->free || !std::equal(a.dof, a.dof + 6, db->dof)) return false;
+  for (auto pr : {std::make_pair(a.M, db->M), std::make_pair(a.C, db->C),
+                  std::make_pair(a.D, db->D), std::make_pair(a.Cb, db->Cb)})
+    if (!near(pr.first, pr.second, 36, 1e-9 * most(pr.second, 36) + 1e-300)) return false;
+  return near(a.com, db->com, 3, tol);
+}
+
 // panelSolve through the cache (radcache.h): a file whose key matches and
 // whose payload fits it (radCacheCheck) is used as it is, else the
 // solution is computed, after its memory is estimated (radmem.h), and
 // stored; every cache problem is a warning, never an error
-// db, dt: the drift table too (driftattach.h), cached in its own file
+// db, dt: the drift table too (driftattach.h), cached in its own file;
+// solved: this attach's solutions, an identical hull's reused (and this
+// one's added)
 static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
                         const PanelMesh& lid, const std::vector<double>& omega,
                         const std::vector<double>& head, HydroCoef* c, std::string* err,
-                        const DriftBody* db = nullptr, DriftTable* dt = nullptr) {
+                        std::vector<Solved>* solved, const DriftBody* db = nullptr,
+                        DriftTable* dt = nullptr) {
   std::string dir = radCacheDir(B->cfg.rad.cache), key, note, dkey;
   if (!dir.empty()) {
     key = radCacheKey(body, lid, omega, head, *c);
@@ -264,7 +347,10 @@ static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
       // the drift table's file, else both are solved again
       bool dok = !dt || (radCacheLoad(dir, dkey, &gotd, &dnote) &&
                          driftUnpack(gotd, (int)omega.size(), (int)head.size(), dt));
-      if (note.empty() && dok) return *c = std::move(got), B->radcache.hit++, true;
+      if (note.empty() && dok) {
+        progressSay(who.substr(8) + ": read from the cache " + radCachePath(dir, key));
+        return *c = std::move(got), B->radcache.hit++, true;
+      }
       // no drift file yet (drift was off, or another process is writing
       // it): a plain miss; a drift file that cannot be used: named
       std::string bad = note.empty() ? dnote : note;
@@ -274,7 +360,16 @@ static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
     }
     if (!note.empty()) B->cfg.warn.push_back(who.substr(8) + ": " + note);
   }
-  // the dense systems' memory, estimated before they are allocated
+  for (const Solved& s : *solved) {
+    if (!sameProblem(s, body, lid, omega, head, *c, db)) continue;
+    progressSay(who.substr(8) + ": the same panels as " + s.who.substr(s.who.find("body \"")) +
+                " (an identical hull): its solution");
+    *c = s.c;
+    if (dt) *dt = s.dt;
+    B->radcache.same++;
+    return true;
+  }
+  const HydroCoef in = *c;
   const int nb = body.nface(), nl = lid.nface();
   note = panelMemoryCheck(nb + nl, nb, int(omega.size()));
   if (!note.empty()) {
@@ -284,12 +379,15 @@ static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
     return false;
   }
   B->radcache.miss++;
+  progressSay(who.substr(8) + ": " + solveLine(body, lid, omega, head, c->depth));
   if (dt) {
     *err = panelSolveDrift(body, lid, omega, head, *db, c, dt, false);  // far field only
     if (!err->empty()) return false;
   } else if (!panelSolve(body, lid, omega, head, c, err)) {
     return false;
   }
+  solved->push_back(Solved{who, body, lid, omega, head, in, *c, db != nullptr,
+                           db ? *db : DriftBody(), dt ? *dt : DriftTable()});
   if (dir.empty()) return true;
   if (radCacheStore(dir, key, *c, &note) &&
       (!dt || radCacheStore(dir, dkey, driftPack(*dt, *c), &note))) {
@@ -494,18 +592,23 @@ static void coarsenGroup(Buoy* B, const std::string& who, const std::vector<floa
 // A44 = A_inf's roll entry (about the root's COM, body axes); dz: the
 // panel pose's heave (d is at qpos0, after mj_comPos)
 static void rollZeta(Buoy* B, const mjData* d, int root, const PanelMesh& body,
-                     const HydroCoef& c, double dz, const std::string& who, RadBody* x) {
+                     const HydroCoef& c, double dz, double psi, const std::string& who,
+                     RadBody* x) {
   const mjModel* m = B->m;
   const RadConfig& rc = B->cfg.rad;
   double I[6], G[3], mass, C[9];
   if (!groupInertia(m, d, root, I, G, &mass)) return;
-  // the COM in the panel frame: world axes, origin (x_root, y_root, sea level)
+  // the COM in the panel frame: axes turned by psi from the world's, origin
+  // (x_root, y_root, sea level)
   for (int k = 0; k < 3; k++) G[k] -= d->xpos[3 * root + k];
   G[2] += d->xpos[3 * root + 2] + dz - B->cfg.sea.level;
+  toPanel(psi, G, G);
   rotStiffness(body, G, c.rho * c.g, C);
   const mjtNum* R = d->xmat + 9 * root;
   const double e[3] = {R[0], R[3], R[6]};  // the body's x axis in the world
-  x->c44 = axisStiffness(C, e);
+  double ep[3];
+  toPanel(psi, e, ep);
+  x->c44 = axisStiffness(C, ep);
   const double i44 = e[0] * e[0] * I[0] + e[1] * e[1] * I[1] + e[2] * e[2] * I[2] +
                      2 * (e[0] * e[1] * I[3] + e[0] * e[2] * I[4] + e[1] * e[2] * I[5]);
   const double it = i44 + c.Ainf[21];
@@ -523,10 +626,11 @@ static void rollZeta(Buoy* B, const mjData* d, int root, const PanelMesh& body,
 // exciting force about its COM in world axes at qpos0, with diffraction
 // on) to the time-domain radiation, the roll damping and the diffraction;
 // imported: c is from a coefficient file, not the panel solver; Rd: the
-// root's rotation at qpos0. "" or the error
+// root's rotation at qpos0 in the panel frame, whose axes are turned by psi
+// from the world's (cx's axes). "" or the error
 static std::string finishGroup(Buoy* B, const mjData* d, int root, const std::string& who,
                                const PanelMesh& body, double dz, const double Rd[9],
-                               HydroCoef c, const HydroCoef& cx, bool imported) {
+                               HydroCoef c, const HydroCoef& cx, bool imported, double psi) {
   const mjModel* m = B->m;
   const RadConfig& rc = B->cfg.rad;
   std::string err;
@@ -554,7 +658,7 @@ static std::string finishGroup(Buoy* B, const mjData* d, int root, const std::st
   for (RadBody& x : B->rad.rb) {
     if (x.body != root) continue;
     x.veq = groupVolume(*B, B->cfg.sea, d, root, dz);
-    rollZeta(B, d, root, body, c, dz, who, &x);
+    rollZeta(B, d, root, body, c, dz, psi, who, &x);
     for (int hb : B->body)
       if (m->body_weldid[hb] == root) x.hb.push_back(hb);
   }
@@ -562,6 +666,8 @@ static std::string finishGroup(Buoy* B, const mjData* d, int root, const std::st
   B->rad.note.clear();
   if (rc.diffraction) err = setDiffraction(root, Rd, cx, B->wcap, &B->diff);
   if (!err.empty()) return err + " (body \"" + bodyName(m, root) + "\")";
+  for (DiffBody& x : B->diff.db)
+    if (x.body == root) x.yaw0 = psi;
   B->coef.emplace_back(root, std::move(c));
   return "";
 }
@@ -607,7 +713,7 @@ static std::string importGroup(Buoy* B, const mjData* d, int root, const std::st
                           "file " + rf.path + ", which holds no drift table (drift needs "
                           "mjbuoy's own panel solution: remove mjbuoy.radiation.file for it, or "
                           "set mjbuoy.radiation.drift off to silence this)");
-  return finishGroup(B, d, root, who, body, dz, Rd, std::move(c), cx, true);
+  return finishGroup(B, d, root, who, body, dz, Rd, std::move(c), cx, true, 0);
 }
 
 // the error of a group whose hull gives no wet panels (note: why) at the
@@ -684,25 +790,32 @@ static std::string attachDrift(Buoy* B, int root, const std::string& who, const 
 
 // the solved coefficients c to the root's COM and body axes, the exciting
 // force about the COM in world axes, then the group's radiation and (drift)
-// its drift table dt; posz: the panel frame's height of the root [m]
+// its drift table dt; posz: the panel frame's height of the root [m], psi
+// its yaw [rad] (panelYaw)
 static std::string placeGroup(Buoy* B, const mjData* d, int root, const std::string& who,
-                              const PanelMesh& body, double dz, double posz, HydroCoef* cp,
-                              bool drift, const DriftTable& dt) {
+                              const PanelMesh& body, double dz, double posz, double psi,
+                              HydroCoef* cp, bool drift, const DriftTable& dt) {
   const mjModel* m = B->m;
   const RadConfig& rc = B->cfg.rad;
   HydroCoef& c = *cp;
   std::string err;
-  // panel frame: world axes, origin (x_root, y_root, sea level); the root's
-  // COM there is R ipos + (0, 0, pos z) (pos z at the panel pose, with dz);
-  // body axes: R's columns
+  // panel frame: world axes turned by psi, origin (x_root, y_root, sea
+  // level); the root's COM there is Rd ipos + (0, 0, pos z) (pos z at the
+  // panel pose, with dz); body axes: the columns of Rd = Z(-psi) R
   const mjtNum* R = d->xmat + 9 * root;
   const mjtNum* ip = m->body_ipos + 3 * root;
   double p[3], Rd[9], pn[3] = {ip[0], ip[1], ip[2]};
-  mju_rotVecMat(p, ip, R);
+  for (int j = 0; j < 3; j++) {
+    const double col[3] = {R[j], R[3 + j], R[6 + j]};
+    double t[3];
+    toPanel(psi, col, t);
+    for (int i = 0; i < 3; i++) Rd[3 * i + j] = t[i];
+  }
+  mju_rotVecMat(p, ip, Rd);
   p[2] += posz;
-  for (int i = 0; i < 9; i++) Rd[i] = R[i];
-  // the exciting force about the COM, kept in world axes at qpos0 (any
-  // initial rotation; the step turns it with the body's yaw)
+  // the exciting force about the COM, kept in the panel frame's axes at
+  // qpos0 (any initial rotation; the step turns it with the body's yaw
+  // since, diffract.h)
   HydroCoef cx;
   if (rc.diffraction) {
     cx = c;
@@ -715,13 +828,27 @@ static std::string placeGroup(Buoy* B, const mjData* d, int root, const std::str
   for (auto* v : {&c.heading, &c.Xre, &c.Xim, &c.FKre, &c.FKim}) v->clear();
   err = coefTransform(&c, p, Rd, pn);
   if (!err.empty()) return who + ": " + err;
-  err = finishGroup(B, d, root, who, body, dz, Rd, std::move(c), cx, false);
+  err = finishGroup(B, d, root, who, body, dz, Rd, std::move(c), cx, false, psi);
   if (!err.empty() || !drift) return err;
   return attachDrift(B, root, who, dt, p);
 }
 
+// the panel frame's yaw [rad]: a free root's heading at the panel pose
+// (its x axis' direction in the world's xy plane), so that identical hulls
+// turned about the vertical have the same panels and solve once
+// (docs/physics.md section 13, "Identical hulls"); 0 for a root on other
+// joints (their axes are the world's) or with a coefficient file
+static double panelYaw(const Buoy& B, const mjData* d, int root) {
+  const mjModel* m = B.m;
+  if (!m->body_jntnum[root] || m->jnt_type[m->body_jntadr[root]] != mjJNT_FREE ||
+      fileOf(B, root))
+    return 0;
+  const mjtNum* R = d->xmat + 9 * root;
+  return std::atan2(R[3], R[0]);
+}
+
 // coefficients of one group; "" or the error
-static std::string solveGroup(Buoy* B, const mjData* d, int root) {
+static std::string solveGroup(Buoy* B, const mjData* d, int root, std::vector<Solved>* solved) {
   const mjModel* m = B->m;
   const RadConfig& rc = B->cfg.rad;
   std::string who = std::string("mjbuoy: radiation of body \"") + bodyName(m, root) + "\"";
@@ -735,22 +862,28 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   std::vector<float> v;
   std::vector<int> f;
   groupMesh(*B, d, root, &v, &f);
+  // the panels in axes turned by the body's yaw: identical hulls turned
+  // about the vertical get the same panels and solve once
+  const double psi = panelYaw(*B, d, root);
+  mjtNum q[4];
+  const mjtNum qz[4] = {std::cos(-psi / 2), 0, 0, std::sin(-psi / 2)};
+  mju_mulQuat(q, qz, d->xquat + 4 * root);
   double pos[3] = {d->xpos[3 * root], d->xpos[3 * root + 1],
                    d->xpos[3 * root + 2] + dz - B->cfg.sea.level};
   PanelMesh body, lid;
   std::string note;
-  if (!hullPanels(v.data(), v.size() / 3, f.data(), f.size() / 3, pos, d->xquat + 4 * root,
-                  rc.refine, &body, &lid, &note))
+  if (!hullPanels(v.data(), v.size() / 3, f.data(), f.size() / 3, pos, q, rc.refine, &body,
+                  &lid, &note))
     return noPanels(B, root, who, note, at);
   if (const RadConfig::File* rf = fileOf(*B, root))
     return importGroup(B, d, root, who, *rf, body, dz);
-  if (!rc.refineGiven) autoRefine(rc, v, f, pos, d->xquat + 4 * root, &body, &lid, &note);
+  if (!rc.refineGiven) autoRefine(rc, v, f, pos, q, &body, &lid, &note);
   int np = body.nface() + (rc.lid ? lid.nface() : 0);
   // the budget: an explicit mjbuoy.radiation.panels, none for a hull
   // refined on purpose (mjbuoy.radiation.refine alone), else the default
   const int budget = rc.budget();
   if (budget > 0 && solveSize(body, lid, rc.lid) > budget)
-    coarsenGroup(B, who, v, f, pos, d->xquat + 4 * root, &body, &lid, &note, &np);
+    coarsenGroup(B, who, v, f, pos, q, &body, &lid, &note, &np);
   if (budget > 0 && solveSize(body, lid, rc.lid) > budget && !(rc.given && rc.on) &&
       !namedOn(*B, root))
     return overBudget(B, root, who, np, budget);
@@ -781,15 +914,15 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root) {
   if (drift && c.depth > 0) warnDriftDepth(B, who, c.depth);
   if (drift) {
     const double o[3] = {d->xpos[3 * root], d->xpos[3 * root + 1], B->cfg.sea.level - dz};
-    driftDynamics(m, d, root, body, o, c.rho, c.g, &db);
+    driftDynamics(m, d, root, body, o, c.rho, c.g, &db, psi);
   }
-  if (!cachedSolve(B, who, body, lid, omega, head, &c, &err, drift ? &db : nullptr,
+  if (!cachedSolve(B, who, body, lid, omega, head, &c, &err, solved, drift ? &db : nullptr,
                    drift ? &dt : nullptr)) {
     if (!(rc.given && rc.on) && !namedOn(*B, root))
       return skipGroup(B, root, who.substr(8) + " is off: panel solver: " + err);
     return who + ": panel solver: " + err;
   }
-  return placeGroup(B, d, root, who, body, dz, pos[2], &c, drift, dt);
+  return placeGroup(B, d, root, who, body, dz, pos[2], psi, &c, drift, dt);
 }
 
 // attachRadiation's work, which may throw (std::bad_alloc)
@@ -860,8 +993,9 @@ static std::string attachGroups(Buoy* B) {
   if (!d) return "mjbuoy: radiation: could not allocate an mjData for the initial pose";
   mj_kinematics(m, d.get());
   mj_comPos(m, d.get());  // cinert, for the groups' roll inertia (rollZeta)
+  std::vector<Solved> solved;
   for (int r : roots) {
-    std::string e = solveGroup(B, d.get(), r);
+    std::string e = solveGroup(B, d.get(), r, &solved);
     if (!e.empty()) return e;
   }
   diffSea(B->cfg.sea, &B->diff);

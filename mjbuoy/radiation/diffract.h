@@ -20,8 +20,9 @@ const int kDiffHeadings = 36;
 // one rigid group's table, about its COM
 struct DiffBody {
   int body;                // MuJoCo body id (the group's top body)
-  double R0[9];            // its rotation at qpos0 (world from body, row-major)
-  HydroCoef c;             // X and FK about the COM in world axes at qpos0
+  double R0[9];            // its rotation at qpos0 (table from body, row-major)
+  double yaw0 = 0;         // the table's axes: the world's turned by yaw0 [rad] about z
+  HydroCoef c;             // X and FK about the COM in the table's axes
   std::vector<double> D;   // X - FK, (re, im) per (omega, heading, dof): 2 ((w nh + h) 6 + dof)
   std::vector<int> iw;     // per sea component: table row at or below its omega;
                            //   -1 below the first (D linear from 0), -2 above the last (none)

@@ -28,7 +28,7 @@ static bool slideDofs(const mjModel* m, const mjData* d, int root, DriftBody* b)
 }
 
 void driftDynamics(const mjModel* m, const mjData* d, int root, const PanelMesh& body,
-                   const double o[3], double rho, double g, DriftBody* b) {
+                   const double o[3], double rho, double g, DriftBody* b, double yaw) {
   *b = DriftBody();
   if (!m->body_jntnum[root]) return;
   bool freej = m->jnt_type[m->body_jntadr[root]] == mjJNT_FREE;
@@ -37,10 +37,20 @@ void driftDynamics(const mjModel* m, const mjData* d, int root, const PanelMesh&
   if (!groupInertia(m, d, root, I, G, &mass)) return;
   b->free = true;
   double r[3] = {G[0] - o[0], G[1] - o[1], G[2] - o[2]};
+  // world axes to the frame's: r' = Z r, I' = Z I Z^T, Z the turn by -yaw
+  const double cw = std::cos(yaw), sw = std::sin(yaw);
+  const double Z[9] = {cw, sw, 0, -sw, cw, 0, 0, 0, 1};
+  const double IW[9] = {I[0], I[3], I[4], I[3], I[1], I[5], I[4], I[5], I[2]};
+  double IG[9] = {0}, rw[3] = {r[0], r[1], r[2]};
+  for (int i = 0; i < 3; i++) {
+    r[i] = Z[3 * i] * rw[0] + Z[3 * i + 1] * rw[1] + Z[3 * i + 2] * rw[2];
+    for (int j = 0; j < 3; j++)
+      for (int k = 0; k < 3; k++)
+        for (int l = 0; l < 3; l++) IG[3 * i + j] += Z[3 * i + k] * IW[3 * k + l] * Z[3 * j + l];
+  }
   for (int k = 0; k < 3; k++) b->com[k] = r[k];
   // M about the frame's origin: [m 1, -m [r]x; m [r]x, I_G + m (|r|^2 1 - r r^T)]
   const double X[9] = {0, -r[2], r[1], r[2], 0, -r[0], -r[1], r[0], 0};
-  const double IG[9] = {I[0], I[3], I[4], I[3], I[1], I[5], I[4], I[5], I[2]};
   double rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
   for (int i = 0; i < 3; i++) {
     b->M[6 * i + i] = mass;

@@ -17,9 +17,11 @@ namespace mjb {
 // root on a free joint floats freely (mass matrix from the group's
 // inertia, restoring from its wet panels and its weight), a root on slide
 // joints along world axes moves in those dofs alone (their springs in C,
-// damping in D), any other is restrained (free = false)
+// damping in D), any other is restrained (free = false); yaw [rad]: the
+// frame's axes turned about the vertical by yaw from the world's (a free
+// root only: the panels' frame of identical hulls, radattach.cc)
 void driftDynamics(const mjModel* m, const mjData* d, int root, const PanelMesh& body,
-                   const double o[3], double rho, double g, DriftBody* b);
+                   const double o[3], double rho, double g, DriftBody* b, double yaw = 0);
 
 // the cache key of the drift table for the coefficients' key ckey
 std::string driftCacheKey(const std::string& ckey, const DriftBody& b);

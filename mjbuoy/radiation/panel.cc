@@ -33,12 +33,17 @@ typedef Eigen::MatrixXd MatR;
 typedef Eigen::MatrixXcd MatC;
 const double kPi = 3.14159265358979323846;
 
-// runs body(i) for i in [0, n) on up to hardware_concurrency threads
-// (rows interleaved: near and far rows cost about the same)
+// the worker threads: the hardware's, at most 8
+int panelThreads() {
+  int nt = (int)std::thread::hardware_concurrency();
+  return nt < 1 ? 1 : (nt > 8 ? 8 : nt);
+}
+
+// runs body(i) for i in [0, n) on up to panelThreads threads (rows
+// interleaved: near and far rows cost about the same)
 template <class Fn>
 void parallelRows(int n, Fn body, int minn = 64) {
-  int nt = (int)std::thread::hardware_concurrency();
-  nt = nt < 1 ? 1 : (nt > 8 ? 8 : nt);
+  int nt = panelThreads();
   if (nt == 1 || n < minn) {
     for (int i = 0; i < n; i++) body(i);
     return;
@@ -922,6 +927,30 @@ int panelMirrors(const PanelMesh& body, const PanelMesh& lid) {
   if (!pb.nb || !buildPanels(lid, true, &pb, &err)) return 0;
   pb.nl = (int)pb.pn.size() - pb.nb;
   return symmetryGroup(pb).planes;
+}
+
+// rates of the cost model, measured on one core of the development machine
+// (docs/benchmarks.md, "Radiation"): Green function integrals per second
+// (the table's interpolation and the near panels' quadrature) and complex
+// LU and product flops per second (Eigen, SSE2)
+const double kGreenRate = 3.5e6, kFlopRate = 4.0e9;
+
+PanelCost panelCost(const PanelMesh& body, const PanelMesh& lid, int nw, int nh) {
+  PanelCost c;
+  Problem pb;
+  std::string err;
+  if (!buildPanels(body, false, &pb, &err)) return c;
+  pb.nb = (int)pb.pn.size();
+  if (!pb.nb || !buildPanels(lid, true, &pb, &err)) return c;
+  pb.nl = (int)pb.pn.size() - pb.nb;
+  c.n = pb.nb + pb.nl;
+  c.ng = gSymmetry ? (int)symmetryGroup(pb).img.size() : 1;
+  const double n = c.n, nr = n / c.ng, nc = 6 + nh;
+  c.green = nw * n * nr;
+  c.flops = nw * (c.ng * 8.0 / 3 * nr * nr * nr + 16 * n * nr * nc);
+  const int nt = std::max(1, std::min(nw, panelThreads()));
+  c.seconds = (c.green / kGreenRate + c.flops / kFlopRate) / nt;
+  return c;
 }
 
 bool panelSolve(const PanelMesh& body, const PanelMesh& lid, const std::vector<double>& omega,

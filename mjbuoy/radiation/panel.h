@@ -96,6 +96,19 @@ void panelSymmetryUse(bool on);
 // invalid input)
 int panelMirrors(const PanelMesh& body, const PanelMesh& lid);
 
+// panelSolve's cost on body and lid for nw frequencies and nh headings:
+// per frequency n rows by n_r columns of Green function integrals (n_r =
+// n / |G| the rows of the symmetry-reduced systems, |G| 1, 2 or 4) and
+// the dense complex algebra, |G| LU factorisations of 8/3 n_r^3 flops plus
+// the 6 + nh solutions and potentials, 16 n n_r (6 + nh) flops
+struct PanelCost {
+  int n = 0, ng = 1;  // unknowns (body and lid panels), symmetry group order
+  double green = 0;   // Green function integrals, all frequencies
+  double flops = 0;   // dense algebra, all frequencies
+  double seconds = 0;  // estimated wall time on this machine's threads [s]
+};
+PanelCost panelCost(const PanelMesh& body, const PanelMesh& lid, int nw, int nh);
+
 }  // namespace mjb
 
 #endif  // MJBUOY_PANEL_H_

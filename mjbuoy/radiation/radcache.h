@@ -22,6 +22,7 @@ const char* const kRadCacheEnv = "MJBUOY_RADIATION_CACHE";
 // hits, misses and files written by one attach (tests and mjbuoy-hydro)
 struct RadCacheStats {
   int hit = 0, miss = 0, write = 0;
+  int same = 0;  // solutions of an identical hull solved earlier in the same attach
 };
 
 // the cache directory: entry (mjbuoy.radiation.cache) if given, else

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "mjbuoy.h"
+
 namespace mjbtool {
 
 static const char* g_tool = "mjbuoy";
@@ -26,10 +28,17 @@ static void onError(const char* msg) {
   std::exit(3);  // MuJoCo's state is undefined after an error
 }
 
+static void onProgress(const char* line, void* tool) {
+  std::fprintf(stderr, "%s: %s\n", (const char*)tool, line);
+}
+
+void installProgress(const char* tool) { mjb_setProgress(onProgress, (void*)tool); }
+
 void installMujocoHandlers(const char* tool) {
   g_tool = tool;
   mju_user_warning = onWarning;
   mju_user_error = onError;
+  installProgress(tool);
 }
 
 std::string lastMujocoWarning() { return g_last; }

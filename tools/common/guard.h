@@ -18,6 +18,11 @@ namespace mjbtool {
 // is fatal in MuJoCo (it cannot continue): exit status 3
 void installMujocoHandlers(const char* tool);
 
+// mjbuoy's progress lines at attach (mjb_setProgress: what the panel
+// solver solves and its estimated time, what the radiation cache answers)
+// to stderr as "tool: line"; installMujocoHandlers installs it too
+void installProgress(const char* tool);
+
 // the last MuJoCo warning text ("" if none since installMujocoHandlers)
 std::string lastMujocoWarning();
 

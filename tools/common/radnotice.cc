@@ -22,9 +22,10 @@ std::string radiationPlan(const mjModel* m) {
   }
   if (bodies.empty()) return "";
   char buf[256];
-  std::snprintf(buf, sizeof(buf), "radiation is on (mjbuoy.radiation): solving the panel "
-                "problem of %zu hull bod%s at attach (seconds to minutes; cached results load "
-                "at once)", bodies.size(), bodies.size() == 1 ? "y" : "ies");
+  std::snprintf(buf, sizeof(buf), "radiation is on (mjbuoy.radiation) for %zu hull bod%s: "
+                "their panel problems are solved at attach (seconds to minutes, a line per "
+                "hull) or read from the cache (at once)", bodies.size(),
+                bodies.size() == 1 ? "y" : "ies");
   return buf;
 }
 

@@ -15,11 +15,13 @@
 #include "api/buoy.h"
 #include "api/coefexport.h"
 #include "cliopt.h"
+#include "guard.h"
 #include "hydroio.h"
 #include "hydroplot.h"
 #include "mjbuoy.h"
 #include "modelload.h"
 #include "outfile.h"
+#include "radiation/coefxform.h"
 #include "radnotice.h"
 #include "radiation/radiation.h"
 #include "radiation/radtail.h"
@@ -76,7 +78,14 @@ static bool printBody(FILE* o, const mjModel* m, int body, const mjb::HydroCoef&
 // the exciting force table of the body's diffraction (when on); false on a
 // write error
 static bool printX(FILE* o, const mjb::DiffBody& b) {
-  const mjb::HydroCoef& c = b.c;
+  // the table's axes (the body's heading at qpos0) to the world's: the
+  // headings turn by yaw0 (coefxform.h)
+  mjb::HydroCoef c = b.c;
+  const double cy = std::cos(b.yaw0), sy = std::sin(b.yaw0);
+  const double Rw[9] = {cy, sy, 0, -sy, cy, 0, 0, 0, 1};
+  c.A.assign(36 * c.omega.size(), 0);
+  c.B = c.A;
+  if (b.yaw0 != 0 && !mjb::coefTransform(&c, c.ref, Rw, c.ref).empty()) return false;
   std::fprintf(o, "# exciting force X per unit wave amplitude and its Froude-Krylov part FK, "
                "about the COM, in the world axes of the initial pose (qpos0); heading: "
                "direction of travel from +x [deg]; phase [deg]: the force is Re(a X "
@@ -164,6 +173,7 @@ int main(int argc, char** argv) {
                "$MJBUOY_RADIATION_CACHE, else $XDG_CACHE_HOME/mjbuoy or ~/.cache/mjbuoy), so running "
                "it once precomputes them for every later attach of the model."};
   app.set_version_flag("--version", std::string("mjbuoy-hydro ") + MJBUOY_VERSION_STRING);
+  mjbtool::installProgress("mjbuoy-hydro");
   std::string model, file;
   double dt = 0.05, tk = 0;
   using mjbtool::Finite;
@@ -236,8 +246,8 @@ int main(int argc, char** argv) {
   const mjb::Buoy* B = mjb::buoyOf(b);
   std::string dir = mjb::radCacheDir(B->cfg.rad.cache);
   std::fprintf(stderr, "mjbuoy-hydro: radiation cache %s: %d body(ies) read, %d computed, %d "
-               "written\n", dir.empty() ? "off" : dir.c_str(), B->radcache.hit, B->radcache.miss,
-               B->radcache.write);
+               "written, %d the same as an identical hull's\n", dir.empty() ? "off" : dir.c_str(),
+               B->radcache.hit, B->radcache.miss, B->radcache.write, B->radcache.same);
   int rc = 0;
   if (B->coef.empty()) {
     std::fprintf(stderr, "mjbuoy-hydro: %s has no hull body with radiation on; add <text "

@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cliopt.h"
+#include "guard.h"
 
 #include "mjbuoy_version.h"
 #include "util/cpus.h"
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Run sweeps of mjbuoy scenarios (docs/sweeps.md): locally in parallel processes "
                "or as a Slurm job array; merge the results into CSV, JUnit and plots."};
   app.set_version_flag("--version", std::string("mjbuoy-sweep ") + MJBUOY_VERSION_STRING);
+  mjbtool::installProgress("mjbuoy-sweep");
   app.require_subcommand(1);
   std::string file, out, shard = "0/1";
   int jobs = 1;
