@@ -122,6 +122,20 @@ static inline void laneEBlock(const TriIn& in, int f, int j, const double* const
   transpose<V, W>(ei);
 }
 
+// the radii of component j's loose series (TriIn sscale): the table of
+// the least b with 2^b >= |wp_j| sscale (b from x's binary exponent e,
+// x < 2^(e+1)), at least 1; from kSeriesBitsV on the lanes' own kSeriesRv
+template <int W>
+static inline const double* looseRadii(const TriIn& in, int j) {
+  const double x = __builtin_fabs(in.wp[0][j]) * in.sscale;
+  unsigned long u;
+  __builtin_memcpy(&u, &x, 8);
+  int b = int((u >> 52) & 0x7ff) - 1022;
+  if (x < 1) b = 1;
+  if (b >= kSeriesBitsV) return kSeriesRv;
+  return kSeriesRb + b * (kNMax + 1);
+}
+
 // the series sums of one exponent family f for the lanes (waveint_kern.h's
 // seriesChunk with lanes over pieces instead of components): acc[7] per
 // lane, S and T_c about corner 0 times e^L0, weighted; with the moments
@@ -139,6 +153,8 @@ static void familyLanes(const TriIn& in, int f, const double* const e0[W],
   // components past 40 / zx (k ascending) have e^L below e^-40 on the
   // piece: skipped per lane, as waveint.cc's jsk
   const V lim = zx > 0 ? 40 / zx : V{} + __builtin_inf();
+  // loose series only where |e^L0| <= 1 in every lane (zx >= 0)
+  const bool loose = in.sscale > 0 && TLanes<W>::all(zx >= 0);
   int N = 1;
   for (int j = 0; j < in.n;) {
     const I keep = in.k[j] <= lim;
@@ -149,7 +165,13 @@ static void familyLanes(const TriIn& in, int f, const double* const e0[W],
       V ur[2][2], ui[2][2], S[2][2], T[6] = {};
       laneU<W>(in, j, sgn, dz, dp, dl, ur[0], ui[0]);
       laneU<W>(in, j + 1, sgn, dz, dp, dl, ur[1], ui[1]);
-      N = termsFrom(N, in.k[j + 1] * rmax, kSeriesRv);
+      if (loose) {
+        const int N0 = termsFrom(1, in.k[j] * rmax, looseRadii<W>(in, j));
+        const int N1 = termsFrom(1, in.k[j + 1] * rmax, looseRadii<W>(in, j + 1));
+        N = N0 > N1 ? N0 : N1;
+      } else {
+        N = termsFrom(N, in.k[j + 1] * rmax, kSeriesRv);
+      }
       seriesPair<V>(ur, ui, N, S);
       laneAdd<W, false>(in, f, j, e0, keep, S[0], T, acc);
       laneAdd<W, false>(in, f, j + 1, e0, in.k[j + 1] <= lim, S[1], T, acc);
@@ -158,7 +180,8 @@ static void familyLanes(const TriIn& in, int f, const double* const e0[W],
     }
     V ur[2], ui[2], S[2], T[6];
     laneU<W>(in, j, sgn, dz, dp, dl, ur, ui);
-    N = termsFrom(N, in.k[j] * rmax, kSeriesRv);
+    N = loose ? termsFrom(1, in.k[j] * rmax, looseRadii<W>(in, j))
+              : termsFrom(N, in.k[j] * rmax, kSeriesRv);
     seriesLoop<V, MOM, true>(ur, ui, N, S, T);
     laneAdd<W, MOM>(in, f, j, e0, keep, S, T, acc);
     j++;
@@ -190,7 +213,15 @@ static void familyShared(const TriIn& in, int f, const double* const e0[W],
   int jn = 0;
   while (jn < in.n && in.k[jn] <= lmax) jn++;
   if (jn == 0) return;
-  const int nmax = termsFrom(1, in.k[jn - 1] * rmax, kSeriesRv);
+  const bool loose = in.sscale > 0 && TLanes<W>::all(zx >= 0);
+  int nmax = termsFrom(1, in.k[jn - 1] * rmax, kSeriesRv);
+  if (loose) {
+    nmax = 1;
+    for (int j = 0; j < jn; j++) {
+      const int Nj = termsFrom(1, in.k[j] * rmax, looseRadii<W>(in, j));
+      nmax = Nj > nmax ? Nj : nmax;
+    }
+  }
   if (nmax > kShareTerms) {
     familyLanes<W, MOM>(in, f, e0, zx, dz, dp, dl, rmax, acc);
     return;
@@ -216,7 +247,8 @@ static void familyShared(const TriIn& in, int f, const double* const e0[W],
     for (int i = 0; i < W && j + i < jn; i++) {
       const int c = j + i;
       V S[2], T[6] = {};
-      N = termsFrom(N, in.k[c] * rmax, kSeriesRv);
+      N = loose ? termsFrom(1, in.k[c] * rmax, looseRadii<W>(in, c))
+                : termsFrom(N, in.k[c] * rmax, kSeriesRv);
       hornerSums<V, MOM>(C, N, in.k[c], S, T);
       if (block) {
         laneAddE<W, MOM>(in, f, c, er[i], ei[i], in.k[c] <= lim, S, T, a);
