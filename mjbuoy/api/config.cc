@@ -91,6 +91,7 @@ static const Field kSeaFields[] = {
   {"viscosity", 1, 1e-8, 1, false, "m^2/s, kinematic", "1e-6"},
   {"current", 2, 0, 0, false, "m/s, x and y", "0.5 0", 0, kCurrentParts},
   {"ramp", 1, kRampRange.lo, kRampRange.hi, false, "s, 0 = off", "20"},
+  {"seriestol", 1, 0, 1e-4, false, "fraction of rho g V, 0 = exact", "1e-5"},
 };
 
 static const Field kWave = {"wave", 5, 0, 0, false,
@@ -400,6 +401,7 @@ static std::string parseNumeric(const mjModel* m, Config* c, HullEntries* he, bo
       if (f == kSeaFields + 3) s.nu = v[0];
       if (f == kSeaFields + 4) { s.current[0] = v[0]; s.current[1] = v[1]; }
       if (f == kSeaFields + 5) s.ramp = v[0];
+      if (f == kSeaFields + 6) s.seriestol = v[0];
     } else if (!std::strncmp(key, "wave.", 5) && key[5]) {
       std::string e = checkNumeric(m, i, kWave);
       if (!e.empty()) return e;

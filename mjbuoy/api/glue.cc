@@ -466,6 +466,7 @@ std::string makeHulls(Buoy* b) {
     h.par = B.cfg.param[k];
     h.radDrag = B.cfg.radDrag[k];
     h.area = 0;
+    h.vol = 0;
     // all that moves rigidly with it: a hull on a massless child welded to
     // its parent still stops the parent
     h.mass = m->body_subtreemass[m->body_weldid[h.body]];
@@ -481,7 +482,9 @@ std::string makeHulls(Buoy* b) {
       mju_cross(x, u, v);
       B.tarea.push_back(0.5 * mju_norm3(x));
       h.area += B.tarea.back();
+      h.vol += mju_dot3(a, x) / 6;  // V = sum a . (u x v) / 6 over a closed mesh
     }
+    h.vol = std::fabs(h.vol);
     if (!(h.area > 0)) {
       return std::string("mjbuoy: hull geom \"") + (m->names + m->name_geomadr[g]) +
              "\" has no surface area (no faces, or all faces degenerate); "

@@ -158,6 +158,10 @@ static TriIn triIn(const Pass1& q) {
     in.wz[f] = t.wz[f].data();
   }
   in.linear = !sea.kerner && in.nw > 0;
+  // the force bound tol rho g V split evenly among the n_f n series, over
+  // at most the hull's whole area (docs/physics.md "Series tolerance")
+  const double tv = sea.seriestol * q.hl.vol;
+  in.sscale = in.linear && tv > 0 ? 2 * q.hl.area * (t.finite ? 2 : 1) * in.n / tv : 0;
   in.rg = sea.rho * sea.g;
   in.level = sea.level;
   in.comz = q.com[2];

@@ -57,6 +57,11 @@ struct TriIn {
   double ldx, ldy, lgm;
   const double *wp[2], *wux[2], *wuy[2], *wz[2];
   int linear;  // linear pressure (dynamic part), else Kerner's rho g (eta - z)
+  // the loose series (mjbuoy.sea.seriestol): 2 S_hull n_f n / (tol V_hull)
+  // [1/m], so component j's S may omit 2^-b with 2^b >= |wp_j| sscale;
+  // 0: every series to the lanes' rounding (docs/physics.md "Series
+  // tolerance")
+  double sscale;
   double rg, level, comz, cur[2], dir[3];
   // written per triangle done, in the hull's scratch: wet area [m^2] at
   // k - t0, centroid (relative to the COM) [m], unit normal, mean water

@@ -122,12 +122,26 @@ static inline void laneEBlock(const TriIn& in, int f, int j, const double* const
   transpose<V, W>(ei);
 }
 
+// the radii of component j's loose series (TriIn sscale): the table of
+// the least b with 2^b >= |wp_j| sscale (b from x's binary exponent e,
+// x < 2^(e+1)), at least 1; from kSeriesBitsV on the lanes' own kSeriesRv
+template <int W>
+static inline const double* looseRadii(const TriIn& in, int j) {
+  const double x = __builtin_fabs(in.wp[0][j]) * in.sscale;
+  unsigned long u;
+  __builtin_memcpy(&u, &x, 8);
+  int b = int((u >> 52) & 0x7ff) - 1022;
+  if (x < 1) b = 1;
+  if (b >= kSeriesBitsV) return kSeriesRv;
+  return kSeriesRb + b * (kNMax + 1);
+}
+
 // the series sums of one exponent family f for the lanes (waveint_kern.h's
 // seriesChunk with lanes over pieces instead of components): acc[7] per
 // lane, S and T_c about corner 0 times e^L0, weighted; with the moments
 // (MOM) T2 by the sum rule (serieskern.h), without them two components at
-// a time (seriesPair)
-template <int W, bool MOM>
+// a time (seriesPair); LOOSE: each component's own term count (looseRadii)
+template <int W, bool MOM, bool LOOSE>
 static void familyLanes(const TriIn& in, int f, const double* const e0[W],
                         typename TLanes<W>::V zx, const typename TLanes<W>::V dz[2],
                         const typename TLanes<W>::V dp[2][2],
@@ -149,7 +163,13 @@ static void familyLanes(const TriIn& in, int f, const double* const e0[W],
       V ur[2][2], ui[2][2], S[2][2], T[6] = {};
       laneU<W>(in, j, sgn, dz, dp, dl, ur[0], ui[0]);
       laneU<W>(in, j + 1, sgn, dz, dp, dl, ur[1], ui[1]);
-      N = termsFrom(N, in.k[j + 1] * rmax, kSeriesRv);
+      if (LOOSE) {
+        const int N0 = termsFrom(1, in.k[j] * rmax, looseRadii<W>(in, j));
+        const int N1 = termsFrom(1, in.k[j + 1] * rmax, looseRadii<W>(in, j + 1));
+        N = N0 > N1 ? N0 : N1;
+      } else {
+        N = termsFrom(N, in.k[j + 1] * rmax, kSeriesRv);
+      }
       seriesPair<V>(ur, ui, N, S);
       laneAdd<W, false>(in, f, j, e0, keep, S[0], T, acc);
       laneAdd<W, false>(in, f, j + 1, e0, in.k[j + 1] <= lim, S[1], T, acc);
@@ -158,7 +178,8 @@ static void familyLanes(const TriIn& in, int f, const double* const e0[W],
     }
     V ur[2], ui[2], S[2], T[6];
     laneU<W>(in, j, sgn, dz, dp, dl, ur, ui);
-    N = termsFrom(N, in.k[j] * rmax, kSeriesRv);
+    N = LOOSE ? termsFrom(1, in.k[j] * rmax, looseRadii<W>(in, j))
+              : termsFrom(N, in.k[j] * rmax, kSeriesRv);
     seriesLoop<V, MOM, true>(ur, ui, N, S, T);
     laneAdd<W, MOM>(in, f, j, e0, keep, S, T, acc);
     j++;
@@ -175,8 +196,8 @@ enum { kShareTerms = 32 };
 // terms the largest kept k needs (seriesCoefs), and each component costs
 // a polynomial in its k (hornerSums): the same terms and term counts as
 // familyLanes, so the same accuracy (docs/physics.md "Dynamic part in
-// closed form")
-template <int W, bool MOM>
+// closed form"); LOOSE as familyLanes
+template <int W, bool MOM, bool LOOSE>
 static void familyShared(const TriIn& in, int f, const double* const e0[W],
                          typename TLanes<W>::V zx, const typename TLanes<W>::V dz[2],
                          const typename TLanes<W>::V dp[2][2],
@@ -190,9 +211,16 @@ static void familyShared(const TriIn& in, int f, const double* const e0[W],
   int jn = 0;
   while (jn < in.n && in.k[jn] <= lmax) jn++;
   if (jn == 0) return;
-  const int nmax = termsFrom(1, in.k[jn - 1] * rmax, kSeriesRv);
+  int nmax = termsFrom(1, in.k[jn - 1] * rmax, kSeriesRv);
+  if (LOOSE) {
+    nmax = 1;
+    for (int j = 0; j < jn; j++) {
+      const int Nj = termsFrom(1, in.k[j] * rmax, looseRadii<W>(in, j));
+      nmax = Nj > nmax ? Nj : nmax;
+    }
+  }
   if (nmax > kShareTerms) {
-    familyLanes<W, MOM>(in, f, e0, zx, dz, dp, dl, rmax, acc);
+    familyLanes<W, MOM, LOOSE>(in, f, e0, zx, dz, dp, dl, rmax, acc);
     return;
   }
   V wr[2], wi[2];
@@ -216,7 +244,8 @@ static void familyShared(const TriIn& in, int f, const double* const e0[W],
     for (int i = 0; i < W && j + i < jn; i++) {
       const int c = j + i;
       V S[2], T[6] = {};
-      N = termsFrom(N, in.k[c] * rmax, kSeriesRv);
+      N = LOOSE ? termsFrom(1, in.k[c] * rmax, looseRadii<W>(in, c))
+                : termsFrom(N, in.k[c] * rmax, kSeriesRv);
       hornerSums<V, MOM>(C, N, in.k[c], S, T);
       if (block) {
         laneAddE<W, MOM>(in, f, c, er[i], ei[i], in.k[c] <= lim, S, T, a);
@@ -285,14 +314,22 @@ static void laneIntegrals(const TriIn* in, const typename TLanes<W>::V p[3][3],
   V acc[7] = {};
   for (int f = 0; f < (in->finite ? 2 : 1); f++) {
     const V zx = f == 0 ? -zmax : zmin + 2 * in->depth;
-    if (in->linear && in->lc) {
-      familyShared<W, true>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+    // the loose series (sscale > 0 only with linear pressure) where |e^L0|
+    // <= 1 in every lane (zx >= 0; docs/physics.md "Series tolerance")
+    if (in->sscale > 0 && TLanes<W>::all(zx >= 0)) {
+      if (in->lc) {
+        familyShared<W, true, true>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+      } else {
+        familyLanes<W, true, true>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+      }
+    } else if (in->linear && in->lc) {
+      familyShared<W, true, false>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
     } else if (in->linear) {
-      familyLanes<W, true>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+      familyLanes<W, true, false>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
     } else if (in->lc) {
-      familyShared<W, false>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+      familyShared<W, false, false>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
     } else {
-      familyLanes<W, false>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
+      familyLanes<W, false, false>(*in, f, e0, zx, dz, dp, dl, rmax, acc);
     }
   }
   const V a2 = 2 * A;

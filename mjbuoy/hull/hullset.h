@@ -25,6 +25,7 @@ struct Hull {
   int v0, nv;         // vertex range in HullSet::vert
   int t0, nt;         // triangle range in HullSet::face
   double area;        // total surface area S_total [m^2]
+  double vol;         // enclosed volume |V| [m^3] (divergence theorem)
   double mass;        // body mass share of this hull (by area) [kg]
   double share;       // this hull's share (by area) of its rigid group's hulls
   double rad;         // largest vertex distance from the body origin [m]

@@ -50,6 +50,11 @@ struct Sea {
   // cosine from 0 at t = 0 to 1 at t = T (docs/physics.md section 6,
   // "Start-up ramp"); 0 switches the waves on at full amplitude
   double ramp = 0;
+  // the cpu lanes' series tolerance: 0 exact (to rounding); else their
+  // series stop once the omitted terms' pressure force is at most this
+  // fraction of rho g times the hull's volume (docs/physics.md "Series
+  // tolerance")
+  double seriestol = 0;
   std::vector<Wave> waves;
   // derived: the order of components in now(), Gerstner first, and how
   // many are Gerstner (the rest are Airy)

@@ -27,10 +27,45 @@ static void radii(int bits, double* rm) {
   }
 }
 
+// the bound on S's omitted tail after N terms at radius r: |h_m| <= (m+1)
+// r^m (m+1 monomials of size r^m), so |S - S_N| <= sum_(m>=N) (m+1) r^m /
+// (m+2)!; summed to m = N + 60, where the terms' ratio r (m+2) / ((m+1)
+// (m+3)) is below 1/15 for r <= kRMax, the rest a geometric series
+static double tailS(int N, double r) {
+  long double t = std::pow((long double)r, N) * (N + 1), s = 0;
+  for (int m = N + 2; m >= 2; m--) t /= m;  // (m+2)! at m = N
+  for (int m = N; m <= N + 60; m++) {
+    s += t;
+    t *= r * (m + 2) / ((long double)(m + 1) * (m + 3));
+  }
+  return double(s + t * 15 / 14);
+}
+
+// the largest r <= kRMax with tailS(N, r) <= 2^-b (bisection; tailS rises
+// with r), rounded down so the radius is never too large
+static void radiiTail(int b, double* rm) {
+  rm[0] = 0;
+  const double tol = std::ldexp(1.0, -b);
+  for (int N = 1; N <= kNMax; N++) {
+    double lo = 0, hi = kRMax;
+    if (tailS(N, hi) <= tol) {
+      rm[N] = hi;
+      continue;
+    }
+    for (int it = 0; it < 60; it++) {
+      const double mid = 0.5 * (lo + hi);
+      (tailS(N, mid) <= tol ? lo : hi) = mid;
+    }
+    rm[N] = lo;
+  }
+}
+
 // 1/(m+2)!, 1/(m+3)!, and the largest radius N terms serve: the scalar
-// reference's (seriesTerms) and the vector lanes' (kSeriesRv)
+// reference's (seriesTerms), the vector lanes' (kSeriesRv) and the loose
+// series' (kSeriesRb)
 struct Tables {
   double f2[kNMax], f3[kNMax], rm[kNMax + 1], rv[kNMax + 1];
+  double rb[kSeriesBitsV][kNMax + 1];
   Tables() {
     long double a = 0.5L, b = 1.0L / 6;
     for (int m = 0; m < kNMax; m++) {
@@ -41,6 +76,7 @@ struct Tables {
     }
     radii(54, rm);
     radii(kSeriesBitsV, rv);
+    for (int b = 1; b < kSeriesBitsV; b++) radiiTail(b, rb[b]);
   }
 };
 static const Tables kTab;
@@ -48,6 +84,7 @@ const double* kInvF2 = kTab.f2;
 const double* kInvF3 = kTab.f3;
 const double* kSeriesR = kTab.rm;
 const double* kSeriesRv = kTab.rv;
+const double* kSeriesRb = &kTab.rb[0][0];
 
 int seriesTerms(double r) {
   int N = 1;

@@ -51,6 +51,11 @@ extern const double* kSeriesR;
 static const int kSeriesBitsV = 40;
 // the largest radius N terms serve in the vector lanes (kSeriesR's kind)
 extern const double* kSeriesRv;
+// the loose series of mjbuoy.sea.seriestol (docs/physics.md "Series
+// tolerance"): for bits b in [1, kSeriesBitsV), kSeriesRb + b (kNMax + 1)
+// holds the largest radius N terms serve when the whole omitted tail of S,
+// sum_(m>=N) (m+1) r^m / (m+2)!, must stay at or below 2^-b
+extern const double* kSeriesRb;
 // 1/(m+2)! and 1/(m+3)! for m < kNMax
 extern const double* kInvF2;
 extern const double* kInvF3;

@@ -38,6 +38,7 @@ static std::string gsea = "swell";  // flat, swell (one Gerstner wave), jonswap,
 static double gradiation = -1;  // --radiation: memory length [s]; < 0: off
 static std::string gradmem;     // --radiation-memory: mjbuoy.radiation.memorymodel, "": default
 static bool gwarmmem = false;   // --warm-memory: warm up until every radiation memory is full
+static double gseriestol = 0;  // --seriestol: mjbuoy.sea.seriestol, 0: left out (exact)
 static bool gradoff = false;    // --radiation-off: mjbuoy.radiation off (on by default)
 
 // --radiation: every boat gets synthetic coefficients of the Wigley's
@@ -125,6 +126,9 @@ static std::string scene(const std::string& meshes, int boats, int tris) {
   if (gthreads >= 0) s << "<numeric name=\"mjbuoy.threads\" data=\"" << gthreads << "\"/>";
   if (!gradmem.empty()) s << "<text name=\"mjbuoy.radiation.memorymodel\" data=\"" << gradmem << "\"/>";
   if (gradoff) s << "<text name=\"mjbuoy.radiation\" data=\"off\"/>";
+  if (gseriestol > 0) {
+    s << "<numeric name=\"mjbuoy.sea.seriestol\" data=\"" << gseriestol << "\"/>";
+  }
   s << lineEntries(boats) << "</custom><worldbody>";
   int side = std::ceil(std::sqrt(boats));
   for (int i = 0; i < boats; i++) {
@@ -552,6 +556,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"statespace", "convolution"}));
   app.add_flag("--radiation-off", gradoff, "mjbuoy.radiation off: no panel solve, added mass "
                "or memory (the boats are free, so it is on by default)");
+  app.add_option("--seriestol", gseriestol, "mjbuoy.sea.seriestol: the cpu lanes' series "
+                 "tolerance as a fraction of rho g V (0, the default: exact; not passed to "
+                 "--baseline)")
+      ->check(CLI::Range(0.0, 1e-4));
   app.add_flag("--warm-memory", gwarmmem, "warm up until every boat's radiation memory "
                "history is full (its steady cost; about memory length / timestep steps, "
                "seconds to minutes for large cells) instead of 5 steps");
