@@ -505,7 +505,8 @@ static void placeBody(RadBody&& rb, Radiation* r) {
     // the history ring serves the convolution; a state-space body needs
     // only its first and newest samples (the clock counts to 2)
     r->nh = std::max(r->nh, x.ss.size() ? std::min(x.nk, 2) : x.nk);
-    r->nsh = std::max(r->nsh, x.nls);
+    // the speed terms' ring serves the convolution only (radstep.cc speedForce)
+    r->nsh = std::max(r->nsh, x.ss.size() ? 1 : x.nls);
   }
 }
 

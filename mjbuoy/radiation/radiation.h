@@ -112,7 +112,8 @@ struct RadState {
   std::vector<double> sstep; // per body 2: immersion factor at the last step's time, this step's
   int head = 0, count = 0;   // newest sample, samples held
   // per body 2 rings of nsh: the wetted sway and heave velocities (body axes, at ref)
-  // the forward-speed terms read (radspeed.h); their newest sample and count
+  // the forward-speed terms of a convolution body read (radspeed.h; a state-space
+  // body's come from its modes' states); their newest sample and count
   std::vector<double> shist;
   int shead = 0, scount = 0;
   long key = -1;             // mjTIMER_STEP count at the last call (-1: none)

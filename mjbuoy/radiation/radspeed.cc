@@ -47,4 +47,19 @@ double speedConv(const std::vector<double>& L, int n, int j, const double* ring,
   return dt * s;
 }
 
+void speedSs(const SsModes& sm, SsState s, double h, double out[2], const cplx* lam) {
+  if (!lam) lam = sm.lam.data();
+  out[0] = out[1] = 0;
+  for (int r = 0; r < sm.size(); r++) {
+    const int j = sm.j[r];
+    if (sm.i[r] != j || j < 1 || j > 2) continue;
+    const cplx l = lam[r];
+    // L_k = h sum_m w_m K_m (trapezoid to k) = G - h Re sum c lam^k (1 + lam) / (2 (1 - lam)),
+    // G = h Re sum c (1 / (1 - lam) - 1/2) the fit's trapezoid steady gain
+    const cplx d = sm.c[r] * (0.5 * h) * (1.0 + l) / (l - 1.0);
+    const cplx v = l * s.X[r] + 0.5 * (s.last[j] - s.pw[r] * s.first[j]);
+    out[j - 1] += h * (d * v).real();
+  }
+}
+
 }  // namespace mjb

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "radiation/hydrocoef.h"
+#include "radiation/radfit.h"
 
 namespace mjb {
 
@@ -22,6 +23,15 @@ void speedKernels(const HydroCoef& c, double tmem, double dt, std::vector<double
 // times N s/m: N s]; j 0 sway, 1 heave
 double speedConv(const std::vector<double>& L, int n, int j, const double* ring, int nh,
                  int head, int count, double dt);
+
+// the same from a state-space memory's own per-mode states (radfit.h), in
+// O(modes): the trapezoid integral of the fitted K_jj = Re sum c lam^k,
+// less its limit (the fit's steady gain, 0), is L_k = Re sum d lam^k with
+// d = c (h/2) (1 + lam) / (lam - 1) (-> c/p as h -> 0), convolved as ssForce
+// does; out[0] sway, out[1] heave [N s]; a pair without modes gives 0, as
+// its memory does (docs/physics.md section 14, "Forward speed").
+// lam: the modes' exp(p h) at the step h in force (nullptr: sm.lam)
+void speedSs(const SsModes& sm, SsState s, double h, double out[2], const cplx* lam = nullptr);
 
 }  // namespace mjb
 

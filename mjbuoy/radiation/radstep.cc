@@ -382,9 +382,20 @@ void advanceSpeedHistory(const Radiation& r, int tick, RadState* s) {
 // Salvesen-Tuck-Faltinsen's forward-speed terms that body axes and the
 // Kirchhoff terms leave out: pitch U (L33 * w), yaw -U (L22 * v), U the
 // surge speed through the water, w and v the wetted heave and sway
-// velocities recorded (docs/physics.md section 14, "Forward speed"); added to fm
-void speedForce(const Radiation& r, const RadBody& rb, size_t ib, double u, const double nu[6],
-                RadState* s, double* fm) {
+// velocities recorded (docs/physics.md section 14, "Forward speed"); added to fm.
+// A state-space memory's own states give them (radspeed.h speedSs), else the ring
+void speedForce(const Radiation& r, const RadBody& rb, size_t ib, double u, bool moved,
+                double h, const double nu[6], RadState* s, double* fm) {
+  if (rb.ss.size()) {
+    // the state-space memory's states, just advanced by memoryForce: O(modes)
+    SsState st{s->ssX.data() + rb.soff, s->ssPw.data() + rb.soff, s->ssNu.data() + 12 * ib,
+               s->ssNu.data() + 12 * ib + 6};
+    double c[2];
+    speedSs(rb.ss, st, h, c, moved ? s->ssLam.data() + rb.soff : nullptr);
+    fm[4] += u * c[1];
+    fm[5] -= u * c[0];
+    return;
+  }
   double* ring = s->shist.data() + 2 * r.nsh * ib;
   ring[s->shead] = nu[1];
   ring[r.nsh + s->shead] = nu[2];
@@ -428,9 +439,9 @@ void radiateBody(const Radiation& r, const mjModel* m, mjData* d, RadState* s, c
   for (int j = 0; j < 6; j++) nu[j] *= si;
   double* fm = s->fmem.data() + 6 * ib;
   memoryForce(r, rb, ib, tick, moved, h, nu, s, fm);
-  // at the step of attach only, like the convolution
-  if (rb.nls && (rb.nk || rb.ss.size()) && !moved && tick != kTickMid)
-    speedForce(r, rb, ib, u, nu, s, fm);
+  // the convolution's at the step of attach only; the state space's at any
+  if (rb.nls && (rb.ss.size() || (rb.nk && !moved)) && tick != kTickMid)
+    speedForce(r, rb, ib, u, moved, h, nu, s, fm);
   for (int j = 0; j < 6; j++) W[j] += si * fm[j];
 
   if (!std::isfinite(dot6(W, W))) {
