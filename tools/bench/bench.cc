@@ -373,22 +373,11 @@ static int compareGrid(const std::string& base, const std::string& meshes,
                        const std::vector<std::string>& backends,
                        const std::vector<Kind>& kinds,
                        int steps, int reps, std::vector<CmpCell>* out) {
-  char exe[4096];
-  ssize_t n = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
-  if (n <= 0) {
-    std::fprintf(stderr, "mjbuoy-bench: --baseline: cannot find this executable\n");
-    return 1;
-  }
-  exe[n] = 0;
-  // the children's JSON and stderr: a private directory in $TMPDIR (or /tmp)
-  const char* td = std::getenv("TMPDIR");
-  std::string tmpl = std::string(td && *td ? td : "/tmp") + "/mjbuoy-bench-XXXXXX";
-  const char* dir = mkdtemp(&tmpl[0]);
-  if (!dir) {
-    std::fprintf(stderr, "mjbuoy-bench: --baseline: cannot create a directory like %s: %s\n",
-                 tmpl.c_str(), std::strerror(errno));
-    return 1;
-  }
+  // the children's JSON and stderr: a private directory (benchscene.h)
+  std::string self, tmp;
+  if (!mjbtool::baselineSetup(&self, &tmp)) return 1;
+  const char* exe = self.c_str();
+  const char* dir = tmp.c_str();
   // a lines column only when some cell is moored (--lines): the unmoored
   // table keeps its columns
   bool anyLines = false;

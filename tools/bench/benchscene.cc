@@ -7,7 +7,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <vector>
 
@@ -154,22 +156,31 @@ int benchScene(const SceneArgs& a) {
   return 0;
 }
 
-int compareScene(const SceneArgs& a, const std::string& base) {
-  char exe[4096];
-  ssize_t n = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
+bool baselineSetup(std::string* exe, std::string* dir) {
+  char buf[4096];
+  ssize_t n = readlink("/proc/self/exe", buf, sizeof(buf) - 1);
   if (n <= 0) {
     std::fprintf(stderr, "mjbuoy-bench: --baseline: cannot find this executable\n");
-    return 1;
+    return false;
   }
-  exe[n] = 0;
+  buf[n] = 0;
+  *exe = buf;
   const char* td = std::getenv("TMPDIR");
   std::string tmpl = std::string(td && *td ? td : "/tmp") + "/mjbuoy-bench-XXXXXX";
-  const char* dir = mkdtemp(&tmpl[0]);
-  if (!dir) {
-    std::fprintf(stderr, "mjbuoy-bench: --baseline: cannot create a directory like %s\n",
-                 tmpl.c_str());
-    return 1;
+  if (!mkdtemp(&tmpl[0])) {
+    std::fprintf(stderr, "mjbuoy-bench: --baseline: cannot create a directory like %s: %s\n",
+                 tmpl.c_str(), std::strerror(errno));
+    return false;
   }
+  *dir = tmpl;
+  return true;
+}
+
+int compareScene(const SceneArgs& a, const std::string& base) {
+  std::string self, tmp;
+  if (!baselineSetup(&self, &tmp)) return 1;
+  const char* exe = self.c_str();
+  const char* dir = tmp.c_str();
   std::vector<std::string> args = {"--scene", a.file, "--steps", std::to_string(a.steps),
                                    "--reps", "1"};
   if (!a.backend.empty()) args.insert(args.end(), {"--backend", a.backend});

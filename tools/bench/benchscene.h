@@ -28,6 +28,11 @@ int benchScene(const SceneArgs& a);
 // --scene)
 int compareScene(const SceneArgs& a, const std::string& base);
 
+// --baseline's setup: this executable's path into exe and a fresh private
+// directory in $TMPDIR (or /tmp) for the children's JSON and stderr into
+// dir; false after a message on stderr
+bool baselineSetup(std::string* exe, std::string* dir);
+
 }  // namespace mjbtool
 
 #endif  // MJBUOY_TOOLS_BENCHSCENE_H_
