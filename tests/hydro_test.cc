@@ -28,8 +28,11 @@ TEST(Hydro, TowResistanceFollowsITTC57) {
   // steady speed the servo force is the resistance. By hand: wetted area
   // S = bottom + 2 sides = L B + 2 L T = 3 m^2 (the end faces meet the flow
   // head-on and feel no shear), Rn = V L / nu,
-  // C_F = 0.075 / (log10 Rn - 2)^2, R = 0.5 rho C_F (1+k) S V^2, 1+k = 1.3
-  Scene s(box(kViscousOnly, "<joint name=\"x\" type=\"slide\" axis=\"1 0 0\"/>",
+  // C_F = 0.075 / (log10 Rn - 2)^2, R = 0.5 rho C_F (1+k) S V^2, 1+k = 1.3.
+  // Radiation off: the viscous part alone, at 4 s of tow (with radiation on
+  // the memory's fitted modes need longer to pass: the next test)
+  Scene s(box(std::string(kViscousOnly) + "<text name=\"mjbuoy.radiation\" data=\"off\"/>",
+              "<joint name=\"x\" type=\"slide\" axis=\"1 0 0\"/>",
               "<actuator><velocity joint=\"x\" kv=\"1e5\"/></actuator>"));
   ASSERT_TRUE(s.ok()) << s.err;
   for (double V : {0.5, 1.0, 2.0}) {

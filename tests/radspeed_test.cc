@@ -19,20 +19,6 @@ namespace {
 
 using mjbt::Scene;
 
-// a shipped model (models/) with radiation on and extra custom entries
-std::string shippedModel(const char* file, const std::string& extra) {
-  std::ifstream in(std::string(MJB_MODELS "/") + file);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string x = ss.str();
-  size_t md = x.find("meshdir=\"meshes\"");
-  if (md != std::string::npos) x.replace(md, 16, "meshdir=\"" MJB_MODELS "/meshes\"");
-  size_t at = x.find("<custom>");
-  if (at != std::string::npos)
-    x.insert(at + 8, "<text name=\"mjbuoy.radiation\" data=\"on\"/>" + extra);
-  return x;
-}
-
 // (L_j * nu)(t) for nu(s) = w cos(w s) (a unit-amplitude oscillation
 // z = sin(w s)) at w t = phase, over a full ring of rb's memory
 double convAt(const mjb::RadBody& rb, int j, double dt, double w, double phase) {
@@ -80,7 +66,7 @@ double ssConvAt(const mjb::RadBody& rb, int j, double dt, double w, double phase
 // section 14, "High-frequency tail": within 3% on this barge)
 TEST(RadSpeed, MemoryTermsAreSTFsCorrectionsAtEachFrequency) {
   // (the 2 x 1 m barge is not slender: its terms are asked for)
-  Scene s(shippedModel("barge.xml", "<text name=\"mjbuoy.radiation.speed\" data=\"on\"/>"));
+  Scene s(mjbt::shippedModel("barge.xml", "<text name=\"mjbuoy.radiation.speed\" data=\"on\"/>"));
   ASSERT_TRUE(s.ok()) << s.err;
   const mjb::Buoy* B = mjb::buoyOf(s.b);
   const mjb::HydroCoef& c = B->coef[0].second;
@@ -157,7 +143,7 @@ TEST(RadSpeed, MemoryTermsAreSTFsCorrectionsAtEachFrequency) {
 // shipped convolution uses (rb.Ls), the fit's own error (errT <= kFitTolT
 // on K) carries over: bound 3 kFitTolT of the largest |L * nu|
 TEST(RadSpeed, StateSpacePathIsTheConvolutionOfTheFittedKernel) {
-  Scene s(shippedModel("wigley.xml", ""));
+  Scene s(mjbt::shippedModel("wigley.xml", ""));
   ASSERT_TRUE(s.ok()) << s.err;
   const mjb::Buoy* B = mjb::buoyOf(s.b);
   const mjb::RadBody& rb = B->rad.rb[0];
@@ -227,7 +213,7 @@ TEST(RadSpeed, StateSpacePathIsTheConvolutionOfTheFittedKernel) {
 // Wigley, 4 x 0.5 m: A11_inf / A22_inf measured below) and not to the
 // 2 x 1 m barge; off to none; a wrong value is named
 TEST(RadSpeed, DefaultIsForSlenderHulls) {
-  Scene w(shippedModel("wigley.xml", "")), b(shippedModel("barge.xml", ""));
+  Scene w(mjbt::shippedModel("wigley.xml", "")), b(mjbt::shippedModel("barge.xml", ""));
   ASSERT_TRUE(w.ok() && b.ok()) << w.err << b.err;
   const mjb::Buoy* W = mjb::buoyOf(w.b);
   const mjb::Buoy* Bb = mjb::buoyOf(b.b);
@@ -237,10 +223,12 @@ TEST(RadSpeed, DefaultIsForSlenderHulls) {
               "samples at %g s\n", aw[0] / aw[7], ab[0] / ab[7], W->rad.rb[0].nls, W->rad.dt);
   EXPECT_GT(W->rad.rb[0].nls, 1);
   EXPECT_EQ(Bb->rad.rb[0].nls, 0);
-  Scene off(shippedModel("wigley.xml", "<text name=\"mjbuoy.radiation.speed\" data=\"off\"/>"));
+  Scene off(
+      mjbt::shippedModel("wigley.xml", "<text name=\"mjbuoy.radiation.speed\" data=\"off\"/>"));
   ASSERT_TRUE(off.ok()) << off.err;
   EXPECT_EQ(mjb::buoyOf(off.b)->rad.rb[0].nls, 0);
-  Scene bad(shippedModel("barge.xml", "<text name=\"mjbuoy.radiation.speed\" data=\"fast\"/>"));
+  Scene bad(
+      mjbt::shippedModel("barge.xml", "<text name=\"mjbuoy.radiation.speed\" data=\"fast\"/>"));
   EXPECT_FALSE(bad.ok());
   EXPECT_NE(bad.err.find("mjbuoy.radiation.speed"), std::string::npos) << bad.err;
   EXPECT_NE(bad.err.find("auto"), std::string::npos) << bad.err;

@@ -20,20 +20,6 @@
 namespace mjbt {
 namespace {
 
-// a shipped model (models/) with radiation on and extra custom entries
-std::string shipped(const char* file, const std::string& extra) {
-  std::ifstream in(std::string(MJB_MODELS "/") + file);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string x = ss.str();
-  size_t md = x.find("meshdir=\"meshes\"");
-  if (md != std::string::npos) x.replace(md, 16, "meshdir=\"" MJB_MODELS "/meshes\"");
-  size_t at = x.find("<custom>");
-  if (at != std::string::npos)
-    x.insert(at + 8, "<text name=\"mjbuoy.radiation\" data=\"on\"/>" + extra);
-  return x;
-}
-
 // a box hull of half sizes hx hy hz and mass rho * wet volume (so it floats
 // at draft T), free, radiation on, extra custom entries
 std::string boxXML(double hx, double hy, double hz, double T, const std::string& extra) {
@@ -177,7 +163,7 @@ TEST(RadTail, KramersKronigHoldsWithTheDefaultRange) {
   // solver computed above w_N
   struct Case { const char* file; double tol33; };
   for (const Case& k : {Case{"barge.xml", 0.03}, Case{"cylinder.xml", 0.10}}) {
-    Scene s(shipped(k.file, ""));
+    Scene s(mjbt::shippedModel(k.file, ""));
     ASSERT_TRUE(s.ok()) << s.err;
     const mjb::HydroCoef& c = mjb::buoyOf(s.b)->coef[0].second;
     std::string r0, r1;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -128,6 +130,23 @@ double bisect(F f, double lo, double hi, double tol = 1e-13) {
   }
   return 0.5 * (lo + hi);
 }
+
+#ifdef MJB_MODELS
+// a shipped model (models/) with radiation on and extra custom entries,
+// its meshes found from anywhere
+inline std::string shippedModel(const char* file, const std::string& extra) {
+  std::ifstream in(std::string(MJB_MODELS "/") + file);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string x = ss.str();
+  size_t md = x.find("meshdir=\"meshes\"");
+  if (md != std::string::npos) x.replace(md, 16, "meshdir=\"" MJB_MODELS "/meshes\"");
+  size_t at = x.find("<custom>");
+  if (at != std::string::npos)
+    x.insert(at + 8, "<text name=\"mjbuoy.radiation\" data=\"on\"/>" + extra);
+  return x;
+}
+#endif
 
 }  // namespace mjbt
 
