@@ -619,6 +619,15 @@ def messages(tools, models, tmp):
     open(sc, "w").write('<scenario model="barge.xml" duration="1e-9"><check kind="finite"/></scenario>')
     p = run([exe("mjbuoy-scenario"), sc], cwd=tmp)
     refused(p, "a scenario of duration 1e-9 s", "0 steps")
+    # more steps than a double counts exactly (guard.h kMaxSteps): refused
+    # with the bound, not cast to an undefined long
+    fine = os.path.join(tmp, "fine.xml")
+    open(fine, "w").write(open(model).read().replace('timestep="0.002"', 'timestep="1e-9"'))
+    p = run([exe("mjbuoy-sim"), fine, "--duration", "1e9"], cwd=tmp)
+    refused(p, "mjbuoy-sim --duration 1e9 at a 1e-9 s step", "1e+15 steps", "shorter duration")
+    open(sc, "w").write('<scenario model="barge.xml" duration="1e300"><check kind="finite"/></scenario>')
+    p = run([exe("mjbuoy-scenario"), sc], cwd=tmp)
+    refused(p, "a scenario of duration 1e300 s", "1e+15 steps")
     for v in ("nan", "inf", "1 nan"):
         p = run([exe("mjbuoy-sim"), model, "--print-sea", "--set", "mjbuoy.wind.speed=" + v], cwd=tmp)
         refused(p, "--set mjbuoy.wind.speed=" + v, "mjbuoy.wind.speed", "finite")

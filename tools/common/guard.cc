@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "cliopt.h"
 #include "mjbuoy.h"
 
 namespace mjbtool {
@@ -60,8 +61,22 @@ bool diverged(const mjData* d, std::string* why) {
 
 long stepsFor(double duration, double dt) {
   double n = duration / dt;
+  if (!(n < kMaxSteps)) return -1;  // NaN, Inf or beyond a long's exact range
   double r = std::round(n);
   return (long)(std::fabs(n - r) < 1e-6 ? r : std::ceil(n));
+}
+
+long runSteps(double duration, double dt, std::string* why) {
+  long n = stepsFor(duration, dt);
+  if (n >= 1) return n;
+  if (n == 0 || duration <= 0) {
+    *why = "duration = " + bound(duration) + " s is less than one time step (" + bound(dt) +
+           " s): the run would take 0 steps; give a duration of at least one time step";
+  } else {
+    *why = "duration = " + bound(duration) + " s at a time step of " + bound(dt) +
+           " s is more than " + bound(kMaxSteps) + " steps; give a shorter duration";
+  }
+  return 0;
 }
 
 }  // namespace mjbtool

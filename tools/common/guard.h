@@ -30,9 +30,17 @@ std::string lastMujocoWarning();
 // counted in d->warning); why: what and MuJoCo's text
 bool diverged(const mjData* d, std::string* why);
 
+// the most steps a run may take (a double counts them exactly below 2^53)
+constexpr double kMaxSteps = 1e15;
+
 // steps of dt that reach duration (rounded to the nearest step within
-// 1e-6 of one; a loop bound independent of d->time)
+// 1e-6 of one; a loop bound independent of d->time); -1 when that is not
+// a finite count below kMaxSteps
 long stepsFor(double duration, double dt);
+
+// the validated step count of a run (>= 1), or 0 with why naming the
+// duration, the time step and the accepted range
+long runSteps(double duration, double dt, std::string* why);
 
 }  // namespace mjbtool
 

@@ -221,10 +221,8 @@ std::unique_ptr<Sim> loadScenario(Scenario& s, const std::string& backend) {
   sim->m = mjbtool::loadModel(s.model, &xml, "mjbuoy-scenario", &lerr);
   if (!sim->m) throw Invalid(s.file, s.line, lerr);  // "cannot load MODEL: reason"
   if (s.timestep > 0) sim->m->opt.timestep = s.timestep;
-  if (mjbtool::stepsFor(s.duration, sim->m->opt.timestep) < 1) {
-    throw Invalid(s.file, s.line, "duration = " + num(s.duration) + " s is less than one time "
-                  "step (" + num(sim->m->opt.timestep) + " s): the run would take 0 steps");
-  }
+  std::string why;
+  if (mjbtool::runSteps(s.duration, sim->m->opt.timestep, &why) < 1) throw Invalid(s.file, s.line, why);
   bool energy = false;
   for (const Check& c : s.checks) energy = energy || c.kind == Kind::ENERGY;
   if (energy) sim->m->opt.enableflags |= mjENBL_ENERGY;

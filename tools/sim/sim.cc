@@ -282,10 +282,9 @@ int main(int argc, char** argv) {
     }
   }
   mjModel* m = sc.m;
-  if (mjbtool::stepsFor(duration, m->opt.timestep) < 1) {
-    std::fprintf(stderr, "mjbuoy-sim: --duration %s s is less than one time step (%s s): the run "
-                 "would take 0 steps; give a duration of at least one time step\n",
-                 mjbtool::bound(duration).c_str(), mjbtool::bound(m->opt.timestep).c_str());
+  std::string why;
+  if (mjbtool::runSteps(duration, m->opt.timestep, &why) < 1) {
+    std::fprintf(stderr, "mjbuoy-sim: --%s\n", why.c_str());
     return 1;
   }
   {
