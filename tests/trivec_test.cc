@@ -75,6 +75,8 @@ std::string scene(const std::string& sea, const char* pm, int th) {
   s << "<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" MJB_MODELS
     << "/meshes/wigley_576.obj\"/></asset><custom><text name=\"mjbuoy.hulls\" data=\"h*\"/>"
     << sea << "<text name=\"mjbuoy.sea.pressure\" data=\"" << pm << "\"/>"
+    // radiation is no triangle lane's work: off, so no case solves panels
+    << "<text name=\"mjbuoy.radiation\" data=\"off\"/>"
     << "<numeric name=\"mjbuoy.threads\" data=\"" << th << "\"/></custom><worldbody>"
     << "<body pos=\"0 0 -0.02\" euler=\"6 -3 30\"><freejoint/><inertial pos=\"0 0 -0.08\" "
     << "mass=\"176.2\" diaginertia=\"6.02 237.28 238.6\"/><geom name=\"h0\" type=\"mesh\" "
