@@ -78,6 +78,15 @@ if [ $run_sanitize = 1 ]; then
   # the 7744-triangle cases (label release-only, tests/CMakeLists.txt) ran
   # in the release phase; the 2800-triangle ones take their code paths here
   asan_exclude=(-LE 'soak|panel|release-only')
+  # long simulations whose code paths shorter cases reach under the
+  # sanitizers (docs/testing.md "Sanitizers"): the drag-exponent turning
+  # circles (TriVec's exponent cases), the ramp's 60 s drift runs
+  # (Ramp.BackendsSeeTheRampedAmplitude), the fleet scenario
+  # (Models.FleetRidesTheWaves) and the two JONSWAP Wigley scenarios
+  # (soak.W64_JONSWAP_long, TriVec's JONSWAP cases); they run in the
+  # release phase
+  asan_long='^(Hydro\.TurningRadiusShrinksWithLowerDragExponents|Ramp\.(DefaultRampLeavesADownwaveDrift|StartUpDriftIsTheLinearTransientAndTheRampRemovesIt)|scenario\.(fleet|wigley_256_jonswap_tp[0-9]+))$'
+  asan_exclude+=(-E "$asan_long")
   [ ${#exclude[@]} = 0 ] && asan_exclude=()
   phase "sanitize tests" ctest --test-dir "$asan" --output-on-failure -j"$jobs" \
     "${asan_exclude[@]+"${asan_exclude[@]}"}" "${args[@]+"${args[@]}"}"
