@@ -82,6 +82,15 @@ MJB_API int mjb_checkMeshFile(const char* path, char* error, int error_sz);
 // The model must stay alive and unchanged until mjb_detach.
 MJB_API mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz);
 
+// mjb_attach with radiation (and so diffraction and drift) off whatever
+// the model's mjbuoy.radiation entries say; they are still checked. No
+// panel solve and no cache read; the hulls take the drag defaults of a
+// model without radiation (docs/physics.md section 16). For a look at the
+// sea or the hulls that needs no hydrodynamic coefficients
+// (mjbuoy-sim --print-sea); a model with radiation on moves differently
+MJB_API mjbBuoy* mjb_attachWithoutRadiation(const mjModel* m, const char* backend, char* error,
+                                            int error_sz);
+
 // detach: stop adding forces to this model and free everything. The handle
 // is invalid afterwards. mjb_detach(NULL), and a handle that is not attached
 // (already detached) as long as no later mjb_attach returned the same
