@@ -87,16 +87,13 @@ TEST(RadFit, HemisphereStateSpaceMatchesTheConvolution) {
   std::printf("[radfit] hemisphere: %zu pairs, %d samples, %d modes\n", rb.pair.size(), rb.nk,
               rb.ss.size());
   const int ns = int(20 / h);
-  std::vector<std::vector<double>> v(6);
-  for (int j = 0; j < 6; j++) v[j] = randomVelocity(ns, h, 0.3, 11 + j);
   double e2[6], f2[6];
-  ssAgainstConvolution(rb, h, v, e2, f2);
+  ssAgainstConvolution(rb, h, ns, 11, e2, f2);
   // the scale of dof i: the largest RMS force of its kind (translation or
   // rotation), so that yaw, nothing but panel noise on a body of
   // revolution, is held to the roll and pitch moments' size
   for (int i = 0; i < 6; i++) {
-    double sc = 0;
-    for (int k = 3 * (i / 3); k < 3 * (i / 3) + 3; k++) sc = std::max(sc, f2[k]);
+    const double sc = kindScale(f2, i);
     std::printf("[radfit] dof %d: rms difference %.4f of rms force %.4g (scale %.4g)\n", i,
                 std::sqrt(e2[i] / f2[i]), std::sqrt(f2[i] / ns), std::sqrt(sc / ns));
     EXPECT_LT(std::sqrt(e2[i] / sc), 0.03) << "dof " << i;

@@ -43,18 +43,19 @@ inline std::vector<double> randomVelocity(int n, double h, double tau, unsigned 
   return v;
 }
 
-// rb's memory force with the velocity v (six dofs, one sample per step h)
-// from its state-space modes (radfit.h) and from the convolution of its
-// sampled K (the reference), summed over the steps per dof: e2 the squared
-// difference, f2 the squared convolution force
-inline void ssAgainstConvolution(const mjb::RadBody& rb, double h,
-                                 const std::vector<std::vector<double>>& v, double e2[6],
-                                 double f2[6]) {
+// rb's memory force over ns steps h of a random velocity in all six dofs
+// (randomVelocity, tau 0.3 s, dof j from seed + j) from its state-space
+// modes (radfit.h) and from the convolution of its sampled K (the
+// reference), summed over the steps per dof: e2 the squared difference,
+// f2 the squared convolution force
+inline void ssAgainstConvolution(const mjb::RadBody& rb, double h, int ns, unsigned seed,
+                                 double e2[6], double f2[6]) {
+  std::vector<std::vector<double>> v(6);
+  for (int j = 0; j < 6; j++) v[j] = randomVelocity(ns, h, 0.3, seed + j);
   std::vector<mjb::cplx> X(rb.ss.size()), pw(rb.ss.size());
   double first[6], last[6], nu[6], F[6];
   mjb::SsState st{X.data(), pw.data(), first, last};
   for (int i = 0; i < 6; i++) e2[i] = f2[i] = 0;
-  const int ns = v[0].size();
   for (int k = 0; k < ns; k++) {
     for (int j = 0; j < 6; j++) nu[j] = v[j][k];
     if (k == 0) mjb::ssRestart(rb.ss, st, nu);
@@ -70,6 +71,14 @@ inline void ssAgainstConvolution(const mjb::RadBody& rb, double h,
       f2[i] += Fc[i] * Fc[i];
     }
   }
+}
+
+// the scale of dof i's squared force sums f2: the largest of its kind
+// (translation or rotation)
+inline double kindScale(const double f2[6], int i) {
+  double sc = 0;
+  for (int k = 3 * (i / 3); k < 3 * (i / 3) + 3; k++) sc = std::max(sc, f2[k]);
+  return sc;
 }
 
 }  // namespace mjbt
