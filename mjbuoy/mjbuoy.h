@@ -82,6 +82,15 @@ MJB_API int mjb_checkMeshFile(const char* path, char* error, int error_sz);
 // The model must stay alive and unchanged until mjb_detach.
 MJB_API mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz);
 
+// mjb_attach with radiation (and so diffraction and drift) off whatever
+// the model's mjbuoy.radiation entries say; they are still checked. No
+// panel solve and no cache read; the hulls take the drag defaults of a
+// model without radiation (docs/physics.md section 16). For a look at the
+// sea or the hulls that needs no hydrodynamic coefficients
+// (mjbuoy-sim --print-sea); a model with radiation on moves differently
+MJB_API mjbBuoy* mjb_attachWithoutRadiation(const mjModel* m, const char* backend, char* error,
+                                            int error_sz);
+
 // detach: stop adding forces to this model and free everything. The handle
 // is invalid afterwards. mjb_detach(NULL), and a handle that is not attached
 // (already detached) as long as no later mjb_attach returned the same
@@ -169,6 +178,23 @@ MJB_API const char* mjb_notices(const mjbBuoy* b, const mjData* d);
 
 // sizes and backend of an attached model
 MJB_API mjbInfo mjb_info(const mjbBuoy* b);
+
+// radiation of an attached model (docs/physics.md section 14); all zero
+// when it has none
+typedef struct mjbRadInfo_ {
+  int nbody;             // hull bodies with added mass and memory (0: radiation off)
+  int nmode;             // state-space memory modes, all bodies (0: convolution memory)
+  int nsample;           // convolution memory: samples of the longest kernel (0: state-space)
+} mjbRadInfo;
+
+// the radiation an attached model runs (NULL: all zero)
+MJB_API mjbRadInfo mjb_radiationInfo(const mjbBuoy* b);
+
+// before mjb_attach: how many hull bodies of m mjb_attach will give
+// radiation, each a panel solve at attach (seconds to minutes) or a read
+// of the radiation cache (docs/mjcf.md section 11); 0 for none, -1 when m
+// is NULL or its mjbuoy.* entries are invalid (mjb_attach names the fault)
+MJB_API int mjb_radiationBodies(const mjModel* m);
 
 // gl backend: mean GPU time per call of each pipeline stage [ms], from GL
 // timer queries; fills up to n names and times, returns the number of

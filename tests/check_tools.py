@@ -16,7 +16,9 @@ check_tools.py BUILD_TOOLS_DIR MODELS_DIR CASE, CASE one of:
             (items 11, 16)
   seaset    mjbuoy-sim --set/--spectrum/--calm change the sea the model
             compiles with (--print-sea), bad entries are refused naming them
-            and their range, the model file and its directory are untouched
+            and their range, the model file and its directory are untouched;
+            --print-sea's errors name only what the user gave (no
+            mjbuoy.radiation the tool set itself)
   hydro     mjbuoy-hydro's tables are consistent (A_inf symmetric, K(0)
             from B, Haskind between X3 and B33); a second run reads the
             cache and prints the same tables; --plot writes a PNG (with
@@ -357,8 +359,40 @@ def seaset(tools, models, tmp):
         p = run([sim, model, "--print-sea"] + args, cwd=tmp)
         refused(p, " ".join(args), *words)
         check(not p.stdout, "%s: nothing printed" % " ".join(args))
+        # --print-sea attaches without radiation (mjb_attachWithoutRadiation),
+        # so an error names only what the user gave, never a radiation setting
+        check("mjbuoy.radiation" not in p.stderr,
+              "%s: the message does not mention mjbuoy.radiation" % " ".join(args))
     check(digest(model) == before, "the model file is unchanged")
     check(sorted(os.listdir(tmp)) == ["barge.xml"], "no other file in its directory")
+    seaset_model_errors(sim, models, tmp)
+
+
+def seaset_model_errors(sim, models, tmp):
+    """--print-sea of a model whose own file is wrong: the error names the
+    file's entry, and no option the user did not give"""
+    src = open(os.path.join(models, "barge.xml")).read()
+    hulls = '<text name="mjbuoy.hulls" data="barge_hull"/>'
+    cases = (
+        # a hull entry out of its range, no option given
+        ("baddamp.xml", src.replace('data="3000 300"', 'data="-3000 300"'),
+         ("mjbuoy.hull.damping", "-3000", ">= 0")),
+        # the radiation switch given as a number: the file's own fault
+        ("radnum.xml", src.replace(hulls, hulls + '<numeric name="mjbuoy.radiation" data="0"/>'),
+         ("radnum.xml", "mjbuoy.radiation")),
+    )
+    for name, text, words in cases:
+        f = os.path.join(tmp, name)
+        with open(f, "w") as fh:
+            fh.write(text)
+        p = run([sim, f, "--print-sea"], cwd=tmp)
+        refused(p, name + " --print-sea", *words)
+        check("--set" not in p.stderr, "%s --print-sea: no --set blamed, none was given (%s)"
+              % (name, p.stderr.strip()))
+        if name != "radnum.xml":
+            check("mjbuoy.radiation" not in p.stderr,
+                  "%s --print-sea: the message does not mention mjbuoy.radiation" % name)
+        os.remove(f)
 
 
 def render(tools, models, tmp):

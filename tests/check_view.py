@@ -386,23 +386,31 @@ def perturb(view, model, tmp):
     check(dw < 1e-9, "west barge unaffected: max |difference| %.2g m (< 1e-9 m)" % dw)
 
 
-def close_case(view, model, tmp):
-    # started paused: Right arrow x 3, Backspace (reset), Right arrow x 2
-    # leave the model exactly 2 steps of its timestep (0.002 s) from t = 0
-    v = Viewer([view, model, "--print-final", "--paused"])
+def keys_then_close(cmd, keys, pause):
+    """run the viewer cmd, press keys in its window pause s apart, close it
+    with ctrl+Q (exit status 0 checked); its stdout and stderr"""
+    v = Viewer(cmd)
     start = v.wait_for(r"start camera:", 300)
     win = window()
     check(bool(start and win), "the window appears")
     if win:
         xdo("windowfocus", win)
         time.sleep(1)
-        for k in ["Right"] * 3 + ["BackSpace"] + ["Right"] * 2:
+        for k in keys:
             xdo("key", k)
-            time.sleep(0.5)
+            time.sleep(pause)
         time.sleep(2)
         close(v, win)
     rc, out, err = v.finish()
     check(rc == 0, "ctrl+Q: exit status 0 (%d)" % rc)
+    return out, err
+
+
+def close_case(view, model, tmp):
+    # started paused: Right arrow x 3, Backspace (reset), Right arrow x 2
+    # leave the model exactly 2 steps of its timestep (0.002 s) from t = 0
+    out, err = keys_then_close([view, model, "--print-final", "--paused"],
+                               ["Right"] * 3 + ["BackSpace"] + ["Right"] * 2, 0.5)
     _, t, _ = parse(out, "final")
     check(t is not None and abs(t - 0.004) < 1e-12,
           "paused, 3 steps, reset, 2 steps: final time %s == 2 x 0.002 s" % t)
@@ -425,20 +433,9 @@ def actuator(view, model, tmp):
     src = src.replace("</worldbody>", "</worldbody><actuator>%s</actuator>" % motors)
     boats = os.path.join(tmp, "motor_barges.xml")
     open(boats, "w").write(src)
-    v = Viewer([view, boats, "--print-final", "--paused", "--set", "mjbuoy.radiation=off"])
-    start = v.wait_for(r"start camera:", 300)
-    win = window()
-    check(bool(start and win), "the window appears")
-    if win:
-        xdo("windowfocus", win)
-        time.sleep(1)
-        for k in ["Up"] * 3 + ["bracketright"] + ["Up"] * 12 + ["Right"]:
-            xdo("key", k)
-            time.sleep(0.3)
-        time.sleep(2)
-        close(v, win)
-    rc, out, err = v.finish()
-    check(rc == 0, "ctrl+Q: exit status 0 (%d)" % rc)
+    out, _ = keys_then_close([view, boats, "--print-final", "--paused", "--set",
+                              "mjbuoy.radiation=off"],
+                             ["Up"] * 3 + ["bracketright"] + ["Up"] * 12 + ["Right"], 0.3)
     ctrl = dict((m.group(1), float(m.group(2)))
                 for m in re.finditer(r"final ctrl (\S+) (\S+)", out))
     check(ctrl.get("east_thrust") == 90, "Up x 3: east_thrust = 3 x 600 / 20 = 90 N (%s)"

@@ -51,6 +51,19 @@ PanelGroupCoef solveCylinders(const std::vector<double>& xy, const std::vector<d
   return g;
 }
 
+// one such cylinder alone (panelSolve), ref at the origin, into one; ""
+// or the solver's error
+std::string solveCylinder(const std::vector<double>& om, const std::vector<double>& head,
+                          HydroCoef* one) {
+  PanelMesh b, l;
+  mjb::cylinderMesh(1, 1, 4, 3, 16, &b, &l);
+  one->rho = kRho;
+  one->g = kG;
+  std::string err;
+  if (mjb::panelSolve(b, l, om, head, one, &err)) return "";
+  return err.empty() ? "panelSolve failed without a message" : err;
+}
+
 typedef Eigen::MatrixXd Mat;
 
 Mat block(const std::vector<double>& v, int nm, int w) {
@@ -138,13 +151,8 @@ TEST(PanelGroup, TwoCylindersHaskind) {
 // 0.03 B_33 (the scattering correction, O(kR / sqrt(kd)))
 TEST(PanelGroup, SeparationReturnsToSingleBody) {
   const double om = 1.5, k = om * om / kG;
-  PanelMesh b, l;
-  mjb::cylinderMesh(1, 1, 4, 3, 16, &b, &l);
   HydroCoef one;
-  one.rho = kRho;
-  one.g = kG;
-  std::string err;
-  ASSERT_TRUE(mjb::panelSolve(b, l, {om}, {0.0}, &one, &err)) << err;
+  ASSERT_EQ(solveCylinder({om}, {0.0}, &one), "");
   Eigen::Map<const Eigen::Matrix<double, 6, 6, Eigen::RowMajor>> a1(one.A.data()), b1(one.B.data());
   double prev = 1e300;
   for (double d : {10.0, 40.0, 160.0, 640.0}) {
@@ -236,13 +244,8 @@ TEST(PanelGroup, MirrorPairMatchesFullSolve) {
 // factor e^{-i k D . r}), within 1% of the largest entry at two headings
 TEST(PanelGroup, FarBodyIsTheSingleBody) {
   const double om = 1.5, d = 640, c = std::cos(kPi / 6), s = std::sin(kPi / 6);
-  PanelMesh b, l;
-  mjb::cylinderMesh(1, 1, 4, 3, 16, &b, &l);
   HydroCoef one;
-  one.rho = kRho;
-  one.g = kG;
-  std::string err;
-  ASSERT_TRUE(mjb::panelSolve(b, l, {om}, {0.0, 0.7}, &one, &err)) << err;
+  ASSERT_EQ(solveCylinder({om}, {0.0, 0.7}, &one), "");
   PanelGroupCoef g = solveCylinders({0, 0, d * c, d * s}, {om}, {0.0, 0.7});
   HydroCoef two;
   ASSERT_TRUE(mjb::panelGroupBody(g, 1, &two));

@@ -4,7 +4,6 @@
 // force follows the exact convolution of the sampled K
 #include <cmath>
 #include <complex>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -13,29 +12,13 @@
 #include "api/buoy.h"
 #include "radiation/radfit.h"
 #include "radiation/radiation.h"
+#include "ssconv.h"
 #include "testutil.h"
 
 namespace mjbt {
 namespace {
 
 using mjb::cplx;
-
-// unit-RMS smooth random velocity: white noise through two first-order
-// lags of time constant tau [s]
-std::vector<double> smoothNoise(int n, double h, double tau, unsigned seed) {
-  std::mt19937 g(seed);
-  std::normal_distribution<double> N(0, 1);
-  std::vector<double> v(n);
-  double a = 0, b = 0, s2 = 0;
-  for (int k = 0; k < n; k++) {
-    a += h / tau * (N(g) - a);
-    b += h / tau * (a - b);
-    v[k] = b;
-    s2 += b * b;
-  }
-  for (double& x : v) x /= std::sqrt(s2 / n);
-  return v;
-}
 
 // the panel solution's B_ij at table frequency f, from the body's memory
 // key (radiation.cc, memoryKey: memory, step, count, omega, then B)
@@ -113,34 +96,10 @@ void checkBody(const std::string& what, const mjb::Radiation& R, const mjb::RadB
   // convolution of the sampled K (radstep.cc), RMS difference per dof
   // within 5% of the largest RMS force of its kind: each pair's K is held
   // to 2% (L2, kFitTolT) and a dof sums up to six pairs' errors
-  const int ns = int(10 / h);
-  std::vector<std::vector<double>> v(6);
-  for (int j = 0; j < 6; j++) v[j] = smoothNoise(ns, h, 0.3, 5 + j);
-  std::vector<cplx> X(rb.ss.size()), pw(rb.ss.size());
-  double first[6], last[6], nu[6], F[6], e2[6] = {0}, f2[6] = {0};
-  mjb::SsState st{X.data(), pw.data(), first, last};
-  for (int k = 0; k < ns; k++) {
-    for (int j = 0; j < 6; j++) nu[j] = v[j][k];
-    if (k == 0) mjb::ssRestart(rb.ss, st, nu);
-    else mjb::ssNew(rb.ss, st, nu);
-    mjb::ssForce(rb.ss, st, h, F);
-    double Fc[6] = {0};
-    const int N = std::min(k + 1, nk);
-    for (size_t q = 0; q < rb.pair.size() && N >= 2; q++) {
-      const double* K = rb.K.data() + q * nk;
-      const std::vector<double>& vj = v[rb.pair[q] % 6];
-      double s = 0;
-      for (int m = 0; m < N; m++) s += (m == 0 || m == N - 1 ? 0.5 : 1) * K[m] * vj[k - m];
-      Fc[rb.pair[q] / 6] -= h * s;
-    }
-    for (int i = 0; i < 6; i++) {
-      e2[i] += (F[i] - Fc[i]) * (F[i] - Fc[i]);
-      f2[i] += Fc[i] * Fc[i];
-    }
-  }
+  double e2[6], f2[6];
+  ssAgainstConvolution(rb, h, int(10 / h), 5, e2, f2);
   for (int i = 0; i < 6; i++) {
-    double sc = 0;
-    for (int k = 3 * (i / 3); k < 3 * (i / 3) + 3; k++) sc = std::max(sc, f2[k]);
+    const double sc = kindScale(f2, i);
     if (sc == 0) continue;
     std::printf("[radfit] %s dof %d: rms difference %.4f of the kind's rms force\n",
                 what.c_str(), i, std::sqrt(e2[i] / sc));

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <complex>
 #include <cstring>
-#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -13,40 +12,13 @@
 #include "hemisphere.h"
 #include "radiation/radfit.h"
 #include "radiation/radiation.h"
+#include "ssconv.h"
 #include "testutil.h"
 
 namespace mjbt {
 namespace {
 
 using mjb::cplx;
-
-// trapezoid convolution of K (samples at h, the first nu at index 0, the
-// body at rest before it) with nu up to index n: -h sum_k w_k K_k nu_{n-k},
-// w = 1/2 at both ends (the convolution of radstep.cc, memory())
-double convolve(const std::vector<double>& K, const std::vector<double>& nu, int n, double h) {
-  const int N = std::min<int>(n + 1, K.size());
-  if (N < 2) return 0;
-  double s = 0;
-  for (int k = 0; k < N; k++) s += (k == 0 || k == N - 1 ? 0.5 : 1) * K[k] * nu[n - k];
-  return -h * s;
-}
-
-// a smooth random velocity: white noise through two first-order lags of
-// time constant tau [s], scaled to unit RMS
-std::vector<double> randomVelocity(int n, double h, double tau, unsigned seed) {
-  std::mt19937 g(seed);
-  std::normal_distribution<double> N(0, 1);
-  std::vector<double> v(n);
-  double a = 0, b = 0, s2 = 0, q = h / tau;
-  for (int k = 0; k < n; k++) {
-    a += q * (N(g) - a);
-    b += q * (a - b);
-    v[k] = b;
-    s2 += b * b;
-  }
-  for (double& x : v) x /= std::sqrt(s2 / n);
-  return v;
-}
 
 // (a) K(t) = Re(c1 e^{p1 t}) + c2 e^{p2 t}, an oscillating and a plain
 // damped mode: the fit finds both poles (the exponentials are the exact
@@ -88,7 +60,7 @@ TEST(RadFit, TwoDampedModesAreRecoveredAndConvolvedExactly) {
     if (k == 0) mjb::ssRestart(sm, st, nu6);
     else mjb::ssNew(sm, st, nu6);
     mjb::ssForce(sm, st, h, F);
-    const double Fc = convolve(K, v, k, h);
+    const double Fc = convolve(K.data(), K.size(), v, k, h);
     e2 += (F[2] - Fc) * (F[2] - Fc);
     f2 += Fc * Fc;
   }
@@ -115,33 +87,13 @@ TEST(RadFit, HemisphereStateSpaceMatchesTheConvolution) {
   std::printf("[radfit] hemisphere: %zu pairs, %d samples, %d modes\n", rb.pair.size(), rb.nk,
               rb.ss.size());
   const int ns = int(20 / h);
-  std::vector<std::vector<double>> v(6);
-  for (int j = 0; j < 6; j++) v[j] = randomVelocity(ns, h, 0.3, 11 + j);
-  std::vector<cplx> X(rb.ss.size()), pw(rb.ss.size());
-  double first[6], last[6], nu6[6], F[6];
-  mjb::SsState st{X.data(), pw.data(), first, last};
-  double e2[6] = {0}, f2[6] = {0};
-  for (int k = 0; k < ns; k++) {
-    for (int j = 0; j < 6; j++) nu6[j] = v[j][k];
-    if (k == 0) mjb::ssRestart(rb.ss, st, nu6);
-    else mjb::ssNew(rb.ss, st, nu6);
-    mjb::ssForce(rb.ss, st, h, F);
-    double Fc[6] = {0};
-    for (size_t p = 0; p < rb.pair.size(); p++) {
-      std::vector<double> K(rb.K.begin() + p * rb.nk, rb.K.begin() + (p + 1) * rb.nk);
-      Fc[rb.pair[p] / 6] += convolve(K, v[rb.pair[p] % 6], k, h);
-    }
-    for (int i = 0; i < 6; i++) {
-      e2[i] += (F[i] - Fc[i]) * (F[i] - Fc[i]);
-      f2[i] += Fc[i] * Fc[i];
-    }
-  }
+  double e2[6], f2[6];
+  ssAgainstConvolution(rb, h, ns, 11, e2, f2);
   // the scale of dof i: the largest RMS force of its kind (translation or
   // rotation), so that yaw, nothing but panel noise on a body of
   // revolution, is held to the roll and pitch moments' size
   for (int i = 0; i < 6; i++) {
-    double sc = 0;
-    for (int k = 3 * (i / 3); k < 3 * (i / 3) + 3; k++) sc = std::max(sc, f2[k]);
+    const double sc = kindScale(f2, i);
     std::printf("[radfit] dof %d: rms difference %.4f of rms force %.4g (scale %.4g)\n", i,
                 std::sqrt(e2[i] / f2[i]), std::sqrt(f2[i] / ns), std::sqrt(sc / ns));
     EXPECT_LT(std::sqrt(e2[i] / sc), 0.03) << "dof " << i;

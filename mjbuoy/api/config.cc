@@ -462,7 +462,7 @@ static void fillDefaults(HullEntries* he) {
   }
 }
 
-std::string parseConfig(const mjModel* m, Config* c) {
+std::string parseConfig(const mjModel* m, Config* c, bool radiation) {
   *c = Config();
   std::string e = parseGravity(m, c);
   if (!e.empty()) return e;
@@ -502,6 +502,10 @@ std::string parseConfig(const mjModel* m, Config* c) {
   if (!ex.empty()) return ex;
   ex = parseRadConfig(m, &c->rad);
   if (!ex.empty()) return ex;
+  if (!radiation) {  // as if the model said mjbuoy.radiation off, with no body override
+    c->rad.on = false;
+    c->rad.onBody.clear();
+  }
   radiationDragDefaults(m, gid, c->rad, set, defSet, &par, &c->radDrag);
   c->sea.derive();
   // no mjbuoy.sea.ramp: a few periods of the dominant component (sea.h)

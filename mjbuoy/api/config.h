@@ -38,8 +38,11 @@ const char kRadDrag = 1, kRadSuction = 2;
 // bits; bits becomes 0
 void restoreDrag(HullParams* p, char* bits);
 
-// read m's custom entries into c; returns "" or the first error
-std::string parseConfig(const mjModel* m, Config* c);
+// read m's custom entries into c; returns "" or the first error. radiation
+// false: every mjbuoy.radiation* entry is still checked, but no body
+// radiates and the hulls take the drag defaults of radiation off
+// (mjb_attachWithoutRadiation)
+std::string parseConfig(const mjModel* m, Config* c, bool radiation = true);
 
 // choose backend name (cpu, gl or auto); where names the source for the error message
 std::string setBackend(const char* name, const std::string& where, Config* c);

@@ -553,7 +553,8 @@ std::string stateBound(const Buoy& B) {
 }  // namespace
 
 // mjb_attach's work, which may throw (std::bad_alloc)
-static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, int error_sz) {
+static mjbBuoy* attachModel(const mjModel* m, const char* backend, bool radiation, char* error,
+                            int error_sz) {
   copyError("", error, error_sz);
   if (!m) {
     copyError("mjbuoy: mjb_attach was given a NULL model", error, error_sz);
@@ -562,7 +563,7 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
   auto b = std::make_unique<mjbBuoy>();
   Buoy& B = b->b;
   B.m = m;
-  std::string e = mjb::parseConfig(m, &B.cfg);
+  std::string e = mjb::parseConfig(m, &B.cfg, radiation);
   if (e.empty() && backend) e = mjb::setBackend(backend, "the backend argument", &B.cfg);
   if (!e.empty()) {
     copyError(e, error, error_sz);
@@ -635,9 +636,11 @@ static mjbBuoy* attachModel(const mjModel* m, const char* backend, char* error, 
 
 // no C++ exception crosses the C API: an allocation that fails inside the
 // attach is an error, never an abort
-mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz) {
+// attachModel with no C++ exception crossing the C API
+static mjbBuoy* attachGuarded(const mjModel* m, const char* backend, bool radiation,
+                              char* error, int error_sz) {
   try {
-    return attachModel(m, backend, error, error_sz);
+    return attachModel(m, backend, radiation, error, error_sz);
   } catch (const std::bad_alloc&) {
     copyError("mjbuoy: out of memory in mjb_attach; use fewer or coarser hulls, or lower "
               "mjbuoy.radiation.panels", error, error_sz);
@@ -645,6 +648,15 @@ mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int erro
     copyError(std::string("mjbuoy: mjb_attach failed: ") + e.what(), error, error_sz);
   }
   return nullptr;
+}
+
+mjbBuoy* mjb_attach(const mjModel* m, const char* backend, char* error, int error_sz) {
+  return attachGuarded(m, backend, true, error, error_sz);
+}
+
+mjbBuoy* mjb_attachWithoutRadiation(const mjModel* m, const char* backend, char* error,
+                                    int error_sz) {
+  return attachGuarded(m, backend, false, error, error_sz);
 }
 
 void mjb_detach(mjbBuoy* b) {

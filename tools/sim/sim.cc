@@ -251,14 +251,13 @@ int main(int argc, char** argv) {
     }
   }
 
+  // the sea's table needs no panel solution (seconds to minutes cold): it
+  // attaches without radiation, unless the user's --set mjbuoy.radiation asks
+  const std::vector<std::string>& sets = seaArgs.sets;
+  const bool radiation = !printSea || std::any_of(sets.begin(), sets.end(), [](
+      const std::string& s) { return s.rfind("mjbuoy.radiation=", 0) == 0; });
   mjbsim::Edits edits;
   {
-    // the sea's table needs no panel solution (seconds to minutes cold)
-    std::vector<std::string>& sets = seaArgs.sets;
-    if (printSea && std::none_of(sets.begin(), sets.end(), [](const std::string& s) {
-          return s.rfind("mjbuoy.radiation=", 0) == 0;
-        }))
-      sets.push_back("mjbuoy.radiation=off");
     std::string e = mjbsim::parseEdits(seaArgs.sets, seaArgs.spectra, seaArgs.calm, &edits);
     if (!e.empty()) {
       std::fprintf(stderr, "mjbuoy-sim: %s\n", e.c_str());
@@ -287,11 +286,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "mjbuoy-sim: --%s\n", why.c_str());
     return 1;
   }
-  {
+  if (radiation) {
     std::string plan = mjbtool::radiationPlan(m);  // the panel solve is no silent wait
     if (!plan.empty()) std::fprintf(stderr, "mjbuoy-sim: %s\n", plan.c_str());
   }
-  sc.b = mjb_attach(m, backend.empty() ? nullptr : backend.c_str(), err, sizeof(err));
+  const char* be = backend.empty() ? nullptr : backend.c_str();
+  sc.b = radiation ? mjb_attach(m, be, err, sizeof(err))
+                   : mjb_attachWithoutRadiation(m, be, err, sizeof(err));
   if (!sc.b) {
     std::fprintf(stderr, "mjbuoy-sim: %s: %s\n", model.c_str(), mjbsim::blame(edits, err).c_str());
     return 1;
