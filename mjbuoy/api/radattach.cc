@@ -981,7 +981,7 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root, std::vector<So
 
 // the bodies of a mjbuoy.radiation.group solved together (radgroup.h):
 // each member's own coefficients, with the others' scattering and
-// diffraction, placed as a single body's; "" or the error
+// diffraction, placed as a single body's, then their couplings; "" or the error
 static std::string solveTogether(Buoy* B, const mjData* d, const std::vector<int>& roots) {
   std::vector<Prep> p(roots.size());
   std::vector<GroupMember> mem(roots.size());
@@ -993,19 +993,24 @@ static std::string solveTogether(Buoy* B, const mjData* d, const std::vector<int
     mem[k].who = p[k].who;
     mem[k].body = p[k].body, mem[k].lid = p[k].lid;
     std::copy(p[k].xy, p[k].xy + 2, mem[k].xy);
+    mem[k].root = roots[k];
+    const mjtNum* R = p[k].d->xmat + 9 * roots[k];
+    std::copy(R, R + 9, mem[k].R);
+    mju_rotVecMat(mem[k].com, B->m->body_ipos + 3 * roots[k], R);
+    mem[k].com[2] += p[k].posz;
   }
   // one frequency set for the group: the first member's (its range covers
   // equal bodies; mjbuoy.radiation.omega sets it for all)
-  std::vector<HydroCoef> c;
+  std::vector<HydroCoef> c, cpl;
   std::string err;
-  if (!groupSolve(B, mem, p[0].omega, p[0].head, p[0].c, &c, &err))
+  if (!groupSolve(B, mem, p[0].omega, p[0].head, p[0].c, &c, &cpl, &err))
     return p[0].who + ": panel solver of its mjbuoy.radiation.group: " + err;
   for (size_t k = 0; k < roots.size(); k++) {
     err = placeGroup(B, p[k].d, roots[k], p[k].who, p[k].body, p[k].dz, p[k].posz, 0, &c[k],
                      false, DriftTable());
     if (!err.empty()) return err;
   }
-  return "";
+  return coupleGroup(B, mem, cpl);
 }
 
 // each radiating rigid group of roots alone, or with its

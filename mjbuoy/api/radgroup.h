@@ -27,17 +27,30 @@ struct GroupMember {
   std::string who;
   PanelMesh body, lid;
   double xy[2] = {0, 0};
+  int root = 0;                          // its weld root (MuJoCo body id)
+  double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // its body axes in the world at the panel pose
+  double com[3] = {0, 0, 0};             // its COM in its panel frame [m]
 };
 
 // the members solved together (panelSolveGroup in a group frame at the
 // first member's origin) at omega and head; c[k]: member k's own
 // coefficients in its panel frame (panelGroupBody: its 6x6 blocks with the
 // others held fixed, its exciting force with their diffraction), ref 0;
-// in: rho, g, depth. Through the cache (radcache.h), keyed by every
-// member's panels at their relative placement. false with *err
+// in: rho, g, depth; cpl[n i + j] (i != j): the coupling block (i, j),
+// the force on member i per motion of member j (A, B, Ainf; no exciting
+// force), about member i's and j's panel-frame origins, world axes.
+// Through the cache (radcache.h), keyed by every member's panels at their
+// relative placement. false with *err
 bool groupSolve(Buoy* B, const std::vector<GroupMember>& mem, const std::vector<double>& omega,
                 const std::vector<double>& head, const HydroCoef& in, std::vector<HydroCoef>* c,
-                std::string* err);
+                std::vector<HydroCoef>* cpl, std::string* err);
+
+// the coupling blocks cpl (groupSolve) moved to each member's COM in its
+// body axes (as its own coefficients are), their memory kernels and
+// A_ij(inf) added to B->rad (setCouple), after every member's
+// setRadiation. "" or the error
+std::string coupleGroup(Buoy* B, const std::vector<GroupMember>& mem,
+                        const std::vector<HydroCoef>& cpl);
 
 }  // namespace mjb
 
