@@ -11,6 +11,7 @@
 
 #include "api/buoy.h"
 #include "api/progress.h"
+#include "api/radgroup.h"
 #include "radiation/coefpsd.h"
 #include "radiation/coefxform.h"
 #include "radiation/diffract.h"
@@ -111,7 +112,7 @@ static const double kAsymWarn = 0.02;
 static const char* bodyName(const mjModel* m, int b) { return m->names + m->name_bodyadr[b]; }
 
 // whether an entry names the group of root: mjbuoy.radiation.body.<b> on
-// for root or one of its hull bodies
+// for root or one of its hull bodies, or mjbuoy.radiation.group
 static bool namedOn(const Buoy& B, int root) {
   const RadConfig& r = B.cfg.rad;
   for (const Hull& h : B.hull) {
@@ -119,6 +120,12 @@ static bool namedOn(const Buoy& B, int root) {
     for (int b : {h.body, root})
       if (std::count(r.onBody.begin(), r.onBody.end(), b)) return true;
   }
+  // a body named in mjbuoy.radiation.group asks for radiation too
+  for (const std::vector<std::string>& g : r.group)
+    for (const std::string& n : g) {
+      const int b = mj_name2id(B.m, mjOBJ_BODY, n.c_str());
+      if (b >= 0 && B.m->body_weldid[b] == root) return true;
+    }
   return false;
 }
 
@@ -847,30 +854,52 @@ static double panelYaw(const Buoy& B, const mjData* d, int root) {
   return std::atan2(R[3], R[0]);
 }
 
-// coefficients of one group; "" or the error
-static std::string solveGroup(Buoy* B, const mjData* d, int root, std::vector<Solved>* solved) {
+// one rigid group's problem up to its panel solution: its pose (d, or dj
+// for a jointed root), heave dz, panel frame (height posz, yaw psi), wet
+// panels, frequencies, headings, the solver's input c and the drift's
+// dynamics; ready false: nothing to solve (skipped, or read from a file)
+struct Prep {
+  std::string who;
+  std::shared_ptr<mjData> dj;
+  const mjData* d = nullptr;
+  double dz = 0, posz = 0, psi = 0, xy[2] = {0, 0};
+  PanelMesh body, lid;
+  std::vector<double> omega, head;
+  HydroCoef c;
+  bool drift = false, ready = false;
+  DriftBody db;
+};
+
+// the panels of the group of root at its pose; grouped: in a
+// mjbuoy.radiation.group (world axes, no drift table). "" or the error
+static std::string prepGroup(Buoy* B, const mjData* d, int root, bool grouped, Prep* p) {
   const mjModel* m = B->m;
   const RadConfig& rc = B->cfg.rad;
-  std::string who = std::string("mjbuoy: radiation of body \"") + bodyName(m, root) + "\"";
+  std::string& who = p->who;
+  who = std::string("mjbuoy: radiation of body \"") + bodyName(m, root) + "\"";
   // the pose: qpos0 lifted or lowered to its flat-water equilibrium
   // (docs/physics.md section 14, "Equilibrium draft"), or moved along its
   // joints to it ("Equilibrium along joints"); at names it
   std::string at;
-  std::unique_ptr<mjData, void (*)(mjData*)> dj(jointPose(B, d, root, who, &at), mj_deleteData);
-  if (dj) d = dj.get();
-  double dz = poseHeave(B, d, root, who, &at);
+  p->dj.reset(jointPose(B, d, root, who, &at), mj_deleteData);
+  if (p->dj) d = p->dj.get();
+  p->d = d;
+  double dz = p->dz = poseHeave(B, d, root, who, &at);
   std::vector<float> v;
   std::vector<int> f;
   groupMesh(*B, d, root, &v, &f);
   // the panels in axes turned by the body's yaw: identical hulls turned
-  // about the vertical get the same panels and solve once
-  const double psi = panelYaw(*B, d, root);
+  // about the vertical get the same panels and solve once; a group's
+  // bodies share the world's axes
+  const double psi = p->psi = grouped ? 0 : panelYaw(*B, d, root);
   mjtNum q[4];
   const mjtNum qz[4] = {std::cos(-psi / 2), 0, 0, std::sin(-psi / 2)};
   mju_mulQuat(q, qz, d->xquat + 4 * root);
   double pos[3] = {d->xpos[3 * root], d->xpos[3 * root + 1],
                    d->xpos[3 * root + 2] + dz - B->cfg.sea.level};
-  PanelMesh body, lid;
+  p->posz = pos[2], p->xy[0] = pos[0], p->xy[1] = pos[1];
+  PanelMesh& body = p->body;
+  PanelMesh& lid = p->lid;
   std::string note;
   if (!hullPanels(v.data(), v.size() / 3, f.data(), f.size() / 3, pos, q, rc.refine, &body,
                   &lid, &note))
@@ -895,34 +924,113 @@ static std::string solveGroup(Buoy* B, const mjData* d, int root, std::vector<So
     B->cfg.warn.push_back(who.substr(8) + ": no interior lid (" + note +
                           "); its coefficients may be spoiled near irregular frequencies");
   }
-  std::vector<double> omega = groupOmega(rc, body, B->cfg.sea.g);
-  HydroCoef c;
+  p->omega = groupOmega(rc, body, B->cfg.sea.g);
+  HydroCoef& c = p->c;
   c.rho = B->cfg.sea.rho;
   c.g = B->cfg.sea.g;
   // finite depth: the panel solver's Green function of depth h where the
   // seabed is within reach (docs/physics.md section 13, "Finite depth")
   c.depth = B->cfg.sea.depth > 0 ? B->cfg.sea.depth : 0;
-  std::string err;
   // diffraction: a uniform heading set, interpolated at the components'
   // headings relative to the body's yaw (docs/physics.md section 15)
-  std::vector<double> head;
-  for (int h = 0; rc.diffraction && h < kDiffHeadings; h++) head.push_back(2 * M_PI * h / kDiffHeadings);
-  // mean drift: its table from the same solve, with the group's motions
-  DriftBody db;
+  for (int h = 0; rc.diffraction && h < kDiffHeadings; h++)
+    p->head.push_back(2 * M_PI * h / kDiffHeadings);
+  p->ready = true;
+  return "";
+}
+
+// the drift's dynamics of a prepared group (mean drift: its table from the
+// same solve, with the group's motions); a grouped body has none
+static void prepDrift(Buoy* B, int root, bool grouped, Prep* p) {
+  const RadConfig& rc = B->cfg.rad;
+  if (!rc.diffraction || !rc.drift) return;
+  if (grouped) {
+    B->cfg.warn.push_back(p->who.substr(8) + ": has no mean wave drift: it is solved in its "
+                          "mjbuoy.radiation.group, whose drift is not computed (set "
+                          "mjbuoy.radiation.drift off to silence this)");
+    return;
+  }
+  p->drift = true;
+  if (p->c.depth > 0) warnDriftDepth(B, p->who, p->c.depth);
+  const mjData* d = p->d;
+  const double o[3] = {d->xpos[3 * root], d->xpos[3 * root + 1], B->cfg.sea.level - p->dz};
+  driftDynamics(B->m, d, root, p->body, o, p->c.rho, p->c.g, &p->db, p->psi);
+}
+
+// the error or skip of a group whose panel solution failed (err)
+static std::string solveFailed(Buoy* B, int root, const std::string& who,
+                               const std::string& err) {
+  const RadConfig& rc = B->cfg.rad;
+  if (!(rc.given && rc.on) && !namedOn(*B, root))
+    return skipGroup(B, root, who.substr(8) + " is off: panel solver: " + err);
+  return who + ": panel solver: " + err;
+}
+
+// coefficients of one group; "" or the error
+static std::string solveGroup(Buoy* B, const mjData* d, int root, std::vector<Solved>* solved) {
+  Prep p;
+  std::string err = prepGroup(B, d, root, false, &p);
+  if (!p.ready) return err;
+  prepDrift(B, root, false, &p);
   DriftTable dt;
-  bool drift = rc.diffraction && rc.drift;
-  if (drift && c.depth > 0) warnDriftDepth(B, who, c.depth);
-  if (drift) {
-    const double o[3] = {d->xpos[3 * root], d->xpos[3 * root + 1], B->cfg.sea.level - dz};
-    driftDynamics(m, d, root, body, o, c.rho, c.g, &db, psi);
+  if (!cachedSolve(B, p.who, p.body, p.lid, p.omega, p.head, &p.c, &err, solved,
+                   p.drift ? &p.db : nullptr, p.drift ? &dt : nullptr))
+    return solveFailed(B, root, p.who, err);
+  return placeGroup(B, p.d, root, p.who, p.body, p.dz, p.posz, p.psi, &p.c, p.drift, dt);
+}
+
+// the bodies of a mjbuoy.radiation.group solved together (radgroup.h):
+// each member's own coefficients, with the others' scattering and
+// diffraction, placed as a single body's, then their couplings; "" or the error
+static std::string solveTogether(Buoy* B, const mjData* d, const std::vector<int>& roots) {
+  std::vector<Prep> p(roots.size());
+  std::vector<GroupMember> mem(roots.size());
+  for (size_t k = 0; k < roots.size(); k++) {
+    std::string err = prepGroup(B, d, roots[k], true, &p[k]);
+    if (!err.empty()) return err;
+    if (!p[k].ready) return p[k].who + ": not solved in its mjbuoy.radiation.group";
+    prepDrift(B, roots[k], true, &p[k]);
+    mem[k].who = p[k].who;
+    mem[k].body = p[k].body, mem[k].lid = p[k].lid;
+    std::copy(p[k].xy, p[k].xy + 2, mem[k].xy);
+    mem[k].root = roots[k];
+    const mjtNum* R = p[k].d->xmat + 9 * roots[k];
+    std::copy(R, R + 9, mem[k].R);
+    mju_rotVecMat(mem[k].com, B->m->body_ipos + 3 * roots[k], R);
+    mem[k].com[2] += p[k].posz;
   }
-  if (!cachedSolve(B, who, body, lid, omega, head, &c, &err, solved, drift ? &db : nullptr,
-                   drift ? &dt : nullptr)) {
-    if (!(rc.given && rc.on) && !namedOn(*B, root))
-      return skipGroup(B, root, who.substr(8) + " is off: panel solver: " + err);
-    return who + ": panel solver: " + err;
+  // one frequency set for the group: the first member's (its range covers
+  // equal bodies; mjbuoy.radiation.omega sets it for all)
+  std::vector<HydroCoef> c, cpl;
+  std::string err;
+  if (!groupSolve(B, mem, p[0].omega, p[0].head, p[0].c, &c, &cpl, &err))
+    return p[0].who + ": panel solver of its mjbuoy.radiation.group: " + err;
+  for (size_t k = 0; k < roots.size(); k++) {
+    err = placeGroup(B, p[k].d, roots[k], p[k].who, p[k].body, p[k].dz, p[k].posz, 0, &c[k],
+                     false, DriftTable());
+    if (!err.empty()) return err;
   }
-  return placeGroup(B, d, root, who, body, dz, pos[2], psi, &c, drift, dt);
+  return coupleGroup(B, mem, cpl);
+}
+
+// each radiating rigid group of roots alone, or with its
+// mjbuoy.radiation.group (checked first); "" or the error
+static std::string solveAll(Buoy* B, const mjData* d, const std::vector<int>& roots) {
+  std::vector<Solved> solved;
+  std::vector<std::vector<int>> together;
+  std::string e = groupBodies(*B, &together);
+  if (!e.empty()) return e;
+  std::vector<int> done;
+  for (int r : roots) {
+    if (std::count(done.begin(), done.end(), r)) continue;
+    const std::vector<int>* g = nullptr;
+    for (const std::vector<int>& x : together)
+      if (std::count(x.begin(), x.end(), r)) g = &x;
+    e = g ? solveTogether(B, d, *g) : solveGroup(B, d, r, &solved);
+    if (!e.empty()) return e;
+    if (g) done.insert(done.end(), g->begin(), g->end());
+  }
+  return "";
 }
 
 // attachRadiation's work, which may throw (std::bad_alloc)
@@ -993,11 +1101,8 @@ static std::string attachGroups(Buoy* B) {
   if (!d) return "mjbuoy: radiation: could not allocate an mjData for the initial pose";
   mj_kinematics(m, d.get());
   mj_comPos(m, d.get());  // cinert, for the groups' roll inertia (rollZeta)
-  std::vector<Solved> solved;
-  for (int r : roots) {
-    std::string e = solveGroup(B, d.get(), r, &solved);
-    if (!e.empty()) return e;
-  }
+  std::string e = solveAll(B, d.get(), roots);
+  if (!e.empty()) return e;
   diffSea(B->cfg.sea, &B->diff);
   // each diffraction body's radiation body, for its immersion factor
   for (DiffBody& db : B->diff.db)

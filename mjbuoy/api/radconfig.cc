@@ -1,10 +1,11 @@
 // radconfig: parse mjbuoy.radiation, mjbuoy.radiation.{lid, diffraction, drift, entry, cache,
-// memorymodel, omega, refine, panels, memory, rolldamping, rollzeta},
+// memorymodel, group, omega, refine, panels, memory, rolldamping, rollzeta},
 // mjbuoy.radiation.body.<body> and mjbuoy.radiation.{file, fileorigin, ulen}.<body>
 // (schema: docs/mjcf.md)
 #include "api/radconfig.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 
@@ -115,6 +116,29 @@ static std::string parseFileNumeric(const mjModel* m, const char* name, int n, c
   return "";
 }
 
+// mjbuoy.radiation.group: "a b c; d e", groups split at ';', names at
+// white space; the names are checked against the model at attach
+static std::string parseGroup(const char* name, const char* text, RadConfig* r) {
+  std::vector<std::string> g;
+  std::string w;
+  for (const char* c = text;; c++) {
+    if (*c && *c != ';' && !std::isspace((unsigned char)*c)) {
+      w += *c;
+      continue;
+    }
+    if (!w.empty()) g.push_back(w), w.clear();
+    if (*c && *c != ';') continue;
+    if (g.empty()) {
+      return "mjbuoy: " + tag("text", name) + " data = \"" + text + "\" has an empty group; "
+             "give body names separated by spaces, groups by ';', e.g. data=\"float1 float2; "
+             "float3 float4\"";
+    }
+    r->group.push_back(g), g.clear();
+    if (!*c) break;
+  }
+  return "";
+}
+
 static std::string parseText(const mjModel* m, const char* name, const char* text, RadConfig* r) {
   const char* key = name + 7;
   if (!std::strcmp(key, "radiation.cache")) {
@@ -147,6 +171,7 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
            "\"off\", e.g. data=\"auto\"";
   }
   if (!std::strncmp(key, "radiation.file.", 15)) return parseFile(m, name, text, r);
+  if (!std::strcmp(key, "radiation.group")) return parseGroup(name, text, r);
   bool v = false;
   std::string e = onOff(name, text, &v);
   if (!e.empty()) return e;
@@ -173,7 +198,8 @@ static std::string parseText(const mjModel* m, const char* name, const char* tex
            "; radiation text entries are mjbuoy.radiation, mjbuoy.radiation.lid, "
            "mjbuoy.radiation.diffraction, mjbuoy.radiation.drift, mjbuoy.radiation.entry, "
            "mjbuoy.radiation.speed, "
-           "mjbuoy.radiation.cache, mjbuoy.radiation.memorymodel, mjbuoy.radiation.body.<body> "
+           "mjbuoy.radiation.cache, mjbuoy.radiation.memorymodel, mjbuoy.radiation.group, "
+           "mjbuoy.radiation.body.<body> "
            "and mjbuoy.radiation.file.<body> (see docs/mjcf.md)";
   }
   return "";

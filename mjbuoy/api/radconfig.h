@@ -68,6 +68,10 @@ struct RadConfig {
     double ulen = 1;
   };
   std::vector<File> file;
+  // mjbuoy.radiation.group: groups of body names solved together
+  // (hydrodynamic interaction, docs/physics.md section 14, "Interaction"),
+  // as given; checked at attach (radgroup.h, groupBodies)
+  std::vector<std::vector<std::string>> group;
   bool radiates(int body) const;
   // whether the rigid group of weld root `root` radiates: an override
   // naming the root or any of its hull bodies (hullBody, one per hull)

@@ -567,6 +567,8 @@ void radMakeState(const Radiation& r, RadState* s) {
     s->poff[ib + 1] = s->poff[ib] + int(r.rb[ib].pair.size());
   }
   s->pre.assign(3 * s->poff.back(), 0);
+  s->chist.assign(r.cp.empty() ? 0 : 6 * r.rb.size() * r.nch, 0);
+  s->fcp.assign(6 * r.cp.size(), 0);
   radRestart(s);
 }
 
@@ -577,10 +579,46 @@ void radRestart(RadState* s) {
   std::fill(s->sstep.begin(), s->sstep.end(), 1.0);
   s->head = s->count = 0;
   s->shead = s->scount = 0;
+  s->chead = s->ccount = 0;
+  std::fill(s->fcp.begin(), s->fcp.end(), 0.0);
   s->dtTold = false;
   s->key = -1;
   s->tcur = 0;
   s->mstamp = -1;
+}
+
+std::string setCouple(int i, int j, const HydroCoef& c, double tmem, double dt, Radiation* r) {
+  if (i < 0 || j < 0 || i >= int(r->rb.size()) || j >= int(r->rb.size()) || i == j)
+    return "radiation coupling: bodies " + std::to_string(i) + " and " + std::to_string(j) +
+           " are not two radiating bodies";
+  RadCouple x;
+  x.i = i, x.j = j;
+  std::copy(c.Ainf, c.Ainf + 36, x.A);
+  if (tmem == 0) tmem = memoryLength(c);
+  const double nfull = std::ceil(tmem / dt) + 1;
+  if (!(nfull <= kMaxKernelSamples))
+    return "radiation coupling: a memory of " + std::to_string(tmem) + " s is more than " +
+           std::to_string(kMaxKernelSamples) + " samples of the timestep; set "
+           "mjbuoy.radiation.memory shorter or the timestep longer";
+  x.nk = std::max(2, int(nfull));
+  double big = 0;
+  for (double b : c.B) big = std::max(big, std::fabs(b));
+  for (int p = 0; p < 36; p++) {
+    double m = 0;
+    for (int w = 0; w < c.nw(); w++) m = std::max(m, std::fabs(c.B[36 * w + p]));
+    if (!(m > 1e-6 * big)) continue;  // a block entry the symmetry makes zero
+    x.pair.push_back(p);
+    x.K.resize(x.pair.size() * x.nk);
+    double* K = x.K.data() + (x.pair.size() - 1) * x.nk;
+    retardationP(c, nullptr, p / 6, p % 6, dt, x.nk, K);
+    steadyZero(K, x.nk);
+    for (int k = 0; k < x.nk; k++)
+      if (!std::isfinite(K[k])) return "radiation coupling: its memory kernel is not finite";
+    std::reverse(K, K + x.nk);  // oldest sample's weight first, as the step reads it
+  }
+  r->nch = std::max(r->nch, x.nk);
+  r->cp.push_back(std::move(x));
+  return "";
 }
 
 }  // namespace mjb

@@ -28,7 +28,7 @@ struct RadBody {
   double A[36];              // A_inf about ref, body axes, row-major
   std::vector<int> dof;      // dofs that move the body, leaf to root
   std::vector<int> pair;     // (i, j) = 6 i + j with a retardation function
-  std::vector<double> K;     // K_pair(k dt), pair-major, nk each [N/m, ...];
+  std::vector<double> K;     // K_pair(k dt) reversed (oldest first), pair-major, nk each [N/m, ...];
                              // empty for a twin (copyMemory), which has only Kr
   // each pair's K in reverse (oldest sample's weight first), what the
   // convolution reads; shared by bodies with the same memory (one copy of a
@@ -60,9 +60,24 @@ struct RadBody {
   std::vector<double> key;
 };
 
+// the radiation coupling of two bodies solved together (mjbuoy.radiation.group;
+// docs/physics.md section 14, "Interaction"): the force on body i (rb
+// index) from the motion of body j, -A_ij(inf) a_j - int K_ij(t - s) nu_j(s) ds,
+// about each body's ref in its body axes at attach, A_ij(inf) from the
+// last step's acceleration (separate trees share no entry of MuJoCo's qM)
+struct RadCouple {
+  int i = 0, j = 0;
+  double A[36];              // A_ij(inf), row-major (force dof of i, motion dof of j)
+  std::vector<int> pair;     // (a, b) = 6 a + b with a kernel
+  std::vector<double> K;     // K_pair(k dt) reversed (oldest first), pair-major, nk each
+  int nk = 0;
+};
+
 // all bodies of one attached model
 struct Radiation {
   std::vector<RadBody> rb;
+  std::vector<RadCouple> cp;  // couplings of grouped bodies; nch: their ring's length (>= 2)
+  int nch = 2;
   double dt = 0;             // step of the memory samples [s] (opt.timestep at set time)
   int maxdof = 0;            // longest dof chain
   int nh = 1;                // history ring length: the longest convolution memory
@@ -129,6 +144,11 @@ struct RadState {
   // each body's first pair
   std::vector<double> pre;
   std::vector<int> poff;
+  // couplings (RadCouple): per body a ring of nch wetted body-frame
+  // velocities at ref, its newest sample and count; per couple its wrench
+  // on body i (body frame) of this step
+  std::vector<double> chist, fcp;
+  int chead = 0, ccount = 0;
 };
 
 // K_ij(k dt), k = 0..n-1, from B_ij of c: K(t) = (2/pi) int_0^inf B cos(w t) dw
@@ -179,6 +199,12 @@ bool addedMassIndefinite(const double A[36]);
 std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double tmem,
                          Radiation* r);
 void restoreModel(const mjModel* m, const Radiation& r);
+
+// add the coupling of rb index i (force) and j (motion) from c, whose A, B
+// and Ainf hold the 6x6 block (i, j) about the bodies' refs in their body
+// axes: K from B by retardation (no high-frequency tail: the block changes
+// sign), over tmem seconds (0: memoryLength). "" or the error
+std::string setCouple(int i, int j, const HydroCoef& c, double tmem, double dt, Radiation* r);
 
 // size s's radiation state for r; clear its history
 void radMakeState(const Radiation& r, RadState* s);

@@ -418,6 +418,67 @@ void noteNotFinite(const RadBody& rb, size_t ib, const mjModel* m, const mjData*
   if (notices->size() + std::strlen(line) < notices->capacity()) *notices += line;
 }
 
+// moves the couplings' ring on a new step or a restart (as advanceHistory)
+void advanceCoupleHistory(const Radiation& r, int tick, RadState* s) {
+  if (r.cp.empty()) return;
+  if (tick == kTickRestart) s->chead = s->ccount = 0;
+  if (tick == kTickNew) s->chead = (s->chead + 1) % r.nch;
+  if (tick == kTickNew || tick == kTickRestart) s->ccount = std::min(s->ccount + 1, r.nch);
+}
+
+// coupling c's wrench f on body i (body frame) from body j's wetted
+// velocities: the memory -dt sum_k w_k K(k dt) nu_j(t - k dt) (trapezoid
+// weights) and -A_ij(inf) (nu_j(t) - nu_j(t - dt)) / dt, the last step's
+// acceleration (docs/physics.md section 14, "Interaction")
+void coupleWrench(const Radiation& r, const RadCouple& c, const RadState* s, double dt,
+                  double f[6]) {
+  std::memset(f, 0, 6 * sizeof(double));
+  const double* h = s->chist.data() + 6 * r.nch * c.j;
+  const int n = std::min(s->ccount, c.nk);
+  const int hd = s->chead, nk = c.nk;
+  const int na = std::min(n, hd + 1);  // the samples back to the ring's start
+  for (size_t p = 0; p < c.pair.size() && n >= 2; p++) {
+    // Kr[nk - 1 - k] = K(k dt): two forward dot products over the ring
+    const double* Kr = c.K.data() + p * nk;
+    const double* x = h + r.nch * (c.pair[p] % 6);
+    double sum = vDot(na, Kr + nk - na, x + hd - na + 1);
+    if (n > na) sum += vDot(n - na, Kr + nk - n, x + hd - n + 1 + r.nch);
+    sum -= 0.5 * (Kr[nk - 1] * x[hd] + Kr[nk - n] * x[(hd - n + 1 + r.nch) % r.nch]);
+    f[c.pair[p] / 6] -= dt * sum;
+  }
+  if (s->ccount < 2) return;
+  double a[6];
+  for (int b = 0; b < 6; b++)
+    a[b] = (h[r.nch * b + s->chead] - h[r.nch * b + (s->chead - 1 + r.nch) % r.nch]) / dt;
+  for (int k = 0; k < 6; k++) f[k] -= dot6(c.A + 6 * k, a);
+}
+
+// every coupling's wrench on its body i, times i's immersion factor, into
+// qfrc_passive; recomputed on a step's first call (none after a change of
+// timestep: the kernels are sampled at the attach's)
+void coupleStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s, int tick,
+                bool moved, std::string* notices) {
+  for (size_t ic = 0; ic < r.cp.size(); ic++) {
+    const RadCouple& c = r.cp[ic];
+    double* f = s->fcp.data() + 6 * ic;
+    if (moved) {
+      std::memset(f, 0, 6 * sizeof(double));
+    } else if (tick != kTickMid) {
+      coupleWrench(r, c, s, r.dt, f);
+    }
+    const RadBody& rb = r.rb[c.i];
+    double* J = s->jac.data();
+    double nu[6], bias[6], W[6];
+    kinematics(rb, m, d, J, nu, bias);
+    for (int k = 0; k < 6; k++) W[k] = s->imm[c.i] * f[k];
+    if (!std::isfinite(dot6(W, W))) {
+      noteNotFinite(rb, c.i, m, d, s, notices);
+      continue;
+    }
+    for (size_t k = 0; k < rb.dof.size(); k++) d->qfrc_passive[rb.dof[k]] += dot6(J + 6 * k, W);
+  }
+}
+
 // one body's radiation: s A_inf into qM (if addM), the wrench into qfrc_passive
 void radiateBody(const Radiation& r, const mjModel* m, mjData* d, RadState* s, const Sea& sea,
                  const double cur[3], size_t ib, int tick, bool moved, bool addM,
@@ -438,6 +499,8 @@ void radiateBody(const Radiation& r, const mjModel* m, mjData* d, RadState* s, c
   const double u = nu[0];  // surge speed through the water [m/s]
   for (int j = 0; j < 6; j++) nu[j] *= si;
   double* fm = s->fmem.data() + 6 * ib;
+  if (!r.cp.empty() && tick != kTickMid)
+    for (int j = 0; j < 6; j++) s->chist[6 * r.nch * ib + r.nch * j + s->chead] = nu[j];
   memoryForce(r, rb, ib, tick, moved, h, nu, s, fm);
   // the convolution's at the step of attach only; the state space's at any
   if (rb.nls && (rb.ss.size() || (rb.nk && !moved)) && tick != kTickMid)
@@ -464,6 +527,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
   if (moved) timestepMoved(r, m, h, s, notices);
   advanceHistory(r, tick, s);
   advanceSpeedHistory(r, tick, s);
+  advanceCoupleHistory(r, tick, s);
   // qM is rebuilt by every mj_fwdPosition; a second callback after the same
   // one (mj_forwardSkip from the velocity stage) finds A_inf in it already
   const long pos = d->timer[mjTIMER_POSITION].number;
@@ -471,6 +535,7 @@ void radiationStep(const Radiation& r, const mjModel* m, mjData* d, RadState* s,
   if (tick != kTickMid && !moved) preParts(r, s, pool);
   for (size_t ib = 0; ib < r.rb.size(); ib++)
     radiateBody(r, m, d, s, sea, cur, ib, tick, moved, addM, notices);
+  coupleStep(r, m, d, s, tick, moved, notices);
   if (addM) {
     // as mj_fwdPosition does after mj_crb: the integrators, the constraint
     // solver and mj_implicit then all see M + J^T A J
