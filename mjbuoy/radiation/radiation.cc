@@ -379,6 +379,88 @@ double memoryLength(const HydroCoef& c) {
   return peak > 0 ? std::min(kMaxMemory, (last + 1) * dc) : 0;
 }
 
+namespace {
+
+// the pairs i <= j whose B_ij is not zero, each with its scale and its K
+// over n samples at step dc, and cos(w_f k dc) for the table's frequencies
+struct PairKernels {
+  std::vector<int> pair;
+  std::vector<double> scale, K, cosw;
+  int n = 0;
+  double dc = 0;
+};
+
+// pk for c over tmax s. The grid is an eighth of the last frequency's half
+// period (at most 25 ms): the trapezoid transform of the samples aliases B
+// from about 16 w_N - w, where the tail has fallen by (1/15)^p
+void pairKernels(const HydroCoef& c, double tmax, PairKernels* pk) {
+  pk->dc = std::min(M_PI / (8 * c.omega.back()), 0.025);
+  pk->n = int(std::ceil(tmax / pk->dc)) + 1;
+  double S[6], kind[2] = {0, 0};  // scale of each dof: peak |B_dd|, floored as the fit's
+  for (int d = 0; d < 6; d++) kind[d / 3] = std::max(kind[d / 3], S[d] = maxAbs(c.B, d, d));
+  for (int d = 0; d < 6; d++) S[d] = std::max(S[d], kFitNoise * kind[d / 3]);
+  double pd[6];
+  tailExponents(c, pd);
+  for (int p : memoryPairs(c)) {
+    const int i = p / 6, j = p % 6;
+    if (j < i) continue;  // K is symmetric
+    const double sc = std::sqrt(S[i] * S[j]);
+    pk->pair.push_back(p);
+    pk->scale.push_back(sc > 0 ? sc : maxAbs(c.B, i, j));
+    pk->K.resize(pk->K.size() + pk->n);
+    retardationP(c, pd, i, j, pk->dc, pk->n, pk->K.data() + pk->K.size() - pk->n);
+  }
+  pk->cosw.resize(size_t(c.nw()) * pk->n);
+  for (int f = 0; f < c.nw(); f++)
+    for (int k = 0; k < pk->n; k++)
+      pk->cosw[size_t(f) * pk->n + k] = std::cos(c.omega[f] * k * pk->dc);
+}
+
+// the worst |B_T(w) - B(w)| / scale over pk's pairs and c's frequencies,
+// B_T = h sum w_k K_k cos(w t_k) of K cut at tmem, tapered and zero-gain
+// (steadyZero); *pair its 6 i + j
+double transformError(const HydroCoef& c, const PairKernels& pk, double tmem, int* pair) {
+  const int m = std::min(pk.n, int(std::lround(tmem / pk.dc)) + 1);
+  std::vector<double> K(m);
+  double worst = 0;
+  *pair = -1;
+  for (size_t q = 0; q < pk.pair.size(); q++) {
+    std::copy_n(pk.K.begin() + q * pk.n, m, K.begin());
+    steadyZero(K.data(), m);
+    for (int f = 0; f < c.nw(); f++) {
+      const double* cw = pk.cosw.data() + size_t(f) * pk.n;
+      double s = 0.5 * (K[0] * cw[0] + K[m - 1] * cw[m - 1]);
+      for (int k = 1; k < m - 1; k++) s += K[k] * cw[k];
+      const double e = std::fabs(pk.dc * s - c.B[36 * f + pk.pair[q]]) / pk.scale[q];
+      if (e > worst) worst = e, *pair = pk.pair[q];
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+double memoryLengthByTransform(const HydroCoef& c, double* worst, int* pair) {
+  if (worst) *worst = 0;
+  if (pair) *pair = -1;
+  double t = memoryLength(c);
+  if (!(t > 0)) return t;
+  // the shortest of t g^k whose K reproduces B (docs/physics.md section 14,
+  // "Memory length"); a kernel that decays later than the cap keeps its decay length
+  const double top = std::max(t, kAutoMemoryMax);
+  PairKernels pk;
+  pairKernels(c, top, &pk);
+  int pr = -1;
+  double e = transformError(c, pk, t, &pr);
+  while (e > kMemoryTol && t < top) {
+    t = std::min(t * kMemoryGrowth, top);
+    e = transformError(c, pk, t, &pr);
+  }
+  if (worst) *worst = e;
+  if (pair) *pair = pr;
+  return t;
+}
+
 // what a body's memory (K and its fit) depends on: the memory length
 // asked (0: automatic, from B), the step, the frequencies and B
 static std::vector<double> memoryKey(const HydroCoef& c, double tmem, double dt) {

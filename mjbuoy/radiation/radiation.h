@@ -176,7 +176,18 @@ void steadyZero(double* K, int n);
 // memory length [s] for c when none is given: the time after which every
 // |K_ij| stays below 1% of the largest |K| (at most kMaxMemory)
 double memoryLength(const HydroCoef& c);
+// the frequency-domain memory length [s] (docs/physics.md section 14,
+// "Memory length"): the shortest of T_0 g^k (T_0 = memoryLength(c), g =
+// kMemoryGrowth) at which the transform of each pair's K, cut there,
+// tapered and made zero-gain (steadyZero), reproduces B_ij at the table's
+// frequencies within kMemoryTol of the pair's scale, at most
+// kAutoMemoryMax (or T_0 if longer). *worst (if given) gets the worst
+// pair's error there (a fraction of its scale), *pair its 6 i + j
+double memoryLengthByTransform(const HydroCoef& c, double* worst = nullptr, int* pair = nullptr);
 const double kMaxMemory = 60;
+const double kMemoryTol = 0.03;    // of the pair's scale sqrt(S_i S_j), S_d = peak |B_dd|
+const double kAutoMemoryMax = 30;  // [s] the automatic length's cap
+const double kMemoryGrowth = 1.2;  // ratio of successive lengths tried
 
 // the most samples a retardation function keeps per pair: a convolution
 // memory longer than this many timesteps is refused with its cost; a
