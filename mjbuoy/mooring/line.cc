@@ -113,8 +113,9 @@ void nodeForces(const LineWater& w, const Line& l, double tau, double h, LineSta
       an[k] = aw[k] - aq * q[k];
     }
     double nn = std::sqrt(dot3(vn, vn));
-    s->ie[2 * j] = 1 / (1 / s->im[2 * j] + 2 * h * ls * dn * nn);
-    s->ie[2 * j + 1] = 1 / (1 / s->im[2 * j + 1] + 2 * h * ls * dt * std::fabs(vq));
+    // 1 / (m + h c) = im / (1 + h c im)
+    s->ie[2 * j] /= 1 + 2 * h * ls * dn * nn * s->ie[2 * j];
+    s->ie[2 * j + 1] /= 1 + 2 * h * ls * dt * std::fabs(vq) * s->ie[2 * j + 1];
     // Morison: drag on the relative flow, Froude-Krylov plus added mass on
     // the water's acceleration (docs/mooring.md eq. 3)
     for (int k = 0; k < 3; k++) {
