@@ -57,9 +57,13 @@ void waterAt(const LineWater& w, const Line& l, double t, LineState* s) {
 
 // the explicit forces on every inner node (f): the segments' elastic
 // tension EA e (s->tseg, along s->qs), weight, buoyancy, drag, Froude-Krylov
-// and added mass, with the nodes at s->r, s->v. Internal damping and the
-// seabed are the implicit part of the sub-step (subStep)
-void nodeForces(const LineWater& w, const Line& l, double tau, LineState* s) {
+// and added mass, with the nodes at s->r, s->v; and each node's inverse
+// masses across and along with its drag linearly implicit over a sub-step
+// h (s->ie): 1 / (m + h c), c = 2 k |v_r| the slope of the quadratic drag k
+// |v_r| v_r, so fast nodes stay stable (docs/mooring.md "Integration").
+// The axial tension's change, internal damping and the seabed are the
+// implicit part of the sub-step (subStep)
+void nodeForces(const LineWater& w, const Line& l, double tau, double h, LineState* s) {
   const Sea& sea = *w.sea;
   const int n = l.nseg;
   double* f = s->f.data();
@@ -71,10 +75,11 @@ void nodeForces(const LineWater& w, const Line& l, double tau, LineState* s) {
     double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     double len = std::sqrt(dot3(d, d)), T = 0;
     q[0] = q[1] = q[2] = 0;
+    s->es[i] = len / l.l0 - 1;
     if (len > 0) {
       const double il = 1 / len;
       for (int k = 0; k < 3; k++) q[k] = d[k] * il;
-      T = l.t.ea * std::max(len / l.l0 - 1, 0.0);
+      T = l.t.ea * std::max(s->es[i], 0.0);
       for (int k = 0; k < 3; k++) {
         f[3 * i + k] += T * q[k];
         f[3 * i + 3 + k] -= T * q[k];
@@ -92,6 +97,8 @@ void nodeForces(const LineWater& w, const Line& l, double tau, LineState* s) {
     const double ls = 0.5 * lineTangent(s->r.data(), j, q);
     fj[2] -= l.mnode * g;
     const double* v = &s->v[3 * j];
+    s->ie[2 * j] = s->im[2 * j];
+    s->ie[2 * j + 1] = s->im[2 * j + 1];
     if (!s->wet[j]) continue;
     fj[2] += rho * l.vnode * g;
     const double* u = &s->uw[3 * j];
@@ -106,6 +113,9 @@ void nodeForces(const LineWater& w, const Line& l, double tau, LineState* s) {
       an[k] = aw[k] - aq * q[k];
     }
     double nn = std::sqrt(dot3(vn, vn));
+    // 1 / (m + h c) = im / (1 + h c im)
+    s->ie[2 * j] /= 1 + 2 * h * ls * dn * nn * s->ie[2 * j];
+    s->ie[2 * j + 1] /= 1 + 2 * h * ls * dt * std::fabs(vq) * s->ie[2 * j + 1];
     // Morison: drag on the relative flow, Froude-Krylov plus added mass on
     // the water's acceleration (docs/mooring.md eq. 3)
     for (int k = 0; k < 3; k++) {
@@ -142,19 +152,15 @@ static const double kSafety = 0.8;
 static const int kMaxSub = 10000;
 
 double lineStableStep(const LineWater& w, const Line& l) {
-  // the highest axial mode of a chain of masses m and springs k moves
-  // neighbours against each other: omega = 2 sqrt(k / m). The internal
-  // damping c = beta k is implicit and of the stiffness's form, so each mode
-  // keeps symplectic Euler stable for h^2 - 2 beta h < 4 / omega^2 (docs/
-  // mooring.md "Integration"); the transverse modes, stiffness T / l0 at
-  // most kOverStrain EA / l0, are explicit and undamped. The bed is
-  // implicit; added mass only slows the modes, so the dry mass gives the bound
+  // the axial stiffness, internal damping and bed are implicit (backward
+  // Euler: every axial mode is stable at any step); the transverse modes of
+  // a segment of tension T, stiffness T / l0, are explicit and undamped:
+  // the highest, neighbours against each other, has omega_t = 2 sqrt(T /
+  // (l0 m)), stable for h < 2 / omega_t = sqrt(l0 m / T) (docs/mooring.md
+  // "Integration"). Added mass only slows the modes, so the dry mass gives
+  // the bound; here at T = kOverStrain EA
   (void)w;
-  const double m = l.mnode, k = l.t.ea / l.l0, beta = l.t.ba / l.t.ea;
-  const double om = 2 * std::sqrt(k / m);
-  const double axial = beta + std::sqrt(beta * beta + 4 / (om * om));
-  const double transverse = 2 / (om * std::sqrt(kOverStrain));
-  return kSafety * std::min(axial, transverse);
+  return kSafety * std::sqrt(l.l0 * l.mnode / (kOverStrain * l.t.ea));
 }
 
 std::string lineDerive(const LineWater& w, Line* l) {
@@ -181,9 +187,11 @@ void lineMake(const Line& l, LineState* s) {
   s->q.assign(n3, 0.0);
   s->qs.assign(3 * l.nseg, 0.0);
   s->im.assign(2 * (l.nseg + 1), 0.0);
+  s->ie.assign(2 * (l.nseg + 1), 0.0);
   s->tseg.assign(l.nseg, 0.0);
   s->td.assign(l.nseg, 0.0);
-  s->tri.assign(2 * l.nseg, 0.0);
+  s->tri.assign(4 * l.nseg, 0.0);
+  s->es.assign(l.nseg, 0.0);
   s->wet.assign(l.nseg + 1, 1);
   s->st.assign(34 * (l.nseg + 1), 0.0);
   s->tw = -1;
@@ -204,30 +212,33 @@ static void setEnds(const Line& l, double a, const double e0[6], const double e1
 // v_j += h M_j^-1 f
 static inline void pushNode(LineState* s, int j, double h, const double f[3]) {
   const double* q = &s->q[3 * j];
-  const double imn = s->im[2 * j], imt = s->im[2 * j + 1], fq = dot3(f, q);
+  const double imn = s->ie[2 * j], imt = s->ie[2 * j + 1], fq = dot3(f, q);
   double* v = &s->v[3 * j];
   for (int k = 0; k < 3; k++) v[k] += h * (imn * f[k] + (imt - imn) * fq * q[k]);
 }
 
-// solve for the damping tensions d_s of the taut segments at the end of a
-// sub-step (backward Euler in the damping: docs/mooring.md "Integration"):
-// d_s = c q_s . (v'_{s+1} - v'_s), v' = v* + h M^-1 (d_j q_j - d_{j-1} q_{j-1}),
-// a tridiagonal system in the scalars d_s solved by the Thomas algorithm.
-// Its coefficients a . M_j^-1 b = imn_j a . b + (imt_j - imn_j) (a . t_j)
-// (b . t_j) (node j's inverse masses across and along its tangent t_j) take
-// three dot products per segment: q_s . t_s, q_s . t_{s+1} and q_s .
-// q_{s+1} (q_s . q_s = 1 on a taut segment). Segments in fix hold d_s =
-// -tseg_s (their total tension is zero)
-static void dampSolve(const Line& l, double h, const char* fix, LineState* s) {
+// solve for the implicit tension increments d_s of the segments at the end
+// of a sub-step (backward Euler in the axial stiffness and internal
+// damping: docs/mooring.md "Integration"): d_s = c_s q_s . (v'_{s+1} -
+// v'_s) + o_s, v' = v* + h M^-1 (d_j q_j - d_{j-1} q_{j-1}), c_s = (h EA +
+// BA) / l0 on a segment in the solve (o_s = EA e_s < 0 on one slack now,
+// else 0), c_s = 0 off it: a tridiagonal system in the scalars d_s solved
+// by the Thomas algorithm. Its coefficients a . M_j^-1 b = imn_j a . b +
+// (imt_j - imn_j) (a . t_j) (b . t_j) (node j's inverse masses across and
+// along its tangent t_j, drag implicit: s->ie) take three dot products per segment: q_s . t_s,
+// q_s . t_{s+1} and q_s . q_{s+1} (q_s . q_s = 1). Segments in fix hold
+// d_s = -tseg_s (their total tension is zero)
+static void tensionSolve(const Line& l, double h, const char* fix, LineState* s) {
   const int n = l.nseg;
-  const double c0 = l.t.ba / l.l0;
   double* cp = s->tri.data();
   double* dp = cp + n;
+  const double* cs = dp + n;
+  const double* os = cs + n;
   // carried from segment s - 1: q_{s-1} . t_s and q_{s-1} . q_s
   double prevAt = 0, prevQq = 0;
   for (int i = 0; i < n; i++) {
     const double* q = &s->qs[3 * i];
-    double c = s->tseg[i] > 0 ? c0 : 0, lo = 0, up = 0, diag = 1, rhs = 0;
+    double c = cs[i], lo = 0, up = 0, diag = 1, rhs = 0;
     const double at0 = i > 0 ? dot3(q, &s->q[3 * i]) : 0;  // q_s . t_s
     const double at1 = i + 1 < n ? dot3(q, &s->q[3 * i + 3]) : 0;  // q_s . t_{s+1}
     const double qq = i + 1 < n ? dot3(q, q + 3) : 0;  // q_s . q_{s+1}
@@ -236,15 +247,15 @@ static void dampSolve(const Line& l, double h, const char* fix, LineState* s) {
     } else if (c > 0) {
       const double* va = &s->v[3 * i];
       const double* vb = &s->v[3 * i + 3];
-      rhs = c * (q[0] * (vb[0] - va[0]) + q[1] * (vb[1] - va[1]) + q[2] * (vb[2] - va[2]));
+      rhs = c * (q[0] * (vb[0] - va[0]) + q[1] * (vb[1] - va[1]) + q[2] * (vb[2] - va[2])) + os[i];
       if (i + 1 < n) {
-        const double imn = s->im[2 * i + 2], dm = s->im[2 * i + 3] - imn;
+        const double imn = s->ie[2 * i + 2], dm = s->ie[2 * i + 3] - imn;
         const double bt = dot3(q + 3, &s->q[3 * i + 3]);  // q_{s+1} . t_{s+1}
         diag += h * c * (imn + dm * at1 * at1);
         up = -h * c * (imn * qq + dm * at1 * bt);
       }
       if (i > 0) {
-        const double imn = s->im[2 * i], dm = s->im[2 * i + 1] - imn;
+        const double imn = s->ie[2 * i], dm = s->ie[2 * i + 1] - imn;
         diag += h * c * (imn + dm * at0 * at0);
         lo = -h * c * (imn * prevQq + dm * at0 * prevAt);
       }
@@ -259,18 +270,39 @@ static void dampSolve(const Line& l, double h, const char* fix, LineState* s) {
   for (int i = n - 2; i >= 0; i--) s->td[i] = dp[i] - cp[i] * s->td[i + 1];
 }
 
-// the damping tensions (dampSolve), kept from making a segment's total
-// tension compressive: a segment whose EA e + d_s < 0 is solved again
-// with a total of zero (one pass); then applied to the inner nodes' v
-static void dampStep(const Line& l, double h, LineState* s) {
+// the implicit tension increments (tensionSolve) of the segments taut now
+// or taut at the end of the sub-step by v* (a slack one enters with its
+// EA e < 0), kept from making a segment's total tension compressive: a
+// segment whose EA e + d_s < 0 is solved again with a total of zero (one
+// pass); then applied to the inner nodes' v. s->tseg becomes the tension
+// at the end of the sub-step
+static void tensionStep(const Line& l, double h, LineState* s) {
   const int n = l.nseg;
-  dampSolve(l, h, nullptr, s);
+  double* cs = s->tri.data() + 2 * n;
+  double* os = cs + n;
+  const double c0 = (h * l.t.ea + std::max(l.t.ba, 0.0)) / l.l0;
   bool any = false;
+  for (int i = 0; i < n; i++) {
+    const double* q = &s->qs[3 * i];
+    const double* va = &s->v[3 * i];
+    const double* vb = &s->v[3 * i + 3];
+    // the strain now (segment length in tseg's stead when slack: es)
+    const double e = s->es[i];
+    const double de = h * (q[0] * (vb[0] - va[0]) + q[1] * (vb[1] - va[1]) +
+                           q[2] * (vb[2] - va[2])) / l.l0;
+    const bool in = e > 0 || e + de > 0;
+    cs[i] = in ? c0 : 0;
+    os[i] = in && e < 0 ? l.t.ea * e : 0;
+    any |= in;
+  }
+  if (!any) return;
+  tensionSolve(l, h, nullptr, s);
+  any = false;
   for (int i = 0; i < n; i++) any |= s->tseg[i] + s->td[i] < 0;
   if (any) {
     char fix[1024];  // nseg <= 1000 (moorconfig.cc)
     for (int i = 0; i < n; i++) fix[i] = s->tseg[i] + s->td[i] < 0;
-    dampSolve(l, h, fix, s);
+    tensionSolve(l, h, fix, s);
   }
   for (int j = 1; j < n; j++) {
     const double *qa = &s->qs[3 * j - 3], *qb = &s->qs[3 * j];
@@ -279,7 +311,7 @@ static void dampStep(const Line& l, double h, LineState* s) {
                          db * qb[2] - da * qa[2]};
     pushNode(s, j, h, f);
   }
-  for (int i = 0; i < n; i++) s->tseg[i] += s->td[i];
+  for (int i = 0; i < n; i++) s->tseg[i] = std::max(s->tseg[i] + s->td[i], 0.0);
 }
 
 // node j on the bed: its vertical spring k and damper c per contact area
@@ -294,7 +326,7 @@ static void bedStep(const LineWater& w, const Line& l, double h, int j, LineStat
   double* v = &s->v[3 * j];
   const double* q = &s->q[3 * j];
   const double kb = bed.k * l.t.diam * l.l0, cb = bed.c * l.t.diam * l.l0;
-  const double m = 1 / s->im[2 * j];
+  const double m = 1 / s->ie[2 * j];
   const double vz = (v[2] + h * kb * pen / m) / (1 + h * (cb + h * kb) / m);
   const double fn = kb * (pen - h * vz) - cb * vz;
   if (!(fn > 0)) return;  // lifting off: no contact force
@@ -316,14 +348,15 @@ static void bedStep(const LineWater& w, const Line& l, double h, int j, LineStat
 }
 
 // one sub-step of length h of the inner nodes: v from the explicit forces
-// at (r, v), the internal damping and the seabed implicitly at the new v,
-// then r from the new v (symplectic Euler in the elastic and fluid forces;
-// docs/mooring.md "Integration"). The end nodes' velocities are already
+// at (r, v), the axial stiffness and internal damping (linearised along
+// each segment) and the seabed implicitly at the new v, then r from the
+// new v (backward Euler in those, symplectic Euler in the transverse
+// elastic and fluid forces; docs/mooring.md "Integration"). The end nodes' velocities are already
 // those at the end of the sub-step
 static void subStep(const LineWater& w, const Line& l, double h, double tau, LineState* s) {
-  nodeForces(w, l, tau, s);
+  nodeForces(w, l, tau, h, s);
   for (int j = 1; j < l.nseg; j++) pushNode(s, j, h, &s->f[3 * j]);
-  if (l.t.ba > 0) dampStep(l, h, s);
+  tensionStep(l, h, s);
   for (int j = 1; j < l.nseg; j++) {
     bedStep(w, l, h, j, s);
     for (int k = 0; k < 3; k++) s->r[3 * j + k] += h * s->v[3 * j + k];
@@ -364,15 +397,15 @@ void lineStep(const LineWater& w, const Line& l, double t, double dt, const doub
               const double e1[6], LineState* s) {
   setEnds(l, 0, e0, e1, s);
   if (!(s->tw >= 0) || t < s->tw || t - s->tw >= w.refresh) waterAt(w, l, t, s);
-  // sub-steps of at most hmax, and shorter while a segment's tension T
-  // makes the transverse modes stiffer than hmax allows (an overloaded
-  // line): 0.8 of 2 / omega_t, omega_t = 2 sqrt(T / (l0 m)); at most
-  // kMaxSub of them (past that the line goes non-finite and is named)
+  // sub-steps as long as the step while the largest tension T (at the end
+  // of the last sub-step) keeps the explicit transverse modes stable,
+  // else 0.8 of 2 / omega_t, omega_t = 2 sqrt(T / (l0 m)) (lineStableStep);
+  // at most kMaxSub of them (past that the line goes non-finite and is named)
   double done = 0;
   for (int i = 0; done < dt; i++) {
     double tmax = 0;
     for (int k = 0; k < l.nseg; k++) tmax = std::max(tmax, s->tseg[k]);
-    double hs = l.hmax;
+    double hs = dt - done;
     if (tmax * hs * hs > kSafety * kSafety * l.l0 * l.mnode) {
       hs = kSafety * std::sqrt(l.l0 * l.mnode / tmax);
     }

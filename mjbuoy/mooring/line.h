@@ -44,7 +44,7 @@ struct Line {
   double l0 = 0;       // unstretched segment length L / N [m]
   double mnode = 0;    // mass of an inner node w l0 [kg]
   double vnode = 0;    // displaced volume of an inner node pi d^2 / 4 l0 [m^3]
-  double hmax = 0;     // the largest stable sub-step (lineStableStep) [s]
+  double hmax = 0;     // the largest stable sub-step up to kOverStrain (lineStableStep) [s]
 };
 
 // the water a line is in
@@ -67,8 +67,10 @@ struct LineState {
   std::vector<double> q;         // scratch: unit tangent per node
   std::vector<double> qs;        // scratch: unit vector of each segment, node i to i + 1
   std::vector<double> im;        // inverse mass across, along each node, wet as at tw [1/kg]
-  std::vector<double> td;        // scratch: damping tension of each segment [N]
-  std::vector<double> tri;       // scratch: the tridiagonal solve, 2 per segment
+  std::vector<double> ie;        // scratch: im with the drag implicit over the sub-step [1/kg]
+  std::vector<double> td;        // scratch: implicit tension increment of each segment [N]
+  std::vector<double> tri;       // scratch: the tridiagonal solve, 4 per segment
+  std::vector<double> es;        // scratch: strain of each segment at the sub-step's start
   std::vector<double> tseg;      // tension of each segment after the last step [N]
   std::vector<char> wet;         // per node: below the surface at tw
   std::vector<double> st;        // scratch: the static solve (lineStatic), 34 per node
@@ -84,11 +86,10 @@ const double kOverStrain = 0.1;
 // fill the derived values of l; "" or an error naming the line and field
 std::string lineDerive(const LineWater& w, Line* l);
 
-// the largest sub-step [s] at which lineStep is stable for the stiffest
-// motions of l: 0.8 of the bound beta + sqrt(beta^2 + 4 / omega^2) of the
-// highest axial mode omega with its internal damping implicit (beta = BA /
-// EA), and of 2 / omega_t of the transverse modes at kOverStrain
-// (docs/mooring.md "Integration")
+// the largest sub-step [s] at which lineStep is stable while no segment is
+// past kOverStrain: 0.8 of 2 / omega_t of the explicit transverse modes at
+// tension kOverStrain EA (the axial modes are implicit, stable at any
+// step; docs/mooring.md "Integration")
 double lineStableStep(const LineWater& w, const Line& l);
 
 // size s for l
@@ -96,9 +97,10 @@ void lineMake(const Line& l, LineState* s);
 
 // move l over [t, t + dt]: its ends go linearly from s->end0 to e0 (node 0)
 // and from s->end1 to e1 (node N), 6 values each (position, velocity);
-// inner nodes take sub-steps of at most hmax: symplectic Euler in the
-// elastic and fluid forces, backward Euler in the internal damping and the
-// seabed. The
+// inner nodes take one sub-step, or shorter ones while the tension makes
+// the transverse modes too stiff for it: backward Euler in the axial
+// stiffness, internal damping and seabed, symplectic Euler in the
+// transverse elastic and fluid forces. The
 // water's kinematics are taken at t when those held are w.refresh old
 void lineStep(const LineWater& w, const Line& l, double t, double dt, const double e0[6],
               const double e1[6], LineState* s);
