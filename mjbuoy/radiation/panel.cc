@@ -965,11 +965,11 @@ int panelMirrors(const PanelMesh& body, const PanelMesh& lid) {
   return symmetryGroup(pb).planes;
 }
 
-// rates of the cost model, measured on one core of the development machine
+// rates of the cost model, fitted to CPU times on the development machine
 // (docs/benchmarks.md, "Radiation"): Green function integrals per second
 // (the table's interpolation and the near panels' quadrature) and complex
-// LU and product flops per second (Eigen, SSE2)
-const double kGreenRate = 3.5e6, kFlopRate = 4.0e9;
+// LU and product flops per second (OpenBLAS, AVX2), as counted below
+const double kGreenRate = 2.7e6, kFlopRate = 1.1e11;
 
 PanelCost panelCost(const PanelMesh& body, const PanelMesh& lid, int nw, int nh) {
   PanelCost c;
