@@ -9,7 +9,8 @@ pkgs=(
   cmake g++ make pkg-config
   libmujoco-dev libqhull-dev   # MuJoCo 2.2.2; its CMake config names qhull's include dir
   libc6-dev                    # libmvec: vector sin, cos, exp of the cpu backend (comes with g++)
-  libeigen3-dev                # the panel solver's dense complex LU (mjbuoy/radiation/panel.cc); small linear algebra in tests
+  libeigen3-dev                # the panel solver's matrices (mjbuoy/radiation/panel.cc); small linear algebra in tests
+  libopenblas-dev              # the panel solver's dense LU and products (mjbuoy/radiation/panellu.cc)
   libmeshoptimizer-dev         # quadric simplification of a hull too fine for the panel budget (mjbuoy/radiation/panelcoarse.cc)
   libhdf5-dev libnetcdf-dev    # coefficient files of other tools: BEMIO HDF5, Capytaine NetCDF (mjbuoy/radiation/coefio_*.cc)
   libgtest-dev                 # unit tests

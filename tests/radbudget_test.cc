@@ -3,6 +3,7 @@
 // warning names the setting and the value to set (docs/physics.md section
 // 13, "Coarsened hulls"; mjbuoy/radiation/radattach.cc)
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -153,6 +154,28 @@ TEST(RadBudget, LongShallowBoxGetsPanelsForItsDraft) {
   std::printf("[radbudget] 20 m box: heave period default %.4f s, converged %.4f s; B33 "
               "worst of the unrefined mesh %.1f%%\n", Td, Tf, 100 * rawErr);
   EXPECT_NEAR(Td, Tf, 0.05 * Tf);
+}
+
+TEST(RadBudget, SymmetricHullCountsItsMatrices) {
+  // the Wigley of models/wigley.xml: 408 wet panels with the lid, mirror
+  // symmetric about x = 0 and y = 0, solved as 4 systems of 102 rows.
+  // Each influence matrix holds N N / 4 = 408 x 102 = 41616 entries, more
+  // than the 180 x 180 = 32400 of an unsymmetric hull at a budget of 180
+  // (hand count; docs/physics.md section 13, "Coarsened hulls"): the
+  // budget coarsens it to at most 180 panels (counted at the LU's N^3 / 16
+  // alone, 408 / 4^(2/3) = 162 panels, it would not be)
+  std::string w;
+  std::vector<double> c = coef(shippedModel("wigley.xml", "<numeric name=\"mjbuoy.radiation."
+                                            "omega\" data=\"2 6 3\"/><numeric name=\"mjbuoy."
+                                            "radiation.panels\" data=\"180\"/>"), &w);
+  EXPECT_EQ(c.size(), 36u + 3 * 36);
+  const std::string key = "hull coarsened for the panel solver from ";
+  size_t at = w.find(key);
+  ASSERT_NE(at, std::string::npos) << w;
+  int from = 0, to = 0;
+  ASSERT_EQ(std::sscanf(w.c_str() + at + key.size(), "%d to %d", &from, &to), 2) << w;
+  EXPECT_EQ(from, 408) << w;
+  EXPECT_LE(to, 180) << w;
 }
 
 TEST(RadBudget, CoarseningAHemisphereOnASlideAttaches) {

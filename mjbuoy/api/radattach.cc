@@ -515,14 +515,16 @@ static std::string unresolved(const PanelMesh& p, const HydroCoef& c, const RadC
 }
 
 // the wet panels counted against mjbuoy.radiation.panels: those of a
-// hull without symmetry that cost as much to solve. k mirror planes split
-// the LU into 2^k systems of N / 2^k (docs/physics.md section 13, "Mirror
-// symmetry"): N^3 / 4^k, as much as N / 4^(k/3) unsymmetric panels
+// hull without symmetry that take as much memory and time to solve.
+// k mirror planes split the LU into 2^k systems of N / 2^k (docs/physics.md
+// section 13, "Mirror symmetry"): N^3 / 4^k flops, as much as N / 4^(k/3)
+// unsymmetric panels, but the influence matrices and their Green function
+// integrals are N^2 / 2^k, as much as N / 2^(k/2): the larger of the two
 static double solveSize(const PanelMesh& body, const PanelMesh& lid, bool useLid) {
   int n = body.nface() + (useLid ? lid.nface() : 0);
   int m = panelMirrors(body, useLid ? lid : PanelMesh());
   int k = (m & 1) + (m >> 1 & 1);
-  return n * std::pow(4.0, -k / 3.0);
+  return n * std::pow(2.0, -k / 2.0);
 }
 
 // the panels a hull's geometry asks for (docs/physics.md section 13,

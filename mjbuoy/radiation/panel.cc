@@ -6,6 +6,7 @@
 // the hull, w 0 at the waterline) against irregular frequencies
 #include "radiation/panel.h"
 #include "radiation/panellid.h"
+#include "radiation/panellu.h"
 
 #include <algorithm>
 #include <atomic>
@@ -222,6 +223,25 @@ Panel mirror(const Panel& p) {
 struct Rankine {
   MatR Sd, Si, Dd, Di;
 };
+
+// the wave frequencies' Rankine part G = 1/r + 1/r' (docs/physics.md
+// section 13) on the solved rows only: S = Sd + Si on rows (body, then
+// lid), D = Dd + Di on its body rows; a row-reduced copy, so that the full
+// matrices (4 N^2 doubles) are freed after the infinite frequency
+struct RankineRows {
+  MatR S, D;
+};
+
+RankineRows rankineRows(Rankine&& rk, const std::vector<int>& rows, int nb) {
+  std::vector<int> rb;
+  for (int r : rows)
+    if (r < nb) rb.push_back(r);
+  RankineRows rr;
+  rr.S = rk.Sd(rows, Eigen::all) + rk.Si(rows, Eigen::all);
+  rk.Sd.resize(0, 0), rk.Si.resize(0, 0);
+  rr.D = rk.Dd(rb, Eigen::all) + rk.Di(rb, Eigen::all);
+  return rr;
+}
 
 void rankineMatrices(const Problem& pb, Rankine* rk) {
   int n = pb.nb + pb.nl, nb = pb.nb;
@@ -487,7 +507,7 @@ struct CoefView {
 // false on a non-finite result
 struct Freq {
   const Problem* pb;
-  const Rankine* rk;
+  const RankineRows* rk;
   const MatR *Nn, *Na;
   const GreenTable* tab;
   const std::vector<GreenFd>* fd;  // per frequency; empty: deep water
@@ -520,9 +540,9 @@ MatC groupSolve(const Group& gr, const MatC& M, const MatC& rhs) {
         Mp.col(c) += chi(p, k) * M.col(gr.img[k][gr.rows[c]]);
         rp.row(c) += (chi(p, k) / ng) * rhs.row(gr.img[k][gr.rows[c]]);
       }
-    MatC sp = Mp.partialPivLu().solve(rp);
+    panelLuSolve(&Mp, &rp);
     for (int c = 0; c < nr; c++)
-      for (int k = 0; k < ng; k++) sig.row(gr.img[k][gr.rows[c]]) += chi(p, k) * sp.row(c);
+      for (int k = 0; k < ng; k++) sig.row(gr.img[k][gr.rows[c]]) += chi(p, k) * rp.row(c);
   }
   return sig;
 }
@@ -539,7 +559,7 @@ struct OmegaSystem {
 // assembles frequency w's system (docs/physics.md section 13)
 void assembleOmega(const Freq& f, int w, OmegaSystem* s) {
   const Problem& pb = *f.pb;
-  const Rankine& rk = *f.rk;
+  const RankineRows& rk = *f.rk;
   const MatR& Nn = *f.Nn;
   const std::vector<double>& heading = *f.heading;
   const std::vector<int>& rows = f.rows;
@@ -557,13 +577,13 @@ void assembleOmega(const Freq& f, int w, OmegaSystem* s) {
   // interior side, w 0 at the waterline (docs/physics.md section 13); with
   // dphi/dz(0-) = K phi + 4 pi sigma (the free-surface condition of G plus
   // the jump of the doubled source sheet): -i w K phi + 4 pi sigma = 0
-  std::vector<int> rb(rows.begin(), rows.begin() + nrb), rl(rows.begin() + nrb, rows.end());
   MatC& M = s->M;
   M.resize(nr, n);
-  M.topRows(nrb) = (rk.Dd(rb, Eigen::all) + rk.Di(rb, Eigen::all)).cast<cplx>() + WD;
+  M.topRows(nrb) = rk.D.cast<cplx>() + WD;
+  WD.resize(0, 0);  // (its memory: N_r N complex)
   if (nr > nrb)
     M.bottomRows(nr - nrb) =
-        K * ((rk.Sd(rl, Eigen::all) + rk.Si(rl, Eigen::all)).cast<cplx>() + WS.bottomRows(nr - nrb));
+        K * (rk.S.bottomRows(nr - nrb).cast<cplx>() + WS.bottomRows(nr - nrb));
   for (int r = nrb; r < nr; r++) M.row(r) *= cplx(0, -pb.lidw[rows[r] - nb]);
   for (int r = 0; r < nr; r++) M(r, rows[r]) += rows[r] < nb ? -2 * kPi : 4 * kPi;
   // right-hand sides: nm radiation modes (dphi/dn = n_j on the moving
@@ -595,25 +615,34 @@ void assembleOmega(const Freq& f, int w, OmegaSystem* s) {
 
 // solves system s for the source strengths sig (all panels) and returns
 // the potentials on the body panels (6 radiation modes, nh diffraction)
-MatC solvePotentials(const Freq& f, const OmegaSystem& s, MatC* sig) {
+// (M and WS are overwritten: the LU factors, the source potential S)
+MatC solvePotentials(const Freq& f, OmegaSystem* s, MatC* sig) {
   const Problem& pb = *f.pb;
-  const Rankine& rk = *f.rk;
+  const RankineRows& rk = *f.rk;
   const std::vector<int>& rows = f.rows;
   int n = pb.nb + pb.nl, nb = pb.nb, nh = (int)f.heading->size(), nr = (int)rows.size();
-  int nrb = s.nrb, nc = f.cv.nm + nh;
-  std::vector<int> rb(rows.begin(), rows.begin() + nrb);
+  int nrb = s->nrb, nc = f.cv.nm + nh;
   bool sym = nr < n;
-  *sig = sym ? groupSolve(*f.gr, s.M, s.rhs) : MatC(s.M.partialPivLu().solve(s.rhs));
-  MatC S = (rk.Sd(rb, Eigen::all) + rk.Si(rb, Eigen::all)).cast<cplx>() + s.WS.topRows(nrb);
+  if (sym) {
+    *sig = groupSolve(*f.gr, s->M, s->rhs);
+  } else {
+    *sig = std::move(s->rhs);
+    panelLuSolve(&s->M, sig);
+  }
+  s->M.resize(0, 0);
+  // S = Sd + Si + the wave part on the body rows, in WS's storage
+  s->WS.topRows(nrb) += rk.S.topRows(nrb).cast<cplx>();
+  auto S = s->WS.topRows(nrb);
   MatC phi(nb, nc);
   if (!sym) {
-    phi = S * *sig;
+    panelProduct(S, *sig, &phi);
   } else {
     // phi(g i) = sum_j S(i, g j) sig(j) = (S sig(g .))(i), g its own inverse
     MatC sg(n, nc);
     for (const std::vector<int>& g : f.gr->img) {
       for (int j = 0; j < n; j++) sg.row(j) = sig->row(g[j]);
-      MatC pg = S * sg;
+      MatC pg;
+      panelProduct(S, sg, &pg);
       for (int r = 0; r < nrb; r++) phi.row(g[rows[r]]) = pg.row(r);
     }
   }
@@ -663,7 +692,7 @@ bool solveOmega(const Freq& f, int w) {
   {
     OmegaSystem s;
     assembleOmega(f, w, &s);
-    phi = solvePotentials(f, s, &sig);
+    phi = solvePotentials(f, &s, &sig);
     phi0 = std::move(s.phi0);
   }
   integrateForces(f, w, phi0, phi);
@@ -819,7 +848,8 @@ bool infiniteAddedMass(const Problem& pb, const Rankine& rk, const MatR& Nn, con
   MatR S = rk.Sd.topLeftCorner(nb, nb) - rk.Si.topLeftCorner(nb, nb);
   if (pb.h > 0 && bottomNear(pb)) addInfiniteImages(pb, &S, &M);
   M.diagonal().array() -= 2 * kPi;
-  MatR sig = M.partialPivLu().solve(Nn);
+  MatR sig = Nn;
+  panelLuSolve(&M, &sig);
   MatR phi = S * sig;
   MatR Ai = -rho * Na.transpose() * phi;
   for (int a = 0; a < nm; a++)
@@ -897,21 +927,27 @@ bool solveProblem(const Problem& pb, const double* refs, const std::vector<doubl
                   const PanelFieldFn* field, const PanelMesh* body, std::string* err) {
   int nw = (int)omega.size();
   double grav = cv.g;
+  PanelBlasSerial serial;
   MatR Nn, Na;
   bodyNormals(pb, refs, &Nn, &Na);
-  Rankine rk;
-  rankineMatrices(pb, &rk);
-  if (!infiniteAddedMass(pb, rk, Nn, Na, cv, err)) return false;
+  Group gr;
+  std::vector<int> rows = solveRows(pb, &gr);
+  RankineRows rr;
+  {
+    Rankine rk;
+    rankineMatrices(pb, &rk);
+    if (!infiniteAddedMass(pb, rk, Nn, Na, cv, err)) return false;
+    rr = rankineRows(std::move(rk), rows, pb.nb);
+  }
   // the table up to the largest propagating wavenumber
   std::vector<GreenFd> fds;
   if (!depthKernels(pb, omega, grav, &fds, err)) return false;
   double kmax = omega.back() * omega.back() / grav;
   for (const GreenFd& f : fds) kmax = std::fmax(kmax, f.k0);
   std::shared_ptr<const GreenTable> tab = waveTable(pb, kmax);
-  Group gr;
-  Freq fq{&pb, &rk, &Nn, &Na, tab.get(), &fds, &omega, &heading, out, nw > 1, &gr, {}, field,
+  Freq fq{&pb, &rr, &Nn, &Na, tab.get(), &fds, &omega, &heading, out, nw > 1, &gr, {}, field,
           body, cv};
-  fq.rows = solveRows(pb, &gr);
+  fq.rows = std::move(rows);
   return solveFrequencies(fq, err);
 }
 
@@ -929,11 +965,11 @@ int panelMirrors(const PanelMesh& body, const PanelMesh& lid) {
   return symmetryGroup(pb).planes;
 }
 
-// rates of the cost model, measured on one core of the development machine
+// rates of the cost model, fitted to CPU times on the development machine
 // (docs/benchmarks.md, "Radiation"): Green function integrals per second
 // (the table's interpolation and the near panels' quadrature) and complex
-// LU and product flops per second (Eigen, SSE2)
-const double kGreenRate = 3.5e6, kFlopRate = 4.0e9;
+// LU and product flops per second (OpenBLAS, AVX2), as counted below
+const double kGreenRate = 2.7e6, kFlopRate = 1.1e11;
 
 PanelCost panelCost(const PanelMesh& body, const PanelMesh& lid, int nw, int nh) {
   PanelCost c;
