@@ -21,6 +21,17 @@ namespace {
 
 using mjbt::Scene;
 
+// fresh water, no Kerner drag or viscous terms, radiation on, no drift,
+// unrefined panels: the cubes feel hydrostatics and potential flow only
+const char* const kPotentialOnly =
+    "<numeric name=\"mjbuoy.sea.density\" data=\"1000\"/>"
+    "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
+    "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0\"/>"
+    "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0\"/>"
+    "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+    "<text name=\"mjbuoy.radiation.drift\" data=\"off\"/>"
+    "<numeric name=\"mjbuoy.radiation.refine\" data=\"0\"/>";
+
 // floating 1 m cubes (half immersed at rest: mass rho / 2) "a", "b", "c"
 // at x = 0, gap and -gap [m] (the row symmetric about both vertical
 // planes: the group solve keeps its mirror symmetry); extra: more custom
@@ -29,13 +40,7 @@ std::string cubes(double gap, const std::string& extra) {
   std::ostringstream s;
   s << "<mujoco><option timestep=\"0.005\"/><custom>"
     << "<text name=\"mjbuoy.hulls\" data=\"ha hb hc\"/>"
-    << "<numeric name=\"mjbuoy.sea.density\" data=\"1000\"/>"
-    << "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
-    << "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0\"/>"
-    << "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0\"/>"
-    << "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
-    << "<text name=\"mjbuoy.radiation.drift\" data=\"off\"/>"
-    << "<numeric name=\"mjbuoy.radiation.refine\" data=\"0\"/>"
+    << kPotentialOnly
     << "<numeric name=\"mjbuoy.radiation.omega\" data=\"0.9 9 12\"/>" << extra
     << "</custom><worldbody>";
   const double at[3][2] = {{0, 0}, {gap, 0}, {-gap, 0}};
@@ -117,13 +122,7 @@ std::string slides(double gap) {
   std::ostringstream s;
   s << "<mujoco><option timestep=\"0.005\"/><custom>"
     << "<text name=\"mjbuoy.hulls\" data=\"ha hb\"/>"
-    << "<numeric name=\"mjbuoy.sea.density\" data=\"1000\"/>"
-    << "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
-    << "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 0\"/>"
-    << "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 0\"/>"
-    << "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
-    << "<text name=\"mjbuoy.radiation.drift\" data=\"off\"/>"
-    << "<numeric name=\"mjbuoy.radiation.refine\" data=\"0\"/>"
+    << kPotentialOnly
     << "<numeric name=\"mjbuoy.radiation.omega\" data=\"0.4 12 40\"/>"
     << "<text name=\"mjbuoy.radiation.group\" data=\"a b\"/>"
     << "</custom><worldbody>";
