@@ -330,6 +330,21 @@ static bool sameProblem(const Solved& s, const PanelMesh& body, const PanelMesh&
   return near(a.com, db->com, 3, tol);
 }
 
+// the solution c (and drift table dt) into the cache directory dir (none:
+// "") under key and dkey; a failure is a warning
+static void cacheStore(Buoy* B, const std::string& who, const std::string& dir,
+                       const std::string& key, const std::string& dkey, const HydroCoef& c,
+                       const DriftTable* dt) {
+  if (dir.empty()) return;
+  std::string note;
+  if (radCacheStore(dir, key, c, &note) &&
+      (!dt || radCacheStore(dir, dkey, driftPack(*dt, c), &note))) {
+    B->radcache.write++;
+  } else {
+    B->cfg.warn.push_back(who.substr(8) + ": " + note);
+  }
+}
+
 // panelSolve through the cache (radcache.h): a file whose key matches and
 // whose payload fits it (radCacheCheck) is used as it is, else the
 // solution is computed, after its memory is estimated (radmem.h), and
@@ -374,6 +389,9 @@ static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
     *c = s.c;
     if (dt) *dt = s.dt;
     B->radcache.same++;
+    // stored under this hull's own key too: the next attach reads these
+    // numbers, not a solve of its own that differs in the last bits
+    cacheStore(B, who, dir, key, dkey, *c, dt);
     return true;
   }
   const HydroCoef in = *c;
@@ -395,13 +413,7 @@ static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
   }
   solved->push_back(Solved{who, body, lid, omega, head, in, *c, db != nullptr,
                            db ? *db : DriftBody(), dt ? *dt : DriftTable()});
-  if (dir.empty()) return true;
-  if (radCacheStore(dir, key, *c, &note) &&
-      (!dt || radCacheStore(dir, dkey, driftPack(*dt, *c), &note))) {
-    B->radcache.write++;
-  } else {
-    B->cfg.warn.push_back(who.substr(8) + ": " + note);
-  }
+  cacheStore(B, who, dir, key, dkey, *c, dt);
   return true;
 }
 
