@@ -28,7 +28,7 @@ struct RadBody {
   double A[36];              // A_inf about ref, body axes, row-major
   std::vector<int> dof;      // dofs that move the body, leaf to root
   std::vector<int> pair;     // (i, j) = 6 i + j with a retardation function
-  std::vector<double> K;     // K_pair(k dt) reversed (oldest first), pair-major, nk each [N/m, ...];
+  std::vector<double> K;     // K_pair(k dt), pair-major, nk each [N/m, ...];
                              // empty for a twin (copyMemory), which has only Kr
   // each pair's K in reverse (oldest sample's weight first), what the
   // convolution reads; shared by bodies with the same memory (one copy of a

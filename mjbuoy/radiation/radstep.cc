@@ -441,8 +441,8 @@ void coupleWrench(const Radiation& r, const RadCouple& c, const RadState* s, dou
     // Kr[nk - 1 - k] = K(k dt): two forward dot products over the ring
     const double* Kr = c.K.data() + p * nk;
     const double* x = h + r.nch * (c.pair[p] % 6);
-    double sum = vDot(na, Kr + nk - na, x + hd - na + 1);
-    if (n > na) sum += vDot(n - na, Kr + nk - n, x + hd - n + 1 + r.nch);
+    double sum = dotBack(Kr, nk, 0, x, hd, na);
+    sum += dotBack(Kr, nk, na, x, hd - na + r.nch, n - na);
     sum -= 0.5 * (Kr[nk - 1] * x[hd] + Kr[nk - n] * x[(hd - n + 1 + r.nch) % r.nch]);
     f[c.pair[p] / 6] -= dt * sum;
   }
