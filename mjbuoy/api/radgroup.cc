@@ -129,25 +129,6 @@ static bool groupLoad(Buoy* B, const std::string& dir, const std::vector<GroupMe
   return true;
 }
 
-// the coupling block (i, j) of g (A, B, Ainf; no exciting force), about
-// the members' own reference points (their panel-frame origins, ref 0)
-static void coupleBlock(const PanelGroupCoef& g, int i, int j, HydroCoef* h) {
-  const int nm = g.nm(), nw = int(g.omega.size());
-  h->rho = g.rho, h->g = g.g, h->depth = g.depth;
-  h->omega = g.omega;
-  h->A.resize(36 * nw);
-  h->B.resize(36 * nw);
-  for (int w = 0; w < nw; w++)
-    for (int a = 0; a < 6; a++)
-      for (int b = 0; b < 6; b++) {
-        size_t o = size_t(nm) * nm * w + size_t(nm) * (6 * i + a) + 6 * j + b;
-        h->A[36 * w + 6 * a + b] = g.A[o];
-        h->B[36 * w + 6 * a + b] = g.B[o];
-      }
-  for (int a = 0; a < 6; a++)
-    for (int b = 0; b < 6; b++) h->Ainf[6 * a + b] = g.Ainf[nm * (6 * i + a) + 6 * j + b];
-}
-
 // the solved group's n own coefficients then n x n coupling blocks into all
 static void groupSplit(const PanelGroupCoef& g, size_t n, std::vector<HydroCoef>* all) {
   for (size_t k = 0; k < n; k++) {
@@ -158,7 +139,7 @@ static void groupSplit(const PanelGroupCoef& g, size_t n, std::vector<HydroCoef>
   }
   for (size_t i = 0; i < n; i++)
     for (size_t j = 0; j < n; j++)
-      if (i != j) coupleBlock(g, int(i), int(j), &(*all)[n + n * i + j]);
+      if (i != j) panelGroupBlock(g, int(i), int(j), &(*all)[n + n * i + j]);
 }
 
 bool groupSolve(Buoy* B, const std::vector<GroupMember>& mem, const std::vector<double>& omega,

@@ -1048,25 +1048,31 @@ bool panelSolveGroup(const std::vector<PanelMesh>& bodies, const std::vector<Pan
   return solveProblem(pb, out->ref.data(), omega, heading, cv, nullptr, nullptr, nullptr, err);
 }
 
-bool panelGroupBody(const PanelGroupCoef& g, int k, HydroCoef* out) {
-  int nm = g.nm(), nw = (int)g.omega.size(), nh = (int)g.heading.size();
-  if (k < 0 || 6 * k >= nm) return false;
-  const double* r = &g.ref[3 * k];
-  for (int c = 0; c < 3; c++) out->ref[c] = r[c];
+bool panelGroupBlock(const PanelGroupCoef& g, int i, int j, HydroCoef* out) {
+  int nm = g.nm(), nw = (int)g.omega.size();
+  if (i < 0 || j < 0 || 6 * i >= nm || 6 * j >= nm) return false;
   out->rho = g.rho, out->g = g.g, out->depth = g.depth;
   out->omega = g.omega;
-  out->heading = g.heading;
   out->A.resize(36 * nw);
   out->B.resize(36 * nw);
   for (int w = 0; w < nw; w++)
     for (int a = 0; a < 6; a++)
       for (int b = 0; b < 6; b++) {
-        size_t o = (size_t)nm * nm * w + (size_t)nm * (6 * k + a) + 6 * k + b;
+        size_t o = (size_t)nm * nm * w + (size_t)nm * (6 * i + a) + 6 * j + b;
         out->A[36 * w + 6 * a + b] = g.A[o];
         out->B[36 * w + 6 * a + b] = g.B[o];
       }
   for (int a = 0; a < 6; a++)
-    for (int b = 0; b < 6; b++) out->Ainf[6 * a + b] = g.Ainf[nm * (6 * k + a) + 6 * k + b];
+    for (int b = 0; b < 6; b++) out->Ainf[6 * a + b] = g.Ainf[nm * (6 * i + a) + 6 * j + b];
+  return true;
+}
+
+bool panelGroupBody(const PanelGroupCoef& g, int k, HydroCoef* out) {
+  int nw = (int)g.omega.size(), nh = (int)g.heading.size();
+  if (!panelGroupBlock(g, k, k, out)) return false;
+  const double* r = &g.ref[3 * k];
+  for (int c = 0; c < 3; c++) out->ref[c] = r[c];
+  out->heading = g.heading;
   out->Xre.resize(6 * nw * nh);
   out->Xim.resize(6 * nw * nh);
   out->FKre.resize(6 * nw * nh);

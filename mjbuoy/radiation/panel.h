@@ -85,6 +85,11 @@ bool panelSolveGroup(const std::vector<PanelMesh>& bodies, const std::vector<Pan
 // k is outside 0 .. N - 1
 bool panelGroupBody(const PanelGroupCoef& g, int k, HydroCoef* out);
 
+// the block (i, j) of g: A, B and A_inf of the force on body i per motion
+// of body j, about each body's ref (rho, g, depth, omega too; ref, heading
+// and the exciting force untouched); false for a body g does not hold
+bool panelGroupBlock(const PanelGroupCoef& g, int i, int j, HydroCoef* out);
+
 // a panel mesh mirror-symmetric about one vertical plane (within 1e-6 of
 // its size) is solved as two half-size systems, about two as four
 // quarter-size ones; off (tests): always the full system. Default on
