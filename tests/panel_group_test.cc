@@ -171,8 +171,12 @@ TEST(PanelGroup, SeparationReturnsToSingleBody) {
       EXPECT_LT(ea, 0.01);
       EXPECT_LT(eb, 0.01);
     }
-    if (d > 500) EXPECT_LT(ex, 0.01);
-    if (d > 30) EXPECT_NEAR(r, j0, 0.03);
+    if (d > 500) {
+      EXPECT_LT(ex, 0.01);
+    }
+    if (d > 30) {
+      EXPECT_NEAR(r, j0, 0.03);
+    }
     EXPECT_LT(std::fmax(ea, eb), prev * 1.5);  // decays (within the 1/kd oscillation)
     prev = std::fmax(ea, eb);
   }

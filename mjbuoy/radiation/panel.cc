@@ -1068,7 +1068,7 @@ bool panelGroupBlock(const PanelGroupCoef& g, int i, int j, HydroCoef* out) {
 }
 
 bool panelGroupBody(const PanelGroupCoef& g, int k, HydroCoef* out) {
-  int nw = (int)g.omega.size(), nh = (int)g.heading.size();
+  int nm = g.nm(), nw = (int)g.omega.size(), nh = (int)g.heading.size();
   if (!panelGroupBlock(g, k, k, out)) return false;
   const double* r = &g.ref[3 * k];
   for (int c = 0; c < 3; c++) out->ref[c] = r[c];
