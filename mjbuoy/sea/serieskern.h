@@ -44,7 +44,35 @@ __attribute__((always_inline)) inline void seriesLoop(const V ur[2], const V ui[
   V pr = V{} + 1, pi = V{}, hr = pr, hi = pi, gr = pr, gi = pi, fr = pr, fi = pi;
   V Sr = V{} + s0, Si = V{}, T0r = V{} + t0, T0i = V{};
   V T1r = T0r, T1i = V{}, T2r = T0r, T2i = V{};
-  for (int m = 1; m < N; m++) {
+  // the first term (m = 1) from p = h = g = f = 1 without the loop's
+  // products by 1 and 0: p = u2, h = u1 + u2, g = u1 + h, f = u2 + h, the
+  // same sums up to a zero's sign in fewer operations (a lane series has
+  // about 7 terms)
+  int m1 = 1;
+  if (N > 1) {
+    pr = ur[1];
+    pi = ui[1];
+    hr = ur[0] + pr;
+    hi = ui[0] + pi;
+    Sr += kInvF2[1] * hr;
+    Si += kInvF2[1] * hi;
+    if (MOM) {
+      gr = ur[0] + hr;
+      gi = ui[0] + hi;
+      T0r += kInvF3[1] * hr;
+      T0i += kInvF3[1] * hi;
+      T1r += kInvF3[1] * gr;
+      T1i += kInvF3[1] * gi;
+      if (!ID) {
+        fr = ur[1] + hr;
+        fi = ui[1] + hi;
+        T2r += kInvF3[1] * fr;
+        T2i += kInvF3[1] * fi;
+      }
+    }
+    m1 = 2;
+  }
+  for (int m = m1; m < N; m++) {
     mulBy(pr, pi, ur[1], ui[1]);
     mulAdd(hr, hi, ur[0], ui[0], pr, pi);
     const double c2 = kInvF2[m];
@@ -92,7 +120,20 @@ __attribute__((always_inline)) inline void seriesPair(const V ur[2][2], const V 
     pi[a] = hi[a] = Si[a] = V{};
     Sr[a] = V{} + kInvF2[0];
   }
-  for (int m = 1; m < N; m++) {
+  int m1 = 1;
+  if (N > 1) {
+    // the first term without the products by 1 and 0 (seriesLoop)
+    for (int a = 0; a < 2; a++) {
+      pr[a] = ur[a][1];
+      pi[a] = ui[a][1];
+      hr[a] = ur[a][0] + pr[a];
+      hi[a] = ui[a][0] + pi[a];
+      Sr[a] += kInvF2[1] * hr[a];
+      Si[a] += kInvF2[1] * hi[a];
+    }
+    m1 = 2;
+  }
+  for (int m = m1; m < N; m++) {
     const double c2 = kInvF2[m];
     for (int a = 0; a < 2; a++) {
       mulBy(pr[a], pi[a], ur[a][1], ui[a][1]);
