@@ -72,6 +72,13 @@ void runDemo(double h, int every, Motion* out) {
   mj_deleteModel(m);
 }
 
+// RMS of the difference of a's and b's samples from index i0
+double rmsDiffFrom(const std::vector<double>& a, const std::vector<double>& b, size_t i0) {
+  double sq = 0;
+  for (size_t i = i0; i < a.size(); i++) sq += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(sq / double(a.size() - i0));
+}
+
 // RMS about the mean of v's samples from index i0
 double rmsFrom(const std::vector<double>& v, size_t i0) {
   double mean = 0, sq = 0;
@@ -86,7 +93,9 @@ TEST(Demo, MotionsConvergeInTheTimeStep) {
   // the step h: the error e(h) = C h + O(h^2), so the run at h / 5 is
   // within e(h) / 5 of the exact motion and the difference of the two runs
   // bounds e(h) within 25% [Hairer, Lubich and Wanner 2006, sec. I.1;
-  // the convergence check of docs/benchmarks.md "The demo"]
+  // the convergence check of docs/benchmarks.md "The demo"]. Slamming's
+  // force over one step (docs/physics.md 4.4) is not of this kind, but its
+  // share of the difference is small in this sea (the same page)
   char e[1024] = "";
   mjModel* m = mj_loadXML(MJB_MODELS "/jonswap.xml", nullptr, e, sizeof(e));
   ASSERT_TRUE(m) << e;
@@ -104,9 +113,14 @@ TEST(Demo, MotionsConvergeInTheTimeStep) {
     ASSERT_EQ(coarse.q[k].size(), fine.q[k].size());
     const size_t i0 = std::lround(kFrom / h);
     const double rc = rmsFrom(coarse.q[k], i0), rf = rmsFrom(fine.q[k], i0);
-    std::printf("[demo] %s %s: RMS %.5g at %g s, %.5g at %g s (%+.2f%%)\n",
+    const double dq = rmsDiffFrom(coarse.q[k], fine.q[k], i0);
+    std::printf("[demo] %s %s: RMS %.5g at %g s, %.5g at %g s (%+.2f%%); series %.2f%%\n",
                 coarse.name[k / 3].c_str(), what[k % 3], rc, h, rf, h / kFine,
-                100 * (rc - rf) / rf);
+                100 * (rc - rf) / rf, 100 * dq / rf);
+    // the heave series within 5% of its RMS: the runs follow the same motion
+    if (k % 3 == 0) {
+      EXPECT_LT(dq, 0.05 * rf) << coarse.name[k / 3] << " heave: RMS difference of the series";
+    }
     // the RMS motions within 2% of the finer step's
     EXPECT_NEAR(rc, rf, 0.02 * rf) << coarse.name[k / 3] << " " << what[k % 3] << ": RMS at step "
                                    << h << " s against " << h / kFine << " s";
