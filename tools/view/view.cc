@@ -139,7 +139,7 @@ int run(View* v) {
     int slow;
     std::string ctrl;
     {
-      std::lock_guard<std::mutex> lk(v->mtx);
+      UiLock lk(v);
       if (v->frame) {
         int w, h;
         glfwGetFramebufferSize(v->win, &w, &h);
@@ -179,7 +179,7 @@ int run(View* v) {
     if (shotPending && t >= v->o.shotTime - eps) {
       shotPending = false;
       failed |= !screenshot(v, vp, t);
-      std::lock_guard<std::mutex> lk(v->mtx);
+      UiLock lk(v);
       v->stopAt = v->o.exitAfter >= 0 ? v->o.exitAfter : 1e300;
     }
     glfwSwapBuffers(v->win);

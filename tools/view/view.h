@@ -62,6 +62,10 @@ struct View {
 
   // shared with the physics thread, under mtx
   std::mutex mtx;
+  // the drawing and input threads waiting for mtx (UiLock): the physics
+  // thread lets them in between its batches of steps, as std::mutex is not
+  // fair and a re-lock straight after an unlock can starve them
+  std::atomic<int> uiWaiting{0};
   bool paused = false;
   int steps = 0;            // single steps requested while paused
   bool reset = false;       // reset requested
@@ -89,6 +93,23 @@ struct View {
   // frame costs for --print-rtf: frames drawn, seconds in mjr_render and in the sea
   long nframe = 0;
   double renderSec = 0, seaSec = 0;
+};
+
+// mtx for the drawing and input threads: counted in uiWaiting while they
+// wait, so the physics thread yields the lock to them (view_sim.cc)
+class UiLock {
+ public:
+  explicit UiLock(View* v) : v_(v) {
+    v_->uiWaiting++;
+    v_->mtx.lock();
+    v_->uiWaiting--;
+  }
+  ~UiLock() { v_->mtx.unlock(); }
+  UiLock(const UiLock&) = delete;
+  UiLock& operator=(const UiLock&) = delete;
+
+ private:
+  View* v_;
 };
 
 // keyboard, mouse and scroll callbacks of v->win (view_input.cc)

@@ -11,7 +11,7 @@ View* self(GLFWwindow* w) { return static_cast<View*>(glfwGetWindowUserPointer(w
 void key(GLFWwindow* w, int k, int, int act, int mods) {
   View* v = self(w);
   if (act == GLFW_RELEASE) return;
-  std::lock_guard<std::mutex> lk(v->mtx);
+  UiLock lk(v);
   switch (k) {
     case GLFW_KEY_SPACE:
       if (act == GLFW_PRESS) v->paused = !v->paused;
@@ -83,7 +83,7 @@ void select(View* v, int button, double x, double y) {
   if (ww <= 0 || wh <= 0) return;
   mjtNum pnt[3];
   int geom = -1, skin = -1;
-  std::lock_guard<std::mutex> lk(v->mtx);
+  UiLock lk(v);
   int body = mjv_select(v->m, v->d, &v->opt, (mjtNum)ww / wh, x / ww, (wh - y) / wh, &v->scn,
                         pnt, &geom, &skin);
   if (button == GLFW_MOUSE_BUTTON_RIGHT) {
@@ -113,7 +113,7 @@ void button(GLFWwindow* w, int bt, int act, int mods) {
   glfwGetCursorPos(w, &v->lastx, &v->lasty);
   if (act == GLFW_RELEASE) {
     if (!v->left && !v->right) {
-      std::lock_guard<std::mutex> lk(v->mtx);
+      UiLock lk(v);
       v->pert.active = 0;
     }
     return;
@@ -128,7 +128,7 @@ void button(GLFWwindow* w, int bt, int act, int mods) {
   v->lastButton = bt;
   // ctrl + drag on a selected body: perturb it (right: translate, left: rotate)
   if ((mods & GLFW_MOD_CONTROL) && (bt == GLFW_MOUSE_BUTTON_LEFT || bt == GLFW_MOUSE_BUTTON_RIGHT)) {
-    std::lock_guard<std::mutex> lk(v->mtx);
+    UiLock lk(v);
     if (v->pert.select > 0) {
       int kind = bt == GLFW_MOUSE_BUTTON_RIGHT ? mjPERT_TRANSLATE : mjPERT_ROTATE;
       if (!v->pert.active) mjv_initPerturb(v->m, v->d, &v->scn, &v->pert);
@@ -151,7 +151,7 @@ void move(GLFWwindow* w, double x, double y) {
   int action = v->right ? (shift ? mjMOUSE_MOVE_H : mjMOUSE_MOVE_V)
              : v->left  ? (shift ? mjMOUSE_ROTATE_H : mjMOUSE_ROTATE_V)
                         : mjMOUSE_ZOOM;
-  std::lock_guard<std::mutex> lk(v->mtx);
+  UiLock lk(v);
   if (v->pert.active) {
     mjv_movePerturb(v->m, v->d, action, dx / wh, dy / wh, &v->scn, &v->pert);
   } else {

@@ -108,8 +108,14 @@ void physics(View* v) {
         }
       }
     }
-    // let the renderer take the lock; sleep when ahead of the clock
+    // let the drawing and input threads take the lock (a yield alone can
+    // re-lock before they wake: 2 frames in 20 s while the physics lagged);
+    // sleep when ahead of the clock
     if (stepped) {
+      const double t0 = wallClock();
+      while (v->uiWaiting.load() > 0 && wallClock() - t0 < kHold) {
+        std::this_thread::sleep_for(std::chrono::microseconds(50));
+      }
       std::this_thread::yield();
     } else {
       std::this_thread::sleep_for(std::chrono::microseconds(v->paused ? 2000 : 500));
