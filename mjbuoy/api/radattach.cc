@@ -1024,7 +1024,7 @@ static std::string solveTogether(Buoy* B, const mjData* d, const std::vector<int
                      false, DriftTable());
     if (!err.empty()) return err;
   }
-  return coupleGroup(B, mem, cpl);
+  return coupleGroup(B, d, mem, cpl);
 }
 
 // each radiating rigid group of roots alone, or with its

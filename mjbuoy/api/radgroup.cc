@@ -5,6 +5,8 @@
 
 #include "api/buoy.h"
 #include "api/progress.h"
+#include "hull/rigid.h"
+#include "radiation/coupgain.h"
 #include "radiation/radiation.h"
 #include "radiation/radcache.h"
 #include "util/fmt.h"
@@ -225,7 +227,80 @@ static void toBodies(const GroupMember& a, const GroupMember& b, double M[36]) {
     }
 }
 
-std::string coupleGroup(Buoy* B, const std::vector<GroupMember>& mem,
+// the rigid-body inertia of root's weld group about rb's ref (body frame)
+// in body axes, 6 x 6 row-major: [m I, -m [r]x; m [r]x, I_G - m [r]x [r]x],
+// r = G - ref, I_G about the group's COM G; false when it has no mass
+static bool refInertia(const mjModel* m, const mjData* d, const RadBody& rb, double M[36]) {
+  double Iw[6], G[3], mass;
+  if (!groupInertia(m, d, rb.body, Iw, G, &mass)) return false;
+  const mjtNum* R = d->xmat + 9 * rb.body;
+  const double W[9] = {Iw[0], Iw[3], Iw[4], Iw[3], Iw[1], Iw[5], Iw[4], Iw[5], Iw[2]};
+  double gw[3], r[3], Ib[9] = {0};
+  for (int k = 0; k < 3; k++) gw[k] = G[k] - d->xpos[3 * rb.body + k];
+  // to body axes: r = R^T (G - x) - ref, I_b = R^T I_w R
+  for (int a = 0; a < 3; a++) {
+    r[a] = R[a] * gw[0] + R[3 + a] * gw[1] + R[6 + a] * gw[2] - rb.ref[a];
+    for (int b = 0; b < 3; b++)
+      for (int p = 0; p < 3; p++)
+        for (int q = 0; q < 3; q++) Ib[3 * a + b] += R[3 * p + a] * W[3 * p + q] * R[3 * q + b];
+  }
+  const double X[9] = {0, -r[2], r[1], r[2], 0, -r[0], -r[1], r[0], 0};  // [r]x
+  for (int k = 0; k < 36; k++) M[k] = 0;
+  for (int a = 0; a < 3; a++) {
+    M[6 * a + a] = mass;
+    for (int b = 0; b < 3; b++) {
+      double xx = 0;
+      for (int k = 0; k < 3; k++) xx += X[3 * a + k] * X[3 * k + b];
+      M[6 * a + 3 + b] = -mass * X[3 * a + b];
+      M[6 * (3 + a) + b] = mass * X[3 * a + b];
+      M[6 * (3 + a) + 3 + b] = Ib[3 * a + b] - mass * xx;
+    }
+  }
+  return true;
+}
+
+double groupGain(const Buoy& B, const mjData* d, const std::vector<int>& roots) {
+  const int n = (int)roots.size();
+  std::vector<int> ri(n, -1);
+  for (int k = 0; k < n; k++)
+    for (size_t x = 0; x < B.rad.rb.size(); x++)
+      if (B.rad.rb[x].body == roots[k]) ri[k] = int(x);
+  std::vector<double> D(36 * n), O(36 * n * n, 0.0);
+  for (int i = 0; i < n; i++) {
+    if (ri[i] < 0) return -1;
+    const RadBody& rb = B.rad.rb[ri[i]];
+    if (!refInertia(B.m, d, rb, &D[36 * i])) return -1;
+    for (int k = 0; k < 36; k++) D[36 * i + k] += rb.A[k];
+  }
+  for (const RadCouple& c : B.rad.cp)
+    for (int i = 0; i < n; i++)
+      for (int j = 0; j < n; j++)
+        if (c.i == ri[i] && c.j == ri[j]) std::copy(c.A, c.A + 36, &O[36 * (n * i + j)]);
+  return couplingGain(n, D, O);
+}
+
+// warns when the group's explicit added-mass coupling keeps kCoupleGainWarn
+// or more of a step's acceleration error (groupGain; docs/physics.md
+// section 14, "Interaction")
+static void warnGain(Buoy* B, const mjData* d, const std::vector<GroupMember>& mem) {
+  std::vector<int> roots;
+  for (const GroupMember& x : mem) roots.push_back(x.root);
+  const double g = groupGain(*B, d, roots);
+  if (g < kCoupleGainWarn) return;
+  std::string who;
+  for (size_t i = 0; i < mem.size(); i++)
+    who += std::string(i ? ", " : "") + "\"" + (B->m->names + B->m->name_bodyadr[mem[i].root]) +
+           "\"";
+  B->cfg.warn.push_back(
+      "mjbuoy.radiation.group of bodies " + who + ": the coupling's added mass against the "
+      "bodies' own inertia and added mass gives the explicit coupling a gain of " + fmt(g) +
+      " (it carries that share of a step's acceleration error into the next, alternating; " +
+      (g >= 1 ? "at 1 or more the motion grows step by step" : "it dies out slowly") +
+      "): place the bodies further apart or group fewer (docs/physics.md section 14, "
+      "\"Interaction\")");
+}
+
+std::string coupleGroup(Buoy* B, const mjData* d, const std::vector<GroupMember>& mem,
                         const std::vector<HydroCoef>& cpl) {
   const size_t n = mem.size();
   std::vector<int> ri(n, -1);
@@ -246,6 +321,7 @@ std::string coupleGroup(Buoy* B, const std::vector<GroupMember>& mem,
       std::string err = setCouple(ri[i], ri[j], h, tmem, B->m->opt.timestep, &B->rad);
       if (!err.empty()) return mem[i].who + ": " + err;
     }
+  warnGain(B, d, mem);
   return "";
 }
 

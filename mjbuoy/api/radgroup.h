@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <mujoco/mujoco.h>
+
 #include "radiation/hydrocoef.h"
 #include "radiation/panel.h"
 
@@ -48,8 +50,17 @@ bool groupSolve(Buoy* B, const std::vector<GroupMember>& mem, const std::vector<
 // the coupling blocks cpl (groupSolve) moved to each member's COM in its
 // body axes (as its own coefficients are), their memory kernels and
 // A_ij(inf) added to B->rad (setCouple), after every member's
-// setRadiation. "" or the error
-std::string coupleGroup(Buoy* B, const std::vector<GroupMember>& mem,
+// setRadiation; then warns when the explicit coupling's gain
+// (couplingGain, with each member's weld group's inertia from d, after
+// mj_comPos) reaches kCoupleGainWarn. "" or the error
+// the explicit coupling's gain (couplingGain) of the grouped bodies roots
+// (MuJoCo body ids, each with radiation): each one's weld group's rigid
+// inertia from d (after mj_comPos) plus its A_ii(inf), and the couplings'
+// A_ij(inf), all about the bodies' refs in body axes; -1 when a body has
+// no radiation or no mass
+double groupGain(const Buoy& B, const mjData* d, const std::vector<int>& roots);
+
+std::string coupleGroup(Buoy* B, const mjData* d, const std::vector<GroupMember>& mem,
                         const std::vector<HydroCoef>& cpl);
 
 }  // namespace mjb
