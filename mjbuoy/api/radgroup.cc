@@ -235,36 +235,39 @@ static bool refInertia(const mjModel* m, const mjData* d, const RadBody& rb, dou
   if (!groupInertia(m, d, rb.body, Iw, G, &mass)) return false;
   const mjtNum* R = d->xmat + 9 * rb.body;
   const double W[9] = {Iw[0], Iw[3], Iw[4], Iw[3], Iw[1], Iw[5], Iw[4], Iw[5], Iw[2]};
-  double gw[3], r[3], Ib[9] = {0};
-  for (int k = 0; k < 3; k++) gw[k] = G[k] - d->xpos[3 * rb.body + k];
   // to body axes: r = R^T (G - x) - ref, I_b = R^T I_w R
-  for (int a = 0; a < 3; a++) {
-    r[a] = R[a] * gw[0] + R[3 + a] * gw[1] + R[6 + a] * gw[2] - rb.ref[a];
-    for (int b = 0; b < 3; b++)
-      for (int p = 0; p < 3; p++)
-        for (int q = 0; q < 3; q++) Ib[3 * a + b] += R[3 * p + a] * W[3 * p + q] * R[3 * q + b];
-  }
+  double gw[3], r[3], WR[9], Ib[9], XX[9];
+  mju_sub3(gw, G, d->xpos + 3 * rb.body);
+  mju_mulMatTVec(r, R, gw, 3, 3);
+  mju_subFrom3(r, rb.ref);
+  mju_mulMatMat(WR, W, R, 3, 3, 3);
+  mju_mulMatTMat(Ib, R, WR, 3, 3, 3);
   const double X[9] = {0, -r[2], r[1], r[2], 0, -r[0], -r[1], r[0], 0};  // [r]x
-  for (int k = 0; k < 36; k++) M[k] = 0;
+  mju_mulMatMat(XX, X, X, 3, 3, 3);
+  mju_zero(M, 36);
   for (int a = 0; a < 3; a++) {
     M[6 * a + a] = mass;
     for (int b = 0; b < 3; b++) {
-      double xx = 0;
-      for (int k = 0; k < 3; k++) xx += X[3 * a + k] * X[3 * k + b];
       M[6 * a + 3 + b] = -mass * X[3 * a + b];
       M[6 * (3 + a) + b] = mass * X[3 * a + b];
-      M[6 * (3 + a) + 3 + b] = Ib[3 * a + b] - mass * xx;
+      M[6 * (3 + a) + 3 + b] = Ib[3 * a + b] - mass * XX[3 * a + b];
     }
   }
   return true;
 }
 
-double groupGain(const Buoy& B, const mjData* d, const std::vector<int>& roots) {
-  const int n = (int)roots.size();
-  std::vector<int> ri(n, -1);
-  for (int k = 0; k < n; k++)
+// the B->rad.rb index of each root body (-1: no radiation)
+static std::vector<int> radIndex(const Buoy& B, const std::vector<int>& roots) {
+  std::vector<int> ri(roots.size(), -1);
+  for (size_t k = 0; k < roots.size(); k++)
     for (size_t x = 0; x < B.rad.rb.size(); x++)
       if (B.rad.rb[x].body == roots[k]) ri[k] = int(x);
+  return ri;
+}
+
+double groupGain(const Buoy& B, const mjData* d, const std::vector<int>& roots) {
+  const int n = (int)roots.size();
+  const std::vector<int> ri = radIndex(B, roots);
   std::vector<double> D(36 * n), O(36 * n * n, 0.0);
   for (int i = 0; i < n; i++) {
     if (ri[i] < 0) return -1;
@@ -282,9 +285,8 @@ double groupGain(const Buoy& B, const mjData* d, const std::vector<int>& roots) 
 // warns when the group's explicit added-mass coupling keeps kCoupleGainWarn
 // or more of a step's acceleration error (groupGain; docs/physics.md
 // section 14, "Interaction")
-static void warnGain(Buoy* B, const mjData* d, const std::vector<GroupMember>& mem) {
-  std::vector<int> roots;
-  for (const GroupMember& x : mem) roots.push_back(x.root);
+static void warnGain(Buoy* B, const mjData* d, const std::vector<GroupMember>& mem,
+                     const std::vector<int>& roots) {
   const double g = groupGain(*B, d, roots);
   if (g < kCoupleGainWarn) return;
   std::string who;
@@ -303,10 +305,9 @@ static void warnGain(Buoy* B, const mjData* d, const std::vector<GroupMember>& m
 std::string coupleGroup(Buoy* B, const mjData* d, const std::vector<GroupMember>& mem,
                         const std::vector<HydroCoef>& cpl) {
   const size_t n = mem.size();
-  std::vector<int> ri(n, -1);
-  for (size_t k = 0; k < n; k++)
-    for (size_t x = 0; x < B->rad.rb.size(); x++)
-      if (B->rad.rb[x].body == mem[k].root) ri[k] = int(x);
+  std::vector<int> roots;
+  for (const GroupMember& x : mem) roots.push_back(x.root);
+  const std::vector<int> ri = radIndex(*B, roots);
   const double tmem = B->cfg.rad.memory > 0 ? B->cfg.rad.memory : 0;
   for (size_t i = 0; i < n; i++)
     for (size_t j = 0; j < n; j++) {
@@ -321,7 +322,7 @@ std::string coupleGroup(Buoy* B, const mjData* d, const std::vector<GroupMember>
       std::string err = setCouple(ri[i], ri[j], h, tmem, B->m->opt.timestep, &B->rad);
       if (!err.empty()) return mem[i].who + ": " + err;
     }
-  warnGain(B, d, mem);
+  warnGain(B, d, mem, roots);
   return "";
 }
 
