@@ -162,6 +162,28 @@ TEST(RobustForces, NonFiniteForceIsANoticeNotASilentZero) {
   }
 }
 
+TEST(RobustForces, UnnamedBodyIsNamedByItsId) {
+  // a body without a name (MJCF allows it) is named by its id in the
+  // notices, not as body ""
+  std::string x = chop("", false), from = "<body name=\"cube\">";
+  x.replace(x.find(from), from.size(), "<body>");
+  std::string e;
+  mjModel* m = loadXML(x, &e);
+  ASSERT_TRUE(m) << e;
+  char err[1024];
+  mjbBuoy* b = mjb_attach(m, "cpu", err, sizeof(err));
+  ASSERT_TRUE(b) << err;
+  mjData* d = mj_makeData(m);
+  d->qvel[0] = 1e200;
+  mj_forward(m, d);
+  std::string n = mjb_notices(b, d);
+  EXPECT_NE(n.find("body 1 (no name): viscous force not finite"), std::string::npos) << n;
+  EXPECT_EQ(n.find("body \"\""), std::string::npos) << n;
+  mj_deleteData(d);
+  mjb_detach(b);
+  mj_deleteModel(m);
+}
+
 // the barge of docs (2 x 1 x 0.5 m, 500 kg) with its inertia from an
 // <inertial> (diagonal I per axis) and a massless hull geom, bottom 5 cm
 // above still water, slightly tilted so the impact is off-centre

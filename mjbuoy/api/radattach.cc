@@ -26,6 +26,7 @@
 #include "radiation/radimport.h"
 #include "radiation/radmem.h"
 #include "hull/rigid.h"
+#include "util/bodylabel.h"
 #include "util/fmt.h"
 
 namespace mjb {
@@ -686,7 +687,7 @@ static std::string finishGroup(Buoy* B, const mjData* d, int root, const std::st
   for (std::string& n : B->rad.note) B->cfg.warn.push_back(n);
   B->rad.note.clear();
   if (rc.diffraction) err = setDiffraction(root, Rd, cx, B->wcap, &B->diff);
-  if (!err.empty()) return err + " (body \"" + bodyName(m, root) + "\")";
+  if (!err.empty()) return err + " (body " + bodyLabel(m, root) + ")";
   for (DiffBody& x : B->diff.db)
     if (x.body == root) x.yaw0 = psi;
   B->coef.emplace_back(root, std::move(c));
@@ -890,7 +891,7 @@ static std::string prepGroup(Buoy* B, const mjData* d, int root, bool grouped, P
   const mjModel* m = B->m;
   const RadConfig& rc = B->cfg.rad;
   std::string& who = p->who;
-  who = std::string("mjbuoy: radiation of body \"") + bodyName(m, root) + "\"";
+  who = "mjbuoy: radiation of body " + bodyLabel(m, root);
   // the pose: qpos0 lifted or lowered to its flat-water equilibrium
   // (docs/physics.md section 14, "Equilibrium draft"), or moved along its
   // joints to it ("Equilibrium along joints"); at names it
@@ -1080,7 +1081,7 @@ static std::string attachGroups(Buoy* B) {
         keep.push_back(r);
         continue;
       }
-      skipGroup(B, r, std::string("radiation of body \"") + bodyName(m, r) + "\" is off: " +
+      skipGroup(B, r, "radiation of body " + bodyLabel(m, r) + " is off: " +
                           brk + ", where linear radiation theory does not hold; turn it on "
                           "with <text name=\"mjbuoy.radiation\" data=\"on\"/> or lower the "
                           "wave");

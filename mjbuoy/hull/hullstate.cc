@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "mjbuoy.h"
+#include "util/bodylabel.h"
 #include "util/stepclock.h"
 
 namespace mjb {
@@ -92,10 +93,10 @@ void noteBad(const HullSet& hs, const mjModel* m, const mjData* d, HullState* s)
   for (int bd : hs.body) {
     if (!s->bad[bd] || s->told[bd]) continue;
     s->told[bd] = 1;
-    char line[256];
+    char line[256], who[128];
     std::snprintf(line, sizeof(line),
-                  "body \"%s\": position or velocity not finite at t = %g s; "
-                  "mjbuoy adds no force to it\n", m->names + m->name_bodyadr[bd], d->time);
+                  "body %s: position or velocity not finite at t = %g s; "
+                  "mjbuoy adds no force to it\n", bodyLabel(m, bd, who, sizeof who), d->time);
     // within the capacity reserved in makeState: no allocation while stepping
     if (s->notices.size() + std::strlen(line) < s->notices.capacity()) s->notices += line;
   }
@@ -114,11 +115,11 @@ void finishWrench(const HullSet& hs, const mjModel* m, const mjData* d, HullStat
       if (s->bad[bd] || bad) std::memset(wp, 0, 6 * sizeof(double));
       if (bad && !s->toldPart[mjbNPART * bd + p]) {
         s->toldPart[mjbNPART * bd + p] = 1;
-        char line[256];
+        char line[256], who[128];
         std::snprintf(line, sizeof(line),
-                      "body \"%s\": %s force not finite at t = %g s (an intermediate "
+                      "body %s: %s force not finite at t = %g s (an intermediate "
                       "overflowed or was NaN); mjbuoy leaves it out of the wrench\n",
-                      m->names + m->name_bodyadr[bd], kFamily[p], d->time);
+                      bodyLabel(m, bd, who, sizeof who), kFamily[p], d->time);
         // within the capacity reserved in makeState: no allocation while stepping
         if (s->notices.size() + std::strlen(line) < s->notices.capacity()) s->notices += line;
       }

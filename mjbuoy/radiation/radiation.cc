@@ -8,6 +8,7 @@
 
 #include "radiation/radspeed.h"
 #include "radiation/radtail.h"
+#include "util/bodylabel.h"
 
 namespace mjb {
 
@@ -178,7 +179,7 @@ std::string memoryCost(const HydroCoef& c, double tmem, double dt, const char* n
                        const std::string& why) {
   const double n = std::ceil(tmem / dt) + 1, np = double(memoryPairs(c).size());
   char e[900];
-  std::snprintf(e, sizeof e, "mjbuoy: radiation: body \"%s\": a memory of %.4g s at "
+  std::snprintf(e, sizeof e, "mjbuoy: radiation: body %s: a memory of %.4g s at "
                 "opt.timestep = %.4g s is %.4g samples per pair (%d pairs: about %.4g MB of "
                 "kernels and history and %.4g multiply-adds per step), above the bound of %d "
                 "samples%s; raise opt.timestep, shorten mjbuoy.radiation.memory, or use "
@@ -260,7 +261,7 @@ bool keepLooseFit(const KFit& fit, double hk, double dt, const char* name, int i
                   std::vector<std::string>* note, std::vector<std::string>* warn) {
   char e[512];
   if (hk != dt && !fit.p.empty() && fit.errT <= 3 * kFitTolT && fit.errF <= 3 * kFitTolF) {
-    std::snprintf(e, sizeof(e), "radiation: body \"%s\": K_%d%d(t) fitted within %.3g%% "
+    std::snprintf(e, sizeof(e), "radiation: body %s: K_%d%d(t) fitted within %.3g%% "
                   "(L2 in time) and %.3g%% (B, A), above the tolerances %g%% and %g%%; kept, "
                   "since at opt.timestep = %g s the convolution would pass %d samples (docs/"
                   "physics.md section 14, \"Small timesteps\")", name, i + 1, j + 1,
@@ -269,7 +270,7 @@ bool keepLooseFit(const KFit& fit, double hk, double dt, const char* name, int i
     warn->push_back(e);
     return true;
   }
-  std::snprintf(e, sizeof(e), "radiation: body \"%s\": no fit of K_%d%d(t) by up to %d damped "
+  std::snprintf(e, sizeof(e), "radiation: body %s: no fit of K_%d%d(t) by up to %d damped "
                 "exponentials within %g%% (L2 in time) and %g%% (B, A at the table's "
                 "frequencies); best %.3g%%, %.3g%%; its memory is the convolution (docs/physics.md "
                 "section 14)", name, i + 1, j + 1, kFitMaxOrder, 100 * kFitTolT, 100 * kFitTolF,
@@ -512,19 +513,20 @@ static std::string radBodyError(const mjModel* m, int body, const HydroCoef& c, 
                   m->nbody - 1);
     return e;
   }
-  const char* name = m->names + m->name_bodyadr[body];
+  char who[128];
+  const char* name = bodyLabel(m, body, who, sizeof who);
   *mover = body;
   while (*mover && !m->body_dofnum[*mover]) *mover = m->body_parentid[*mover];
   if (!*mover) {
-    std::snprintf(e, sizeof(e), "mjbuoy: radiation: body \"%s\" has no joint between it and the "
+    std::snprintf(e, sizeof(e), "mjbuoy: radiation: body %s has no joint between it and the "
                   "world; added mass needs a body free to move", name);
     return e;
   }
   std::string ce = checkCoef(c);
-  if (!ce.empty()) return ce + " (body \"" + name + "\")";
+  if (!ce.empty()) return ce + " (body " + name + ")";
   const double dt = m->opt.timestep;
   if (!std::isfinite(tmem) || tmem > kMaxMemory) {
-    std::snprintf(e, sizeof(e), "mjbuoy: radiation: memory length %g s for body \"%s\" is out of "
+    std::snprintf(e, sizeof(e), "mjbuoy: radiation: memory length %g s for body %s is out of "
                   "range; give (0, %g] s, 0 for automatic or < 0 for none", tmem, name, kMaxMemory);
     return e;
   }
@@ -597,7 +599,8 @@ std::string setRadiation(const mjModel* m, int body, const HydroCoef& c, double 
   int mover = 0;
   std::string err = radBodyError(m, body, c, tmem, *r, &mover);
   if (!err.empty()) return err;
-  const char* name = m->names + m->name_bodyadr[body];
+  char who[128];
+  const char* name = bodyLabel(m, body, who, sizeof who);
   const double dt = m->opt.timestep;
   r->dt = dt;
 

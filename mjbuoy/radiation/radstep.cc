@@ -8,6 +8,7 @@
 #include "radiation/radiation.h"
 #include "radiation/radspeed.h"
 #include "sea/sea.h"
+#include "util/bodylabel.h"
 #include "util/stepclock.h"
 #include "util/vmath.h"
 
@@ -217,14 +218,14 @@ void timestepMoved(const Radiation& r, const mjModel* m, double h, RadState* s,
   if (s->dtTold) return;
   s->dtTold = true;
   for (const RadBody& rb : r.rb) {
-    char line[512];
-    const char* name = m->names + m->name_bodyadr[rb.body];
+    char line[512], who[128];
+    const char* name = bodyLabel(m, rb.body, who, sizeof who);
     if (rb.ss.size()) {
-      std::snprintf(line, sizeof line, "body \"%s\": opt.timestep is %g s, not the %g s of "
+      std::snprintf(line, sizeof line, "body %s: opt.timestep is %g s, not the %g s of "
                     "mjb_attach: its state-space radiation memory follows the new step\n",
                     name, h, r.dt);
     } else if (rb.nk) {
-      std::snprintf(line, sizeof line, "body \"%s\": opt.timestep is %g s, but its convolution "
+      std::snprintf(line, sizeof line, "body %s: opt.timestep is %g s, but its convolution "
                     "radiation memory is sampled at the %g s of mjb_attach: the memory is left "
                     "out; set opt.timestep before mjb_attach, or use "
                     "mjbuoy.radiation.memorymodel statespace\n", name, h, r.dt);
@@ -410,10 +411,10 @@ void noteNotFinite(const RadBody& rb, size_t ib, const mjModel* m, const mjData*
                    RadState* s, std::string* notices) {
   if (s->told[ib]) return;
   s->told[ib] = 1;
-  char line[256];
+  char line[256], who[128];
   std::snprintf(line, sizeof(line),
-                "body \"%s\": radiation force not finite at t = %g s; mjbuoy leaves it out\n",
-                m->names + m->name_bodyadr[rb.body], d->time);
+                "body %s: radiation force not finite at t = %g s; mjbuoy leaves it out\n",
+                bodyLabel(m, rb.body, who, sizeof who), d->time);
   // within the capacity reserved in makeState: no allocation while stepping
   if (notices->size() + std::strlen(line) < notices->capacity()) *notices += line;
 }
