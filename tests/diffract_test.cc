@@ -2,9 +2,11 @@
 // of a freely floating hemisphere in regular waves against the frequency
 // domain built from published coefficients (Hulme 1982) and the Haskind
 // relation, and the heading interpolation of the table
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -333,6 +335,126 @@ TEST(Diffraction, TowedHullFeelsTheEncounterFrequency) {
   std::printf("[encounter] T_e %.5f s (2 pi / w_e %.5f), held T %.5f s (2 pi / w %.5f); heave "
               "amplitude towed %.2f N, held %.2f N, held in the w_e wave %.2f N\n",
               Te, 2 * M_PI / we, T0, 2 * M_PI / w, at, ah, ae);
+}
+
+}  // namespace
+
+namespace {
+
+// D = X - FK of row iw, heading ih, dof (table axes, about the COM)
+std::complex<double> tableD(const mjb::HydroCoef& c, int iw, int ih, int dof) {
+  const size_t o = ((size_t)iw * c.nh() + ih) * 6 + dof;
+  return {c.Xre[o] - c.FKre[o], c.Xim[o] - c.FKim[o]};
+}
+
+// the documented interpolation (docs/physics.md section 15, "The table"),
+// written out independently of the step: periodic Catmull-Rom in heading
+// in its polynomial form, P(s) = (2 P1 + (P2 - P0) s + (2 P0 - 5 P1 +
+// 4 P2 - P3) s^2 + (3 P1 - P0 - 3 P2 + P3) s^3) / 2, then linear in
+// frequency, linear from 0 below the first row, none above the last;
+// at(row, heading) gives the table value
+template <class T, class At>
+T interpolated(const std::vector<double>& om, int nh, double omega, double beta, At at) {
+  const int nw = om.size();
+  if (omega > om[nw - 1]) return T(0);
+  double u = std::fmod(beta / (2 * M_PI / nh), nh);
+  if (u < 0) u += nh;
+  const int i = std::min((int)std::floor(u), nh - 1);
+  const double s = u - i;
+  auto heading = [&](int r) {
+    const T p0 = at(r, (i - 1 + nh) % nh), p1 = at(r, i), p2 = at(r, (i + 1) % nh),
+            p3 = at(r, (i + 2) % nh);
+    return 0.5 * (2.0 * p1 + (p2 - p0) * s + (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) * s * s +
+                  (3.0 * p1 - p0 - 3.0 * p2 + p3) * s * s * s);
+  };
+  if (omega < om[0]) return (omega / om[0]) * heading(0);
+  int r = 0;
+  while (r < nw - 2 && om[r + 1] <= omega) r++;
+  const double f = (omega - om[r]) / (om[r + 1] - om[r]);
+  return (1 - f) * heading(r) + f * heading(r + 1);
+}
+
+// the diffraction and drift wrench of the step (one pass over the
+// components) against the sums written out directly at random headings,
+// positions and times in a ramped five-component sea: D by the documented
+// interpolation of X - FK, the diffraction force sum_j Re(r A_j D_j
+// e^{i theta_j}), Newman's drift as the double sum
+// r^2 sum_ij A_i A_j (T_i + T_j) / 2 cos(theta_i - theta_j) over the
+// components within the table's frequencies (section 18, "Time domain":
+// those beyond add nothing), turned by the body's yaw; to 1e-12 of the
+// largest entry
+TEST(Diffraction, StepIsTheDocumentedInterpolationSummed) {
+  Scene s(boxModel(0, 0));
+  ASSERT_TRUE(s.ok()) << s.err;
+  const mjb::Buoy* B = mjb::buoyOf(s.b);
+  ASSERT_EQ(B->diff.db.size(), 1u);
+  mjb::Diffraction df = B->diff;
+  const mjb::DiffBody& b = df.db[0];
+  ASSERT_FALSE(b.T.empty());  // the drift table (mjbuoy.radiation.drift defaults on)
+  const std::vector<double>& om = b.c.omega;
+  const int nh = b.c.nh();
+  mjb::Sea sea = B->cfg.sea;
+  sea.ramp = 20;  // the start-up ramp: 0.5 (1 - cos(pi t / T)) up to T, then 1 (sea.h)
+  sea.waves.clear();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> uni(0, 1);
+  // below the first frequency, within the table (three), above the last
+  const double omegas[5] = {0.6 * om[0], 0.3 * om[0] + 0.7 * om[1], 0.5 * (om[1] + om[2]),
+                            om[2] + 0.9 * (om.back() - om[2]), 1.1 * om.back()};
+  for (double w1 : omegas) {
+    mjb::Wave w{};
+    w.kind = 1;
+    w.amp = 0.05 + 0.1 * uni(rng);
+    w.omega = w1;
+    w.k = w1 * w1 / kG;
+    w.dir = 360 * uni(rng) - 180;
+    w.dx = std::cos(w.dir * M_PI / 180), w.dy = std::sin(w.dir * M_PI / 180);
+    w.ph = 2 * M_PI * uni(rng);
+    sea.waves.push_back(w);
+  }
+  mjb::diffSea(sea, &df);
+  for (int trial = 0; trial < 4; trial++) {
+    const double psi = 2 * M_PI * uni(rng) - M_PI, t = 25 * uni(rng);
+    s.d->qpos[0] = 4 * uni(rng) - 2, s.d->qpos[1] = 4 * uni(rng) - 2;
+    s.d->qpos[3] = std::cos(psi / 2), s.d->qpos[4] = s.d->qpos[5] = 0;
+    s.d->qpos[6] = std::sin(psi / 2);
+    mj_kinematics(s.m, s.d);
+    s.d->time = t;
+    double w[6];
+    char told = 0;
+    std::string notes;
+    mjb::diffractionStep(df, sea, s.m, s.d, w, &told, &notes);
+    const double* x = s.d->xipos + 3 * b.body;
+    const double r = t < sea.ramp ? 0.5 * (1 - std::cos(M_PI * t / sea.ramp)) : 1;
+    double F[6] = {0, 0, 0, 0, 0, 0}, T[5][3], th[5], A[5];
+    for (int j = 0; j < 5; j++) {
+      const mjb::Wave& wv = sea.waves[j];
+      const double beta = wv.dir * M_PI / 180 - psi;
+      th[j] = wv.k * (wv.dx * x[0] + wv.dy * x[1]) + wv.ph - wv.omega * t;
+      A[j] = wv.amp;
+      for (int dof = 0; dof < 6; dof++) {
+        const std::complex<double> D = interpolated<std::complex<double>>(
+            om, nh, wv.omega, beta, [&](int iw, int ih) { return tableD(b.c, iw, ih, dof); });
+        F[dof] += (r * A[j] * D * std::polar(1.0, th[j])).real();
+      }
+      for (int k = 0; k < 3; k++)
+        T[j][k] = interpolated<double>(om, nh, wv.omega, beta, [&](int iw, int ih) {
+          return b.T[3 * ((size_t)iw * nh + ih) + k];
+        });
+    }
+    const int dofOf[3] = {0, 1, 5};
+    for (int i = 0; i < 4; i++)  // the fifth is above the table
+      for (int j = 0; j < 4; j++)
+        for (int k = 0; k < 3; k++)
+          F[dofOf[k]] += r * r * A[i] * A[j] * 0.5 * (T[i][k] + T[j][k]) * std::cos(th[i] - th[j]);
+    const double c = std::cos(psi), sn = std::sin(psi);
+    const double want[6] = {c * F[0] - sn * F[1], sn * F[0] + c * F[1], F[2],
+                            c * F[3] - sn * F[4], sn * F[3] + c * F[4], F[5]};
+    double big = 0;
+    for (double v : want) big = std::max(big, std::fabs(v));
+    ASSERT_GT(big, 0);
+    for (int k = 0; k < 6; k++) EXPECT_NEAR(w[k], want[k], 1e-12 * big) << "dof " << k;
+  }
 }
 
 }  // namespace

@@ -89,39 +89,78 @@ void headingWeights(double beta, int n, int idx[4], double w[4]) {
   w[1] = 0.5 * (3 * s3 - 5 * s2 + 2);
   w[2] = 0.5 * (-3 * s3 + 4 * s2 + s);
   w[3] = 0.5 * (s3 - s2);
-  for (int k = 0; k < 4; k++) idx[k] = (i - 1 + k + n) % n;
+  // i - 1 + k in [-1, n + 1]: wrapped by one period (no division per step)
+  for (int k = 0; k < 4; k++) {
+    const int h = i - 1 + k;
+    idx[k] = h < 0 ? h + n : h >= n ? h - n : h;
+  }
+}
+
+void tableWeights(int nh, int iw, double tw, double beta, TableWeights* out) {
+  out->n = 0;
+  if (iw == -2) return;
+  int idx[4];
+  double hw[4];
+  headingWeights(beta, nh, idx, hw);
+  const int r0 = iw < 0 ? 0 : iw;
+  const double w0 = iw < 0 ? tw : 1 - tw, w1 = iw < 0 ? 0 : tw;
+  for (int r = 0; r < 2; r++) {
+    const double wr = r ? w1 : w0;
+    if (wr == 0) continue;
+    for (int k = 0; k < 4; k++) {
+      out->off[out->n] = (r0 + r) * nh + idx[k];
+      out->f[out->n++] = wr * hw[k];
+    }
+  }
+}
+
+// sum of the weighted table entries: (re, im) per dof, 12 contiguous values
+static inline void blendD(const double* D, const TableWeights& tw, double acc[12]) {
+  for (int k = 0; k < 12; k++) acc[k] = 0;
+  for (int i = 0; i < tw.n; i++) {
+    const double* p = D + 12 * (size_t)tw.off[i];
+    const double f = tw.f[i];
+    for (int k = 0; k < 12; k++) acc[k] += f * p[k];
+  }
 }
 
 void diffAt(const DiffBody& b, int iw, double tw, double beta, double re[6], double im[6]) {
-  for (int k = 0; k < 6; k++) re[k] = im[k] = 0;
-  const int nh = b.c.nh();
-  eachTableWeight(nh, iw, tw, beta, [&](size_t row, int ih, double f) {
-    const double* p = &b.D[2 * 6 * (row * nh + ih)];
-    for (int dof = 0; dof < 6; dof++) {
-      re[dof] += f * p[2 * dof];
-      im[dof] += f * p[2 * dof + 1];
-    }
-  });
+  TableWeights w;
+  tableWeights(b.c.nh(), iw, tw, beta, &w);
+  double acc[12];
+  blendD(b.D.data(), w, acc);
+  for (int k = 0; k < 6; k++) {
+    re[k] = acc[2 * k];
+    im[k] = acc[2 * k + 1];
+  }
 }
 
-// the wrench of one body in the frame turned by psi from the table's, at t
+// the wrench of one body in the frame turned by psi from the table's, at t:
+// diffraction and drift in one pass over the components, sharing each
+// component's table weights and phase
 static void bodyWrench(const DiffBody& b, const Sea& sea, const double x[3], double psi,
                        double t, double F[6]) {
   for (int k = 0; k < 6; k++) F[k] = 0;
   const size_t n = sea.waves.size() < b.iw.size() ? sea.waves.size() : b.iw.size();
   const double r = sea.gain(t);  // the start-up ramp on every amplitude (sea.h)
+  const int nh = b.c.nh();
+  DriftSum ds;
   for (size_t j = 0; j < n; j++) {
     if (b.iw[j] == -2) continue;
     const Wave& w = sea.waves[j];
-    double re[6], im[6];
-    diffAt(b, b.iw[j], b.tw[j], w.dir * (M_PI / 180) - psi, re, im);
+    TableWeights tw;
+    tableWeights(nh, b.iw[j], b.tw[j], w.dir * (M_PI / 180) - psi, &tw);
+    double acc[12];
+    blendD(b.D.data(), tw, acc);
     // a e^{-i omega t}, a = A e^{i (k D.x + phi)}: the component's complex
     // amplitude at the COM (the sea's phase, docs/physics.md section 11)
     const double ph = w.k * (w.dx * x[0] + w.dy * x[1]) + w.ph - w.omega * t;
-    const double A = r * w.amp, c = A * std::cos(ph), s = A * std::sin(ph);
-    for (int k = 0; k < 6; k++) F[k] += re[k] * c - im[k] * s;
+    const double cs = std::cos(ph), sn = std::sin(ph);
+    const double A = r * w.amp, c = A * cs, s = A * sn;
+    for (int k = 0; k < 6; k++) F[k] += acc[2 * k] * c - acc[2 * k + 1] * s;
+    driftAdd(b, tw, w.amp * cs, w.amp * sn, &ds);  // empty table: none
   }
-  driftNewman(b, sea, x, psi, t, F);  // mean and slow drift (empty table: none)
+  driftFinish(b, ds, r, F);  // mean and slow drift
 }
 
 void diffractionStep(const Diffraction& df, const Sea& sea, const mjModel* m, const mjData* d,

@@ -53,26 +53,18 @@ void diffRow(const std::vector<double>& omega, double omega1, int* iw, double* t
 // periodic Catmull-Rom weights of heading beta [rad] on n uniform headings
 void headingWeights(double beta, int n, int idx[4], double w[4]);
 
-// D of b at row (iw, tw) and heading beta [rad] (table axes): re, im per dof
-// the table weights at row (iw, tw) (diffRow) and heading beta [rad]:
-// f(row, heading index, weight) for each of the 4 headings of each row of
-// non-zero weight; below the table only row 0, weighted tw (linear from 0
-// at omega = 0); none above it (iw -2)
-template <class F>
-void eachTableWeight(int nh, int iw, double tw, double beta, F f) {
-  if (iw == -2) return;
-  int idx[4];
-  double hw[4];
-  headingWeights(beta, nh, idx, hw);
-  const int r0 = iw < 0 ? 0 : iw;
-  const double w0 = iw < 0 ? tw : 1 - tw, w1 = iw < 0 ? 0 : tw;
-  for (int r = 0; r < 2; r++) {
-    const double wr = r ? w1 : w0;
-    if (wr == 0) continue;
-    for (int k = 0; k < 4; k++) f((size_t)(r0 + r), idx[k], wr * hw[k]);
-  }
-}
+// the table weights at row (iw, tw) (diffRow) and heading beta [rad]: up to
+// 8 entries, each a (row, heading) offset row nh + h and its weight, the 4
+// headings of each row of non-zero weight; below the table only row 0,
+// weighted tw (linear from 0 at omega = 0); none above it (iw -2)
+struct TableWeights {
+  int n = 0;     // entries
+  int off[8];    // row nh + heading index
+  double f[8];   // row weight times heading weight
+};
+void tableWeights(int nh, int iw, double tw, double beta, TableWeights* out);
 
+// D of b at row (iw, tw) and heading beta [rad] (table axes): re, im per dof
 void diffAt(const DiffBody& b, int iw, double tw, double beta, double re[6], double im[6]);
 
 // in mjcb_passive: each body's diffraction wrench [N, N m] in world axes,

@@ -35,36 +35,37 @@ std::string setDrift(int body, const DriftTable& dt, const double ref[3], const 
 void driftAt(const DiffBody& b, int iw, double tw, double beta, double T[3]) {
   T[0] = T[1] = T[2] = 0;
   if (b.T.empty()) return;
-  const int nh = b.c.nh();
   // as diffAt: below the table, row 0 weighted omega / omega_0
-  eachTableWeight(nh, iw, tw, beta, [&](size_t row, int ih, double f) {
-    const double* p = &b.T[3 * (row * nh + ih)];
-    for (int d = 0; d < 3; d++) T[d] += f * p[d];
-  });
+  TableWeights w;
+  tableWeights(b.c.nh(), iw, tw, beta, &w);
+  driftBlend(b, w, T);
 }
 
 void driftNewman(const DiffBody& b, const Sea& sea, const double x[3], double psi, double t,
                  double F[6]) {
   if (b.T.empty()) return;
-  typedef std::complex<double> cd;
-  cd P[3] = {0, 0, 0}, Q = 0;
+  DriftSum ds;
   const size_t n = sea.waves.size() < b.iw.size() ? sea.waves.size() : b.iw.size();
+  const int nh = b.c.nh();
   for (size_t j = 0; j < n; j++) {
     if (b.iw[j] == -2) continue;
     const Wave& w = sea.waves[j];
-    double T[3];
-    driftAt(b, b.iw[j], b.tw[j], w.dir * (M_PI / 180) - psi, T);
+    TableWeights tw;
+    tableWeights(nh, b.iw[j], b.tw[j], w.dir * (M_PI / 180) - psi, &tw);
     // the component's phase at the COM, as the diffraction force's
     const double ph = w.k * (w.dx * x[0] + w.dy * x[1]) + w.ph - w.omega * t;
-    const cd a = std::polar(w.amp, ph);
-    for (int k = 0; k < 3; k++) P[k] += T[k] * a;
-    Q += a;
+    driftAdd(b, tw, w.amp * std::cos(ph), w.amp * std::sin(ph), &ds);
   }
+  driftFinish(b, ds, sea.gain(t), F);
+}
+
+void driftFinish(const DiffBody& b, const DriftSum& s, double r, double F[6]) {
+  if (b.T.empty()) return;
   // quadratic in the amplitudes, so the start-up ramp enters squared (sea.h)
-  const double r = sea.gain(t), r2 = r * r;
-  F[0] += r2 * (P[0] * std::conj(Q)).real();
-  F[1] += r2 * (P[1] * std::conj(Q)).real();
-  F[5] += r2 * (P[2] * std::conj(Q)).real();
+  const double r2 = r * r;
+  F[0] += r2 * (s.P[0] * std::conj(s.Q)).real();
+  F[1] += r2 * (s.P[1] * std::conj(s.Q)).real();
+  F[5] += r2 * (s.P[2] * std::conj(s.Q)).real();
 }
 
 }  // namespace mjb

@@ -5,6 +5,7 @@
 #ifndef MJBUOY_DRIFTSTEP_H_
 #define MJBUOY_DRIFTSTEP_H_
 
+#include <complex>
 #include <string>
 
 #include "radiation/diffract.h"
@@ -34,6 +35,37 @@ void driftAt(const DiffBody& b, int iw, double tw, double beta, double T[3]);
 // O(N) per step; one component gives the steady mean drift A^2 T
 void driftNewman(const DiffBody& b, const Sea& sea, const double x[3], double psi, double t,
                  double F[6]);
+
+// Newman's sums one component at a time (driftNewman's terms, shared with the
+// diffraction step): P = sum_i a_i T_i (Fx, Fy, Mz), Q = sum_j a_j
+struct DriftSum {
+  std::complex<double> P[3] = {0, 0, 0};
+  std::complex<double> Q = 0;
+};
+
+// T of b (non-empty) at the weights tw (tableWeights): Fx, Fy, Mz
+inline void driftBlend(const DiffBody& b, const TableWeights& tw, double T[3]) {
+  T[0] = T[1] = T[2] = 0;
+  for (int i = 0; i < tw.n; i++) {
+    const double* p = &b.T[3 * (size_t)tw.off[i]];
+    for (int d = 0; d < 3; d++) T[d] += tw.f[i] * p[d];
+  }
+}
+
+// add the component of amplitude a = (re, im) at the COM, T at weights tw
+// (tableWeights); none when b has no drift table
+inline void driftAdd(const DiffBody& b, const TableWeights& tw, double are, double aim,
+                     DriftSum* s) {
+  if (b.T.empty()) return;
+  double T[3];
+  driftBlend(b, tw, T);
+  const std::complex<double> a(are, aim);
+  for (int k = 0; k < 3; k++) s->P[k] += T[k] * a;
+  s->Q += a;
+}
+
+// add Re(P conj(Q)) times the start-up ramp r squared to F (surge, sway, yaw)
+void driftFinish(const DiffBody& b, const DriftSum& s, double r, double F[6]);
 
 }  // namespace mjb
 
