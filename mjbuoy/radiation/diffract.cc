@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "util/bodylabel.h"
+
 namespace mjb {
 
 std::string setDiffraction(int body, const double R0[9], const HydroCoef& c, size_t wcap,
@@ -193,10 +195,10 @@ void diffractionStep(const Diffraction& df, const Sea& sea, const mjModel* m, co
       for (int k = 0; k < 6; k++) w[k] = 0;
       if (!told[ib]) {
         told[ib] = 1;
-        char line[256];
+        char line[256], who[128];
         std::snprintf(line, sizeof(line),
-                      "body \"%s\": diffraction force not finite at t = %g s; mjbuoy leaves it "
-                      "out\n", m->names + m->name_bodyadr[b.body], d->time);
+                      "body %s: diffraction force not finite at t = %g s; mjbuoy leaves it "
+                      "out\n", bodyLabel(m, b.body, who, sizeof who), d->time);
         // within the capacity reserved in makeState: no allocation while stepping
         if (notices->size() + std::strlen(line) < notices->capacity()) *notices += line;
       }
