@@ -241,10 +241,11 @@ TEST(SeaVec, LanesMatchTheScalarSearch) {
   checkSea(makeSea(5, 1, 0.9), 0.4, "steep");
   checkSea(makeSea(1, 0, 0.5), 0.05, "one");
   checkSea(makeSea(0, 3, 0.0), 0.0, "airy");
-  // five Airy components (whole lane groups and a rest) far out: phases
-  // near 3e4 (bounded below 2^19 beforehand: the lanes' range check
-  // skipped), near 3e5 (the bound above 2^19: checked per lane) and near
-  // 2e6 (beyond the lanes' 2^20 pi/2: libmvec's)
+  // five Airy components (k 0.45 to 1.53 rad/m; whole lane groups and a
+  // rest) far out: phases 2e4 to 8e4 (bounded below 2^19 beforehand: the
+  // lanes' range check skipped), 2e5 to 8e5 (the bound above 2^19:
+  // checked per lane) and 1e6 to 5e6 (beyond the lanes' 2^20 pi/2 for the
+  // short components: libmvec's)
   checkSea(makeSea(0, 5, 0.0), 0.0, "airy 5e4", 5e4);
   checkSea(makeSea(0, 5, 0.0), 0.0, "airy 5e5", 5e5);
   checkSea(makeSea(0, 5, 0.0), 0.0, "airy 3e6", 3e6);
