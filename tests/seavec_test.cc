@@ -106,10 +106,12 @@ Out solveAll(const mjb::Sea& sea, double t, const std::vector<double>& x,
 // Math Functions"; the lanes' own, sincoskern.h, within 3) plus 1 ulp for
 // glibc's scalar one, of a phase rounded
 // to about 4 ulp of |theta|: A (5 eps + 4 eps |theta|) per component
-void checkSea(const mjb::Sea& sea, double guess, const char* what) {
+// far [m] moves the points along x
+void checkSea(const mjb::Sea& sea, double guess, const char* what, double far = 0) {
   const double t = 3.7;
   std::vector<double> x, y;
   hullPoints(7, 11, &x, &y);  // 945 points: lanes of 4 and 8 with a tail
+  for (double& v : x) v += far;
   const int n = sea.waves.size(), m = x.size();
   std::vector<mjb::WaveNow> w(n);
   sea.now(t, w.data());
@@ -239,6 +241,14 @@ TEST(SeaVec, LanesMatchTheScalarSearch) {
   checkSea(makeSea(5, 1, 0.9), 0.4, "steep");
   checkSea(makeSea(1, 0, 0.5), 0.05, "one");
   checkSea(makeSea(0, 3, 0.0), 0.0, "airy");
+  // five Airy components (k 0.45 to 1.53 rad/m; whole lane groups and a
+  // rest) far out: phases 2e4 to 8e4 (bounded below 2^19 beforehand: the
+  // lanes' range check skipped), 2e5 to 8e5 (the bound above 2^19:
+  // checked per lane) and 1e6 to 5e6 (beyond the lanes' 2^20 pi/2 for the
+  // short components: libmvec's)
+  checkSea(makeSea(0, 5, 0.0), 0.0, "airy 5e4", 5e4);
+  checkSea(makeSea(0, 5, 0.0), 0.0, "airy 5e5", 5e5);
+  checkSea(makeSea(0, 5, 0.0), 0.0, "airy 3e6", 3e6);
 }
 
 // the vertex stage's e^L in lanes (seavec.h WetIn, for seas of few

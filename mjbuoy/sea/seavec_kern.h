@@ -194,30 +194,80 @@ static void storeLabels(const LaneIn& in, int p0, int nl, bool whole,
   }
 }
 
-// the Airy components of points [p0, p0 + nl) at (x, y): a direct sum at
-// the physical point added to z; their sin and cos go to each point's row
-// W / 2 components at a time through a W x W transpose (row l: point l's
-// W / 2 pairs, one store) instead of two lane stores each, the rest lane
-// by lane
-template <int W, class M>
-static void airyLanes(const LaneIn& in, int p0, int nl, typename Lanes<W>::V x,
+// the Airy components [ng, n)'s largest k [rad/m] and |wt| + |ph| [rad],
+// so that their phases at |x| <= ax, |y| <= ay are at most kc[0] (ax +
+// ay) + kc[1] (|D| <= 1); both infinite when one is not finite
+static void airyPhaseBound(const LaneIn& in, double kc[2]) {
+  double sum = 0;  // (NaN passes through +, not through the maxima)
+  kc[0] = kc[1] = 0;
+  for (int i = in.ng; i < in.n; i++) {
+    const double k = __builtin_fabs(in.w[i].k);
+    const double c = __builtin_fabs(in.w[i].wt) + __builtin_fabs(in.w[i].ph);
+    kc[0] = kc[0] < k ? k : kc[0];
+    kc[1] = kc[1] < c ? c : kc[1];
+    sum += k + c;
+  }
+  if (!(sum < __builtin_inf())) kc[0] = kc[1] = __builtin_inf();
+}
+
+// the Airy components [i, n) of points [p0, p0 + nl) at (x, y) in whole
+// groups of W / 2: a direct sum at the physical point added to z; their
+// sin and cos go to each point's row through a W x W transpose (row l:
+// point l's W / 2 pairs, one store) instead of two lane stores each.
+// kIn: every phase is known to be within sincoskern.h's range, so the
+// lanes' check is skipped (the same operations, so the same bits).
+// Returns the first component not done
+template <int W, class M, bool kIn>
+static int airyGroups(const LaneIn& in, int p0, int nl, int i, typename Lanes<W>::V x,
                       typename Lanes<W>::V y, typename Lanes<W>::V* z) {
   typedef typename Lanes<W>::V V;
+  typedef typename Lanes<W>::I I;
   const WaveNow* w = in.w;
   const int n = in.n;
-  int i = in.ng;
   for (; i + W / 2 <= n; i += W / 2) {
     V r[W];
     for (int a = 0; a < W / 2; a++) {
       const WaveNow& wa = w[i + a];
-      sinCosPhases<W, M>(wa.k * (wa.dx * x + wa.dy * y) - wa.wt + wa.ph, &r[2 * a], &r[2 * a + 1]);
+      const V th = wa.k * (wa.dx * x + wa.dy * y) - wa.wt + wa.ph;
+      if (kIn) {
+        sinCosInRange<V, I>(th, &r[2 * a], &r[2 * a + 1]);
+      } else {
+        sinCosPhases<W, M>(th, &r[2 * a], &r[2 * a + 1]);
+      }
       *z += wa.amp * r[2 * a + 1];
     }
     transpose<V, W>(r);
-    for (int l = 0; l < nl; l++) {
-      __builtin_memcpy(in.sc + 2 * n * (p0 + l) + 2 * i, &r[l], sizeof(V));
+    double* o = in.sc + 2 * n * p0 + 2 * i;
+    if (nl == W) {  // (a fixed count: the rows stay in registers)
+      for (int l = 0; l < W; l++) Lanes<W>::st(o + 2 * n * l, r[l]);
+    } else {
+      for (int l = 0; l < nl; l++) Lanes<W>::st(o + 2 * n * l, r[l]);
     }
   }
+  return i;
+}
+
+// the Airy components of points [p0, p0 + nl) at (x, y) (airyGroups, the
+// rest lane by lane). When every phase is bounded by 2^19 (airyPhaseBound's
+// kc; far inside sincoskern.h's 2^20 pi/2 with the bound's round-off) the
+// lanes' range check is skipped
+template <int W, class M>
+static void airyLanes(const LaneIn& in, int p0, int nl, typename Lanes<W>::V x,
+                      typename Lanes<W>::V y, typename Lanes<W>::V* z, const double kc[2]) {
+  typedef typename Lanes<W>::V V;
+  const WaveNow* w = in.w;
+  const int n = in.n;
+  // the largest |x|, |y| (the maxima drop NaN: the sum keeps it)
+  double ax = 0, ay = 0, sum = 0;
+  for (int l = 0; l < W; l++) {
+    const double u = __builtin_fabs(x[l]), v = __builtin_fabs(y[l]);
+    ax = ax < u ? u : ax;
+    ay = ay < v ? v : ay;
+    sum += x[l] + y[l];
+  }
+  const bool inr = kc[0] * (ax + ay) + kc[1] < 0x1p19 && sum - sum == 0;
+  int i = inr ? airyGroups<W, M, true>(in, p0, nl, in.ng, x, y, z)
+              : airyGroups<W, M, false>(in, p0, nl, in.ng, x, y, z);
   for (; i < n; i++) {
     const V th = w[i].k * (w[i].dx * x + w[i].dy * y) - w[i].wt + w[i].ph;
     V s, c;
@@ -233,7 +283,7 @@ static void airyLanes(const LaneIn& in, int p0, int nl, typename Lanes<W>::V x,
 // points [p0, p0 + nl) of in as W lanes (the last point repeated in the
 // lanes past nl, whose results are dropped)
 template <int W, class M>
-static long solveChunk(const LaneIn& in, int p0, int nl) {
+static long solveChunk(const LaneIn& in, int p0, int nl, const double kc[2]) {
   typedef Lanes<W> L;
   typedef typename L::V V;
   typedef typename L::I I;
@@ -276,7 +326,7 @@ static long solveChunk(const LaneIn& in, int p0, int nl) {
   long nit = 0;
   for (int l = 0; l < nl; l++) nit += it[l];
   storeLabels<W>(in, p0, nl, whole, a0, a1, cur);
-  airyLanes<W, M>(in, p0, nl, x, y, &z);
+  airyLanes<W, M>(in, p0, nl, x, y, &z, kc);
   if (whole) {
     L::st(in.z + p0, z);
   } else {
@@ -288,7 +338,11 @@ static long solveChunk(const LaneIn& in, int p0, int nl) {
 template <int W, class M>
 static long solveLanes(const LaneIn& in) {
   long nit = 0;
-  for (int p = 0; p < in.m; p += W) nit += solveChunk<W, M>(in, p, in.m - p < W ? in.m - p : W);
+  double kc[2];
+  airyPhaseBound(in, kc);
+  for (int p = 0; p < in.m; p += W) {
+    nit += solveChunk<W, M>(in, p, in.m - p < W ? in.m - p : W, kc);
+  }
   return nit;
 }
 

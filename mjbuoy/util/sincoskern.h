@@ -19,15 +19,14 @@ static const double kP3 = 0x1.3198a2e037073p-69;
 // n mod 4. Within 3 ulp (of the result, or of 2^-53 below 1/2) for |x| <
 // 2^20 pi/2, measured 2.0 (SeaVec.SinCosLanesWithinThreeUlp); false (nothing written) when a lane
 // is beyond that or not finite: the caller uses libmvec then
+//
+// sinCosInRange is the same without the check, for callers that have
+// bounded |x| < 2^20 (so |n| < 2^20 too) for all lanes beforehand
 template <class V, class I>
-__attribute__((always_inline)) inline bool sinCosLanes(V x, V* s, V* c) {
+__attribute__((always_inline)) inline void sinCosInRange(V x, V* s, V* c) {
   const double shift = 0x1.8p52;  // t - shift is x 2/pi rounded to an integer
   const V t = x * 0x1.45f306dc9c883p-1 + shift;
   const V n = t - shift;
-  const V an = n < 0 ? -n : n;
-  bool ok = true;
-  for (int l = 0; l < int(sizeof(V) / sizeof(double)); l++) ok &= an[l] < 0x1p20;
-  if (!ok) return false;  // also NaN and infinity
   const V r = ((x - n * kP1) - n * kP2) - n * kP3;
   const V r2 = r * r;
   const V ps = r2 * (-1.0 / 6 + r2 * (1.0 / 120 + r2 * (-1.0 / 5040 + r2 * (1.0 / 362880 +
@@ -43,6 +42,17 @@ __attribute__((always_inline)) inline bool sinCosLanes(V x, V* s, V* c) {
   const V sv = odd ? cr : sr, cv = odd ? sr : cr;
   *s = sneg ? -sv : sv;
   *c = cneg ? -cv : cv;
+}
+
+template <class V, class I>
+__attribute__((always_inline)) inline bool sinCosLanes(V x, V* s, V* c) {
+  const double shift = 0x1.8p52;
+  const V n = (x * 0x1.45f306dc9c883p-1 + shift) - shift;
+  const V an = n < 0 ? -n : n;
+  bool ok = true;
+  for (int l = 0; l < int(sizeof(V) / sizeof(double)); l++) ok &= an[l] < 0x1p20;
+  if (!ok) return false;  // also NaN and infinity
+  sinCosInRange<V, I>(x, s, c);
   return true;
 }
 
