@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include "simdlevels.h"
 #include "testutil.h"
 #include "util/vmath.h"
 
@@ -138,28 +139,35 @@ void bound(const S& s, double t, double* bf, double* bm) {
 
 // Each pose of a Wigley 576 in the 64-component short-crested JONSWAP:
 // every force and torque component of vertex integration within the bound
-// of the exact result, and the bound small against the pressure force
+// of the exact result, and the bound small against the pressure force; on
+// every vector level this cpu has
 TEST(VertexInt, WigleyWithinTheInterpolationBound) {
   Scene ex(wigley(576, jonswap(true), "exact")), vx(wigley(576, jonswap(true), "vertex"));
   ASSERT_TRUE(ex.ok()) << ex.err;
   ASSERT_TRUE(vx.ok()) << vx.err;
-  for (const Pose& p : kPoses) {
-    for (double t : {3.1, 7.7}) {
-      double we[6], wv[6], bf, bm;
-      place(ex, p, t, we);
-      place(vx, p, t, wv);
-      bound(ex, t, &bf, &bm);
-      double err[2] = {0, 0};
-      for (int j = 0; j < 6; j++) {
-        EXPECT_LE(std::fabs(wv[j] - we[j]), j < 3 ? bf : bm) << p.name << " t " << t << " " << j;
-        err[j / 3] = std::max(err[j / 3], std::fabs(wv[j] - we[j]));
+  const int prev = mjb::simdLevel();
+  for (int level : vectorLevels("vertexint")) {
+    mjb::simdSet(level);
+    for (const Pose& p : kPoses) {
+      for (double t : {3.1, 7.7}) {
+        double we[6], wv[6], bf, bm;
+        place(ex, p, t, we);
+        place(vx, p, t, wv);
+        bound(ex, t, &bf, &bm);
+        double err[2] = {0, 0};
+        for (int j = 0; j < 6; j++) {
+          EXPECT_LE(std::fabs(wv[j] - we[j]), j < 3 ? bf : bm) << p.name << " t " << t << " " << j;
+          err[j / 3] = std::max(err[j / 3], std::fabs(wv[j] - we[j]));
+        }
+        const double F = mju_norm3(we);
+        EXPECT_LT(bf, 0.02 * F) << p.name;
+        std::printf("%s %s t %.1f: |F| %.1f N, force err %.3g N (bound %.3g, %.2g of |F|), "
+                    "torque err %.3g N m (bound %.3g)\n", mjb::simdName(level), p.name, t, F,
+                    err[0], bf, bf / F, err[1], bm);
       }
-      const double F = mju_norm3(we);
-      EXPECT_LT(bf, 0.02 * F) << p.name;
-      std::printf("%s t %.1f: |F| %.1f N, force err %.3g N (bound %.3g, %.2g of |F|), torque "
-                  "err %.3g N m (bound %.3g)\n", p.name, t, F, err[0], bf, bf / F, err[1], bm);
     }
   }
+  mjb::simdSet(prev);
 }
 
 // models/meshes/wigley_576.obj with every triangle split in 4 at its
@@ -244,11 +252,12 @@ struct MeshScene {
 // Second order (docs/physics.md "Vertex integration": the error is
 // O((k s)^2)): the Wigley 576 refined 1, 2 and 4 times along every edge
 // (the same surface); the force error summed over the poses and two times
-// falls about 4x per halving (asserted: at least 3x)
-TEST(VertexInt, ErrorFallsAsTheSquareOfTheEdge) {
+// falls about 4x per halving (asserted: at least 3x); deep water (one
+// exponent family) and 3 m (two, Wheeler's stretching)
+void expectSecondOrder(const std::string& sea) {
   double err[3];
   for (int r = 0; r < 3; r++) {
-    std::string xml[2] = {wigley(576, jonswap(true), "exact"), wigley(576, jonswap(true), "vertex")};
+    std::string xml[2] = {wigley(576, sea, "exact"), wigley(576, sea, "vertex")};
     for (std::string& x : xml) {
       const std::string from = MJB_MODELS "/meshes/wigley_576.obj";
       x.replace(x.find(from), from.size(), "w.obj");
@@ -272,6 +281,12 @@ TEST(VertexInt, ErrorFallsAsTheSquareOfTheEdge) {
     EXPECT_GT(err[r] / err[r + 1], 3) << "refinement " << r;
     std::printf("refinement %d -> %d: error ratio %.2f\n", r, r + 1, err[r] / err[r + 1]);
   }
+}
+
+TEST(VertexInt, ErrorFallsAsTheSquareOfTheEdge) { expectSecondOrder(jonswap(true)); }
+
+TEST(VertexInt, ErrorFallsAsTheSquareOfTheEdgeAtFiniteDepth) {
+  expectSecondOrder(jonswap(true) + "<numeric name=\"mjbuoy.sea.depth\" data=\"3\"/>");
 }
 
 // one long wave (100 m, k s about 0.01): vertex integration within the

@@ -33,8 +33,9 @@ static size_t maxVerts(const HullSet& b) {
 // every point of a hull, e^L (eStride per wave), the position relative
 // to the COM (3), label (2) and record (kRec, aligned to 8 doubles) for
 // every vertex of a hull, 2 per wave per vertex of a chunk of exp
-// arguments and the vertex sums (4 per vertex, on a line: cpusum.h); the Newton scratch, the point arrays and the records each
-// start on a 64-byte line (hullScr: up to 7 doubles to reach one, the
+// arguments and the vertex sums (4 per vertex, cpusum.h); the Newton
+// scratch, the point arrays, the records and the sums each start on a
+// 64-byte line (hullScr: up to 7 doubles to reach one, the
 // point count rounded up to 8). A multiple of 8 doubles, so every thread's
 // part falls on the lines the same way
 static size_t scratchSize(const HullSet& b, const Sea& sea, size_t wcap) {

@@ -283,11 +283,13 @@ static void vertexIntegrals(const TriIn* in, const typename TLanes<W>::V p[3][3]
   for (int j = 0; j < 3; j++) Vw[j] = A * s[1 + j] / 3;
 }
 
-// the vertex sums (cpusum.h) of the lanes' vertices gv into sv
+// the vertex sums (cpusum.h) of the lanes' corners gv into sv
 template <int W>
-static void vertexLoad(const TriIn* in, const int gv[W], typename TLanes<W>::V sv[4]) {
-  for (int l = 0; l < W; l++) {
-    for (int q = 0; q < 4; q++) sv[q][l] = in->vs[4 * gv[l] + q];
+static void vertexLoad(const TriIn* in, const int gv[3][W], typename TLanes<W>::V sv[3][4]) {
+  for (int c = 0; c < 3; c++) {
+    for (int l = 0; l < W; l++) {
+      for (int q = 0; q < 4; q++) sv[c][q][l] = in->vs[4 * gv[c][l] + q];
+    }
   }
 }
 
@@ -319,10 +321,7 @@ static void laneIntegrals(const TriIn* in, const typename TLanes<W>::V p[3][3],
     Vw[j] = V{};
   }
   if (in->n == 0) return;
-  if (sv) {
-    vertexIntegrals<W>(in, p, A, sv, good, P, Pr, Vw);
-    return;
-  }
+  if (sv) return vertexIntegrals<W>(in, p, A, sv, good, P, Pr, Vw);
   V dz[2], dp[2][2], dl[2][2], r2 = V{};
   for (int c = 0; c < 2; c++) {
     dz[c] = zs[c + 1] - zs[0];
@@ -605,9 +604,7 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   const V A = 0.5 * (cr[0] * n[0] + cr[1] * n[1] + cr[2] * n[2]);
   I good = ok;
   V P, Pr[3], Vw[3], sv[3][4];
-  if (in->vs) {
-    for (int c = 0; c < 3; c++) vertexLoad<W>(in, gv[c], sv[c]);
-  }
+  if (in->vs) vertexLoad<W>(in, gv, sv);
   laneIntegrals<W, M>(in, p, d, zs, lb, e0, A, &good, &P, Pr, Vw, in->vs ? sv : nullptr);
   // per triangle done, and the sums; the centroid divided in lanes (the
   // same bits as one division a lane), W good triangles in a row stored
@@ -749,8 +746,8 @@ static void cutLoad(const TriIn* in, int p0, int nl, typename TLanes<W>::V p[3][
     zs[c] = f[4];  // read at the wet corners only
     lb[c][0] = f[5];
     lb[c][1] = f[6];
-    if (in->vs) vertexLoad<W>(in, gv[c], sv[c]);
   }
+  if (in->vs) vertexLoad<W>(in, gv, sv);
 }
 
 // the integrals of the wet part of the lanes' cut triangles (corners from
