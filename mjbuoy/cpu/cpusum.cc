@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cpu/cpuhull.h"
+#include "sea/waveker.h"
 #include "util/vmath.h"
 
 namespace mjb {
@@ -77,7 +78,10 @@ void vertexSums(const HullCall& c, const HullScr& hs, int q0, int q1) {
     } else if (sea.depth + eta > 0) {
       zs = h * sea.depth / (sea.depth + eta);
     }
-    if (!wetNeighbour(*c.cs, c.s->h.data(), c.hl.v0 + q) || !std::isfinite(zs)) {
+    // (e^(k z') grows above the surface: past e^kRMax, the series' own
+    // limit, the cut triangles reaching the vertex go to the exact path)
+    if (!wetNeighbour(*c.cs, c.s->h.data(), c.hl.v0 + q) || !std::isfinite(zs) ||
+        t.k[t.n - 1] * zs > kRMax) {
       for (int j = 0; j < 4; j++) out[j] = NAN;
       continue;
     }

@@ -32,7 +32,9 @@ void sumLanesAvx512(const SumIn& in);
 // vertex stage's e^L; dry ones with a wet neighbour (the dry corners of
 // cut triangles) from e^L at their unclipped stretched height (the linear
 // z' of the triangle through its cut points: docs/physics.md "Vertex
-// integration"); the other dry ones, which no wet piece reads, NaN
+// integration"), up to k z' = kRMax for the largest k (waveker.h); the
+// other dry ones NaN, which sends a cut triangle reaching one to the exact
+// scalar path
 void vertexSums(const HullCall& c, const HullScr& hs, int q0, int q1);
 
 }  // namespace mjb
