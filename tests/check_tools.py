@@ -354,6 +354,8 @@ def seaset(tools, models, tmp):
         (["--spectrum", "storm:hs=1,tp=4"], "storm", "pm, jonswap, table"),
         (["--spectrum", "jonswap:hs=1"], "needs hs and tp"),
         (["--set", "mjbuoy.wind.speed=-3"], "mjbuoy.wind.speed", "-3", "<= 100"),
+        (["--set", "mjbuoy.sea.integration=fast"], "mjbuoy.sea.integration", "fast", "exact",
+         "vertex"),
     )
     for args, *words in bad:
         p = run([sim, model, "--print-sea"] + args, cwd=tmp)

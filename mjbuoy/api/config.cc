@@ -293,9 +293,14 @@ static std::string parseText(const mjModel* m, Config* c, std::vector<char>* is,
                "\" is not a pressure model; give \"linear\" (linear wave theory, the "
                "default) or \"kerner\" (rho g (eta - z)), e.g. data=\"linear\"";
       }
+    } else if (!std::strcmp(key, "sea.integration")) {
+      std::string e = integrationCheck(text, ("mjbuoy: " + tag("text", name) + " data").c_str(),
+                                       &c->sea.integration);
+      if (!e.empty()) return e;
     } else {
       return "mjbuoy: unknown entry " + tag("text", name) +
              "; text entries are mjbuoy.hulls, mjbuoy.backend, mjbuoy.sea.pressure, "
+             "mjbuoy.sea.integration, "
              "mjbuoy.sensor.<sensor>, mjbuoy.spectrum.<label>.type, mjbuoy.wind.gust, "
              "mjbuoy.wind.geoms and mjbuoy.radiation[.<field>] (numeric entries: " +
              kNumericNames + "; see docs/mjcf.md)";
@@ -440,8 +445,8 @@ static std::string parseNumeric(const mjModel* m, Config* c, HullEntries* he, bo
              (key[0] == 'h' ? "hull" : "cpu") + "\"/>";
     } else {
       return "mjbuoy: unknown entry " + tag("numeric", name) + "; numeric entries are " +
-             kNumericNames + ", text entries mjbuoy.hulls, mjbuoy.backend and "
-             "mjbuoy.sea.pressure (see docs/mjcf.md)";
+             kNumericNames + ", text entries mjbuoy.hulls, mjbuoy.backend, "
+             "mjbuoy.sea.pressure and mjbuoy.sea.integration (see docs/mjcf.md)";
     }
   }
   return "";

@@ -521,6 +521,15 @@ std::string chooseBackend(Buoy* b) {
   Buoy& B = *b;
   B.renderer = "CPU";
   if (B.cfg.backend == "cpu") return "";
+  // vertex integration is the cpu lanes' (docs/physics.md "Vertex integration")
+  if (B.cfg.sea.integration == mjb::kIntegrateVertex && !B.hull.empty()) {
+    if (B.cfg.backend == "gl") {
+      return "mjbuoy: mjbuoy.sea.integration = \"vertex\" is a cpu backend mode and the "
+             "backend is gl; use backend cpu (or auto), or integration \"exact\" (docs/mjcf.md)";
+    }
+    B.cfg.backend = "cpu";
+    return "";
+  }
   std::string ge;
   if (!B.hull.empty() && mjb::glMake(B, B.cfg.sea, B.wcap, &B.gl, &B.renderer, &ge)) {
     B.cfg.backend = "gl";

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "cpu/cpuhull.h"
+#include "cpu/cpusum.h"
 #include "hull/hydro.h"
 #include "util/pool.h"
 
@@ -80,6 +81,15 @@ static void vertexPart(const HullRun& r, int i, int slot) {
   const HullCall c = chunkCall(r, slot, &hs);
   const int nv = c.hl.nv;
   vertexStage(c, hs, chunkAt(nv, r.nc, i), chunkAt(nv, r.nc, i + 1));
+}
+
+// stage 1b, chunk i, vertex integration only: the vertex sums (cpusum.h),
+// once every vertex of the hull has its height
+static void sumPart(const HullRun& r, int i, int slot) {
+  HullScr hs;
+  const HullCall c = chunkCall(r, slot, &hs);
+  const int nv = c.hl.nv;
+  vertexSums(c, hs, chunkAt(nv, r.nc, i), chunkAt(nv, r.nc, i + 1));
 }
 
 // stage 2, chunk i: passes 1 and 2 into the chunk's sums (and, on a
@@ -185,6 +195,7 @@ static void hullWrench(const HullSet& b, const Sea& sea, int ih, const mjData* d
             nullptr};
   if (!hullStart(&r, d)) return;
   stage(pool, r, vertexPart);
+  if (vertexMode(sea)) stage(pool, r, sumPart);
   // pass 1: cut, pressure force and torque: Kerner's rho g (eta - z), linear
   // in the cut's depth, exactly (-rho g dA n, -rho g drA x n); or linear
   // wave theory (wavepress.h), which flat water reduces to the same; then

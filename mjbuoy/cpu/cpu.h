@@ -68,6 +68,10 @@ struct CpuState {
   // per thread: wall seconds in the vertex stage (transform, surface
   // search, e^L at wet vertices; mjbuoy-bench reports it)
   std::vector<double> vsec;
+  // the vertices' neighbours along the hulls' edges (global indices):
+  // vertex i's at adj[adjOff[i], adjOff[i + 1]); vertex integration sums
+  // at a dry vertex only when one of them is wet (cpusum.h)
+  std::vector<int> adjOff, adj;
   TriState tri;                // this call
 };
 

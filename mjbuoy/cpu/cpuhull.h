@@ -12,6 +12,7 @@
 #include "cpu/cpu.h"
 #include "hull/rigid.h"
 #include "mjbuoy.h"
+#include "util/vmath.h"
 
 namespace mjb {
 
@@ -55,9 +56,10 @@ enum { kExpChunk = 32 };
 // kRec each, 64-byte aligned, for the triangle kernels), by the vertex's
 // index in its hull. In the thread's scratch, not the CpuState's: a hull's
 // vertex data stays in cache between the vertex stage and the passes and
-// is never written back to memory
+// is never written back to memory. Then, with vertex integration, the
+// vertex sums (VS, 4 each, cpusum.h)
 struct HullScr {
-  double *X, *Y, *A0, *A1, *Z, *ZS, *SC, *E, *rel, *lab, *rec, *arg;
+  double *X, *Y, *A0, *A1, *Z, *ZS, *SC, *E, *rel, *lab, *rec, *arg, *VS;
 };
 
 // one hull's per-triangle results of pass 1 in the thread's scratch
@@ -124,6 +126,12 @@ inline double* lineUp(double* p) {
 // wave), on a line (2 + kLaneTmp per wave, seavec.h)
 inline double* laneTmp(double* sc, size_t nw) { return lineUp(sc + 2 * nw); }
 
+// whether the lanes integrate by the vertex sums (cpusum.h): vertex
+// integration, linear waves and a vector level (the scalar path is exact)
+inline bool vertexMode(const Sea& sea) {
+  return sea.integration == kIntegrateVertex && !sea.waves.empty() &&
+         simdLevel() != kSimdScalar;
+}
 // the vertex stage's scratch layout in sc (scratchSize)
 HullScr hullScr(const Sea& sea, double* sc, size_t mi, int nv);
 

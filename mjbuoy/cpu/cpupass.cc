@@ -140,6 +140,7 @@ static TriIn triIn(const Pass1& q) {
   in.E = q.hs.E;
   in.nw = int(sea.waves.size());
   in.es = int(eStride(sea));
+  in.vs = vertexMode(sea) ? q.hs.VS : nullptr;
   in.n = in.nw > 0 ? t.n : 0;
   in.finite = t.finite;
   in.depth = t.depth;

@@ -69,6 +69,7 @@ HullScr hullScr(const Sea& sea, double* sc, size_t mi, int nv) {
   hs.lab = hs.rel + 3 * nv;
   hs.rec = lineUp(hs.lab + 2 * nv);  // (a record is one load)
   hs.arg = hs.rec + kRec * nv;
+  hs.VS = lineUp(hs.arg + 2 * kExpChunk * nw);
   return hs;
 }
 

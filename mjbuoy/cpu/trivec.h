@@ -48,6 +48,10 @@ struct TriIn {
   const double* rec;  // per hull vertex: all of it in one record (zipkern.h kRec)
   const double *zs, *E;  // per hull vertex: stretched height [m], e^L (es nw a vertex)
   int nw, es;
+  // vertex integration (mjbuoy.sea.integration = vertex): per hull vertex
+  // the 4 vertex sums (cpusum.h), whose linear interpolant each piece
+  // integrates instead of the series; null: the series (exact)
+  const double* vs;
   // the call's wave table (WaveTab, sorted order): n components
   int n, finite;
   double depth;

@@ -257,18 +257,57 @@ static void familyShared(const TriIn& in, int f, const double* const e0[W],
   for (int i = 0; i < 7; i++) acc[i] = a[i];
 }
 
+// vertex integration's part of laneIntegrals: the linear interpolant f of
+// the corner sums integrated exactly over the piece, integral f dA = A (f0
+// + f1 + f2) / 3 and integral f r dA = (A / 12) sum_c (f0 + f1 + f2 + f_c)
+// p_c (docs/physics.md "Vertex integration"), added to P and Pr (linear
+// pressure) and into Vw
+template <int W>
+static void vertexIntegrals(const TriIn* in, const typename TLanes<W>::V p[3][3],
+                            typename TLanes<W>::V A, const typename TLanes<W>::V sv[3][4],
+                            typename TLanes<W>::I* good, typename TLanes<W>::V* P,
+                            typename TLanes<W>::V Pr[3], typename TLanes<W>::V Vw[3]) {
+  typedef typename TLanes<W>::V V;
+  V s[4];
+  for (int q = 0; q < 4; q++) s[q] = sv[0][q] + sv[1][q] + sv[2][q];
+  const V all = s[0] + s[1] + s[2] + s[3];
+  *good &= (all - all) == 0;  // a corner the sums did not reach (cpusum.h): exact path
+  if (in->linear) {
+    *P += in->rg * A * s[0] / 3;
+    for (int j = 0; j < 3; j++) {
+      const V sr = p[0][j] + p[1][j] + p[2][j];
+      Pr[j] += in->rg * A / 12 *
+               (s[0] * sr + sv[0][0] * p[0][j] + sv[1][0] * p[1][j] + sv[2][0] * p[2][j]);
+    }
+  }
+  for (int j = 0; j < 3; j++) Vw[j] = A * s[1 + j] / 3;
+}
+
+// the vertex sums (cpusum.h) of the lanes' corners gv into sv
+template <int W>
+static void vertexLoad(const TriIn* in, const int gv[3][W], typename TLanes<W>::V sv[3][4]) {
+  for (int c = 0; c < 3; c++) {
+    for (int l = 0; l < W; l++) {
+      for (int q = 0; q < 4; q++) sv[c][q][l] = in->vs[4 * gv[c][l] + q];
+    }
+  }
+}
+
 // the pressure and wave integrals of W lanes' pieces (corners p relative
 // to the COM, Kerner's depths d, stretched heights zs, labels lb, e^L at
 // corner 0, area A): P = integral p dA [N], Pr = integral p r dA [N m], Vw
 // = integral (u - current) dA [m^3/s]; good cleared in lanes too coarse
-// for the series (the scalar path subdivides them)
+// for the series (the scalar path subdivides them); with vertex
+// integration (sv: the corners' vertex sums, cpusum.h) the integrals of
+// their linear interpolant instead, good cleared where a sum is not finite
 template <int W, class M>
 static void laneIntegrals(const TriIn* in, const typename TLanes<W>::V p[3][3],
                           typename TLanes<W>::V d[3], const typename TLanes<W>::V zs[3],
                           const typename TLanes<W>::V lb[3][2], const double* const e0[W],
                           typename TLanes<W>::V A, typename TLanes<W>::I* good,
                           typename TLanes<W>::V* P, typename TLanes<W>::V Pr[3],
-                          typename TLanes<W>::V Vw[3]) {
+                          typename TLanes<W>::V Vw[3],
+                          const typename TLanes<W>::V (*sv)[4] = nullptr) {
   typedef typename TLanes<W>::V V;
   // depth below the level (linear) or the surface (Kerner), linear over it
   if (in->linear) {
@@ -282,6 +321,7 @@ static void laneIntegrals(const TriIn* in, const typename TLanes<W>::V p[3][3],
     Vw[j] = V{};
   }
   if (in->n == 0) return;
+  if (sv) return vertexIntegrals<W>(in, p, A, sv, good, P, Pr, Vw);
   V dz[2], dp[2][2], dl[2][2], r2 = V{};
   for (int c = 0; c < 2; c++) {
     dz[c] = zs[c + 1] - zs[0];
@@ -563,8 +603,9 @@ static void triChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   for (int j = 0; j < 3; j++) sr[j] = p[0][j] + p[1][j] + p[2][j];
   const V A = 0.5 * (cr[0] * n[0] + cr[1] * n[1] + cr[2] * n[2]);
   I good = ok;
-  V P, Pr[3], Vw[3];
-  laneIntegrals<W, M>(in, p, d, zs, lb, e0, A, &good, &P, Pr, Vw);
+  V P, Pr[3], Vw[3], sv[3][4];
+  if (in->vs) vertexLoad<W>(in, gv, sv);
+  laneIntegrals<W, M>(in, p, d, zs, lb, e0, A, &good, &P, Pr, Vw, in->vs ? sv : nullptr);
   // per triangle done, and the sums; the centroid divided in lanes (the
   // same bits as one division a lane), W good triangles in a row stored
   // whole (most of a hull's wholly wet ones)
@@ -624,7 +665,8 @@ static void cutPiece(const TriIn* in, const typename TLanes<W>::V q[3][3],
                      const typename TLanes<W>::V n[3], typename TLanes<W>::I* good,
                      typename TLanes<W>::V* A, typename TLanes<W>::V rA[3],
                      typename TLanes<W>::V F[3], typename TLanes<W>::V Tq[3],
-                     typename TLanes<W>::V Vw[3]) {
+                     typename TLanes<W>::V Vw[3],
+                     const typename TLanes<W>::V (*sv)[4]) {
   typedef typename TLanes<W>::V V;
   typedef typename TLanes<W>::I I;
   V e1[3], e2[3];
@@ -638,7 +680,7 @@ static void cutPiece(const TriIn* in, const typename TLanes<W>::V q[3][3],
   const I has = a > 0;
   const V z = V{}, ap = has ? a : z;
   V P, Pr[3], vw[3];
-  laneIntegrals<W, M>(in, q, d, zs, lb, e0, ap, good, &P, Pr, vw);
+  laneIntegrals<W, M>(in, q, d, zs, lb, e0, ap, good, &P, Pr, vw, sv);
   *A += ap;
   for (int j = 0; j < 3; j++) {
     const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
@@ -663,6 +705,15 @@ static void cutPoint(const typename TLanes<W>::V pw[3], const typename TLanes<W>
   for (int j = 0; j < 2; j++) l[j] = lw[j] + t * (le[j] - lw[j]);
 }
 
+// the vertex sums at cutPoint's point (the same t): linear along the edge
+template <int W>
+static void cutSums(const typename TLanes<W>::V sw[4], const typename TLanes<W>::V se[4],
+                    typename TLanes<W>::V hw, typename TLanes<W>::V he,
+                    typename TLanes<W>::V s[4]) {
+  const typename TLanes<W>::V t = hw / (hw - he);
+  for (int q = 0; q < 4; q++) s[q] = sw[q] + t * (se[q] - sw[q]);
+}
+
 // the corners of cut triangles [p0, p0 + nl) of in.idx as W lanes (the
 // last repeated past nl), each turned so its odd corner o (the one alone
 // on its side of the surface) comes first, winding kept: o, a, b;
@@ -673,7 +724,7 @@ template <int W, bool TWO>
 static void cutLoad(const TriIn* in, int p0, int nl, typename TLanes<W>::V p[3][3],
                     typename TLanes<W>::V h[3], typename TLanes<W>::V zs[3],
                     typename TLanes<W>::V lb[3][2], typename TLanes<W>::I* fromB,
-                    const double* e0[W], int tk[W]) {
+                    const double* e0[W], int tk[W], typename TLanes<W>::V sv[3][4]) {
   typedef typename TLanes<W>::V V;
   int gv[3][W];
   *fromB = typename TLanes<W>::I{};
@@ -696,6 +747,7 @@ static void cutLoad(const TriIn* in, int p0, int nl, typename TLanes<W>::V p[3][
     lb[c][0] = f[5];
     lb[c][1] = f[6];
   }
+  if (in->vs) vertexLoad<W>(in, gv, sv);
 }
 
 // the integrals of the wet part of the lanes' cut triangles (corners from
@@ -711,9 +763,10 @@ static void cutPieces(const TriIn* in, const typename TLanes<W>::V p[3][3],
                       typename TLanes<W>::I* good, typename TLanes<W>::V x[4][3],
                       typename TLanes<W>::V* A, typename TLanes<W>::V rA[3],
                       typename TLanes<W>::V Fl[3], typename TLanes<W>::V Tl[3],
-                      typename TLanes<W>::V Vw[3]) {
+                      typename TLanes<W>::V Vw[3], const typename TLanes<W>::V sv[3][4]) {
   typedef typename TLanes<W>::V V;
   const V z = V{};
+  const bool vtx = in->vs != nullptr;
   if (!TWO) {
     V l1[2], l2[2];
     cutPoint<W>(p[0], p[1], lb[0], lb[1], h[0], h[1], x[1], l1);
@@ -724,7 +777,13 @@ static void cutPieces(const TriIn* in, const typename TLanes<W>::V p[3][3],
     V d[3] = {-h[0], z, z};
     const V zq[3] = {zs[0], z, z}, lq[3][2] = {{lb[0][0], lb[0][1]}, {l1[0], l1[1]},
                                                {l2[0], l2[1]}};
-    cutPiece<W, M>(in, q, d, zq, lq, e0, n, good, A, rA, Fl, Tl, Vw);
+    V sq[3][4];
+    if (vtx) {
+      for (int k = 0; k < 4; k++) sq[0][k] = sv[0][k];
+      cutSums<W>(sv[0], sv[1], h[0], h[1], sq[1]);
+      cutSums<W>(sv[0], sv[2], h[0], h[2], sq[2]);
+    }
+    cutPiece<W, M>(in, q, d, zq, lq, e0, n, good, A, rA, Fl, Tl, Vw, vtx ? sq : nullptr);
     return;
   }
   // the quadrilateral a, b, cut bo, cut ao fanned as wetWaves fans it:
@@ -751,19 +810,28 @@ static void cutPieces(const TriIn* in, const typename TLanes<W>::V p[3][3],
     cl[2][j] = lbo[j];
     cl[3][j] = la[j];
   }
+  V cs[4][4];  // vertex sums at the four corners (vertex integration)
+  if (vtx) {
+    for (int k = 0; k < 4; k++) cs[0][k] = sv[1][k], cs[1][k] = sv[2][k];
+    cutSums<W>(sv[2], sv[0], h[2], h[0], cs[2]);
+    cutSums<W>(sv[1], sv[0], h[1], h[0], cs[3]);
+  }
   // pieces (a, b, cut bo), (a, cut bo, cut ao), or from b (b, cut bo,
   // cut ao), (b, cut ao, a): corner indices into the four
   const int fa[2][3] = {{0, 1, 2}, {0, 2, 3}}, fbv[2][3] = {{1, 2, 3}, {1, 3, 0}};
   for (int m = 0; m < 2; m++) {
-    V q[3][3], d[3], zq[3], lq[3][2];
+    V q[3][3], d[3], zq[3], lq[3][2], sq[3][4];
     for (int c = 0; c < 3; c++) {
       const int i = fa[m][c], k = fbv[m][c];
       for (int j = 0; j < 3; j++) q[c][j] = fromB ? cq[k][j] : cq[i][j];
       d[c] = fromB ? cd[k] : cd[i];
       zq[c] = fromB ? cz[k] : cz[i];
       for (int j = 0; j < 2; j++) lq[c][j] = fromB ? cl[k][j] : cl[i][j];
+      if (vtx) {
+        for (int j = 0; j < 4; j++) sq[c][j] = fromB ? cs[k][j] : cs[i][j];
+      }
     }
-    cutPiece<W, M>(in, q, d, zq, lq, e0, n, good, A, rA, Fl, Tl, Vw);
+    cutPiece<W, M>(in, q, d, zq, lq, e0, n, good, A, rA, Fl, Tl, Vw, vtx ? sq : nullptr);
   }
 }
 
@@ -782,7 +850,8 @@ static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   I fromB;  // lanes whose quadrilateral is fanned from b
   const double* e0[W];
   int tk[W];
-  cutLoad<W, TWO>(in, p0, nl, p, h, zs, lb, &fromB, e0, tk);
+  V sv[3][4];  // vertex sums at o, a, b (vertex integration)
+  cutLoad<W, TWO>(in, p0, nl, p, h, zs, lb, &fromB, e0, tk, sv);
   // the parent's normal (wetTriangle)
   V cr[3], n[3];
   const V len = laneNormal<W, M>(p, cr, n);
@@ -791,7 +860,7 @@ static void cutChunk(TriIn* in, int p0, int nl, typename TLanes<W>::V* F,
   I good = ok & ((hs - hs) == 0);
   V A = V{}, rA[3] = {}, Fl[3] = {}, Tl[3] = {}, Vw[3] = {}, x[4][3];
   const V z = V{};
-  cutPieces<W, M, TWO>(in, p, h, zs, lb, fromB, e0, n, &good, x, &A, rA, Fl, Tl, Vw);
+  cutPieces<W, M, TWO>(in, p, h, zs, lb, fromB, e0, n, &good, x, &A, rA, Fl, Tl, Vw, sv);
   const I has = A > 0;
   const V inv = has ? 1 / A : z;
   I use = good & has;

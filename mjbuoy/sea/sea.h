@@ -38,6 +38,9 @@ double stretch(double depth, double z, double eta);
 // abrupt start, 1/35 for N = 3 (docs/physics.md section 6)
 inline constexpr double kRampPeriods = 3;
 
+// Sea::integration's modes
+enum { kIntegrateExact = 0, kIntegrateVertex = 1 };
+
 struct Sea {
   double rho = 1000;        // water density [kg/m^3]
   double level = 0;         // still water level: height of the orbit centres [m]
@@ -55,6 +58,11 @@ struct Sea {
   // fraction of rho g times the hull's volume (docs/physics.md "Series
   // tolerance")
   double seriestol = 0;
+  // the cpu lanes' linear wave pressure on a wet piece (mjbuoy.sea.
+  // integration): kIntegrateExact, each component's e^L in closed form,
+  // or kIntegrateVertex, the components summed at the hull's vertices and
+  // the linear interpolant integrated (docs/physics.md "Vertex integration")
+  int integration = 0;
   std::vector<Wave> waves;
   // derived: the order of components in now(), Gerstner first, and how
   // many are Gerstner (the rest are Airy)

@@ -2,6 +2,7 @@
 #include "sea/seacheck.h"
 
 #include <cmath>
+#include <cstring>
 #include <sstream>
 
 namespace mjb {
@@ -58,6 +59,19 @@ std::string currentCheck(const double c[2], const char* where) {
 
 std::string rampCheck(double ramp, const char* where) {
   return inside(ramp, kRampRange) ? "" : outside(where, "ramp", ramp, kRampRange);
+}
+
+std::string integrationCheck(const char* text, const char* where, int* mode) {
+  if (!std::strcmp(text, "exact")) {
+    *mode = kIntegrateExact;
+  } else if (!std::strcmp(text, "vertex")) {
+    *mode = kIntegrateVertex;
+  } else {
+    return std::string(where) + " = \"" + text + "\" is not an integration mode; give \"exact\" "
+           "(each component in closed form, the default) or \"vertex\" (the components summed "
+           "at the vertices, cpu backend; docs/physics.md \"Vertex integration\")";
+  }
+  return "";
 }
 
 std::string windCheck(const mjbWind& w, const char* where) {

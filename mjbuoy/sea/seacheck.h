@@ -62,6 +62,10 @@ std::string currentCheck(const double c[2], const char* where);
 // the start-up ramp time [s]
 std::string rampCheck(double ramp, const char* where);
 
+// the cpu lanes' integration mode (Sea::integration) named text: "exact"
+// or "vertex" into *mode; "" or where + the value and the accepted ones
+std::string integrationCheck(const char* text, const char* where, int* mode);
+
 // mean wind and gusts (speed, direction, gust spectrum, gust count)
 std::string windCheck(const mjbWind& w, const char* where);
 

@@ -39,6 +39,7 @@ static double gradiation = -1;  // --radiation: memory length [s]; < 0: off
 static std::string gradmem;     // --radiation-memory: mjbuoy.radiation.memorymodel, "": default
 static bool gwarmmem = false;   // --warm-memory: warm up until every radiation memory is full
 static double gseriestol = 0;  // --seriestol: mjbuoy.sea.seriestol, 0: left out (exact)
+static std::string ginteg;  // --integration: mjbuoy.sea.integration, "": left out (exact)
 static bool gradoff = false;    // --radiation-off: mjbuoy.radiation off (on by default)
 
 // --radiation: every boat gets synthetic coefficients of the Wigley's
@@ -129,6 +130,7 @@ static std::string scene(const std::string& meshes, int boats, int tris) {
   if (gseriestol > 0) {
     s << "<numeric name=\"mjbuoy.sea.seriestol\" data=\"" << gseriestol << "\"/>";
   }
+  if (!ginteg.empty()) s << "<text name=\"mjbuoy.sea.integration\" data=\"" << ginteg << "\"/>";
   s << lineEntries(boats) << "</custom><worldbody>";
   int side = std::ceil(std::sqrt(boats));
   for (int i = 0; i < boats; i++) {
@@ -549,6 +551,10 @@ int main(int argc, char** argv) {
                  "tolerance as a fraction of rho g V (0, the default: exact; not passed to "
                  "--baseline)")
       ->check(CLI::Range(0.0, 1e-4));
+  app.add_option("--integration", ginteg, "mjbuoy.sea.integration: the cpu lanes' wave pressure, "
+                 "exact (the default) or vertex (the components summed at the vertices); not "
+                 "passed to --baseline")
+      ->check(CLI::IsMember({"exact", "vertex"}));
   app.add_flag("--warm-memory", gwarmmem, "warm up until every boat's radiation memory "
                "history is full (its steady cost; about memory length / timestep steps, "
                "seconds to minutes for large cells) instead of 5 steps");
