@@ -458,3 +458,68 @@ TEST(Diffraction, StepIsTheDocumentedInterpolationSummed) {
 }
 
 }  // namespace
+
+namespace {
+
+// two free boxes 5 m apart in the wave of boxModel, the second hx2 long
+// (1: identical hulls, which share one solution and so one table)
+std::string twoBoxModel(double hx2) {
+  std::ostringstream s;
+  s << "<mujoco><custom><text name=\"mjbuoy.hulls\" data=\"hull hull2\"/>"
+    << "<text name=\"mjbuoy.radiation\" data=\"on\"/>"
+    << "<numeric name=\"mjbuoy.radiation.omega\" data=\"1 9 4\"/>"
+    << "<numeric name=\"mjbuoy.airy.w\" data=\"0.1 6 30 0\"/>"
+    << "<numeric name=\"mjbuoy.sea.ramp\" data=\"0\"/>"
+    << "</custom><worldbody><body name=\"box\"><freejoint/>"
+    << "<geom name=\"hull\" type=\"box\" size=\"1 0.5 0.5\" mass=\"1000\"/></body>"
+    << "<body name=\"box2\" pos=\"0 5 0\"><freejoint/>"
+    << "<geom name=\"hull2\" type=\"box\" size=\"" << hx2 << " 0.5 0.5\" mass=\"" << 1000 * hx2
+    << "\"/></body></worldbody></mujoco>";
+  return s.str();
+}
+
+// identical hulls hold one diffraction and drift table; their wrenches
+// are those of the same bodies each with its own copy (what setDiffraction
+// built before sharing: the reference), to the bit, at poses that differ;
+// a longer second box keeps its own tables (the test can fail)
+TEST(Diffraction, IdenticalHullsShareOneTable) {
+  Scene s(twoBoxModel(1)), c(twoBoxModel(1.2));
+  ASSERT_TRUE(s.ok() && c.ok()) << s.err << c.err;
+  const mjb::Buoy* B = mjb::buoyOf(s.b);
+  ASSERT_EQ(B->diff.db.size(), 2u);
+  const mjb::DiffBody &a = B->diff.db[0], &b = B->diff.db[1];
+  ASSERT_FALSE(a.D.empty());
+  ASSERT_FALSE(a.T.empty());  // the drift table (mjbuoy.radiation.drift defaults on)
+  EXPECT_EQ(a.D.data(), b.D.data());
+  EXPECT_EQ(a.T.data(), b.T.data());
+  const std::vector<mjb::DiffBody>& dc = mjb::buoyOf(c.b)->diff.db;
+  ASSERT_EQ(dc.size(), 2u);
+  EXPECT_NE(dc[0].D.data(), dc[1].D.data());
+  EXPECT_NE(dc[0].T.data(), dc[1].T.data());
+  mjb::Diffraction own = B->diff;
+  for (mjb::DiffBody& x : own.db) {
+    x.D = std::vector<double>(x.D);  // a copy of its own
+    x.T = std::vector<double>(x.T);
+  }
+  ASSERT_NE(own.db[0].D.data(), own.db[1].D.data());
+  // the second box turned by 40 deg and moved: another wrench than the first's
+  s.d->qpos[7 + 3] = std::cos(M_PI / 9), s.d->qpos[7 + 6] = std::sin(M_PI / 9);
+  s.d->qpos[7 + 0] = 1.5;
+  mj_kinematics(s.m, s.d);
+  s.d->time = 0.7;
+  double ws[12], wo[12];
+  char told[2] = {0, 0};
+  std::string notes;
+  mjb::diffractionStep(B->diff, B->cfg.sea, s.m, s.d, ws, told, &notes);
+  mjb::diffractionStep(own, B->cfg.sea, s.m, s.d, wo, told, &notes);
+  double big = 0, diff = 0;
+  for (int k = 0; k < 12; k++) {
+    EXPECT_EQ(ws[k], wo[k]) << k;
+    big = std::max(big, std::fabs(ws[k]));
+  }
+  for (int k = 0; k < 6; k++) diff = std::max(diff, std::fabs(ws[k] - ws[6 + k]));
+  EXPECT_GT(big, 0);
+  EXPECT_GT(diff, 0.01 * big);  // the bodies' wrenches differ: each reads at its own pose
+}
+
+}  // namespace

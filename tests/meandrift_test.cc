@@ -186,13 +186,15 @@ TEST(MeanDrift, NewmanSumMatchesPairs) {
   b.c.omega = {1, 2, 3};
   for (int h = 0; h < mjb::kDiffHeadings; h++)
     b.c.heading.push_back(2 * kPi * h / mjb::kDiffHeadings);
+  std::vector<double> T;
   for (int w = 0; w < 3; w++)
     for (int h = 0; h < mjb::kDiffHeadings; h++) {
       double be = b.c.heading[h];
-      b.T.push_back((1 + w) * 100 * std::cos(be));
-      b.T.push_back((2 - w) * 50 * std::sin(be));
-      b.T.push_back(30 + 10 * w * std::cos(2 * be));
+      T.push_back((1 + w) * 100 * std::cos(be));
+      T.push_back((2 - w) * 50 * std::sin(be));
+      T.push_back(30 + 10 * w * std::cos(2 * be));
     }
+  b.T = std::move(T);
   df.db.push_back(b);
   mjb::Sea sea;
   const double amp[3] = {0.5, 0.3, 0.2}, om[3] = {1.3, 1.5, 2.4}, dir[3] = {0, 20, -35},

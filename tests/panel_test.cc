@@ -565,13 +565,15 @@ TEST(Panel, DiffractionHeadingInterpolation) {
   mjb::DiffBody b;
   b.c.omega = h.omega;
   for (int i = 0; i < mjb::kDiffHeadings; i++) b.c.heading.push_back(h.heading[2 * i]);
+  std::vector<double> D;
   for (int w = 0; w < h.nw(); w++)
     for (int i = 0; i < mjb::kDiffHeadings; i++)
       for (int d = 0; d < 6; d++) {
         int o = 6 * (w * nh + 2 * i) + d;
-        b.D.push_back(h.Xre[o] - h.FKre[o]);
-        b.D.push_back(h.Xim[o] - h.FKim[o]);
+        D.push_back(h.Xre[o] - h.FKre[o]);
+        D.push_back(h.Xim[o] - h.FKim[o]);
       }
+  b.D = std::move(D);
   for (int w = 0; w < h.nw(); w++) {
     double big[6] = {0}, err[6] = {0};
     for (int i = 0; i < nh; i++)

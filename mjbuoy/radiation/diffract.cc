@@ -10,6 +10,19 @@
 
 namespace mjb {
 
+const std::vector<double>& SharedTable::none() {
+  static const std::vector<double> e;
+  return e;
+}
+
+bool SharedTable::share(const SharedTable& o, const std::vector<double>& v) {
+  if (o.empty() || o.size() != v.size() ||
+      std::memcmp(o.data(), v.data(), v.size() * sizeof(double)) != 0)
+    return false;
+  *this = o;
+  return true;
+}
+
 std::string setDiffraction(int body, const double R0[9], const HydroCoef& c, size_t wcap,
                            Diffraction* df) {
   const int nw = c.nw(), nh = c.nh();
@@ -28,14 +41,19 @@ std::string setDiffraction(int body, const double R0[9], const HydroCoef& c, siz
   b.body = body;
   std::memcpy(b.R0, R0, sizeof(b.R0));
   b.c = c;
-  b.D.resize(2 * nx);
+  std::vector<double> D(2 * nx);
   for (size_t i = 0; i < nx; i++) {
-    b.D[2 * i] = c.Xre[i] - c.FKre[i];
-    b.D[2 * i + 1] = c.Xim[i] - c.FKim[i];
-    if (!std::isfinite(b.D[2 * i]) || !std::isfinite(b.D[2 * i + 1])) {
+    D[2 * i] = c.Xre[i] - c.FKre[i];
+    D[2 * i + 1] = c.Xim[i] - c.FKim[i];
+    if (!std::isfinite(D[2 * i]) || !std::isfinite(D[2 * i + 1])) {
       return "mjbuoy: diffraction: the exciting force is not finite";
     }
   }
+  // an identical hull's table, if any, else its own
+  bool shared = false;
+  for (const DiffBody& o : df->db)
+    if (o.body != body && (shared = b.D.share(o.D, D))) break;
+  if (!shared) b.D = std::move(D);
   b.iw.reserve(wcap);
   b.tw.reserve(wcap);
   for (DiffBody& o : df->db) {
@@ -146,6 +164,7 @@ static void bodyWrench(const DiffBody& b, const Sea& sea, const double x[3], dou
   const size_t n = sea.waves.size() < b.iw.size() ? sea.waves.size() : b.iw.size();
   const double r = sea.gain(t);  // the start-up ramp on every amplitude (sea.h)
   const int nh = b.c.nh();
+  const double* D = b.D.data();
   DriftSum ds;
   for (size_t j = 0; j < n; j++) {
     if (b.iw[j] == -2) continue;
@@ -153,7 +172,7 @@ static void bodyWrench(const DiffBody& b, const Sea& sea, const double x[3], dou
     TableWeights tw;
     tableWeights(nh, b.iw[j], b.tw[j], w.dir * (M_PI / 180) - psi, &tw);
     double acc[12];
-    blendD(b.D.data(), tw, acc);
+    blendD(D, tw, acc);
     // a e^{-i omega t}, a = A e^{i (k D.x + phi)}: the component's complex
     // amplitude at the COM (the sea's phase, docs/physics.md section 11)
     const double ph = w.k * (w.dx * x[0] + w.dy * x[1]) + w.ph - w.omega * t;

@@ -4,6 +4,7 @@
 #ifndef MJBUOY_DIFFRACT_H_
 #define MJBUOY_DIFFRACT_H_
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,18 +18,42 @@ namespace mjb {
 // headings solved at attach: uniform 2 pi h / n, h = 0..n-1 (10 deg apart)
 const int kDiffHeadings = 36;
 
+// a read-only table of doubles, one copy held by every body whose table is
+// bitwise the same (identical hulls: one copy in the cache while stepping)
+class SharedTable {
+ public:
+  SharedTable& operator=(std::vector<double> v) {
+    if (v.empty()) p_.reset();
+    else p_ = std::make_shared<const std::vector<double>>(std::move(v));
+    d_ = p_ ? p_->data() : nullptr;
+    return *this;
+  }
+  // hold o's table if it is bitwise v (same results); whether it is
+  bool share(const SharedTable& o, const std::vector<double>& v);
+  operator const std::vector<double>&() const { return p_ ? *p_ : none(); }
+  const double* data() const { return d_; }
+  size_t size() const { return p_ ? p_->size() : 0; }
+  bool empty() const { return d_ == nullptr; }
+  double operator[](size_t i) const { return d_[i]; }
+
+ private:
+  static const std::vector<double>& none();
+  std::shared_ptr<const std::vector<double>> p_;
+  const double* d_ = nullptr;  // p_'s data, one load while stepping
+};
+
 // one rigid group's table, about its COM
 struct DiffBody {
   int body;                // MuJoCo body id (the group's top body)
   double R0[9];            // its rotation at qpos0 (table from body, row-major)
   double yaw0 = 0;         // the table's axes: the world's turned by yaw0 [rad] about z
   HydroCoef c;             // X and FK about the COM in the table's axes
-  std::vector<double> D;   // X - FK, (re, im) per (omega, heading, dof): 2 ((w nh + h) 6 + dof)
+  SharedTable D;           // X - FK, (re, im) per (omega, heading, dof): 2 ((w nh + h) 6 + dof)
   std::vector<int> iw;     // per sea component: table row at or below its omega;
                            //   -1 below the first (D linear from 0), -2 above the last (none)
   std::vector<double> tw;  // weight of the next row
   int ri = -1;             // its body's index in Radiation::rb (immersion factor)
-  std::vector<double> T;   // mean drift (driftstep.h): Fx, Fy, Mz per (omega, heading); empty: off
+  SharedTable T;           // mean drift (driftstep.h): Fx, Fy, Mz per (omega, heading); empty: off
   std::vector<double> Tfar;  // the total (far-field) drift, same layout; T = Tfar - the step's own
 };
 

@@ -16,16 +16,20 @@ std::string setDrift(int body, const DriftTable& dt, const double ref[3], const 
              "diffraction table";
     // the step's pressure integration and diffraction phase give dt.fk itself
     b.Tfar = dt.far;
-    b.T.resize(n);
-    for (size_t i = 0; i < n; i++) b.T[i] = dt.far[i] - dt.fk[i];
+    std::vector<double> T(n);
+    for (size_t i = 0; i < n; i++) T[i] = dt.far[i] - dt.fk[i];
     // Mz about the COM: Mz(ref) - (com - ref) x F
     const double dx = com[0] - ref[0], dy = com[1] - ref[1];
-    for (std::vector<double>* t : {&b.T, &b.Tfar})
+    for (std::vector<double>* t : {&T, &b.Tfar})
       for (size_t i = 0; i < n; i += 3) {
         (*t)[i + 2] -= dx * (*t)[i + 1] - dy * (*t)[i];
         for (int k = 0; k < 3; k++)
           if (!std::isfinite((*t)[i + k])) return "mjbuoy: drift: the drift table is not finite";
       }
+    // an identical hull's table, if any, else its own
+    for (const DiffBody& o : df->db)
+      if (o.body != body && b.T.share(o.T, T)) return "";
+    b.T = std::move(T);
     return "";
   }
   return "mjbuoy: drift: the body has no diffraction table (turn mjbuoy.radiation.diffraction "

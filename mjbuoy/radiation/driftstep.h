@@ -47,7 +47,7 @@ struct DriftSum {
 inline void driftBlend(const DiffBody& b, const TableWeights& tw, double T[3]) {
   T[0] = T[1] = T[2] = 0;
   for (int i = 0; i < tw.n; i++) {
-    const double* p = &b.T[3 * (size_t)tw.off[i]];
+    const double* p = b.T.data() + 3 * (size_t)tw.off[i];
     for (int d = 0; d < 3; d++) T[d] += tw.f[i] * p[d];
   }
 }
