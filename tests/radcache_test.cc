@@ -353,6 +353,29 @@ TEST(RadCache, IdenticalHullsSolveOnce) {
   }
 }
 
+// bodies without names are named by their ids in the progress lines, the
+// reused solution's line too, and the attach succeeds
+TEST(RadCache, UnnamedIdenticalHullsNamedByTheirIds) {
+  TmpDir t;
+  std::vector<std::string> lines;
+  struct Quiet {
+    ~Quiet() { mjb_setProgress(nullptr, nullptr); }
+  } quiet;
+  mjb_setProgress(keepLine, &lines);
+  std::string x = fleet(t.path);
+  for (int i = 0; i < 3; i++) {
+    const std::string from = "<body name=\"b" + std::to_string(i) + "\"";
+    x.replace(x.find(from), from.size(), "<body");
+  }
+  Scene a(x);
+  ASSERT_TRUE(a.ok()) << a.err;
+  EXPECT_EQ(stats(a).same, 2);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0].find("radiation of body 1 (no name): panel solver: "), 0u) << lines[0];
+  EXPECT_EQ(lines[1], "radiation of body 2 (no name): the same panels as body 1 (no name) (an "
+                      "identical hull): its solution");
+}
+
 // where the cache lives: the MJCF entry, else MJBUOY_RADIATION_CACHE, else
 // $XDG_CACHE_HOME/mjbuoy, else ~/.cache/mjbuoy; "off" turns it off
 TEST(RadCache, DirectoryPrecedence) {

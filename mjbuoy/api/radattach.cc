@@ -385,8 +385,9 @@ static bool cachedSolve(Buoy* B, const std::string& who, const PanelMesh& body,
   }
   for (const Solved& s : *solved) {
     if (!sameProblem(s, body, lid, omega, head, *c, db)) continue;
-    progressSay(who.substr(8) + ": the same panels as " + s.who.substr(s.who.find("body \"")) +
-                " (an identical hull): its solution");
+    const size_t at = s.who.find("body ");  // (who: "mjbuoy: radiation of body ...")
+    progressSay(who.substr(8) + ": the same panels as " +
+                s.who.substr(at == std::string::npos ? 0 : at) + " (an identical hull): its solution");
     *c = s.c;
     if (dt) *dt = s.dt;
     B->radcache.same++;
