@@ -294,6 +294,14 @@ std::string fleet(const std::string& dir) {
 // the progress lines of an attach (mjb_setProgress)
 void keepLine(const char* line, void* out) { ((std::vector<std::string>*)out)->push_back(line); }
 
+// the progress lines while it lives: the receiver is removed however the
+// test ends (the lines die with it)
+struct Lines {
+  std::vector<std::string> v;
+  Lines() { mjb_setProgress(keepLine, &v); }
+  ~Lines() { mjb_setProgress(nullptr, nullptr); }
+};
+
 // identical hulls turned about the vertical are solved once: the potential
 // flow problem is invariant under that turn (docs/physics.md section 13,
 // "Identical hulls"), so each box's added mass and damping in its own axes
@@ -301,12 +309,8 @@ void keepLine(const char* line, void* out) { ((std::vector<std::string>*)out)->p
 // and read from the cache, and nothing once the receiver is removed
 TEST(RadCache, IdenticalHullsSolveOnce) {
   TmpDir t;
-  std::vector<std::string> lines;
-  // the receiver is removed however the test ends (lines dies with it)
-  struct Quiet {
-    ~Quiet() { mjb_setProgress(nullptr, nullptr); }
-  } quiet;
-  mjb_setProgress(keepLine, &lines);
+  Lines kept;
+  std::vector<std::string>& lines = kept.v;
   Scene a(fleet(t.path));
   ASSERT_TRUE(a.ok()) << a.err;
   EXPECT_EQ(stats(a).miss, 1);
@@ -357,11 +361,8 @@ TEST(RadCache, IdenticalHullsSolveOnce) {
 // reused solution's line too, and the attach succeeds
 TEST(RadCache, UnnamedIdenticalHullsNamedByTheirIds) {
   TmpDir t;
-  std::vector<std::string> lines;
-  struct Quiet {
-    ~Quiet() { mjb_setProgress(nullptr, nullptr); }
-  } quiet;
-  mjb_setProgress(keepLine, &lines);
+  Lines kept;
+  const std::vector<std::string>& lines = kept.v;
   std::string x = fleet(t.path);
   for (int i = 0; i < 3; i++) {
     const std::string from = "<body name=\"b" + std::to_string(i) + "\"";
