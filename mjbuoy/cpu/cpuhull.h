@@ -45,6 +45,42 @@ inline void add(double* w, const double* f, const double* c) {
 // exponent, two at finite depth (waveint.h; depth does not change after attach)
 inline size_t eStride(const Sea& sea) { return sea.depth > 0 ? 4 : 2; }
 
+// the exponents of e^L at stretched height zs [m] into a (t.finite ? 2 n
+// : n): k z', then at finite depth -k (z' + 2 h) (waveint.h); e^L is the
+// exp of each times the phase's sin and cos (vertexE)
+inline void vertexExponents(const WaveTab& t, double zs, double* a) {
+  const int n = t.n;
+  for (int j = 0; j < n; j++) a[j] = t.k[j] * zs;
+  if (t.finite) {
+    for (int j = 0; j < n; j++) a[n + j] = -t.k[j] * (zs + 2 * t.depth);
+  }
+}
+
+// one vertex's e^L into e (per family: nw real parts, then nw imaginary)
+// from ex, its exponents exponentiated, and sc, the label search's sin and
+// cos of its nw phases (unsorted: t.perm gives each sorted component's)
+inline void vertexE(const WaveTab& t, size_t nw, const double* ex, const double* sc,
+                    double* e) {
+  const int n = t.n, nf = t.finite ? 2 : 1;
+  for (int f = 0; f < nf; f++) {
+    double* er = e + 2 * f * nw;
+    double* ei = er + nw;
+    const double* af = ex + f * n;
+    if (t.ident) {  // no gather: a loop the compiler vectorises
+      for (int j = 0; j < n; j++) {
+        er[j] = af[j] * sc[2 * j + 1];
+        ei[j] = af[j] * sc[2 * j];
+      }
+      continue;
+    }
+    for (int j = 0; j < n; j++) {
+      const int i = t.perm[j];
+      er[j] = af[j] * sc[2 * i + 1];
+      ei[j] = af[j] * sc[2 * i];
+    }
+  }
+}
+
 // wet vertices whose e^L one vExp call computes (vertexWaves): a call per
 // vertex cost more than the exp itself on a one-component sea
 enum { kExpChunk = 32 };

@@ -30,21 +30,9 @@ static void sumVertex(const Sea& sea, const WaveTab& t, const double* e, double*
 // out; arg: nf n doubles of scratch
 static void dryWaves(const Sea& sea, const WaveTab& t, const HullScr& hs, int q, double zs,
                      double* arg, double* e) {
-  const int n = t.n, nw = int(sea.waves.size()), nf = t.finite ? 2 : 1;
-  for (int j = 0; j < n; j++) arg[j] = t.k[j] * zs;
-  if (t.finite) {
-    for (int j = 0; j < n; j++) arg[n + j] = -t.k[j] * (zs + 2 * t.depth);
-  }
-  vExp(nf * n, arg, arg);
-  const double* sc = hs.SC + 2 * nw * q;
-  for (int f = 0; f < nf; f++) {
-    double *er = e + 2 * f * nw, *ei = er + nw;
-    for (int j = 0; j < n; j++) {
-      const int i = t.ident ? j : t.perm[j];
-      er[j] = arg[f * n + j] * sc[2 * i + 1];
-      ei[j] = arg[f * n + j] * sc[2 * i];
-    }
-  }
+  vertexExponents(t, zs, arg);
+  vExp((t.finite ? 2 : 1) * t.n, arg, arg);
+  vertexE(t, sea.waves.size(), arg, hs.SC + 2 * sea.waves.size() * q, e);
 }
 
 // whether global vertex i has a neighbour below the surface (cpu.h adj)

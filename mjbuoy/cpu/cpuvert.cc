@@ -18,36 +18,11 @@ namespace mjb {
 // phases' sin and cos from the label search; arg: 2 n kExpChunk scratch
 static void vertexWaves(const WaveTab& t, size_t nw, size_t stride, const HullScr& hs,
                         const int* wq, int nq, double* arg) {
-  const int n = t.n, nf = t.finite ? 2 : 1;
+  const int nf = t.finite ? 2 : 1;
+  for (int c = 0; c < nq; c++) vertexExponents(t, hs.ZS[wq[c]], arg + nf * t.n * c);
+  vExp(nf * t.n * nq, arg, arg);
   for (int c = 0; c < nq; c++) {
-    const double zs = hs.ZS[wq[c]];
-    double* a = arg + nf * n * c;
-    for (int j = 0; j < n; j++) a[j] = t.k[j] * zs;
-    if (t.finite) {
-      for (int j = 0; j < n; j++) a[n + j] = -t.k[j] * (zs + 2 * t.depth);
-    }
-  }
-  vExp(nf * n * nq, arg, arg);
-  for (int c = 0; c < nq; c++) {
-    const double* sc = hs.SC + 2 * nw * wq[c];
-    const double* a = arg + nf * n * c;
-    for (int f = 0; f < nf; f++) {
-      double* er = hs.E + stride * nw * wq[c] + 2 * f * nw;
-      double* ei = er + nw;
-      const double* af = a + f * n;
-      if (t.ident) {  // no gather: a loop the compiler vectorises
-        for (int j = 0; j < n; j++) {
-          er[j] = af[j] * sc[2 * j + 1];
-          ei[j] = af[j] * sc[2 * j];
-        }
-        continue;
-      }
-      for (int j = 0; j < n; j++) {
-        const int i = t.perm[j];
-        er[j] = af[j] * sc[2 * i + 1];
-        ei[j] = af[j] * sc[2 * i];
-      }
-    }
+    vertexE(t, nw, arg + nf * t.n * c, hs.SC + 2 * nw * wq[c], hs.E + stride * nw * wq[c]);
   }
 }
 
