@@ -176,9 +176,11 @@ TEST(MeanDrift, FixedEllipseYawNearFar) {
   }
 }
 
-// Newman's (1974) approximation: the O(N) factorised sum against the
-// direct double sum sum_ij A_i A_j (T_i + T_j) / 2 cos(theta_i - theta_j)
-// over component pairs, and one component's steady mean A^2 T
+// Newman's (1974) approximation: the O(N) factorised sum of the step's
+// pass (diffractionWrench, with a zero diffraction table so that its
+// wrench is the drift alone) against the direct double sum sum_ij A_i A_j
+// (T_i + T_j) / 2 cos(theta_i - theta_j) over component pairs, and one
+// component's steady mean A^2 T
 TEST(MeanDrift, NewmanSumMatchesPairs) {
   mjb::Diffraction df;
   mjb::DiffBody b;
@@ -195,6 +197,7 @@ TEST(MeanDrift, NewmanSumMatchesPairs) {
       T.push_back(30 + 10 * w * std::cos(2 * be));
     }
   b.T = std::move(T);
+  b.D = std::vector<double>(12 * 3 * mjb::kDiffHeadings, 0.0);
   df.db.push_back(b);
   mjb::Sea sea;
   const double amp[3] = {0.5, 0.3, 0.2}, om[3] = {1.3, 1.5, 2.4}, dir[3] = {0, 20, -35},
@@ -210,7 +213,7 @@ TEST(MeanDrift, NewmanSumMatchesPairs) {
   const double x[3] = {0.7, -0.4, 0}, psi = 0.2;
   for (double t : {0.0, 3.1, 17.9}) {
     double F[6] = {0, 0, 0, 0, 0, 0}, want[3] = {0, 0, 0}, Ti[3][3], th[3];
-    mjb::driftNewman(d, sea, x, psi, t, F);
+    mjb::diffractionWrench(d, sea, x, psi, t, F);
     for (int i = 0; i < 3; i++) {
       const mjb::Wave& w = sea.waves[i];
       mjb::driftAt(d, d.iw[i], d.tw[i], w.dir * kPi / 180 - psi, Ti[i]);
@@ -228,8 +231,8 @@ TEST(MeanDrift, NewmanSumMatchesPairs) {
   sea.waves.resize(1);
   double T0[3], F1[6] = {0, 0, 0, 0, 0, 0}, F2[6] = {0, 0, 0, 0, 0, 0};
   mjb::driftAt(d, d.iw[0], d.tw[0], -psi, T0);
-  mjb::driftNewman(d, sea, x, psi, 0.0, F1);
-  mjb::driftNewman(d, sea, x, psi, 5.3, F2);
+  mjb::diffractionWrench(d, sea, x, psi, 0.0, F1);
+  mjb::diffractionWrench(d, sea, x, psi, 5.3, F2);
   EXPECT_NEAR(F1[0], amp[0] * amp[0] * T0[0], 1e-9 * std::fabs(T0[0]));
   EXPECT_NEAR(F2[0], F1[0], 1e-9 * std::fabs(T0[0]));
   // the heading interpolation: T at beta = 0 of row 0 is its table entry

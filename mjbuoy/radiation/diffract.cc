@@ -155,10 +155,7 @@ void diffAt(const DiffBody& b, int iw, double tw, double beta, double re[6], dou
   }
 }
 
-// the wrench of one body in the frame turned by psi from the table's, at t:
-// diffraction and drift in one pass over the components, sharing each
-// component's table weights and phase
-static void bodyWrench(const DiffBody& b, const Sea& sea, const double x[3], double psi,
+void diffractionWrench(const DiffBody& b, const Sea& sea, const double x[3], double psi,
                        double t, double F[6]) {
   for (int k = 0; k < 6; k++) F[k] = 0;
   const size_t n = sea.waves.size() < b.iw.size() ? sea.waves.size() : b.iw.size();
@@ -201,7 +198,7 @@ void diffractionStep(const Diffraction& df, const Sea& sea, const mjModel* m, co
     // the waves' heading in the table's axes: turned by Q's yaw
     const double psi = std::atan2(Q[3], Q[0]);
     double F[6];
-    bodyWrench(b, sea, d->xipos + 3 * b.body, psi, d->time, F);
+    diffractionWrench(b, sea, d->xipos + 3 * b.body, psi, d->time, F);
     // the wrench turns with the body, roll and pitch too, as the radiation
     // force does (body axes, radstep.cc): the two nearly cancel in long
     // waves, and turning one alone leaves a mean surge force of second

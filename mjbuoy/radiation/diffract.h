@@ -92,6 +92,13 @@ void tableWeights(int nh, int iw, double tw, double beta, TableWeights* out);
 // D of b at row (iw, tw) and heading beta [rad] (table axes): re, im per dof
 void diffAt(const DiffBody& b, int iw, double tw, double beta, double re[6], double im[6]);
 
+// the wrench of body b at its COM x [m] (world) and time t [s], in the
+// table's axes turned by psi [rad]: F (N, N m) set to the diffraction force
+// plus the mean and slowly varying drift (driftstep.h), in one pass over
+// the components sharing each one's table weights and phase
+void diffractionWrench(const DiffBody& b, const Sea& sea, const double x[3], double psi,
+                       double t, double F[6]);
+
 // in mjcb_passive: each body's diffraction wrench [N, N m] in world axes,
 // about its COM (d->xipos), 6 per body in w: sum over components of
 // Re(a_j D(omega_j, beta_j - psi) e^{-i omega_j t}) turned by the body's

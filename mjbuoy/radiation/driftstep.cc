@@ -45,24 +45,6 @@ void driftAt(const DiffBody& b, int iw, double tw, double beta, double T[3]) {
   driftBlend(b, w, T);
 }
 
-void driftNewman(const DiffBody& b, const Sea& sea, const double x[3], double psi, double t,
-                 double F[6]) {
-  if (b.T.empty()) return;
-  DriftSum ds;
-  const size_t n = sea.waves.size() < b.iw.size() ? sea.waves.size() : b.iw.size();
-  const int nh = b.c.nh();
-  for (size_t j = 0; j < n; j++) {
-    if (b.iw[j] == -2) continue;
-    const Wave& w = sea.waves[j];
-    TableWeights tw;
-    tableWeights(nh, b.iw[j], b.tw[j], w.dir * (M_PI / 180) - psi, &tw);
-    // the component's phase at the COM, as the diffraction force's
-    const double ph = w.k * (w.dx * x[0] + w.dy * x[1]) + w.ph - w.omega * t;
-    driftAdd(b, tw, w.amp * std::cos(ph), w.amp * std::sin(ph), &ds);
-  }
-  driftFinish(b, ds, sea.gain(t), F);
-}
-
 void driftFinish(const DiffBody& b, const DriftSum& s, double r, double F[6]) {
   if (b.T.empty()) return;
   // quadratic in the amplitudes, so the start-up ramp enters squared (sea.h)

@@ -27,17 +27,12 @@ std::string setDrift(int body, const DriftTable& dt, const double ref[3], const 
 // Fx, Fy, Mz
 void driftAt(const DiffBody& b, int iw, double tw, double beta, double T[3]);
 
-// Newman's approximation of the difference-frequency force at the COM x
-// (world) and time t [s], added to F (surge, sway of F[0..1], yaw F[5];
-// table axes turned by psi [rad]):
+// Newman's (1974) approximation of the difference-frequency force, summed
+// one component at a time in the diffraction step (diffractionWrench):
 //   F(t) = sum_ij A_i A_j (T_i + T_j) / 2 cos(theta_i - theta_j)
 //        = Re[(sum_i a_i T_i) conj(sum_j a_j)],  a_j = A_j e^{i theta_j},
-// O(N) per step; one component gives the steady mean drift A^2 T
-void driftNewman(const DiffBody& b, const Sea& sea, const double x[3], double psi, double t,
-                 double F[6]);
-
-// Newman's sums one component at a time (driftNewman's terms, shared with the
-// diffraction step): P = sum_i a_i T_i (Fx, Fy, Mz), Q = sum_j a_j
+// O(N) per step; one component gives the steady mean drift A^2 T.
+// P = sum_i a_i T_i (Fx, Fy, Mz), Q = sum_j a_j
 struct DriftSum {
   std::complex<double> P[3] = {0, 0, 0};
   std::complex<double> Q = 0;
