@@ -18,6 +18,7 @@
 #include "simdlevels.h"
 #include "testutil.h"
 #include "util/vmath.h"
+#include "vertexmesh.h"
 
 namespace mjbt {
 namespace {
@@ -351,6 +352,15 @@ const std::string kGerstner =
 // here from this file's own Newton solve of (6.1)
 TEST(VertexForms, GerstnerWithinTheLabelBound) { expectWithinBound(kGerstner, "gerstner"); }
 
+// two Gerstner components along one direction: the exact path's
+// long-crested form (one polynomial in k per piece, docs/physics.md
+// "Long-crested seas") as the reference
+TEST(VertexForms, LongCrestedGerstnerWithinTheLabelBound) {
+  expectWithinBound("<numeric name=\"mjbuoy.wave.g1\" data=\"0.12 6 20 0 0.9\"/>"
+                    "<numeric name=\"mjbuoy.wave.g2\" data=\"0.08 4 20 70 1\"/>",
+                    "long-crested gerstner");
+}
+
 // the bench's swell (one Gerstner component, 20 m, Q 0.5) and the same
 // three Gerstner components over 32 Airy JONSWAP components: each kind's
 // L differences in its own coordinate
@@ -358,6 +368,54 @@ TEST(VertexForms, GerstnerAndAiryWithinTheBound) {
   expectWithinBound("<numeric name=\"mjbuoy.wave.swell\" data=\"0.3 20 20 0 0.5\"/>" + kGerstner +
                         jonswap(32),
                     "gerstner+airy");
+}
+
+// Second order (docs/physics.md "Vertex integration": each piece's error
+// is O((k s)^2) of its integrals, so the drag's through its Lipschitz
+// constant, above, and the pressure's alike): the Wigley 576 with every
+// edge halved once and twice (the same surface, vertexmesh.h); the error
+// of force family part summed over the poses and two times falls about 4x
+// per halving (asserted: at least 3x; a first-order or constant fault,
+// such as a velocity or pressure sum off by a fixed fraction, does not)
+void expectSecondOrder(const std::string& sea, const std::string& more, int part,
+                       const char* what) {
+  double err[3];
+  for (int r = 0; r < 3; r++) {
+    std::string xml[2] = {wigley(sea, "exact", more), wigley(sea, "vertex", more)};
+    for (std::string& x : xml) {
+      const std::string from = MJB_MODELS "/meshes/wigley_576.obj";
+      x.replace(x.find(from), from.size(), "w.obj");
+    }
+    const std::string obj = refinedWigley(r);
+    MeshScene ex(xml[0], obj), vx(xml[1], obj);
+    ASSERT_TRUE(ex.ok()) << ex.err;
+    ASSERT_TRUE(vx.ok()) << vx.err;
+    err[r] = 0;
+    for (const Pose& p : kPoses) {
+      for (double t : {3.1, 7.7}) {
+        double we[6], wv[6];
+        place(ex, p, t, part, we);
+        place(vx, p, t, part, wv);
+        for (int j = 0; j < 3; j++) err[r] += std::fabs(wv[j] - we[j]);
+      }
+    }
+    std::printf("%s, %d triangles: force error %.4g N\n", what, ex.m->mesh_facenum[0], err[r]);
+  }
+  for (int r = 0; r + 1 < 3; r++) {
+    EXPECT_GT(err[r] / err[r + 1], 3) << what << " refinement " << r;
+    std::printf("%s, refinement %d -> %d: error ratio %.2f\n", what, r, r + 1,
+                err[r] / err[r + 1]);
+  }
+}
+
+TEST(VertexForms, KernerDragErrorFallsAsTheSquareOfTheEdge) {
+  expectSecondOrder(jonswap(64), kKernerDrag, mjbPART_DRAG, "kerner drag");
+}
+
+TEST(VertexForms, GerstnerErrorFallsAsTheSquareOfTheEdge) {
+  expectSecondOrder("<numeric name=\"mjbuoy.wave.swell\" data=\"0.3 20 20 0 0.5\"/>" +
+                        kGerstner + jonswap(32),
+                    "", mjbPART_PRESSURE, "gerstner+airy");
 }
 
 }  // namespace
