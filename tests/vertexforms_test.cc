@@ -1,11 +1,12 @@
 // vertex integration (mjbuoy.sea.integration = vertex, docs/physics.md
 // "Vertex integration") in the two forms tests/vertexint_test.cc leaves
-// out: Kerner's pressure with the pressure and suction drag, which take
-// the water velocity whose integrals the vertex sums replace, and seas of
-// Gerstner (trochoidal) components, alone and with Airy ones. The
-// reference is the exact path (the closed-form series of every component,
-// tests/waveint_test.cc); the tolerance is the docs' interpolation bound,
-// computed here from the mesh, the components and the pose alone
+// out: Kerner's pressure with the pressure and suction drag and the
+// slamming, which take the water velocity whose integrals the vertex sums
+// replace, and seas of Gerstner (trochoidal) components, alone and with
+// Airy ones. The reference is the exact path (the closed-form series of
+// every component, tests/waveint_test.cc); the tolerance is the docs'
+// interpolation bound, computed here from the mesh, the components and the
+// pose alone, or, for the slamming, the error's second order in the edge
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -66,18 +67,23 @@ const Pose kPoses[] = {{"level", 0.03, 0, 0, {1.2, 0.2, -0.5, 0.6, 0.1, 0.2}},
                        {"pitch", 0.0, 0, 4, {0.6, 0.6, -0.7, 0, -0.3, 0.3}}};
 
 // the pose and velocity at time t, then mj_forward: the body's wrench of
-// force family part
+// force family part. With prev, first a call one step earlier at the
+// position moved back by v dt, so the slamming history (docs/physics.md
+// 4.4) holds that step's swept-volume rates
 template <class S>
-void place(S& s, const Pose& p, double t, int part, double w[6]) {
+void place(S& s, const Pose& p, double t, int part, double w[6], bool prev = false) {
   mj_resetData(s.m, s.d);
   mjtNum qr[4], qp[4], ax[3] = {1, 0, 0}, ay[3] = {0, 1, 0};
   mju_axisAngle2Quat(qr, ax, p.roll * M_PI / 180);
   mju_axisAngle2Quat(qp, ay, p.pitch * M_PI / 180);
-  s.d->qpos[2] = p.z;
   mju_mulQuat(s.d->qpos + 3, qp, qr);
   for (int j = 0; j < 6; j++) s.d->qvel[j] = p.v[j];
-  s.d->time = t;
-  mj_forward(s.m, s.d);
+  const double dt = s.m->opt.timestep;
+  for (int k = prev ? 1 : 0; k >= 0; k--) {
+    for (int j = 0; j < 3; j++) s.d->qpos[j] = (j == 2 ? p.z : 0) - k * dt * p.v[j];
+    s.d->time = t - k * dt;
+    mj_forward(s.m, s.d);
+  }
   const mjtNum* f = mjb_wrenchPart(s.b, s.d, part) + 6;
   for (int j = 0; j < 6; j++) w[j] = f[j];
 }
@@ -378,7 +384,7 @@ TEST(VertexForms, GerstnerAndAiryWithinTheBound) {
 // per halving (asserted: at least 3x; a first-order or constant fault,
 // such as a velocity or pressure sum off by a fixed fraction, does not)
 void expectSecondOrder(const std::string& sea, const std::string& more, int part,
-                       const char* what) {
+                       const char* what, bool prev = false) {
   double err[3];
   for (int r = 0; r < 3; r++) {
     std::string xml[2] = {wigley(sea, "exact", more), wigley(sea, "vertex", more)};
@@ -394,9 +400,15 @@ void expectSecondOrder(const std::string& sea, const std::string& more, int part
     for (const Pose& p : kPoses) {
       for (double t : {3.1, 7.7}) {
         double we[6], wv[6];
-        place(ex, p, t, part, we);
-        place(vx, p, t, part, wv);
+        place(ex, p, t, part, we, prev);
+        place(vx, p, t, part, wv, prev);
         for (int j = 0; j < 3; j++) err[r] += std::fabs(wv[j] - we[j]);
+        if (r == 0 && part != mjbPART_PRESSURE) {
+          // the family a sizeable part of the wrench
+          double pe[6];
+          place(ex, p, t, mjbPART_PRESSURE, pe, prev);
+          EXPECT_GT(mju_norm3(we), 0.1 * mju_norm3(pe)) << what << " " << p.name << " t " << t;
+        }
       }
     }
     std::printf("%s, %d triangles: force error %.4g N\n", what, ex.m->mesh_facenum[0], err[r]);
@@ -410,6 +422,21 @@ void expectSecondOrder(const std::string& sea, const std::string& more, int part
 
 TEST(VertexForms, KernerDragErrorFallsAsTheSquareOfTheEdge) {
   expectSecondOrder(jonswap(64), kKernerDrag, mjbPART_DRAG, "kerner drag");
+}
+
+// Kerner's slamming (4.5, 4.6; drag off) after one step of history: it
+// takes the water velocity as the drag does, through the swept-volume
+// rate Q = A_w v and its change over the step, piecewise smooth in v (the
+// clamp, cos_t = 0), so its error falls with the velocity integrals'
+// (Gamma_max 10 m/s^2, power 1: the faces of cut triangles below the
+// clamp's limit, whose Gamma depends on v)
+TEST(VertexForms, KernerSlamErrorFallsAsTheSquareOfTheEdge) {
+  const std::string slam = "<text name=\"mjbuoy.sea.pressure\" data=\"kerner\"/>"
+                           "<numeric name=\"mjbuoy.hull.drag\" data=\"0 0 1\"/>"
+                           "<numeric name=\"mjbuoy.hull.suction\" data=\"0 0 1\"/>"
+                           "<numeric name=\"mjbuoy.hull.viscous\" data=\"0\"/>"
+                           "<numeric name=\"mjbuoy.hull.slamming\" data=\"1 10 1\"/>";
+  expectSecondOrder(jonswap(64), slam, mjbPART_SLAM, "kerner slamming", true);
 }
 
 TEST(VertexForms, GerstnerErrorFallsAsTheSquareOfTheEdge) {
