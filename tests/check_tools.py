@@ -47,6 +47,7 @@ import hashlib
 import json
 import os
 import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -254,6 +255,20 @@ def options(tools, models, tmp):
               "mjbuoy-bench --baseline: times and ratios positive (%s)" % c)
         check(c[14] != "" and c[14] == c[15], "the same build's Newton steps per solve on both sides")
     no_temps(tmp, "mjbuoy-bench --baseline")
+    # the baseline runs each cell with this run's options: a wrapper that
+    # logs its arguments sees --integration vertex
+    log = os.path.join(tmp, "baseline-args")
+    wrap = os.path.join(tmp, "logging-bench")
+    open(wrap, "w").write("#!/bin/sh\necho \"$@\" >> %s\nexec %s \"$@\"\n"
+                          % (shlex.quote(log), shlex.quote(bench)))
+    os.chmod(wrap, 0o755)
+    p = run([bench, "--baseline", wrap, "--boats", "1", "--tris", "64", "--backend", "cpu",
+             "--sea", "jonswap", "--integration", "vertex", "--steps", "2", "--reps", "1"],
+            cwd=tmp, env=dict(os.environ, TMPDIR=tmp))
+    said = open(log).read() if os.path.exists(log) else ""
+    check(p.returncode == 0 and "--integration vertex" in said,
+          "mjbuoy-bench --baseline --integration vertex: the baseline runs in vertex mode too "
+          "(its arguments: %r)" % said)
     # <init body="bar*">: patterns are not supported there (not "no free joint")
     sc = os.path.join(tmp, "sc.xml")
     open(sc, "w").write('<scenario model="barge.xml" duration="0.05">\n'

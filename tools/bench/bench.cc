@@ -413,6 +413,10 @@ static int compareGrid(const std::string& base, const std::string& meshes,
             common.push_back(gradmem);
           }
           if (gwarmmem) common.push_back("--warm-memory");
+          if (!ginteg.empty()) {  // both builds in the same mode
+            common.push_back("--integration");
+            common.push_back(ginteg);
+          }
           if (kind.lines > 0) {  // only then: a baseline without --lines runs the rest
             for (const std::string& a : {std::string("--lines"), std::to_string(kind.lines),
                                          std::string("--segments"), std::to_string(gsegments)}) {
