@@ -176,9 +176,12 @@ void vertexStage(const HullCall& c, const HullScr& hs, int q0, int q1) {
   HullState* s = c.s;
   const size_t nw = c.sea.waves.size();
   placeVertices(c, hs, q0, q1);
+  // vertex integration: the phases' reduced-cost sin and cos (sincoskern.h
+  // sinCosFast; docs/physics.md "Vertex integration")
+  const bool fast = c.sea.integration == kIntegrateVertex;
   c.cs->niter[c.slot] += c.sea.solveMany(s->wn.data(), q1 - q0, hs.X + q0, hs.Y + q0,
                                             hs.A0 + q0, hs.A1 + q0, hs.Z + q0,
-                                            hs.SC + 2 * nw * q0, c.tmp);
+                                            hs.SC + 2 * nw * q0, c.tmp, fast);
   c.cs->nsolve[c.slot] += q1 - q0;
   vertexOut(c, hs, q0, q1);
   wetVertices(c, hs, q0, q1);

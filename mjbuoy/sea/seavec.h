@@ -17,13 +17,15 @@ enum { kLaneTmp = 4 * 8 };
 // one call of Sea::solveMany: n components (the first ng Gerstner), m
 // points x, y; guesses a0, a1 become labels, z heights [m] and sc 2 per
 // wave per point (point-major: sin, cos of each phase); tmp holds kLaneTmp
-// per Gerstner component
+// per Gerstner component; fast: the Airy phases' sin and cos by
+// sincoskern.h's sinCosFast where in its range (vertex integration mode)
 struct LaneIn {
   const WaveNow* w;
   int n, ng, m;
   double level;
   const double *x, *y;
   double *a0, *a1, *z, *sc, *tmp;
+  bool fast;
 };
 
 // the Newton steps taken in all, as Sea::solveMany (seavec_avx2.cc,
