@@ -52,6 +52,15 @@ def main():
         p = 1 - rl * rl / 2 + sum(L(float(ci)) * rl**(4 + 2 * i) for i, ci in enumerate(c))
         print("cos to r^%d: %s\n  max abs err %.3g" % (2 * nc + 2, hexs(c),
                                                      float(np.max(np.abs(p - np.cos(rl))))))
+    rmax = np.log(2) / 2 * (1 + 2**-20)
+    r = grid(-rmax, rmax)
+    for ne in (5, 6):  # exp: r^2 .. r^(ne + 1), relative error
+        basis = lambda x, ne=ne: np.stack([x**(2 + i) for i in range(ne)], 1)
+        c = lawson(basis, np.exp(r) - 1 - r, np.exp(-r), r)
+        rl = np.linspace(L(-rmax), L(rmax), 200001)
+        p = 1 + rl + sum(L(float(ci)) * rl**(2 + i) for i, ci in enumerate(c))
+        print("exp to r^%d: %s\n  max rel err %.3g" % (ne + 1, hexs(c),
+                                                      float(np.max(np.abs(p / np.exp(rl) - 1)))))
 
 
 if __name__ == "__main__":

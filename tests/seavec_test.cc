@@ -16,6 +16,7 @@
 #include "sea/sea.h"
 #include "sea/seavec.h"
 #include "simdlevels.h"
+#include "util/expkern.h"
 #include "util/sincoskern.h"
 #include "testutil.h"
 #include "util/vmath.h"
@@ -342,6 +343,54 @@ TEST(SeaVec, FastPhasesWithinEpsOnEveryLevel) {
   checkFast(makeSea(0, 5, 0.0), 5e4, "airy 5e4");
   checkFast(makeSea(0, 5, 0.0), 5e5, "airy 5e5");
   checkFast(makeSea(2, 3, 0.35), 0, "gerstner and airy");
+}
+
+// vmath.h's vExpFast (expkern.h: 2^n times a near-minimax polynomial) on
+// every vector level against long double's expl: within kExpFastEps
+// relative over its range [-708, 709]: random arguments over all of it and
+// densely over [-40, 4] (the vertices' k z'), next to the reduction's
+// boundaries (n ln2 + ln2 / 2, where r changes sign) and at the range's
+// edges; 0 below, infinity above, NaN kept; a count of 11 (a tail past the
+// lanes). Input aliased to the output as well
+TEST(SeaVec, ExpFastWithinEps) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<double> xs;
+  for (int i = 0; i < 100000; i++) xs.push_back(-708 + 1417 * u(rng));
+  for (int i = 0; i < 100000; i++) xs.push_back(-40 + 44 * u(rng));
+  const long double ln2 = 0.693147180559945309417232121458176568L;
+  for (int m = -1021; m <= 1022; m += 7) {
+    for (double d : {-1e-9, 0.0, 1e-9}) xs.push_back(double((m + 0.5L) * ln2) + d);
+  }
+  for (double x : {-708.0, 709.0, 0.0, -0.0, 1e-300, -1e-17, 4.0, -40.0}) xs.push_back(x);
+  const int prev = mjb::simdLevel();
+  for (int level : vectorLevels("seavec")) {
+    mjb::simdSet(level);
+    std::vector<double> y(xs.size());
+    mjb::vExpFast(xs.size(), xs.data(), y.data());
+    double worst = 0;
+    for (size_t i = 0; i < xs.size(); i++) {
+      const double e = double(std::fabs(y[i] / expl((long double)xs[i]) - 1));
+      worst = std::fmax(worst, e);
+      EXPECT_LE(e, mjb::kExpFastEps) << xs[i] << " " << mjb::simdName(level);
+    }
+    std::vector<double> z = {-709, -1e4, 709.5, 1e4, INFINITY, -INFINITY, NAN, 1, -1, 2, 3};
+    mjb::vExpFast(z.size(), z.data(), z.data());
+    EXPECT_EQ(z[0], 0);
+    EXPECT_EQ(z[1], 0);
+    EXPECT_EQ(z[2], INFINITY);
+    EXPECT_EQ(z[3], INFINITY);
+    EXPECT_EQ(z[4], INFINITY);
+    EXPECT_EQ(z[5], 0);
+    EXPECT_TRUE(std::isnan(z[6]));
+    for (int i = 7; i < 11; i++) {
+      const double x = i == 7 ? 1 : i == 8 ? -1 : i - 7;
+      EXPECT_NEAR(z[i], std::exp(x), mjb::kExpFastEps * std::exp(x)) << i;
+    }
+    std::printf("[seavec] vExpFast %s: %zu arguments, worst %.3g relative (eps %.3g)\n",
+                mjb::simdName(level), xs.size(), worst, mjb::kExpFastEps);
+  }
+  mjb::simdSet(prev);
 }
 
 TEST(SeaVec, LanesMatchTheScalarSearch) {
