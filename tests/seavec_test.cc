@@ -421,7 +421,7 @@ TEST(SeaVec, LanesMatchTheScalarSearch) {
 // at the surface, a NaN surface and a NaN height, and at finite depth
 // surfaces at and below the bed (stretch's branches and glibc's fmin and
 // fmax at NaN); three components in permuted order (perm), deep water and
-// 4 m
+// 4 m; with libmvec's exp (vExp) and the vertex mode's (fast: vExpFast)
 TEST(SeaVec, WetVerticesInLanesGiveTheListsBits) {
   const int prev = mjb::simdLevel();
   const int m = 4000, n = 3, nw = 3;
@@ -441,14 +441,18 @@ TEST(SeaVec, WetVerticesInLanesGiveTheListsBits) {
   rel[3 * 4 + 2] = std::nan("");
   const double k[n] = {0.2, 0.7, 1.9};
   const int perm[n] = {2, 0, 1};
+  const std::vector<int> lvs = vectorLevels("seavec");
   for (double depth : {0.0, 4.0}) {
     const bool finite = depth > 0;
     const int stride = finite ? 4 : 2;
-    for (int level_ : vectorLevels("seavec")) {
+    for (int lf = 0; lf < 2 * int(lvs.size()); lf++) {
+      // each level with libmvec's exp and with the vertex mode's (fast)
+      const int level_ = lvs[lf / 2];
+      const bool fast = lf % 2;
       mjb::simdSet(level_);
       std::vector<double> ZS(m, 7), E(stride * nw * m, 7);
       mjb::WetIn in{m, rel.data(), Z.data(), SC.data(), zc, level, depth, n, nw, finite, stride,
-                    k, perm, ZS.data(), E.data()};
+                    k, perm, ZS.data(), E.data(), fast};
       const int done = level_ == mjb::kSimdAvx512 ? mjb::wetLanesAvx512(in) : mjb::wetLanesAvx2(in);
       ASSERT_EQ(done, m - m % (level_ == mjb::kSimdAvx512 ? 8 : 4));
       long bad = 0;
@@ -458,7 +462,7 @@ TEST(SeaVec, WetVerticesInLanesGiveTheListsBits) {
         for (int f = 0; f < (finite ? 2 : 1); f++) {
           double arg[n], a[n];
           for (int j = 0; j < n; j++) arg[j] = f == 0 ? k[j] * zs : -k[j] * (zs + 2 * depth);
-          mjb::vExp(n, arg, a);
+          (fast ? mjb::vExpFast : mjb::vExp)(n, arg, a);
           for (int j = 0; j < n; j++) {
             const double er = a[j] * SC[2 * nw * q + 2 * perm[j] + 1];
             const double ei = a[j] * SC[2 * nw * q + 2 * perm[j]];
@@ -468,7 +472,7 @@ TEST(SeaVec, WetVerticesInLanesGiveTheListsBits) {
           }
         }
       }
-      EXPECT_EQ(bad, 0) << mjb::simdName(level_) << ", depth " << depth;
+      EXPECT_EQ(bad, 0) << mjb::simdName(level_) << ", depth " << depth << ", fast " << fast;
       // the cases were hit: at the surface 0; deep, a NaN surface gives
       // fmin(NaN, 0) = 0; at 4 m the bed and a NaN height give -depth
       EXPECT_EQ(ZS[0], 0);

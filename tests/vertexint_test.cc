@@ -18,6 +18,7 @@
 
 #include "simdlevels.h"
 #include "testutil.h"
+#include "util/expkern.h"
 #include "util/sincoskern.h"
 #include "util/vmath.h"
 #include "vertexmesh.h"
@@ -87,11 +88,12 @@ void place(S& s, const Pose& p, double t, double w[6]) {
 // components by it times the largest lever arm. Every triangle with a wet
 // corner counts whole (A >= its wet area). From the mesh, the waves
 // (mjb_waves) and the surface (mjb_seaHeight) alone. Plus the vertex
-// phases' kernel (docs/physics.md "Vertex integration", reduced-cost
-// phases): each cos and sin within eps = kSinCosFastEps, so the surface
-// within d_eta = eps sum |a_j| and the pressure at a vertex within
-// rho g (d_eta + sum_j a_j e^(k_j max z') (eps + k_j d_eta)), times A (and
-// the lever arm) per triangle with a wet corner
+// kernels (docs/physics.md "Vertex integration", reduced-cost phases and
+// exponentials): each cos and sin within eps = kSinCosFastEps, e^(k z')
+// within eps_e = kExpFastEps relative, so the surface within d_eta = eps
+// sum |a_j| and the pressure at a vertex within rho g (d_eta + sum_j a_j
+// e^(k_j max z') (eps + eps_e + k_j d_eta)), times A (and the lever arm)
+// per triangle with a wet corner
 template <class S>
 void bound(const S& s, double t, double* bf, double* bm) {
   const mjModel* m = s.m;
@@ -142,7 +144,8 @@ void bound(const S& s, double t, double* bf, double* bm) {
         }
       }
       const double ej = kRho * kG * a * A * std::exp(k * hmax) * q / 24;
-      const double ek = kRho * kG * A * (std::fabs(a) * std::exp(k * hmax) * (eps + k * deta));
+      const double ek = kRho * kG * A * (std::fabs(a) * std::exp(k * hmax) *
+                                          (eps + mjb::kExpFastEps + k * deta));
       *bf += ej + ek;
       *bm += (ej + ek) * lever;
     }

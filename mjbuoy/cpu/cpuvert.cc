@@ -132,7 +132,7 @@ static void wetVertices(const HullCall& c, const HullScr& hs, int q0, int q1) {
     const int es = int(eStride(sea));
     WetIn in{q1 - q0, hs.rel + 3 * q0, hs.Z + q0, hs.SC + 2 * nw * q0, zc, sea.level, t.depth,
              t.n, int(nw), t.finite, es, t.k.data(), t.ident ? nullptr : t.perm.data(),
-             hs.ZS + q0, hs.E + es * nw * q0};
+             hs.ZS + q0, hs.E + es * nw * q0, sea.integration == kIntegrateVertex};
     qs += simdLevel() == kSimdAvx512 ? wetLanesAvx512(in) : wetLanesAvx2(in);
   }
   int wq[kExpChunk], nq = 0;

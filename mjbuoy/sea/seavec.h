@@ -92,7 +92,8 @@ int packLanesAvx512(const PackIn& in);
 // and family f (1, or 2 at finite depth) e^(k zs) (e^(-k (zs + 2 h))) times
 // the cos and sin of the component's phase (SC, 2 nw per vertex) into E
 // (stride nw per vertex: re then im per family). Dry vertices get them
-// too: nobody reads them (wetVertices)
+// too: nobody reads them (wetVertices). fast: e^(k zs) by expkern.h's
+// expFast (vertex integration mode), else libmvec's
 struct WetIn {
   int m;
   const double *rel, *Z, *SC;
@@ -101,6 +102,7 @@ struct WetIn {
   const double* k;
   const int* perm;
   double *ZS, *E;
+  bool fast;
 };
 // done in whole chunks of lanes: returns how many (the rest: cpuvert.cc)
 int wetLanesAvx2(const WetIn& in);
