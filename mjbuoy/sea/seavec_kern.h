@@ -225,6 +225,9 @@ static int airyGroups(const LaneIn& in, int p0, int nl, int i, typename Lanes<W>
   typedef typename Lanes<W>::I I;
   const WaveNow* w = in.w;
   const int n = in.n;
+  // fast: the height in W / 2 partial sums held in registers (*z may
+  // alias the stores to sc, so a sum through it waits on memory each time)
+  V zp[W / 2] = {};
   for (; i + W / 2 <= n; i += W / 2) {
     V r[W];
     for (int a = 0; a < W / 2; a++) {
@@ -240,7 +243,11 @@ static int airyGroups(const LaneIn& in, int p0, int nl, int i, typename Lanes<W>
       } else {
         sinCosPhases<W, M>(th, &r[2 * a], &r[2 * a + 1]);
       }
-      *z += wa.amp * r[2 * a + 1];
+      if (kFast) {
+        zp[a] += wa.amp * r[2 * a + 1];
+      } else {
+        *z += wa.amp * r[2 * a + 1];
+      }
     }
     transpose<V, W>(r);
     double* o = in.sc + 2 * n * p0 + 2 * i;
@@ -249,6 +256,9 @@ static int airyGroups(const LaneIn& in, int p0, int nl, int i, typename Lanes<W>
     } else {
       for (int l = 0; l < nl; l++) Lanes<W>::st(o + 2 * n * l, r[l]);
     }
+  }
+  if (kFast) {
+    for (int a = 0; a < W / 2; a++) *z += zp[a];
   }
   return i;
 }
