@@ -70,10 +70,12 @@ __attribute__((always_inline)) inline void sinCosFast(V x, V* s, V* c) {
                r2 * 0x1.9a0259abf4ca0p-16));
   const V sr = r + r * ps, cr = (1 - 0.5 * r2) + pc;
   const I q = (I)t;  // n mod 4, as sinCosInRange
-  const I odd = (q & 1) != 0, sneg = (q & 2) != 0, cneg = ((q + 1) & 2) != 0;
+  const I odd = (q & 1) != 0;
   const V sv = odd ? cr : sr, cv = odd ? sr : cr;
-  *s = sneg ? -sv : sv;
-  *c = cneg ? -cv : cv;
+  // the signs by bit 1 of n and of n + 1 moved to the sign bit (an xor,
+  // not a compare and a blend: the same values)
+  *s = (V)((I)sv ^ ((q & 2) << 62));
+  *c = (V)((I)cv ^ (((q + 1) & 2) << 62));
 }
 
 template <class V, class I>
