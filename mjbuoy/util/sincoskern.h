@@ -49,8 +49,8 @@ __attribute__((always_inline)) inline void sinCosInRange(V x, V* s, V* c) {
 // exponentials"): within kSinCosFastEps absolute for |x| < 2^19 (the
 // caller's bound, airyPhaseBound), measured 9.5e-11
 // (SeaVec.SinCosFastWithinEps). Two-part Cody-Waite reduction (pi/2 = kP1
-// + kP2f + 3.5e-27: n kP2f's share of the error below 2^19 3.5e-27, 2e-21)
-// and near-minimax polynomials on |r| <= pi/4 (Lawson's iteratively
+// + kP2f + 3.5e-27, so r errs by n 3.5e-27 < 2e-21 for |x| < 2^19, plus
+// r's rounding) and near-minimax polynomials on |r| <= pi/4 (Lawson's iteratively
 // reweighted least squares, scripts/minimax_sincos.py): sin r = r + r^3
 // P(r^2) to r^9 (2.3e-12), cos r = 1 - r^2/2 + r^4 Q(r^2) to r^8 (9.5e-11);
 // 7 coefficients instead of sinCosInRange's 15
