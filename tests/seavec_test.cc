@@ -16,6 +16,7 @@
 #include "sea/sea.h"
 #include "sea/seavec.h"
 #include "simdlevels.h"
+#include "util/expkern.h"
 #include "util/sincoskern.h"
 #include "testutil.h"
 #include "util/vmath.h"
@@ -231,6 +232,167 @@ TEST(SeaVec, SinCosLanesWithinThreeUlp) {
   EXPECT_FALSE((mjb::sinCosLanes<V, I>(V{NAN, 1}, &s, &c)));
 }
 
+// the vertex integration mode's sine and cosine (sincoskern.h sinCosFast:
+// two-part Cody-Waite reduction, near-minimax polynomials) against long
+// double's sinl and cosl: within its stated kSinCosFastEps absolute over
+// its whole range |x| < 2^19 (the bound airyPhaseBound checks), both
+// signs: random phases of every size, next to multiples of pi/2 (the
+// quadrant boundaries, where r is near 0 and near +-pi/4) up to the
+// largest below 2^19, and the range's edges. Two lanes without FMA here,
+// as SinCosLanesWithinThreeUlp; the vector levels through solveMany below
+TEST(SeaVec, SinCosFastWithinEps) {
+  typedef double V __attribute__((vector_size(16)));
+  typedef long I __attribute__((vector_size(16)));
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<double> xs;
+  const double top = std::nextafter(0x1p19, 0);
+  for (int i = 0; i < 400000; i++) xs.push_back(u(rng) * std::pow(2.0, 19 * std::fabs(u(rng))));
+  const long double hp = 1.570796326794896619231321691639751442L;
+  const long mmax = long(0x1p19 / hp);  // the last multiple of pi/2 below 2^19
+  for (long m : {0L, 1L, 2L, 3L, 4L, 5L, 7L, 100L, 1001L, 65536L, 200003L, mmax - 1, mmax}) {
+    for (double d : {0.0, 1e-12, -1e-9, 1e-6, 0.3, -0.78, 0.785, -0.7853981, 0.7853982}) {
+      const double x = double(m * hp) + d;
+      if (std::fabs(x) < 0x1p19) xs.push_back(x), xs.push_back(-x);
+    }
+  }
+  for (double x : {top, -top, top - 0.5, -(top - 0.5), 0.0, -0.0, 1e-300, -5e-324}) xs.push_back(x);
+  if (xs.size() % 2) xs.push_back(1);
+  double worst = 0;
+  for (size_t i = 0; i < xs.size(); i += 2) {
+    const V x = {xs[i], xs[i + 1]};
+    V s, c;
+    mjb::sinCosFast<V, I>(x, &s, &c);
+    for (int l = 0; l < 2; l++) {
+      const long double rs = sinl((long double)x[l]), rc = cosl((long double)x[l]);
+      const double es = double(std::fabs(s[l] - rs)), ec = double(std::fabs(c[l] - rc));
+      worst = std::fmax(worst, std::fmax(es, ec));
+      EXPECT_LE(es, mjb::kSinCosFastEps) << x[l];
+      EXPECT_LE(ec, mjb::kSinCosFastEps) << x[l];
+    }
+  }
+  std::printf("[seavec] sinCosFast: %zu phases, worst %.3g (eps %.3g)\n", xs.size(), worst,
+              mjb::kSinCosFastEps);
+}
+
+// Sea::solveMany's fast mode (vertex integration) on every vector level:
+// each Airy component's sin and cos within kSinCosFastEps of sinl and cosl
+// of the long double phase, plus the phase's own rounding (checkSea's ts);
+// the height within sum A (eps + ts); the Gerstner labels and their
+// phases as the exact mode's (the fast kernel serves only the Airy
+// groups). Phases near the origin and 5e4 m out (up to 8e4 rad: bounded
+// below 2^19, the fast kernel's range), 5e5 m (beyond: the exact kernels)
+void checkFast(const mjb::Sea& sea, double far, const char* what) {
+  const double t = 3.7;
+  std::vector<double> x, y;
+  hullPoints(7, 13, &x, &y);
+  for (double& v : x) v += far;
+  const int n = sea.waves.size(), m = x.size();
+  std::vector<mjb::WaveNow> w(n);
+  sea.now(t, w.data());
+  std::vector<double> tmp((2 + mjb::kLaneTmp) * n);
+  const int prev = mjb::simdLevel();
+  for (int level : vectorLevels("seavec")) {
+    mjb::simdSet(level);
+    Out ex, o;
+    for (Out* p : {&ex, &o}) {
+      p->a0 = x;
+      p->a1 = y;
+      p->z.resize(m);
+      p->sc.resize(2 * n * m);
+      p->nit = sea.solveMany(w.data(), m, x.data(), y.data(), p->a0.data(), p->a1.data(),
+                             p->z.data(), p->sc.data(), tmp.data(), p == &o);
+    }
+    double worst = 0;
+    for (int i = 0; i < m; i++) {
+      ASSERT_EQ(o.a0[i], ex.a0[i]) << what;
+      ASSERT_EQ(o.a1[i], ex.a1[i]) << what;
+      long double zr = sea.level;
+      double tz = 0;
+      for (int j = 0; j < n; j++) {
+        const bool ger = j < sea.ng;
+        const long double px = ger ? o.a0[i] : x[i], py = ger ? o.a1[i] : y[i];
+        const long double th = w[j].k * (w[j].dx * px + w[j].dy * py) - w[j].wt + w[j].ph;
+        const double M = w[j].k * (std::fabs(w[j].dx * (double)px) +
+                                   std::fabs(w[j].dy * (double)py)) +
+                         std::fabs(w[j].wt) + std::fabs(w[j].ph);
+        const double ts = (5 + 4 * M) * kEps + mjb::kSinCosFastEps;
+        zr += w[j].amp * cosl(th);
+        tz += std::fabs(w[j].amp) * ts;
+        const double es = std::fabs(o.sc[2 * n * i + 2 * j] - (double)sinl(th));
+        const double ec = std::fabs(o.sc[2 * n * i + 2 * j + 1] - (double)cosl(th));
+        if (ger) {
+          EXPECT_EQ(o.sc[2 * n * i + 2 * j], ex.sc[2 * n * i + 2 * j]) << what;
+          EXPECT_EQ(o.sc[2 * n * i + 2 * j + 1], ex.sc[2 * n * i + 2 * j + 1]) << what;
+          continue;
+        }
+        EXPECT_LE(es, ts) << what << " " << mjb::simdName(level) << " " << i << " " << j;
+        EXPECT_LE(ec, ts) << what << " " << mjb::simdName(level) << " " << i << " " << j;
+        worst = std::fmax(worst, std::fmax(es, ec));
+      }
+      EXPECT_NEAR(o.z[i], (double)zr, tz) << what << " " << mjb::simdName(level) << " " << i;
+    }
+    std::printf("[seavec] fast %s %s: Airy sin, cos within %.3g of long double (eps %.3g)\n",
+                what, mjb::simdName(level), worst, mjb::kSinCosFastEps);
+  }
+  mjb::simdSet(prev);
+}
+
+TEST(SeaVec, FastPhasesWithinEpsOnEveryLevel) {
+  checkFast(makeSea(0, 5, 0.0), 0, "airy");
+  checkFast(makeSea(0, 5, 0.0), 5e4, "airy 5e4");
+  checkFast(makeSea(0, 5, 0.0), 5e5, "airy 5e5");
+  checkFast(makeSea(2, 3, 0.35), 0, "gerstner and airy");
+}
+
+// vmath.h's vExpFast (expkern.h: 2^n times a near-minimax polynomial) on
+// every vector level against long double's expl: within kExpFastEps
+// relative over its range [-708, 709]: random arguments over all of it and
+// densely over [-40, 4] (the vertices' k z'), next to the reduction's
+// boundaries (n ln2 + ln2 / 2, where r changes sign) and at the range's
+// edges; 0 below, infinity above, NaN kept; a count of 11 (a tail past the
+// lanes). Input aliased to the output as well
+TEST(SeaVec, ExpFastWithinEps) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<double> xs;
+  for (int i = 0; i < 100000; i++) xs.push_back(-708 + 1417 * u(rng));
+  for (int i = 0; i < 100000; i++) xs.push_back(-40 + 44 * u(rng));
+  const long double ln2 = 0.693147180559945309417232121458176568L;
+  for (int m = -1021; m <= 1022; m += 7) {
+    for (double d : {-1e-9, 0.0, 1e-9}) xs.push_back(double((m + 0.5L) * ln2) + d);
+  }
+  for (double x : {-708.0, 709.0, 0.0, -0.0, 1e-300, -1e-17, 4.0, -40.0}) xs.push_back(x);
+  const int prev = mjb::simdLevel();
+  for (int level : vectorLevels("seavec")) {
+    mjb::simdSet(level);
+    std::vector<double> y(xs.size());
+    mjb::vExpFast(xs.size(), xs.data(), y.data());
+    double worst = 0;
+    for (size_t i = 0; i < xs.size(); i++) {
+      const double e = double(std::fabs(y[i] / expl((long double)xs[i]) - 1));
+      worst = std::fmax(worst, e);
+      EXPECT_LE(e, mjb::kExpFastEps) << xs[i] << " " << mjb::simdName(level);
+    }
+    std::vector<double> z = {-709, -1e4, 709.5, 1e4, INFINITY, -INFINITY, NAN, 1, -1, 2, 3};
+    mjb::vExpFast(z.size(), z.data(), z.data());
+    EXPECT_EQ(z[0], 0);
+    EXPECT_EQ(z[1], 0);
+    EXPECT_EQ(z[2], INFINITY);
+    EXPECT_EQ(z[3], INFINITY);
+    EXPECT_EQ(z[4], INFINITY);
+    EXPECT_EQ(z[5], 0);
+    EXPECT_TRUE(std::isnan(z[6]));
+    for (int i = 7; i < 11; i++) {
+      const double x = i == 7 ? 1 : i == 8 ? -1 : i - 7;
+      EXPECT_NEAR(z[i], std::exp(x), mjb::kExpFastEps * std::exp(x)) << i;
+    }
+    std::printf("[seavec] vExpFast %s: %zu arguments, worst %.3g relative (eps %.3g)\n",
+                mjb::simdName(level), xs.size(), worst, mjb::kExpFastEps);
+  }
+  mjb::simdSet(prev);
+}
+
 TEST(SeaVec, LanesMatchTheScalarSearch) {
   // two Gerstner and two Airy components, fold 0.35, guesses at the
   // position moved by 3 mm; five Gerstner (the scalar path's general loop)
@@ -259,7 +421,7 @@ TEST(SeaVec, LanesMatchTheScalarSearch) {
 // at the surface, a NaN surface and a NaN height, and at finite depth
 // surfaces at and below the bed (stretch's branches and glibc's fmin and
 // fmax at NaN); three components in permuted order (perm), deep water and
-// 4 m
+// 4 m; with libmvec's exp (vExp) and the vertex mode's (fast: vExpFast)
 TEST(SeaVec, WetVerticesInLanesGiveTheListsBits) {
   const int prev = mjb::simdLevel();
   const int m = 4000, n = 3, nw = 3;
@@ -279,14 +441,18 @@ TEST(SeaVec, WetVerticesInLanesGiveTheListsBits) {
   rel[3 * 4 + 2] = std::nan("");
   const double k[n] = {0.2, 0.7, 1.9};
   const int perm[n] = {2, 0, 1};
+  const std::vector<int> lvs = vectorLevels("seavec");
   for (double depth : {0.0, 4.0}) {
     const bool finite = depth > 0;
     const int stride = finite ? 4 : 2;
-    for (int level_ : vectorLevels("seavec")) {
+    for (int lf = 0; lf < 2 * int(lvs.size()); lf++) {
+      // each level with libmvec's exp and with the vertex mode's (fast)
+      const int level_ = lvs[lf / 2];
+      const bool fast = lf % 2;
       mjb::simdSet(level_);
       std::vector<double> ZS(m, 7), E(stride * nw * m, 7);
       mjb::WetIn in{m, rel.data(), Z.data(), SC.data(), zc, level, depth, n, nw, finite, stride,
-                    k, perm, ZS.data(), E.data()};
+                    k, perm, ZS.data(), E.data(), fast};
       const int done = level_ == mjb::kSimdAvx512 ? mjb::wetLanesAvx512(in) : mjb::wetLanesAvx2(in);
       ASSERT_EQ(done, m - m % (level_ == mjb::kSimdAvx512 ? 8 : 4));
       long bad = 0;
@@ -296,7 +462,7 @@ TEST(SeaVec, WetVerticesInLanesGiveTheListsBits) {
         for (int f = 0; f < (finite ? 2 : 1); f++) {
           double arg[n], a[n];
           for (int j = 0; j < n; j++) arg[j] = f == 0 ? k[j] * zs : -k[j] * (zs + 2 * depth);
-          mjb::vExp(n, arg, a);
+          (fast ? mjb::vExpFast : mjb::vExp)(n, arg, a);
           for (int j = 0; j < n; j++) {
             const double er = a[j] * SC[2 * nw * q + 2 * perm[j] + 1];
             const double ei = a[j] * SC[2 * nw * q + 2 * perm[j]];
@@ -306,7 +472,7 @@ TEST(SeaVec, WetVerticesInLanesGiveTheListsBits) {
           }
         }
       }
-      EXPECT_EQ(bad, 0) << mjb::simdName(level_) << ", depth " << depth;
+      EXPECT_EQ(bad, 0) << mjb::simdName(level_) << ", depth " << depth << ", fast " << fast;
       // the cases were hit: at the surface 0; deep, a NaN surface gives
       // fmin(NaN, 0) = 0; at 4 m the bed and a NaN height give -depth
       EXPECT_EQ(ZS[0], 0);

@@ -18,8 +18,10 @@
 
 #include "simdlevels.h"
 #include "testutil.h"
-#include "vertexmesh.h"
+#include "util/expkern.h"
+#include "util/sincoskern.h"
 #include "util/vmath.h"
+#include "vertexmesh.h"
 
 namespace mjbt {
 namespace {
@@ -85,7 +87,13 @@ void place(S& s, const Pose& p, double t, double w[6]) {
 // k_j^2 sum_(c<c') |(dz', D_j.dx)|^2; force components by that sum, torque
 // components by it times the largest lever arm. Every triangle with a wet
 // corner counts whole (A >= its wet area). From the mesh, the waves
-// (mjb_waves) and the surface (mjb_seaHeight) alone
+// (mjb_waves) and the surface (mjb_seaHeight) alone. Plus the vertex
+// kernels (docs/physics.md "Vertex integration", reduced-cost phases and
+// exponentials): each cos and sin within eps = kSinCosFastEps, e^(k z')
+// within eps_e = kExpFastEps relative, so the surface within d_eta = eps
+// sum |a_j| and the pressure at a vertex within rho g (d_eta + sum_j a_j
+// e^(k_j max z') (eps + eps_e + k_j d_eta)), times A (and the lever arm)
+// per triangle with a wet corner
 template <class S>
 void bound(const S& s, double t, double* bf, double* bm) {
   const mjModel* m = s.m;
@@ -103,6 +111,10 @@ void bound(const S& s, double t, double* bf, double* bm) {
     h[i] = x[3 * i + 2] - mjb_seaHeight(s.b, x[3 * i], x[3 * i + 1], t);
   }
   const double* com = d->xipos + 3;
+  const double eps = mjb::kSinCosFastEps;
+  double suma = 0;
+  for (int w = 0; w < nw; w++) suma += std::fabs(wv[6 * w]);
+  const double deta = eps * suma;
   *bf = *bm = 0;
   for (int f = 0; f < m->mesh_facenum[mi]; f++) {
     const int* fc = m->mesh_face + 3 * (m->mesh_faceadr[mi] + f);
@@ -132,9 +144,13 @@ void bound(const S& s, double t, double* bf, double* bm) {
         }
       }
       const double ej = kRho * kG * a * A * std::exp(k * hmax) * q / 24;
-      *bf += ej;
-      *bm += ej * lever;
+      const double ek = kRho * kG * A * (std::fabs(a) * std::exp(k * hmax) *
+                                          (eps + mjb::kExpFastEps + k * deta));
+      *bf += ej + ek;
+      *bm += (ej + ek) * lever;
     }
+    *bf += kRho * kG * deta * A;
+    *bm += kRho * kG * deta * A * lever;
   }
 }
 

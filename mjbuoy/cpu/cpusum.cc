@@ -27,11 +27,12 @@ static void sumVertex(const Sea& sea, const WaveTab& t, const double* e, double*
 
 // e^L of dry vertex q at height zs above the surface (stretched, not
 // clipped at 0 as the vertex stage's z' is) into e, as vertexWaves lays it
-// out; arg: nf n doubles of scratch
+// out, by vertex integration's exp (vExpFast, docs/physics.md "Vertex
+// integration"); arg: nf n doubles of scratch
 static void dryWaves(const Sea& sea, const WaveTab& t, const HullScr& hs, int q, double zs,
                      double* arg, double* e) {
   vertexExponents(t, zs, arg);
-  vExp((t.finite ? 2 : 1) * t.n, arg, arg);
+  vExpFast((t.finite ? 2 : 1) * t.n, arg, arg);
   vertexE(t, sea.waves.size(), arg, hs.SC + 2 * sea.waves.size() * q, e);
 }
 

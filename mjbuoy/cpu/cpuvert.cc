@@ -15,12 +15,13 @@ namespace mjb {
 // e^L of every component at the wet vertices wq[0, nq) of a hull (waveint.h):
 // L = k z' + i theta, and at finite depth also -k (z' + 2 h) + i theta; one
 // exp per component and exponent (vectorised, all the chunk's at once), the
-// phases' sin and cos from the label search; arg: 2 n kExpChunk scratch
+// phases' sin and cos from the label search; arg: 2 n kExpChunk scratch;
+// fast (vertex integration): the exp within vmath.h's vExpFast's 1e-10
 static void vertexWaves(const WaveTab& t, size_t nw, size_t stride, const HullScr& hs,
-                        const int* wq, int nq, double* arg) {
+                        const int* wq, int nq, double* arg, bool fast) {
   const int nf = t.finite ? 2 : 1;
   for (int c = 0; c < nq; c++) vertexExponents(t, hs.ZS[wq[c]], arg + nf * t.n * c);
-  vExp(nf * t.n * nq, arg, arg);
+  (fast ? vExpFast : vExp)(nf * t.n * nq, arg, arg);
   for (int c = 0; c < nq; c++) {
     vertexE(t, nw, arg + nf * t.n * c, hs.SC + 2 * nw * wq[c], hs.E + stride * nw * wq[c]);
   }
@@ -126,13 +127,15 @@ static void wetVertices(const HullCall& c, const HullScr& hs, int q0, int q1) {
   const size_t nw = sea.waves.size();
   if (nw == 0) return;
   const double zc = c.com[2];
+  // vertex integration: e^(k z') by vExpFast / expFast (1e-10 relative)
+  const bool fast = sea.integration == kIntegrateVertex;
   int qs = q0;
   if (simdLevel() != kSimdScalar && int(nw) <= kWetLanesMax) {
     const WaveTab& t = s->tab;
     const int es = int(eStride(sea));
     WetIn in{q1 - q0, hs.rel + 3 * q0, hs.Z + q0, hs.SC + 2 * nw * q0, zc, sea.level, t.depth,
              t.n, int(nw), t.finite, es, t.k.data(), t.ident ? nullptr : t.perm.data(),
-             hs.ZS + q0, hs.E + es * nw * q0};
+             hs.ZS + q0, hs.E + es * nw * q0, fast};
     qs += simdLevel() == kSimdAvx512 ? wetLanesAvx512(in) : wetLanesAvx2(in);
   }
   int wq[kExpChunk], nq = 0;
@@ -142,11 +145,11 @@ static void wetVertices(const HullCall& c, const HullScr& hs, int q0, int q1) {
     hs.ZS[q] = stretch(sea.depth, hs.rel[3 * q + 2] + zc - sea.level, hs.Z[q] - sea.level);
     wq[nq++] = q;
     if (nq == kExpChunk) {
-      vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg);
+      vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg, fast);
       nq = 0;
     }
   }
-  if (nq > 0) vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg);
+  if (nq > 0) vertexWaves(s->tab, nw, eStride(sea), hs, wq, nq, hs.arg, fast);
 }
 
 // the records of vertices [q0, q1) (HullScr rec), whole chunks in lanes
@@ -176,9 +179,12 @@ void vertexStage(const HullCall& c, const HullScr& hs, int q0, int q1) {
   HullState* s = c.s;
   const size_t nw = c.sea.waves.size();
   placeVertices(c, hs, q0, q1);
+  // vertex integration: the phases' reduced-cost sin and cos (sincoskern.h
+  // sinCosFast; docs/physics.md "Vertex integration")
+  const bool fast = c.sea.integration == kIntegrateVertex;
   c.cs->niter[c.slot] += c.sea.solveMany(s->wn.data(), q1 - q0, hs.X + q0, hs.Y + q0,
                                             hs.A0 + q0, hs.A1 + q0, hs.Z + q0,
-                                            hs.SC + 2 * nw * q0, c.tmp);
+                                            hs.SC + 2 * nw * q0, c.tmp, fast);
   c.cs->nsolve[c.slot] += q1 - q0;
   vertexOut(c, hs, q0, q1);
   wetVertices(c, hs, q0, q1);

@@ -9,6 +9,7 @@
 #define MJBUOY_PLACEKERN_H_
 
 #include "sea/seavec.h"
+#include "util/expkern.h"
 #include "util/zipkern.h"
 
 namespace mjb {
@@ -152,7 +153,8 @@ static inline void wetChunk(const WetIn& in, int q) {
   Lanes<W>::st(in.ZS + q, zs);
   for (int f = 0; f < (in.finite ? 2 : 1); f++) {
     for (int j = 0; j < in.n; j++) {
-      const V a = M::exp(f == 0 ? in.k[j] * zs : -in.k[j] * (zs + 2 * in.depth));
+      const V x = f == 0 ? in.k[j] * zs : -in.k[j] * (zs + 2 * in.depth);
+      const V a = in.fast ? expFast<V, typename Lanes<W>::I>(x) : M::exp(x);
       const int i = in.perm ? in.perm[j] : j;
       for (int l = 0; l < W; l++) {
         const double* sc = in.SC + 2 * in.nw * (q + l);

@@ -312,14 +312,14 @@ double Sea::solve(const WaveNow* w, double x, double y, double a[2], double* sc,
 }
 
 long Sea::solveMany(const WaveNow* w, int m, const double* x, const double* y, double* a0,
-                    double* a1, double* z, double* sc, double* tmp) const {
+                    double* a1, double* z, double* sc, double* tmp, bool fast) const {
   // AVX2 or AVX-512: lanes of 4 or 8 points in lockstep (seavec.h), whose
   // gain is vector sin and cos of the guesses (a lockstep version over
   // SSE2 lanes, with scalar sin and cos, measured no faster than this loop)
   const int n = waves.size();
   const int lv = simdLevel();
   if (lv != kSimdScalar) {
-    const LaneIn in{w, n, ng, m, level, x, y, a0, a1, z, sc, tmp};
+    const LaneIn in{w, n, ng, m, level, x, y, a0, a1, z, sc, tmp, fast};
     return lv == kSimdAvx512 ? solveLanesAvx512(in) : solveLanesAvx2(in);
   }
   // the reference: one point after the other

@@ -125,9 +125,11 @@ struct Sea {
   // as solve's sc); tmp is scratch of 2 per wave. Returns the Newton steps
   // taken in all. tmp: 2 + kLaneTmp (seavec.h) per wave, the vector path
   // (vmath.h's level: AVX2 or AVX-512) runs the same steps per point in
-  // lanes and rounds differently (the lanes' sin and cos, FMA)
+  // lanes and rounds differently (the lanes' sin and cos, FMA); fast: the
+  // vector path's Airy phases within sincoskern.h's kSinCosFastEps instead
+  // (vertex integration, docs/physics.md "Vertex integration")
   long solveMany(const WaveNow* w, int m, const double* x, const double* y, double* a0,
-                 double* a1, double* z, double* sc, double* tmp) const;
+                 double* a1, double* z, double* sc, double* tmp, bool fast = false) const;
   // velocity() and acceleration (acc may be null) from the phases solve()
   // left in sc, at height z above the level of a point whose surface is at
   // eta above the level [m]

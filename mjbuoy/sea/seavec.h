@@ -17,13 +17,15 @@ enum { kLaneTmp = 4 * 8 };
 // one call of Sea::solveMany: n components (the first ng Gerstner), m
 // points x, y; guesses a0, a1 become labels, z heights [m] and sc 2 per
 // wave per point (point-major: sin, cos of each phase); tmp holds kLaneTmp
-// per Gerstner component
+// per Gerstner component; fast: the Airy phases' sin and cos by
+// sincoskern.h's sinCosFast where in its range (vertex integration mode)
 struct LaneIn {
   const WaveNow* w;
   int n, ng, m;
   double level;
   const double *x, *y;
   double *a0, *a1, *z, *sc, *tmp;
+  bool fast;
 };
 
 // the Newton steps taken in all, as Sea::solveMany (seavec_avx2.cc,
@@ -90,7 +92,8 @@ int packLanesAvx512(const PackIn& in);
 // and family f (1, or 2 at finite depth) e^(k zs) (e^(-k (zs + 2 h))) times
 // the cos and sin of the component's phase (SC, 2 nw per vertex) into E
 // (stride nw per vertex: re then im per family). Dry vertices get them
-// too: nobody reads them (wetVertices)
+// too: nobody reads them (wetVertices). fast: e^(k zs) by expkern.h's
+// expFast (vertex integration mode), else libmvec's
 struct WetIn {
   int m;
   const double *rel, *Z, *SC;
@@ -99,6 +102,7 @@ struct WetIn {
   const double* k;
   const int* perm;
   double *ZS, *E;
+  bool fast;
 };
 // done in whole chunks of lanes: returns how many (the rest: cpuvert.cc)
 int wetLanesAvx2(const WetIn& in);

@@ -215,26 +215,39 @@ static void airyPhaseBound(const LaneIn& in, double kc[2]) {
 // sin and cos go to each point's row through a W x W transpose (row l:
 // point l's W / 2 pairs, one store) instead of two lane stores each.
 // kIn: every phase is known to be within sincoskern.h's range, so the
-// lanes' check is skipped (the same operations, so the same bits).
+// lanes' check is skipped (the same operations, so the same bits); kFast
+// (with kIn): sinCosFast's reduced polynomials (LaneIn fast).
 // Returns the first component not done
-template <int W, class M, bool kIn>
+template <int W, class M, bool kIn, bool kFast>
 static int airyGroups(const LaneIn& in, int p0, int nl, int i, typename Lanes<W>::V x,
                       typename Lanes<W>::V y, typename Lanes<W>::V* z) {
   typedef typename Lanes<W>::V V;
   typedef typename Lanes<W>::I I;
   const WaveNow* w = in.w;
   const int n = in.n;
+  // fast: the height in W / 2 partial sums held in registers (*z may
+  // alias the stores to sc, so a sum through it waits on memory each time)
+  V zp[W / 2] = {};
   for (; i + W / 2 <= n; i += W / 2) {
     V r[W];
     for (int a = 0; a < W / 2; a++) {
       const WaveNow& wa = w[i + a];
-      const V th = wa.k * (wa.dx * x + wa.dy * y) - wa.wt + wa.ph;
-      if (kIn) {
+      // (fast: the products of k and the constants taken once per group,
+      // two multiply-adds per lane; the phase within 3 ulp of its terms' sum)
+      const V th = kFast ? (wa.k * wa.dx) * x + ((wa.k * wa.dy) * y + (wa.ph - wa.wt))
+                         : wa.k * (wa.dx * x + wa.dy * y) - wa.wt + wa.ph;
+      if (kFast) {
+        sinCosFast<V, I>(th, &r[2 * a], &r[2 * a + 1]);
+      } else if (kIn) {
         sinCosInRange<V, I>(th, &r[2 * a], &r[2 * a + 1]);
       } else {
         sinCosPhases<W, M>(th, &r[2 * a], &r[2 * a + 1]);
       }
-      *z += wa.amp * r[2 * a + 1];
+      if (kFast) {
+        zp[a] += wa.amp * r[2 * a + 1];
+      } else {
+        *z += wa.amp * r[2 * a + 1];
+      }
     }
     transpose<V, W>(r);
     double* o = in.sc + 2 * n * p0 + 2 * i;
@@ -243,6 +256,9 @@ static int airyGroups(const LaneIn& in, int p0, int nl, int i, typename Lanes<W>
     } else {
       for (int l = 0; l < nl; l++) Lanes<W>::st(o + 2 * n * l, r[l]);
     }
+  }
+  if (kFast) {
+    for (int a = 0; a < W / 2; a++) *z += zp[a];
   }
   return i;
 }
@@ -266,8 +282,9 @@ static void airyLanes(const LaneIn& in, int p0, int nl, typename Lanes<W>::V x,
     sum += x[l] + y[l];
   }
   const bool inr = kc[0] * (ax + ay) + kc[1] < 0x1p19 && sum - sum == 0;
-  int i = inr ? airyGroups<W, M, true>(in, p0, nl, in.ng, x, y, z)
-              : airyGroups<W, M, false>(in, p0, nl, in.ng, x, y, z);
+  int i = !inr ? airyGroups<W, M, false, false>(in, p0, nl, in.ng, x, y, z)
+          : in.fast ? airyGroups<W, M, true, true>(in, p0, nl, in.ng, x, y, z)
+                    : airyGroups<W, M, true, false>(in, p0, nl, in.ng, x, y, z);
   for (; i < n; i++) {
     const V th = w[i].k * (w[i].dx * x + w[i].dy * y) - w[i].wt + w[i].ph;
     V s, c;

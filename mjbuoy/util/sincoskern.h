@@ -44,6 +44,40 @@ __attribute__((always_inline)) inline void sinCosInRange(V x, V* s, V* c) {
   *c = cneg ? -cv : cv;
 }
 
+// sinCosFast: the vertex integration mode's sin and cos of the vertex
+// phases (docs/physics.md "Vertex integration", "Reduced-cost phases and
+// exponentials"): within kSinCosFastEps absolute for |x| < 2^19 (the
+// caller's bound, airyPhaseBound), measured 9.5e-11
+// (SeaVec.SinCosFastWithinEps). Two-part Cody-Waite reduction (pi/2 = kP1
+// + kP2f + 3.5e-27, so r errs by n 3.5e-27 < 2e-21 for |x| < 2^19, plus
+// r's rounding) and near-minimax polynomials on |r| <= pi/4 (Lawson's iteratively
+// reweighted least squares, scripts/minimax_sincos.py): sin r = r + r^3
+// P(r^2) to r^9 (2.3e-12), cos r = 1 - r^2/2 + r^4 Q(r^2) to r^8 (9.5e-11);
+// 7 coefficients instead of sinCosInRange's 15
+static const double kSinCosFastEps = 1e-10;
+static const double kP2f = 0x1.0b4611a626331p-34;  // pi/2 - kP1 rounded
+
+template <class V, class I>
+__attribute__((always_inline)) inline void sinCosFast(V x, V* s, V* c) {
+  const double shift = 0x1.8p52;
+  const V t = x * 0x1.45f306dc9c883p-1 + shift;
+  const V n = t - shift;
+  const V r = (x - n * kP1) - n * kP2f;
+  const V r2 = r * r;
+  const V ps = r2 * (-0x1.555555480c182p-3 + r2 * (0x1.111106204561cp-7 +
+               r2 * (-0x1.a00e0e2311590p-13 + r2 * 0x1.6c8987f116800p-19)));
+  const V pc = r2 * r2 * (0x1.55554ab402bb2p-5 + r2 * (-0x1.6c0c8bb90566cp-10 +
+               r2 * 0x1.9a0259abf4ca0p-16));
+  const V sr = r + r * ps, cr = (1 - 0.5 * r2) + pc;
+  const I q = (I)t;  // n mod 4, as sinCosInRange
+  const I odd = (q & 1) != 0;
+  const V sv = odd ? cr : sr, cv = odd ? sr : cr;
+  // the signs by bit 1 of n and of n + 1 moved to the sign bit (an xor,
+  // not a compare and a blend: the same values)
+  *s = (V)((I)sv ^ ((q & 2) << 62));
+  *c = (V)((I)cv ^ (((q + 1) & 2) << 62));
+}
+
 template <class V, class I>
 __attribute__((always_inline)) inline bool sinCosLanes(V x, V* s, V* c) {
   const double shift = 0x1.8p52;

@@ -67,6 +67,14 @@ void vExp(int n, const double* x, double* y) {
   for (int i = 0; i < n; i++) y[i] = std::exp(x[i]);
 }
 
+void vExpFast(int n, const double* x, double* y) {
+  switch (simdLevel()) {
+    case kSimdAvx512: vExpFastAvx512(n, x, y); return;
+    case kSimdAvx2: vExpFastAvx2(n, x, y); return;
+  }
+  for (int i = 0; i < n; i++) y[i] = std::exp(x[i]);
+}
+
 double vDot(int n, const double* a, const double* b) {
   switch (simdLevel()) {
     case kSimdAvx512: return vDotAvx512(n, a, b);

@@ -24,6 +24,11 @@ const char* simdName(int level);
 void vSinCos(int n, const double* x, double* s, double* c);
 // y[i] = exp x[i] for i < n (y may alias x)
 void vExp(int n, const double* x, double* y);
+// y[i] = e^x[i] for i < n within expkern.h's kExpFastEps (1e-10) relative
+// (y may alias x): the vertex integration mode's e^(k z') (docs/physics.md
+// "Vertex integration"); 0 below x = -708, infinity above 709; glibc's exp
+// on the scalar level
+void vExpFast(int n, const double* x, double* y);
 // sum a[i] b[i] for i < n: partial sums (4 scalars; 4 vectors of 4 with
 // AVX2, of 8 with AVX-512) added in a fixed order, so each level repeats
 // its bits; levels differ by round-off (the order of the sums, FMA), each
@@ -34,9 +39,11 @@ double vDot(int n, const double* a, const double* b);
 // instruction sets, called only when the cpu has them)
 void vSinCosAvx2(int n, const double* x, double* s, double* c);
 void vExpAvx2(int n, const double* x, double* y);
+void vExpFastAvx2(int n, const double* x, double* y);
 double vDotAvx2(int n, const double* a, const double* b);
 void vSinCosAvx512(int n, const double* x, double* s, double* c);
 void vExpAvx512(int n, const double* x, double* y);
+void vExpFastAvx512(int n, const double* x, double* y);
 double vDotAvx512(int n, const double* a, const double* b);
 
 }  // namespace mjb
