@@ -225,9 +225,10 @@ static int airyGroups(const LaneIn& in, int p0, int nl, int i, typename Lanes<W>
   typedef typename Lanes<W>::I I;
   const WaveNow* w = in.w;
   const int n = in.n;
-  // fast: the height in W / 2 partial sums held in registers (*z may
-  // alias the stores to sc, so a sum through it waits on memory each time)
-  V zp[W / 2] = {};
+  // the height summed in registers: *z may alias the stores to sc, so a
+  // sum through it waits on memory each time. Exact: one running sum in
+  // the components' order (the same bits); fast: W / 2 partial sums
+  V zr = *z, zp[W / 2] = {};
   for (; i + W / 2 <= n; i += W / 2) {
     V r[W];
     for (int a = 0; a < W / 2; a++) {
@@ -246,7 +247,7 @@ static int airyGroups(const LaneIn& in, int p0, int nl, int i, typename Lanes<W>
       if (kFast) {
         zp[a] += wa.amp * r[2 * a + 1];
       } else {
-        *z += wa.amp * r[2 * a + 1];
+        zr += wa.amp * r[2 * a + 1];
       }
     }
     transpose<V, W>(r);
@@ -258,8 +259,9 @@ static int airyGroups(const LaneIn& in, int p0, int nl, int i, typename Lanes<W>
     }
   }
   if (kFast) {
-    for (int a = 0; a < W / 2; a++) *z += zp[a];
+    for (int a = 0; a < W / 2; a++) zr += zp[a];
   }
+  *z = zr;
   return i;
 }
 
