@@ -148,22 +148,42 @@ double Sea::height(double x, double y, double t) const {
   return heightOf(a, x, y, t);
 }
 
+// components whose phases' sin and cos velocity keeps on the stack
+static const size_t kKeep = 256;
+
 void Sea::velocity(const double p[3], double t, double v[3], double acc[3]) const {
   double a[2] = {p[0], p[1]};
   if (!waves.empty()) label(p[0], p[1], t, a);
-  double eta = heightOf(a, p[0], p[1], t) - level;
+  // the height as heightOf sums it, keeping the first kKeep phases' sin and
+  // cos for the flow below (the same operations: the same bits)
+  const double r = gain(t);
+  double sn[kKeep], cs[kKeep], z = level;
+  for (size_t i = 0; i < waves.size(); i++) {
+    const Wave& w = waves[i];
+    double px = w.kind == 0 ? a[0] : p[0], py = w.kind == 0 ? a[1] : p[1];
+    double th = w.k * (w.dx * px + w.dy * py) - w.omega * t + w.ph, c = std::cos(th);
+    if (i < kKeep) sn[i] = std::sin(th), cs[i] = c;
+    z += r * w.amp * c;
+  }
+  double eta = z - level;
   double zs = stretch(depth, p[2] - level, eta);
   v[0] = current[0];
   v[1] = current[1];
   v[2] = 0;
   if (acc) acc[0] = acc[1] = acc[2] = 0;
-  const double r = gain(t);
-  for (const Wave& w : waves) {
-    double px = w.kind == 0 ? a[0] : p[0], py = w.kind == 0 ? a[1] : p[1];
-    double th = w.k * (w.dx * px + w.dy * py) - w.omega * t + w.ph;
+  for (size_t i = 0; i < waves.size(); i++) {
+    const Wave& w = waves[i];
+    double s, c;
+    if (i < kKeep) {
+      s = sn[i], c = cs[i];
+    } else {
+      double px = w.kind == 0 ? a[0] : p[0], py = w.kind == 0 ? a[1] : p[1];
+      double th = w.k * (w.dx * px + w.dy * py) - w.omega * t + w.ph;
+      s = std::sin(th), c = std::cos(th);
+    }
     const double A = r * w.amp;
-    addFlow(profile(w.k, depth, zs), A * w.omega, A * w.omega * w.omega, w.dx, w.dy,
-            std::sin(th), std::cos(th), v, acc);
+    addFlow(profile(w.k, depth, zs), A * w.omega, A * w.omega * w.omega, w.dx, w.dy, s, c, v,
+            acc);
   }
 }
 
