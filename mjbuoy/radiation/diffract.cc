@@ -7,7 +7,6 @@
 #include <cstring>
 
 #include "util/bodylabel.h"
-#include "util/sincoskern.h"
 
 namespace mjb {
 
@@ -180,33 +179,8 @@ void diffAt(const DiffBody& b, int iw, double tw, double beta, double re[6], dou
   }
 }
 
-namespace {
-
-typedef double V4 __attribute__((vector_size(32)));
-typedef long I4 __attribute__((vector_size(32)));  // what comparisons give
-const int kBlock = 64;  // components per block of phases on the stack
-
-// cos and sin of the phases ph[0, n) (ph padded with zeros to a multiple of
-// 4): 4 at a time sharing one range reduction (util/sincoskern.h, within 3
-// ulp for |phase| < 2^20 pi/2, docs/physics.md "Phases' sine and cosine in
-// lanes"), std::cos and std::sin for a group with a phase beyond that
-void phaseSinCos(const double* ph, int n, double* cs, double* sn) {
-  for (int j = 0; j < n; j += 4) {
-    V4 x, s, c;
-    std::memcpy(&x, ph + j, sizeof x);
-    if (sinCosLanes<V4, I4>(x, &s, &c)) {
-      std::memcpy(cs + j, &c, sizeof c);
-      std::memcpy(sn + j, &s, sizeof s);
-    } else {
-      for (int l = 0; l < 4; l++) {
-        cs[j + l] = std::cos(ph[j + l]);
-        sn[j + l] = std::sin(ph[j + l]);
-      }
-    }
-  }
-}
-
-}  // namespace
+// components per block of phases on the stack
+static const int kBlock = 64;
 
 void diffractionWrench(const DiffBody& b, const Sea& sea, const double x[3], double psi,
                        double t, double F[6]) {
@@ -226,7 +200,7 @@ void diffractionWrench(const DiffBody& b, const Sea& sea, const double x[3], dou
       ph[i] = w.k * (w.dx * x[0] + w.dy * x[1]) + w.ph - w.omega * t;
     }
     for (int i = m; i < ((m + 3) & ~3); i++) ph[i] = 0;
-    phaseSinCos(ph, m, cs, sn);
+    phaseSinCos(ph, m, sn, cs);  // within 3 ulp (sea.h)
     for (int i = 0; i < m; i++) {
       const size_t j = j0 + i;
       if (b.iw[j] == -2) continue;
