@@ -457,6 +457,95 @@ TEST(Diffraction, StepIsTheDocumentedInterpolationSummed) {
   }
 }
 
+// the same sums in a sea of 70 components (the step takes the phases' sine
+// and cosine 64 at a time, 4 in lanes: docs/physics.md "Phases' sine and
+// cosine in lanes"), directions over the spectra's +-360 deg (headings more
+// than a turn from the table's first), at times up to 2e6 s (phases beyond
+// the lanes' 2^20 pi/2, where std::sin and std::cos take over) and within
+// the lanes' range: to 1e-12 of the largest entry, as above
+TEST(Diffraction, StepSumsManyComponentsAtLongTimes) {
+  Scene s(boxModel(0, 0));
+  ASSERT_TRUE(s.ok()) << s.err;
+  const mjb::Buoy* B = mjb::buoyOf(s.b);
+  ASSERT_EQ(B->diff.db.size(), 1u);
+  mjb::Diffraction df = B->diff;
+  const mjb::DiffBody& b = df.db[0];
+  ASSERT_FALSE(b.T.empty());
+  const std::vector<double>& om = b.c.omega;
+  const int nh = b.c.nh(), nc = 70;
+  mjb::Sea sea = B->cfg.sea;
+  sea.ramp = 0;
+  sea.waves.clear();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> uni(0, 1);
+  for (int j = 0; j < nc; j++) {
+    mjb::Wave w{};
+    w.kind = 1;
+    w.amp = 0.01 + 0.02 * uni(rng);
+    w.omega = 1.05 * om.back() * uni(rng) + 1e-3;  // a few beyond the table
+    w.k = w.omega * w.omega / kG;
+    w.dir = 720 * uni(rng) - 360;
+    w.dx = std::cos(w.dir * M_PI / 180), w.dy = std::sin(w.dir * M_PI / 180);
+    w.ph = 2 * M_PI * uni(rng);
+    sea.waves.push_back(w);
+  }
+  mjb::diffSea(sea, &df);
+  ASSERT_EQ(b.iw.size(), (size_t)nc);
+  for (double t : {3.7, 1234.5, 2.0e6 + 0.3}) {
+    const double psi = 2 * M_PI * uni(rng) - M_PI;
+    s.d->qpos[0] = 4 * uni(rng) - 2, s.d->qpos[1] = 4 * uni(rng) - 2;
+    s.d->qpos[3] = std::cos(psi / 2), s.d->qpos[4] = s.d->qpos[5] = 0;
+    s.d->qpos[6] = std::sin(psi / 2);
+    mj_kinematics(s.m, s.d);
+    s.d->time = t;
+    double w[6];
+    char told = 0;
+    std::string notes;
+    mjb::diffractionStep(df, sea, s.m, s.d, w, &told, &notes);
+    const double* x = s.d->xipos + 3 * b.body;
+    double F[6] = {0, 0, 0, 0, 0, 0}, T[nc][3], th[nc], A[nc];
+    double big_phase = 0;
+    for (int j = 0; j < nc; j++) {
+      const mjb::Wave& wv = sea.waves[j];
+      const double beta = wv.dir * M_PI / 180 - psi;
+      th[j] = wv.k * (wv.dx * x[0] + wv.dy * x[1]) + wv.ph - wv.omega * t;
+      big_phase = std::max(big_phase, std::fabs(th[j]));
+      A[j] = wv.omega > om.back() ? 0 : wv.amp;  // beyond the table: none
+      for (int dof = 0; dof < 6; dof++) {
+        const std::complex<double> D = interpolated<std::complex<double>>(
+            om, nh, wv.omega, beta, [&](int iw, int ih) { return tableD(b.c, iw, ih, dof); });
+        F[dof] += (A[j] * D * std::polar(1.0, th[j])).real();
+      }
+      for (int k = 0; k < 3; k++)
+        T[j][k] = interpolated<double>(om, nh, wv.omega, beta, [&](int iw, int ih) {
+          return b.T[3 * ((size_t)iw * nh + ih) + k];
+        });
+    }
+    if (t > 1e6) {
+      EXPECT_GT(big_phase, std::ldexp(M_PI / 2, 20));  // the fallback's range
+    }
+    const int dofOf[3] = {0, 1, 5};
+    // cos(th_i - th_j) of the phases as rounded: th_i - th_j in double would
+    // lose ulp(th) ~ 1e-9 rad at t = 2e6 s, so the difference's cosine in
+    // long double as cos th_i cos th_j + sin th_i sin th_j
+    for (int i = 0; i < nc; i++)
+      for (int j = 0; j < nc; j++)
+        for (int k = 0; k < 3; k++) {
+          const long double a = th[i], b2 = th[j];
+          const double cij = (double)(cosl(a) * cosl(b2) + sinl(a) * sinl(b2));
+          F[dofOf[k]] += A[i] * A[j] * 0.5 * (T[i][k] + T[j][k]) * cij;
+        }
+    const double c = std::cos(psi), sn = std::sin(psi);
+    const double want[6] = {c * F[0] - sn * F[1], sn * F[0] + c * F[1], F[2],
+                            c * F[3] - sn * F[4], sn * F[3] + c * F[4], F[5]};
+    double big = 0;
+    for (double v : want) big = std::max(big, std::fabs(v));
+    ASSERT_GT(big, 0);
+    for (int k = 0; k < 6; k++)
+      EXPECT_NEAR(w[k], want[k], 1e-12 * big) << "t " << t << " dof " << k;
+  }
+}
+
 }  // namespace
 
 namespace {

@@ -99,29 +99,49 @@ void diffSea(const Sea& sea, Diffraction* df) {
   }
 }
 
-void headingWeights(double beta, int n, int idx[4], double w[4]) {
-  double u = beta * n / (2 * M_PI);
-  u -= n * std::floor(u / n);  // [0, n)
-  int i = (int)u;
-  if (i >= n) i = n - 1;  // u rounded up to n
-  const double s = u - i, s2 = s * s, s3 = s2 * s;
+// periodic Catmull-Rom weights (headingWeights), inlined in the step's pass:
+// u = beta n / 2 pi splits into floor(u) and s = u - floor(u) (exact), the
+// index floor(u) mod n; no division. A non-finite beta gives NaN weights at
+// index 0 (the step reports the force)
+__attribute__((always_inline)) static inline void headingAt(double beta, int n, int idx[4],
+                                                            double w[4]) {
+  const double u = beta * n / (2 * M_PI);
+  const double fl = std::floor(u);
+  double s = u - fl;
+  int i = 0;
+  if (std::fabs(fl) < 0x1p52) {  // else u is not finite (beta is): s NaN
+    long long q = (long long)fl;  // exact
+    q += q < 0 ? n : q >= n ? -n : 0;  // a heading less a yaw: within one turn
+    if (q < 0 || q >= n) {  // more than a turn off
+      q %= n;
+      if (q < 0) q += n;
+    }
+    i = (int)q;
+  } else {
+    s = NAN;
+  }
+  const double s2 = s * s, s3 = s2 * s;
   w[0] = 0.5 * (-s3 + 2 * s2 - s);
   w[1] = 0.5 * (3 * s3 - 5 * s2 + 2);
   w[2] = 0.5 * (-3 * s3 + 4 * s2 + s);
   w[3] = 0.5 * (s3 - s2);
-  // i - 1 + k in [-1, n + 1]: wrapped by one period (no division per step)
+  // i - 1 + k in [-1, n + 1]: wrapped by one period
   for (int k = 0; k < 4; k++) {
     const int h = i - 1 + k;
     idx[k] = h < 0 ? h + n : h >= n ? h - n : h;
   }
 }
 
-void tableWeights(int nh, int iw, double tw, double beta, TableWeights* out) {
+void headingWeights(double beta, int n, int idx[4], double w[4]) { headingAt(beta, n, idx, w); }
+
+// tableWeights, inlined in the step's pass
+__attribute__((always_inline)) static inline void weightsAt(int nh, int iw, double tw,
+                                                            double beta, TableWeights* out) {
   out->n = 0;
   if (iw == -2) return;
   int idx[4];
   double hw[4];
-  headingWeights(beta, nh, idx, hw);
+  headingAt(beta, nh, idx, hw);
   const int r0 = iw < 0 ? 0 : iw;
   const double w0 = iw < 0 ? tw : 1 - tw, w1 = iw < 0 ? 0 : tw;
   for (int r = 0; r < 2; r++) {
@@ -132,6 +152,10 @@ void tableWeights(int nh, int iw, double tw, double beta, TableWeights* out) {
       out->f[out->n++] = wr * hw[k];
     }
   }
+}
+
+void tableWeights(int nh, int iw, double tw, double beta, TableWeights* out) {
+  weightsAt(nh, iw, tw, beta, out);
 }
 
 // sum of the weighted table entries: (re, im) per dof, 12 contiguous values
@@ -155,6 +179,9 @@ void diffAt(const DiffBody& b, int iw, double tw, double beta, double re[6], dou
   }
 }
 
+// components per block of phases on the stack
+static const int kBlock = 64;
+
 void diffractionWrench(const DiffBody& b, const Sea& sea, const double x[3], double psi,
                        double t, double F[6]) {
   for (int k = 0; k < 6; k++) F[k] = 0;
@@ -163,20 +190,29 @@ void diffractionWrench(const DiffBody& b, const Sea& sea, const double x[3], dou
   const int nh = b.c.nh();
   const double* D = b.D.data();
   DriftSum ds;
-  for (size_t j = 0; j < n; j++) {
-    if (b.iw[j] == -2) continue;
-    const Wave& w = sea.waves[j];
-    TableWeights tw;
-    tableWeights(nh, b.iw[j], b.tw[j], w.dir * (M_PI / 180) - psi, &tw);
-    double acc[12];
-    blendD(D, tw, acc);
+  double ph[kBlock], cs[kBlock], sn[kBlock];
+  for (size_t j0 = 0; j0 < n; j0 += kBlock) {
+    const int m = n - j0 < (size_t)kBlock ? (int)(n - j0) : kBlock;
     // a e^{-i omega t}, a = A e^{i (k D.x + phi)}: the component's complex
     // amplitude at the COM (the sea's phase, docs/physics.md section 11)
-    const double ph = w.k * (w.dx * x[0] + w.dy * x[1]) + w.ph - w.omega * t;
-    const double cs = std::cos(ph), sn = std::sin(ph);
-    const double A = r * w.amp, c = A * cs, s = A * sn;
-    for (int k = 0; k < 6; k++) F[k] += acc[2 * k] * c - acc[2 * k + 1] * s;
-    driftAdd(b, tw, w.amp * cs, w.amp * sn, &ds);  // empty table: none
+    for (int i = 0; i < m; i++) {
+      const Wave& w = sea.waves[j0 + i];
+      ph[i] = w.k * (w.dx * x[0] + w.dy * x[1]) + w.ph - w.omega * t;
+    }
+    for (int i = m; i < ((m + 3) & ~3); i++) ph[i] = 0;
+    phaseSinCos(ph, m, sn, cs);  // within 3 ulp (sea.h)
+    for (int i = 0; i < m; i++) {
+      const size_t j = j0 + i;
+      if (b.iw[j] == -2) continue;
+      const Wave& w = sea.waves[j];
+      TableWeights tw;
+      weightsAt(nh, b.iw[j], b.tw[j], w.dir * (M_PI / 180) - psi, &tw);
+      double acc[12];
+      blendD(D, tw, acc);
+      const double A = r * w.amp, c = A * cs[i], s = A * sn[i];
+      for (int k = 0; k < 6; k++) F[k] += acc[2 * k] * c - acc[2 * k + 1] * s;
+      driftAdd(b, tw, w.amp * cs[i], w.amp * sn[i], &ds);  // empty table: none
+    }
   }
   driftFinish(b, ds, r, F);  // mean and slow drift
 }

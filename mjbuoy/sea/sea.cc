@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "sea/seavec.h"
+#include "util/sincoskern.h"
 #include "util/vmath.h"
 
 namespace mjb {
@@ -52,6 +53,24 @@ double stretch(double depth, double z, double eta) {
   if (!(depth > 0)) return std::fmin(z - eta, 0.0);
   if (!(depth + eta > 0)) return -depth;  // surface at or below the bed: all at the bed
   return std::fmin(std::fmax((z - eta) * depth / (depth + eta), -depth), 0.0);
+}
+
+void phaseSinCos(const double* th, int n, double* s, double* c) {
+  typedef double V4 __attribute__((vector_size(32)));
+  typedef long I4 __attribute__((vector_size(32)));  // what comparisons give
+  for (int j = 0; j < n; j += 4) {
+    V4 x, vs, vc;
+    std::memcpy(&x, th + j, sizeof x);
+    if (sinCosLanes<V4, I4>(x, &vs, &vc)) {
+      std::memcpy(s + j, &vs, sizeof vs);
+      std::memcpy(c + j, &vc, sizeof vc);
+    } else {
+      for (int l = 0; l < 4; l++) {
+        s[j + l] = std::sin(th[j + l]);
+        c[j + l] = std::cos(th[j + l]);
+      }
+    }
+  }
 }
 
 // linear-theory depth profiles of one component (Dean & Dalrymple 1991,
@@ -148,22 +167,55 @@ double Sea::height(double x, double y, double t) const {
   return heightOf(a, x, y, t);
 }
 
+// components whose phases' sin and cos velocity keeps on the stack
+static const size_t kKeep = 256;
+
 void Sea::velocity(const double p[3], double t, double v[3], double acc[3]) const {
   double a[2] = {p[0], p[1]};
   if (!waves.empty()) label(p[0], p[1], t, a);
-  double eta = heightOf(a, p[0], p[1], t) - level;
+  // the first kKeep phases' sin and cos in lanes, kept for the height and
+  // the flow below
+  const size_t nk = waves.size() < kKeep ? waves.size() : kKeep;
+  double th[kKeep] = {}, sn[kKeep], cs[kKeep];  // zeros: the last group's padding
+  for (size_t i = 0; i < nk; i++) {
+    const Wave& w = waves[i];
+    double px = w.kind == 0 ? a[0] : p[0], py = w.kind == 0 ? a[1] : p[1];
+    th[i] = w.k * (w.dx * px + w.dy * py) - w.omega * t + w.ph;
+  }
+  phaseSinCos(th, nk, sn, cs);
+  // the height as heightOf sums it (its cos within 3 ulp)
+  const double r = gain(t);
+  double z = level;
+  for (size_t i = 0; i < waves.size(); i++) {
+    const Wave& w = waves[i];
+    double c;
+    if (i < kKeep) {
+      c = cs[i];
+    } else {
+      double px = w.kind == 0 ? a[0] : p[0], py = w.kind == 0 ? a[1] : p[1];
+      c = std::cos(w.k * (w.dx * px + w.dy * py) - w.omega * t + w.ph);
+    }
+    z += r * w.amp * c;
+  }
+  double eta = z - level;
   double zs = stretch(depth, p[2] - level, eta);
   v[0] = current[0];
   v[1] = current[1];
   v[2] = 0;
   if (acc) acc[0] = acc[1] = acc[2] = 0;
-  const double r = gain(t);
-  for (const Wave& w : waves) {
-    double px = w.kind == 0 ? a[0] : p[0], py = w.kind == 0 ? a[1] : p[1];
-    double th = w.k * (w.dx * px + w.dy * py) - w.omega * t + w.ph;
+  for (size_t i = 0; i < waves.size(); i++) {
+    const Wave& w = waves[i];
+    double s, c;
+    if (i < kKeep) {
+      s = sn[i], c = cs[i];
+    } else {
+      double px = w.kind == 0 ? a[0] : p[0], py = w.kind == 0 ? a[1] : p[1];
+      double th = w.k * (w.dx * px + w.dy * py) - w.omega * t + w.ph;
+      s = std::sin(th), c = std::cos(th);
+    }
     const double A = r * w.amp;
-    addFlow(profile(w.k, depth, zs), A * w.omega, A * w.omega * w.omega, w.dx, w.dy,
-            std::sin(th), std::cos(th), v, acc);
+    addFlow(profile(w.k, depth, zs), A * w.omega, A * w.omega * w.omega, w.dx, w.dy, s, c, v,
+            acc);
   }
 }
 
