@@ -374,6 +374,20 @@ T interpolated(const std::vector<double>& om, int nh, double omega, double beta,
   return (1 - f) * heading(r) + f * heading(r + 1);
 }
 
+// the diffraction step's wrench w of the free box of s at (px, py) [m],
+// yawed by psi [rad], at time t [s]
+void stepAt(Scene& s, const mjb::Diffraction& df, const mjb::Sea& sea, double px, double py,
+            double psi, double t, double w[6]) {
+  s.d->qpos[0] = px, s.d->qpos[1] = py;
+  s.d->qpos[3] = std::cos(psi / 2), s.d->qpos[4] = s.d->qpos[5] = 0;
+  s.d->qpos[6] = std::sin(psi / 2);
+  mj_kinematics(s.m, s.d);
+  s.d->time = t;
+  char told = 0;
+  std::string notes;
+  mjb::diffractionStep(df, sea, s.m, s.d, w, &told, &notes);
+}
+
 // the diffraction and drift wrench of the step (one pass over the
 // components) against the sums written out directly at random headings,
 // positions and times in a ramped five-component sea: D by the documented
@@ -415,15 +429,9 @@ TEST(Diffraction, StepIsTheDocumentedInterpolationSummed) {
   mjb::diffSea(sea, &df);
   for (int trial = 0; trial < 4; trial++) {
     const double psi = 2 * M_PI * uni(rng) - M_PI, t = 25 * uni(rng);
-    s.d->qpos[0] = 4 * uni(rng) - 2, s.d->qpos[1] = 4 * uni(rng) - 2;
-    s.d->qpos[3] = std::cos(psi / 2), s.d->qpos[4] = s.d->qpos[5] = 0;
-    s.d->qpos[6] = std::sin(psi / 2);
-    mj_kinematics(s.m, s.d);
-    s.d->time = t;
+    const double px = 4 * uni(rng) - 2, py = 4 * uni(rng) - 2;
     double w[6];
-    char told = 0;
-    std::string notes;
-    mjb::diffractionStep(df, sea, s.m, s.d, w, &told, &notes);
+    stepAt(s, df, sea, px, py, psi, t, w);
     const double* x = s.d->xipos + 3 * b.body;
     const double r = t < sea.ramp ? 0.5 * (1 - std::cos(M_PI * t / sea.ramp)) : 1;
     double F[6] = {0, 0, 0, 0, 0, 0}, T[5][3], th[5], A[5];
@@ -493,15 +501,9 @@ TEST(Diffraction, StepSumsManyComponentsAtLongTimes) {
   ASSERT_EQ(b.iw.size(), (size_t)nc);
   for (double t : {3.7, 1234.5, 2.0e6 + 0.3}) {
     const double psi = 2 * M_PI * uni(rng) - M_PI;
-    s.d->qpos[0] = 4 * uni(rng) - 2, s.d->qpos[1] = 4 * uni(rng) - 2;
-    s.d->qpos[3] = std::cos(psi / 2), s.d->qpos[4] = s.d->qpos[5] = 0;
-    s.d->qpos[6] = std::sin(psi / 2);
-    mj_kinematics(s.m, s.d);
-    s.d->time = t;
+    const double px = 4 * uni(rng) - 2, py = 4 * uni(rng) - 2;
     double w[6];
-    char told = 0;
-    std::string notes;
-    mjb::diffractionStep(df, sea, s.m, s.d, w, &told, &notes);
+    stepAt(s, df, sea, px, py, psi, t, w);
     const double* x = s.d->xipos + 3 * b.body;
     double F[6] = {0, 0, 0, 0, 0, 0}, T[nc][3], th[nc], A[nc];
     double big_phase = 0;

@@ -387,11 +387,7 @@ void expectSecondOrder(const std::string& sea, const std::string& more, int part
                        const char* what, bool prev = false) {
   double err[3];
   for (int r = 0; r < 3; r++) {
-    std::string xml[2] = {wigley(sea, "exact", more), wigley(sea, "vertex", more)};
-    for (std::string& x : xml) {
-      const std::string from = MJB_MODELS "/meshes/wigley_576.obj";
-      x.replace(x.find(from), from.size(), "w.obj");
-    }
+    const std::string xml[2] = {onTextMesh(wigley(sea, "exact", more)), onTextMesh(wigley(sea, "vertex", more))};
     const std::string obj = refinedWigley(r);
     MeshScene ex(xml[0], obj), vx(xml[1], obj);
     ASSERT_TRUE(ex.ok()) << ex.err;

@@ -195,11 +195,7 @@ TEST(VertexInt, WigleyWithinTheInterpolationBound) {
 void expectSecondOrder(const std::string& sea) {
   double err[3];
   for (int r = 0; r < 3; r++) {
-    std::string xml[2] = {wigley(576, sea, "exact"), wigley(576, sea, "vertex")};
-    for (std::string& x : xml) {
-      const std::string from = MJB_MODELS "/meshes/wigley_576.obj";
-      x.replace(x.find(from), from.size(), "w.obj");
-    }
+    const std::string xml[2] = {onTextMesh(wigley(576, sea, "exact")), onTextMesh(wigley(576, sea, "vertex"))};
     const std::string obj = refinedWigley(r);
     MeshScene ex(xml[0], obj), vx(xml[1], obj);
     ASSERT_TRUE(ex.ok()) << ex.err;

@@ -70,6 +70,14 @@ inline std::string refinedWigley(int times) {
   return o.str();
 }
 
+// xml with its Wigley 576 mesh file replaced by w.obj, the OBJ text a
+// MeshScene puts in its VFS
+inline std::string onTextMesh(std::string xml) {
+  const std::string from = MJB_MODELS "/meshes/wigley_576.obj";
+  xml.replace(xml.find(from), from.size(), "w.obj");
+  return xml;
+}
+
 // a Scene whose model's mesh w comes from OBJ text (in the VFS)
 struct MeshScene {
   mjModel* m = nullptr;

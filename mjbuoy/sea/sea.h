@@ -33,8 +33,8 @@ struct Wave {
 // (z - eta) h / (h + eta), clamped) [m]
 double stretch(double depth, double z, double eta);
 
-// s = sin th and c = cos th of th[0, n) (th padded with zeros to a multiple
-// of 4): 4 at a time sharing one range reduction (util/sincoskern.h, within
+// s = sin th and c = cos th of th[0, n) (th padded with zeros, and s and c
+// with room, to a multiple of 4): 4 at a time sharing one range reduction (util/sincoskern.h, within
 // 3 ulp for |th| < 2^20 pi/2, docs/physics.md "Phases' sine and cosine in
 // lanes"), std::sin and std::cos for a group with a phase beyond that
 void phaseSinCos(const double* th, int n, double* s, double* c);
