@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "cpu/cpu.h"
+#include "cpu/cpuexp.h"
 #include "hull/rigid.h"
 #include "mjbuoy.h"
 #include "util/vmath.h"
@@ -79,6 +80,25 @@ inline void vertexE(const WaveTab& t, size_t nw, const double* ex, const double*
       ei[j] = af[j] * sc[2 * i];
     }
   }
+}
+
+// a sea's constants for the fused e^L kernels (cpuexp.h); fast: vertex
+// integration's exp (vExpFast's), else libmvec's (vExp's)
+inline EIn eIn(const WaveTab& t, size_t nw, bool fast) {
+  return EIn{t.k.data(), t.ident ? nullptr : t.perm.data(), t.n, int(nw), t.finite, t.depth,
+             fast};
+}
+
+// the fused kernel of a vector level (cpuexp.h: vertexExponents, the exp
+// and vertexE in one pass over lanes of components, the same bits);
+// nullptr on the scalar level, which keeps those three
+typedef void (*ELanesFn)(const EIn&, double, const double*, double*);
+inline ELanesFn eLanesFn() {
+  switch (simdLevel()) {
+    case kSimdAvx512: return eLanesAvx512;
+    case kSimdAvx2: return eLanesAvx2;
+  }
+  return nullptr;
 }
 
 // wet vertices whose e^L one vExp call computes (vertexWaves): a call per

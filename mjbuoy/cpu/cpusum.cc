@@ -31,6 +31,11 @@ static void sumVertex(const Sea& sea, const WaveTab& t, const double* e, double*
 // integration"); arg: nf n doubles of scratch
 static void dryWaves(const Sea& sea, const WaveTab& t, const HullScr& hs, int q, double zs,
                      double* arg, double* e) {
+  const size_t nw = sea.waves.size();
+  if (const ELanesFn f = eLanesFn()) {  // vertexWaves's fused kernel (cpuexp.h)
+    f(eIn(t, nw, true), zs, hs.SC + 2 * nw * q, e);
+    return;
+  }
   vertexExponents(t, zs, arg);
   vExpFast((t.finite ? 2 : 1) * t.n, arg, arg);
   vertexE(t, sea.waves.size(), arg, hs.SC + 2 * sea.waves.size() * q, e);

@@ -16,9 +16,17 @@ namespace mjb {
 // L = k z' + i theta, and at finite depth also -k (z' + 2 h) + i theta; one
 // exp per component and exponent (vectorised, all the chunk's at once), the
 // phases' sin and cos from the label search; arg: 2 n kExpChunk scratch;
-// fast (vertex integration): the exp within vmath.h's vExpFast's 1e-10
+// fast (vertex integration): the exp within vmath.h's vExpFast's 1e-10.
+// On a vector level the three fused per vertex (cpuexp.h), the same bits
 static void vertexWaves(const WaveTab& t, size_t nw, size_t stride, const HullScr& hs,
                         const int* wq, int nq, double* arg, bool fast) {
+  if (const ELanesFn f = eLanesFn()) {  // fused per vertex, lanes over components
+    const EIn in = eIn(t, nw, fast);
+    for (int c = 0; c < nq; c++) {
+      f(in, hs.ZS[wq[c]], hs.SC + 2 * nw * wq[c], hs.E + stride * nw * wq[c]);
+    }
+    return;
+  }
   const int nf = t.finite ? 2 : 1;
   for (int c = 0; c < nq; c++) vertexExponents(t, hs.ZS[wq[c]], arg + nf * t.n * c);
   (fast ? vExpFast : vExp)(nf * t.n * nq, arg, arg);
