@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -39,19 +38,9 @@ std::string jonswap(int n) {
 // integration integ, radiation off, no start-up ramp (every amplitude
 // whole, as the bounds take them), and the extra custom entries more
 std::string wigley(const std::string& sea, const char* integ, const std::string& more = "") {
-  std::ostringstream s;
-  s << "<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" MJB_MODELS
-    << "/meshes/wigley_576.obj\"/></asset><custom>"
-    << "<text name=\"mjbuoy.hulls\" data=\"h*\"/>" << sea << more
-    << "<numeric name=\"mjbuoy.sea.ramp\" data=\"0\"/>"
-    << "<text name=\"mjbuoy.radiation\" data=\"off\"/>"
-    << "<numeric name=\"mjbuoy.threads\" data=\"1\"/>"
-    << "<text name=\"mjbuoy.sea.integration\" data=\"" << integ << "\"/>"
-    << "</custom><worldbody><body pos=\"0 0 0\"><freejoint/>"
-    << "<inertial pos=\"0 0 -0.08\" mass=\"176.2\" diaginertia=\"6.02 237.28 238.6\"/>"
-    << "<geom name=\"h0\" type=\"mesh\" mesh=\"w\" contype=\"0\" conaffinity=\"0\"/>"
-    << "</body></worldbody></mujoco>";
-  return s.str();
+  return wigleyModel(576, sea + more + "<numeric name=\"mjbuoy.sea.ramp\" data=\"0\"/>" +
+                              "<text name=\"mjbuoy.sea.integration\" data=\"" + integ +
+                              "\"/>");
 }
 
 struct Pose {

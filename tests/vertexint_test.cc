@@ -10,7 +10,6 @@
 #include <cstring>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -40,18 +39,9 @@ std::string jonswap(bool spread) {
 // one free Wigley hull (mesh wigley_<tris>.obj, the bench's mass and
 // inertia) on sea, with integration integ ("" leaves it out), radiation off
 std::string wigley(int tris, const std::string& sea, const char* integ) {
-  std::ostringstream s;
-  s << "<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" MJB_MODELS
-    << "/meshes/wigley_" << tris << ".obj\"/></asset><custom>"
-    << "<text name=\"mjbuoy.hulls\" data=\"h*\"/>" << sea
-    << "<text name=\"mjbuoy.radiation\" data=\"off\"/>"
-    << "<numeric name=\"mjbuoy.threads\" data=\"1\"/>";
-  if (*integ) s << "<text name=\"mjbuoy.sea.integration\" data=\"" << integ << "\"/>";
-  s << "</custom><worldbody><body pos=\"0 0 0\"><freejoint/>"
-    << "<inertial pos=\"0 0 -0.08\" mass=\"176.2\" diaginertia=\"6.02 237.28 238.6\"/>"
-    << "<geom name=\"h0\" type=\"mesh\" mesh=\"w\" contype=\"0\" conaffinity=\"0\"/>"
-    << "</body></worldbody></mujoco>";
-  return s.str();
+  if (!*integ) return wigleyModel(tris, sea);
+  return wigleyModel(tris, sea + "<text name=\"mjbuoy.sea.integration\" data=\"" + integ +
+                               "\"/>");
 }
 
 struct Pose {

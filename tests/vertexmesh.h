@@ -1,6 +1,6 @@
 // test helpers of the vertex integration tests (vertexint_test.cc,
-// vertexforms_test.cc): the Wigley 576 with its edges halved, and a scene
-// whose mesh comes from OBJ text
+// vertexforms_test.cc): the Wigley model, the Wigley 576 with its edges
+// halved, and a scene whose mesh comes from OBJ text
 #ifndef MJBUOY_TESTS_VERTEXMESH_H_
 #define MJBUOY_TESTS_VERTEXMESH_H_
 
@@ -19,6 +19,22 @@
 #include "mjbuoy.h"
 
 namespace mjbt {
+
+// one free Wigley hull (mesh wigley_<tris>.obj, the bench's mass and
+// inertia), radiation off, one thread, with the custom entries custom
+inline std::string wigleyModel(int tris, const std::string& custom) {
+  std::ostringstream s;
+  s << "<mujoco><option timestep=\"0.002\"/><asset><mesh name=\"w\" file=\"" MJB_MODELS
+    << "/meshes/wigley_" << tris << ".obj\"/></asset><custom>"
+    << "<text name=\"mjbuoy.hulls\" data=\"h*\"/>" << custom
+    << "<text name=\"mjbuoy.radiation\" data=\"off\"/>"
+    << "<numeric name=\"mjbuoy.threads\" data=\"1\"/>"
+    << "</custom><worldbody><body pos=\"0 0 0\"><freejoint/>"
+    << "<inertial pos=\"0 0 -0.08\" mass=\"176.2\" diaginertia=\"6.02 237.28 238.6\"/>"
+    << "<geom name=\"h0\" type=\"mesh\" mesh=\"w\" contype=\"0\" conaffinity=\"0\"/>"
+    << "</body></worldbody></mujoco>";
+  return s.str();
+}
 
 // models/meshes/wigley_576.obj with every triangle split in 4 at its
 // edges' midpoints, times times: the same surface, every edge halved each
