@@ -6,6 +6,7 @@
 
 #include "cpu/cpuexp.h"
 #include "util/expkern.h"
+#include "util/zipkern.h"
 
 namespace mjb {
 namespace {
@@ -24,18 +25,9 @@ __attribute__((always_inline)) inline void ePhases(const int* perm, const double
                                                    int m, typename ELanes<W>::V* s,
                                                    typename ELanes<W>::V* c) {
   typedef typename ELanes<W>::V V;
-  typedef typename ELanes<W>::I I;
-  if (!perm && m == W) {
-    V a, b;
-    __builtin_memcpy(&a, sc + 2 * j, sizeof a);
-    __builtin_memcpy(&b, sc + 2 * j + W, sizeof b);
-    I ev, od;
-    for (int l = 0; l < W; l++) {
-      ev[l] = 2 * l;
-      od[l] = 2 * l + 1;
-    }
-    *s = __builtin_shuffle(a, b, ev);
-    *c = __builtin_shuffle(a, b, od);
+  if (!perm && m == W) {  // (zipkern.h: shuffles GCC and clang both take)
+    *s = unzip<V, W, 2, 0>(sc + 2 * j);
+    *c = unzip<V, W, 2, 1>(sc + 2 * j);
     return;
   }
   V vs = {}, vc = {};
